@@ -1,0 +1,198 @@
+//! `walls-lint`: check walls files for everything pkdgrav would reject or misread.
+//!
+//! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
+//! or I/O error. Human output goes to standard error, machine output (json, sarif,
+//! github) to standard output.
+
+use clap::{Parser, ValueEnum};
+use rayon::prelude::*;
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+use walls_cli::{all_codes, find_code, input, lint_bytes};
+use walls_diagnostics::Diagnostic;
+use walls_diagnostics::render::{self, FileReport, ToolInfo};
+use walls_model::Mode;
+
+#[derive(Parser)]
+#[command(
+    name = "walls-lint",
+    version,
+    about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread."
+)]
+struct Args {
+    /// Files to check; `-` reads standard input.
+    #[arg(required_unless_present = "explain", value_name = "FILE")]
+    files: Vec<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Human)]
+    format: Format,
+    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
+    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
+    mode: ModeArg,
+    /// Exit with status 1 on warnings too.
+    #[arg(long)]
+    deny_warnings: bool,
+    /// When to colour human output.
+    #[arg(long, value_enum, default_value_t = Color::Auto)]
+    color: Color,
+    /// Explain a diagnostic code (`S101` or `unknown-word`) and exit.
+    #[arg(long, value_name = "CODE", conflicts_with = "files")]
+    explain: Option<String>,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Human,
+    Json,
+    Sarif,
+    Github,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum ModeArg {
+    Ssdem,
+    Hsdem,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Color {
+    Auto,
+    Always,
+    Never,
+}
+
+/// One checked file: the text the diagnostics refer to, or the I/O error.
+struct Checked {
+    name: String,
+    outcome: Result<(String, Vec<Diagnostic>), String>,
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    if let Some(query) = &args.explain {
+        return explain(query);
+    }
+    let mode = match args.mode {
+        ModeArg::Ssdem => Mode::Ssdem,
+        ModeArg::Hsdem => Mode::Hsdem,
+    };
+    let checked: Vec<Checked> = args.files.par_iter().map(|p| check(p, mode)).collect();
+
+    let mut io_failed = false;
+    for c in &checked {
+        if let Err(e) = &c.outcome {
+            eprintln!("walls-lint: error: {e}");
+            io_failed = true;
+        }
+    }
+    let reports: Vec<FileReport> = checked
+        .iter()
+        .filter_map(|c| {
+            let (text, diagnostics) = c.outcome.as_ref().ok()?;
+            Some(FileReport {
+                path: &c.name,
+                source: text,
+                diagnostics,
+            })
+        })
+        .collect();
+    let summary = render::summarize(&reports);
+    if let Err(e) = write_reports(&args, &reports) {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            eprintln!("walls-lint: error: cannot write output: {e}");
+        }
+        return ExitCode::from(2);
+    }
+    if io_failed {
+        ExitCode::from(2)
+    } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn check(path: &str, mode: Mode) -> Checked {
+    let read = input::read(path);
+    let outcome = read.bytes.map(|bytes| lint_bytes(&bytes, mode));
+    Checked {
+        name: read.name,
+        outcome,
+    }
+}
+
+fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
+    match args.format {
+        Format::Human => {
+            let color = match args.color {
+                Color::Always => true,
+                Color::Never => false,
+                Color::Auto => {
+                    std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none()
+                }
+            };
+            let mut err = std::io::stderr().lock();
+            for r in reports {
+                render::human(&mut err, r, color)?;
+            }
+            let s = render::summarize(reports);
+            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 {
+                writeln!(
+                    err,
+                    "{} error{}, {} warning{} in {} file{}",
+                    s.errors,
+                    plural(s.errors),
+                    s.warnings,
+                    plural(s.warnings),
+                    reports.len(),
+                    plural(reports.len())
+                )?;
+            }
+            Ok(())
+        }
+        Format::Json => {
+            let mut out = std::io::stdout().lock();
+            writeln!(out, "{}", render::json_string(reports))
+        }
+        Format::Sarif => {
+            let tool = ToolInfo {
+                name: "walls-lint",
+                version: env!("CARGO_PKG_VERSION"),
+                information_uri: "https://example.invalid/walls/docs/diagnostics.md",
+            };
+            let rules: Vec<_> = all_codes().collect();
+            print_json(&render::sarif(reports, &tool, &rules))
+        }
+        Format::Github => render::github(&mut std::io::stdout().lock(), reports),
+    }
+}
+
+fn print_json(value: &serde_json::Value) -> std::io::Result<()> {
+    let mut out = std::io::stdout().lock();
+    serde_json::to_writer_pretty(&mut out, value)?;
+    writeln!(out)
+}
+
+fn explain(query: &str) -> ExitCode {
+    match find_code(query) {
+        Some(code) => {
+            println!(
+                "{} ({}): {}\n\n{}",
+                code.id, code.name, code.summary, code.explanation
+            );
+            ExitCode::SUCCESS
+        }
+        None => {
+            let known: Vec<&str> = all_codes().map(|c| c.id).collect();
+            eprintln!(
+                "walls-lint: error: no diagnostic code `{query}`; the codes are {}",
+                known.join(", ")
+            );
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn plural(n: usize) -> &'static str {
+    if n == 1 { "" } else { "s" }
+}

@@ -1,0 +1,211 @@
+//! Diagnostics as data, rendered at the edge.
+//!
+//! A [`Diagnostic`] is a plain value: a stable [`Code`], a [`Severity`], a primary byte
+//! span, secondary [`Label`]s, a message, optional help and an optional [`Fix`]. Stages
+//! that find problems (lexer, parser, checker) build them; the [`render`] module turns
+//! them into text for people (ariadne) or for machines (JSON, SARIF 2.1.0, GitHub
+//! workflow annotations). Spans are byte ranges everywhere; [`LineIndex`] turns them into
+//! 1-based lines and character columns only when rendering.
+
+mod line_index;
+pub mod render;
+
+pub use line_index::{LineCol, LineIndex};
+use std::ops::Range;
+
+/// How serious a finding is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Severity {
+    /// pkdgrav would reject or misread the file.
+    Error,
+    /// Legal, but very likely not what the author meant.
+    Warning,
+    /// Worth knowing; never fails a lint.
+    Info,
+}
+
+impl Severity {
+    /// The lower-case name used by every output format.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "info",
+        }
+    }
+}
+
+/// A stable diagnostic code with its documentation, defined once by the stage that
+/// emits it. The same text serves `--explain`, editor hovers and `docs/diagnostics.md`.
+#[derive(Debug, PartialEq, Eq, Hash)]
+pub struct Code {
+    /// Stable identifier such as `S101`; never reused for another meaning.
+    pub id: &'static str,
+    /// Kebab-case name such as `unknown-word`.
+    pub name: &'static str,
+    /// One line saying what the code is about.
+    pub summary: &'static str,
+    /// Markdown: why it matters, then a bad example and a good example, each in a
+    /// fenced `walls` code block preceded by a line `Bad:` or `Good:`.
+    pub explanation: &'static str,
+}
+
+/// A secondary span with a note, such as "the vector starts here".
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Label {
+    /// Byte range in the source.
+    pub span: Range<usize>,
+    /// What this place has to do with the problem.
+    pub message: String,
+}
+
+/// Whether a fix may be applied without a person looking at it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Applicability {
+    /// Keeps what the author evidently meant; fine to apply automatically.
+    Safe,
+    /// A guess (a spelling suggestion, say): offer it, never apply it unasked.
+    Unsafe,
+}
+
+impl Applicability {
+    /// The lower-case name used by the machine formats.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Applicability::Safe => "safe",
+            Applicability::Unsafe => "unsafe",
+        }
+    }
+}
+
+/// Replace the bytes of `span` with `replacement` (an empty span inserts).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Edit {
+    /// Byte range to replace.
+    pub span: Range<usize>,
+    /// The new text.
+    pub replacement: String,
+}
+
+/// A way to repair the problem: text edits that do not overlap.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Fix {
+    /// What the fix does, in the imperative ("insert a space before `#`").
+    pub message: String,
+    /// Whether it may be applied unasked.
+    pub applicability: Applicability,
+    /// The edits, in source order.
+    pub edits: Vec<Edit>,
+}
+
+/// One finding about one place in one file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Diagnostic {
+    /// The stable code and its documentation.
+    pub code: &'static Code,
+    /// How serious it is.
+    pub severity: Severity,
+    /// Byte range of the exact offending text (empty where something is missing).
+    pub span: Range<usize>,
+    /// What is wrong, in one sentence.
+    pub message: String,
+    /// Other places that explain the problem.
+    pub labels: Vec<Label>,
+    /// How to put it right, when a sentence helps.
+    pub help: Option<String>,
+    /// An automatic repair, when one exists.
+    pub fix: Option<Fix>,
+}
+
+impl Diagnostic {
+    /// An error with no labels, help or fix yet.
+    pub fn error(code: &'static Code, span: Range<usize>, message: impl Into<String>) -> Self {
+        Self::new(code, Severity::Error, span, message)
+    }
+
+    /// A warning with no labels, help or fix yet.
+    pub fn warning(code: &'static Code, span: Range<usize>, message: impl Into<String>) -> Self {
+        Self::new(code, Severity::Warning, span, message)
+    }
+
+    /// A diagnostic of any severity with no labels, help or fix yet.
+    pub fn new(
+        code: &'static Code,
+        severity: Severity,
+        span: Range<usize>,
+        message: impl Into<String>,
+    ) -> Self {
+        Diagnostic {
+            code,
+            severity,
+            span,
+            message: message.into(),
+            labels: Vec::new(),
+            help: None,
+            fix: None,
+        }
+    }
+
+    /// Adds a secondary label.
+    pub fn with_label(mut self, span: Range<usize>, message: impl Into<String>) -> Self {
+        self.labels.push(Label {
+            span,
+            message: message.into(),
+        });
+        self
+    }
+
+    /// Sets the help sentence.
+    pub fn with_help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
+
+    /// Sets the fix.
+    pub fn with_fix(
+        mut self,
+        applicability: Applicability,
+        message: impl Into<String>,
+        edits: Vec<Edit>,
+    ) -> Self {
+        self.fix = Some(Fix {
+            message: message.into(),
+            applicability,
+            edits,
+        });
+        self
+    }
+}
+
+/// Applies every fix of the given applicability (and, with `Unsafe`, the safe ones too)
+/// whose edits do not overlap an edit already taken; returns the new text.
+pub fn apply_fixes(source: &str, diagnostics: &[Diagnostic], level: Applicability) -> String {
+    let mut edits: Vec<&Edit> = Vec::new();
+    for fix in diagnostics.iter().filter_map(|d| d.fix.as_ref()) {
+        if level == Applicability::Safe && fix.applicability == Applicability::Unsafe {
+            continue;
+        }
+        let overlaps = fix
+            .edits
+            .iter()
+            .any(|e| edits.iter().any(|t| edits_overlap(e, t)));
+        if !overlaps {
+            edits.extend(fix.edits.iter());
+        }
+    }
+    edits.sort_by_key(|e| (e.span.start, e.span.end));
+    let mut out = String::with_capacity(source.len());
+    let mut at = 0;
+    for e in edits {
+        out.push_str(&source[at..e.span.start]);
+        out.push_str(&e.replacement);
+        at = e.span.end;
+    }
+    out.push_str(&source[at..]);
+    out
+}
+
+/// Two edits conflict when their ranges share a byte, or both insert at one place.
+fn edits_overlap(a: &Edit, b: &Edit) -> bool {
+    (a.span.start < b.span.end && b.span.start < a.span.end) || a.span.start == b.span.start
+}

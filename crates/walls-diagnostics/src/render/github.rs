@@ -1,0 +1,117 @@
+//! GitHub Actions workflow commands: one `::error …::message` line per diagnostic.
+//!
+//! ```text
+//! ::error file=PATH,line=L,col=C,endLine=EL,endColumn=EC,title=walls-lint (CODE)::MESSAGE
+//! ```
+//!
+//! Warnings use `::warning` and infos `::notice`. `col` and `endColumn` are left out
+//! when the span covers several lines, which Actions rejects. Message data escapes
+//! `%`, `\r` and `\n`; property values also escape `:` and `,`.
+
+use super::{FileReport, Region, message_with_help};
+use crate::{LineIndex, Severity};
+use std::io::{self, Write};
+
+/// Writes one workflow command line per diagnostic of every file.
+pub fn github(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
+    for file in files {
+        let index = LineIndex::new(file.source);
+        for d in file.diagnostics {
+            let command = match d.severity {
+                Severity::Error => "error",
+                Severity::Warning => "warning",
+                Severity::Info => "notice",
+            };
+            let r = Region::of(&index, file.source, &d.span);
+            let mut props = format!("file={},line={}", escape_property(file.path), r.line);
+            if r.line == r.end_line {
+                props.push_str(&format!(",col={}", r.column));
+            }
+            props.push_str(&format!(",endLine={}", r.end_line));
+            if r.line == r.end_line {
+                props.push_str(&format!(",endColumn={}", r.end_column));
+            }
+            let title = format!("walls-lint ({})", d.code.id);
+            props.push_str(&format!(",title={}", escape_property(&title)));
+            writeln!(
+                out,
+                "::{command} {props}::{}",
+                escape_data(&message_with_help(d))
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Escapes a command's message: `%`, `\r` and `\n`.
+fn escape_data(s: &str) -> String {
+    s.replace('%', "%25")
+        .replace('\r', "%0D")
+        .replace('\n', "%0A")
+}
+
+/// Escapes a property value: as [`escape_data`], plus `:` and `,`.
+fn escape_property(s: &str) -> String {
+    escape_data(s).replace(':', "%3A").replace(',', "%2C")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Diagnostic;
+    use crate::render::test_support::{SOURCE, UNKNOWN_WORD, diagnostics};
+
+    fn render(path: &str, diags: &[Diagnostic]) -> String {
+        let mut out = Vec::new();
+        let file = FileReport {
+            path,
+            source: SOURCE,
+            diagnostics: diags,
+        };
+        github(&mut out, &[file]).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn one_line_per_diagnostic() {
+        let text = render("dir/a,b:c%.walls", &diagnostics());
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 4);
+        assert_eq!(
+            lines[0],
+            "::error file=dir/a%2Cb%3Ac%25.walls,line=2,col=20,endLine=2,endColumn=24,\
+             title=walls-lint (S101)::unknown word `colr`%0Adid you mean `color`?"
+        );
+        // Characters, not bytes, after `μ`; `%` escaped in data, `,` and `:` kept.
+        assert_eq!(
+            lines[1],
+            "::notice file=dir/a%2Cb%3Ac%25.walls,line=1,col=5,endLine=1,endColumn=9,\
+             title=walls-lint (C201)::comment, says 50%25 \"wall\", a:b"
+        );
+        assert_eq!(
+            lines[2],
+            "::error file=dir/a%2Cb%3Ac%25.walls,line=3,col=12,endLine=3,endColumn=12,\
+             title=walls-lint (S102)::missing value for `radius`"
+        );
+        // Multi-line: no col / endColumn; newline in the message escaped.
+        assert_eq!(
+            lines[3],
+            "::warning file=dir/a%2Cb%3Ac%25.walls,line=2,endLine=3,\
+             title=walls-lint (C201)::these walls%0Ahave no area"
+        );
+    }
+
+    #[test]
+    fn carriage_returns_are_escaped() {
+        let d = [Diagnostic::error(&UNKNOWN_WORD, 0..1, "a\r\nb")];
+        let text = render("x.walls", &d);
+        assert!(text.ends_with("::a%0D%0Ab\n"), "{text}");
+        assert_eq!(text.lines().count(), 1);
+    }
+
+    #[test]
+    fn escaping() {
+        assert_eq!(escape_data("50%,a:b\r\n"), "50%25,a:b%0D%0A");
+        assert_eq!(escape_property("50%,a:b\r\n"), "50%25%2Ca%3Ab%0D%0A");
+    }
+}

@@ -1,0 +1,164 @@
+//! The lossless syntax tree shared by the checker, the formatter and the LSP server.
+//!
+//! A walls file is flat: a sequence of items, each a block (`wall` or `defaults` with the
+//! statements it owns), a statement outside any block, or stray values before the first
+//! keyword. A statement is a keyword and the values after it. The tree keeps every token,
+//! trivia included, so [`SyntaxTree`]'s `Display` prints the input back byte for byte;
+//! statements refer to tokens by index instead of copying text.
+
+use crate::lexer::{Token, TokenKind};
+use std::fmt;
+use std::ops::Range;
+use std::sync::Arc;
+use walls_keywords::Keyword;
+
+/// Index of a token in [`SyntaxTree::tokens`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct TokenId(pub u32);
+
+/// A keyword and its values, or a run of stray values: a contiguous range of the
+/// file's significant (non-trivia) tokens.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Statement {
+    /// Range of significant-token indices (see [`SyntaxTree::significant`]).
+    pub(crate) sig: Range<u32>,
+}
+
+/// Which block a `wall` or `defaults` keyword opens.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BlockKind {
+    /// `wall`: a new wall, a copy of the current defaults.
+    Wall,
+    /// `defaults`: edits the default wall.
+    Defaults,
+}
+
+/// A `wall` or `defaults` block: its header statement and the statements it owns.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Block {
+    /// Which keyword opened it.
+    pub kind: BlockKind,
+    /// The `wall`/`defaults` statement itself.
+    pub head: Statement,
+    /// The statements inside, in order: properties, and for `defaults` also general
+    /// tokens (units and `time` close a wall block but not a defaults block).
+    pub body: Vec<Statement>,
+}
+
+/// One top-level element of a file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Item {
+    /// A `wall` or `defaults` block.
+    Block(Block),
+    /// A statement outside any block: a general token (`time`, units), or a wall
+    /// property that stands outside any block (an error the validator reports).
+    Statement(Statement),
+    /// Values with no keyword before them, at the start of the file (an error).
+    Stray(Statement),
+}
+
+/// A parsed file: its text, every token, and the items.
+#[derive(Debug, Clone)]
+pub struct SyntaxTree {
+    pub(crate) text: Arc<str>,
+    pub(crate) tokens: Vec<Token>,
+    pub(crate) sig: Vec<u32>,
+    pub(crate) items: Vec<Item>,
+}
+
+impl SyntaxTree {
+    /// The source text.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// The source text, shared.
+    pub fn shared_text(&self) -> &Arc<str> {
+        &self.text
+    }
+
+    /// Every token, trivia included, in order.
+    pub fn tokens(&self) -> &[Token] {
+        &self.tokens
+    }
+
+    /// The top-level items, in order.
+    pub fn items(&self) -> &[Item] {
+        &self.items
+    }
+
+    /// The token ids of the significant (non-trivia) tokens, in order.
+    pub fn significant(&self) -> impl ExactSizeIterator<Item = TokenId> + '_ {
+        self.sig.iter().map(|&i| TokenId(i))
+    }
+
+    /// The kind of a token.
+    pub fn kind(&self, id: TokenId) -> TokenKind {
+        self.tokens[id.0 as usize].kind
+    }
+
+    /// Byte range of a token.
+    pub fn span(&self, id: TokenId) -> Range<usize> {
+        let i = id.0 as usize;
+        let start = self.tokens[i].start as usize;
+        let end = self
+            .tokens
+            .get(i + 1)
+            .map_or(self.text.len(), |t| t.start as usize);
+        start..end
+    }
+
+    /// The text of a token.
+    pub fn token_text(&self, id: TokenId) -> &str {
+        &self.text[self.span(id)]
+    }
+
+    /// The first token of a statement: its keyword, or the first stray value.
+    pub fn head(&self, stmt: &Statement) -> TokenId {
+        TokenId(self.sig[stmt.sig.start as usize])
+    }
+
+    /// The statement's keyword, if it has one.
+    pub fn keyword(&self, stmt: &Statement) -> Option<Keyword> {
+        match self.kind(self.head(stmt)) {
+            TokenKind::Keyword(k) => Some(k),
+            _ => None,
+        }
+    }
+
+    /// The value tokens after the keyword (every token, for stray values).
+    pub fn values(&self, stmt: &Statement) -> impl ExactSizeIterator<Item = TokenId> + '_ {
+        let skip = usize::from(self.keyword(stmt).is_some());
+        self.sig[stmt.sig.start as usize + skip..stmt.sig.end as usize]
+            .iter()
+            .map(|&i| TokenId(i))
+    }
+
+    /// Byte range from the statement's first token to the end of its last.
+    pub fn statement_span(&self, stmt: &Statement) -> Range<usize> {
+        let first = TokenId(self.sig[stmt.sig.start as usize]);
+        let last = TokenId(self.sig[stmt.sig.end as usize - 1]);
+        self.span(first).start..self.span(last).end
+    }
+
+    /// Every statement of the file in source order, each with the block holding it.
+    pub fn statements(&self) -> impl Iterator<Item = (&Statement, Option<&Block>)> + '_ {
+        self.items.iter().flat_map(|item| {
+            let (first, block, body): (&Statement, Option<&Block>, &[Statement]) = match item {
+                Item::Block(b) => (&b.head, Some(b), &b.body),
+                Item::Statement(s) | Item::Stray(s) => (s, None, &[]),
+            };
+            std::iter::once((first, block)).chain(body.iter().map(move |s| (s, block)))
+        })
+    }
+}
+
+/// Prints the tree's tokens in order: exactly the text it was parsed from.
+impl fmt::Display for SyntaxTree {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for i in 0..self.tokens.len() {
+            f.write_str(self.token_text(TokenId(i as u32)))?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,132 @@
+//! Tests as data: every `.walls` file under `tests/data/ok` and `tests/data/err` is
+//! parsed, and its tree and diagnostics are compared with the `.snap` file beside it.
+//! Files under `ok/` must produce no diagnostic; files under `err/` must produce some.
+//! Update the snapshots with `INSTA_UPDATE=always cargo test -p walls-syntax` and review
+//! them with `git diff`.
+
+use std::fmt::Write as _;
+use std::path::Path;
+use walls_diagnostics::{Applicability, LineIndex, apply_fixes};
+use walls_syntax::{Item, SyntaxTree, parse};
+
+#[test]
+fn ok_files_parse_cleanly() {
+    insta::glob!("data/ok/*.walls", |path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        let parsed = parse(text.as_str());
+        assert_eq!(parsed.tree.to_string(), text, "lossless");
+        assert!(
+            parsed.diagnostics.is_empty(),
+            "{}: {:#?}",
+            path.display(),
+            parsed.diagnostics
+        );
+        snapshot_beside(path, &tree_outline(&parsed.tree));
+    });
+}
+
+#[test]
+fn err_files_report_every_mistake() {
+    insta::glob!("data/err/*.walls", |path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        let parsed = parse(text.as_str());
+        assert_eq!(parsed.tree.to_string(), text, "lossless");
+        assert!(
+            !parsed.diagnostics.is_empty(),
+            "{} has no error",
+            path.display()
+        );
+        let mut out = render(&text, &parsed.diagnostics);
+        // Applying the safe fixes must remove the diagnostics they were offered for.
+        let fixed = apply_fixes(&text, &parsed.diagnostics, Applicability::Safe);
+        if fixed != text {
+            let after = parse(fixed.as_str());
+            writeln!(out, "--- after safe fixes ---\n{fixed}--- leaves ---").unwrap();
+            out.push_str(&render(&fixed, &after.diagnostics));
+        }
+        snapshot_beside(path, &out);
+    });
+}
+
+fn snapshot_beside(path: &Path, content: &str) {
+    let name = path.file_stem().unwrap().to_str().unwrap().to_string();
+    insta::with_settings!({
+        snapshot_path => path.parent().unwrap(),
+        prepend_module_to_snapshot => false,
+        omit_expression => true,
+        input_file => path,
+    }, {
+        insta::assert_snapshot!(name, content);
+    });
+}
+
+fn render(text: &str, diagnostics: &[walls_diagnostics::Diagnostic]) -> String {
+    let index = LineIndex::new(text);
+    let at = |span: &std::ops::Range<usize>| {
+        let a = index.line_col(text, span.start);
+        let b = index.line_col(text, span.end);
+        format!(
+            "{}:{}-{}:{} {:?}",
+            a.line,
+            a.column,
+            b.line,
+            b.column,
+            &text[span.clone()]
+        )
+    };
+    let mut out = String::new();
+    for d in diagnostics {
+        writeln!(
+            out,
+            "{}[{}] {}: {}",
+            d.severity.as_str(),
+            d.code.id,
+            at(&d.span),
+            d.message
+        )
+        .unwrap();
+        for l in &d.labels {
+            writeln!(out, "  label {}: {}", at(&l.span), l.message).unwrap();
+        }
+        if let Some(h) = &d.help {
+            writeln!(out, "  help: {h}").unwrap();
+        }
+        if let Some(f) = &d.fix {
+            writeln!(out, "  fix ({}): {}", f.applicability.as_str(), f.message).unwrap();
+            for e in &f.edits {
+                writeln!(out, "    {} -> {:?}", at(&e.span), e.replacement).unwrap();
+            }
+        }
+    }
+    out
+}
+
+/// One line per statement: its block role, keyword and values as written.
+fn tree_outline(tree: &SyntaxTree) -> String {
+    let mut out = String::new();
+    let line = |out: &mut String, indent: &str, tag: &str, s: &walls_syntax::Statement| {
+        let words: Vec<&str> = std::iter::once(tree.head(s))
+            .chain(tree.values(s))
+            .map(|t| tree.token_text(t))
+            .collect();
+        writeln!(out, "{indent}{tag} {}", words.join(" ")).unwrap();
+    };
+    for item in tree.items() {
+        match item {
+            Item::Block(b) => {
+                line(
+                    &mut out,
+                    "",
+                    &format!("{:?}", b.kind).to_lowercase(),
+                    &b.head,
+                );
+                for s in &b.body {
+                    line(&mut out, "  ", "-", s);
+                }
+            }
+            Item::Statement(s) => line(&mut out, "", "statement", s),
+            Item::Stray(s) => line(&mut out, "", "stray", s),
+        }
+    }
+    out
+}
