@@ -134,6 +134,16 @@ impl SyntaxTree {
             .map(|&i| TokenId(i))
     }
 
+    /// Every significant token of the statement: its keyword (if any), then its values.
+    pub fn statement_tokens(
+        &self,
+        stmt: &Statement,
+    ) -> impl ExactSizeIterator<Item = TokenId> + '_ {
+        self.sig[stmt.sig.start as usize..stmt.sig.end as usize]
+            .iter()
+            .map(|&i| TokenId(i))
+    }
+
     /// Byte range from the statement's first token to the end of its last.
     pub fn statement_span(&self, stmt: &Statement) -> Range<usize> {
         let first = TokenId(self.sig[stmt.sig.start as usize]);

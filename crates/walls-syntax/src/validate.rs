@@ -455,7 +455,8 @@ impl Validator<'_> {
                 span.clone(),
                 format!("unknown word `{text}`"),
             );
-            d = match suggest::keyword_like(&text) {
+            let suggestion = suggest::keyword_like(&text);
+            d = match suggestion {
                 Some(k) => d.with_help(format!("did you mean `{k}`?")).with_fix(
                     Applicability::Unsafe,
                     format!("replace with `{k}`"),
@@ -469,11 +470,19 @@ impl Validator<'_> {
                 }
             };
             self.out.push(d);
-            // The numbers after an unknown word are its values: no more complaints.
+            // The values after an unknown word are its own (a type name, if it looks
+            // like `type`; numbers otherwise): no more complaints about them.
             j += 1;
+            let takes_type = suggestion
+                .and_then(walls_keywords::keyword)
+                .map(Keyword::shape)
+                == Some(ValueShape::TypeName);
             j += tokens[j..]
                 .iter()
-                .take_while(|&&t| numeric(self, t))
+                .take_while(|&&t| match self.tree.kind(t) {
+                    TokenKind::TypeName(_) => takes_type,
+                    _ => !takes_type && numeric(self, t),
+                })
                 .count();
         }
     }

@@ -1,0 +1,41 @@
+//! Fuzz target: arbitrary bytes through decoding, lexing, parsing, the model checks and
+//! every renderer. Checks that nothing panics or hangs, that the tree is lossless, that
+//! the significant tokens are covered by statements exactly once in order, and that
+//! every span lies inside the text on character boundaries.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use walls_diagnostics::render::{self, FileReport, ToolInfo};
+use walls_model::Mode;
+
+fuzz_target!(|data: &[u8]| {
+    let (text, diagnostics) = walls_cli::lint_bytes(data, Mode::Hsdem);
+    for d in &diagnostics {
+        let spans = std::iter::once(&d.span).chain(d.labels.iter().map(|l| &l.span));
+        for s in spans.chain(d.fix.iter().flat_map(|f| f.edits.iter().map(|e| &e.span))) {
+            assert!(s.start <= s.end && s.end <= text.len(), "span {s:?} outside text");
+            assert!(text.is_char_boundary(s.start) && text.is_char_boundary(s.end));
+        }
+    }
+    if let Ok(valid) = std::str::from_utf8(data) {
+        let parsed = walls_syntax::parse(valid);
+        assert_eq!(parsed.tree.to_string(), valid, "tree is not lossless");
+        let sig: Vec<_> = parsed.tree.significant().collect();
+        let mut next = 0;
+        for (stmt, _) in parsed.tree.statements() {
+            for id in parsed.tree.statement_tokens(stmt) {
+                assert_eq!(Some(&id), sig.get(next), "statements skip or repeat tokens");
+                next += 1;
+            }
+        }
+        assert_eq!(next, sig.len(), "tokens left outside statements");
+    }
+    let file = FileReport { path: "fuzz.walls", source: &text, diagnostics: &diagnostics };
+    let files = [file];
+    let mut sink = Vec::new();
+    render::human(&mut sink, &files[0], false).unwrap();
+    render::github(&mut sink, &files).unwrap();
+    let _ = render::json_string(&files);
+    let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: "" };
+    let _ = render::sarif(&files, &tool, &[]);
+});
