@@ -20,11 +20,11 @@ fuzz_target!(|data: &[u8]| {
     if let Ok(valid) = std::str::from_utf8(data) {
         let parsed = walls_syntax::parse(valid);
         assert_eq!(parsed.tree.to_string(), valid, "tree is not lossless");
-        let sig: Vec<_> = parsed.tree.significant().collect();
+        let sig = parsed.tree.significant();
         let mut next = 0;
         for (stmt, _) in parsed.tree.statements() {
             for id in parsed.tree.statement_tokens(stmt) {
-                assert_eq!(Some(&id), sig.get(next), "statements skip or repeat tokens");
+                assert_eq!(Some(id), sig.get(next), "statements skip or repeat tokens");
                 next += 1;
             }
         }

@@ -3,6 +3,7 @@
 
 pub mod input;
 
+use std::sync::Arc;
 use walls_diagnostics::{Code, Diagnostic};
 use walls_model::Mode;
 
@@ -22,15 +23,15 @@ pub fn find_code(query: &str) -> Option<&'static Code> {
 /// Everything `walls-lint` checks in one file: decodes the bytes, parses, runs the
 /// model checks. Returns the text the diagnostics' spans refer to (the valid prefix, for
 /// bytes that are not UTF-8) and the diagnostics sorted by position.
-pub fn lint_bytes(bytes: &[u8], mode: Mode) -> (String, Vec<Diagnostic>) {
+pub fn lint_bytes(bytes: &[u8], mode: Mode) -> (Arc<str>, Vec<Diagnostic>) {
     match walls_syntax::decode(bytes) {
         Ok(text) => {
             let parsed = walls_syntax::parse(text);
             let mut diagnostics = parsed.diagnostics;
             diagnostics.extend(walls_model::check_mode(&parsed.tree, mode));
             diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
-            (text.to_string(), diagnostics)
+            (parsed.tree.shared_text().clone(), diagnostics)
         }
-        Err((prefix, diagnostic)) => (prefix.to_string(), vec![*diagnostic]),
+        Err((prefix, diagnostic)) => (prefix.into(), vec![*diagnostic]),
     }
 }

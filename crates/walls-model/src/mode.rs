@@ -22,7 +22,7 @@ pub fn check_mode(tree: &SyntaxTree, mode: Mode) -> Vec<Diagnostic> {
         return Vec::new();
     }
     let mut out = Vec::new();
-    for id in tree.significant() {
+    for &id in tree.significant() {
         let span = tree.span(id);
         let text = tree.token_text(id);
         match tree.kind(id) {

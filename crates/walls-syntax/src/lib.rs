@@ -36,7 +36,7 @@ pub fn parse(text: impl Into<Arc<str>>) -> Parse {
     let mut sig_kinds = Vec::with_capacity(tokens.len() / 2);
     for (i, t) in tokens.iter().enumerate() {
         if !t.kind.is_trivia() {
-            sig.push(i as u32);
+            sig.push(TokenId(i as u32));
             sig_kinds.push(t.kind);
         }
     }

@@ -62,7 +62,7 @@ pub enum Item {
 pub struct SyntaxTree {
     pub(crate) text: Arc<str>,
     pub(crate) tokens: Vec<Token>,
-    pub(crate) sig: Vec<u32>,
+    pub(crate) sig: Vec<TokenId>,
     pub(crate) items: Vec<Item>,
 }
 
@@ -88,8 +88,8 @@ impl SyntaxTree {
     }
 
     /// The token ids of the significant (non-trivia) tokens, in order.
-    pub fn significant(&self) -> impl ExactSizeIterator<Item = TokenId> + '_ {
-        self.sig.iter().map(|&i| TokenId(i))
+    pub fn significant(&self) -> &[TokenId] {
+        &self.sig
     }
 
     /// The kind of a token.
@@ -115,7 +115,7 @@ impl SyntaxTree {
 
     /// The first token of a statement: its keyword, or the first stray value.
     pub fn head(&self, stmt: &Statement) -> TokenId {
-        TokenId(self.sig[stmt.sig.start as usize])
+        self.sig[stmt.sig.start as usize]
     }
 
     /// The statement's keyword, if it has one.
@@ -127,27 +127,20 @@ impl SyntaxTree {
     }
 
     /// The value tokens after the keyword (every token, for stray values).
-    pub fn values(&self, stmt: &Statement) -> impl ExactSizeIterator<Item = TokenId> + '_ {
+    pub fn values(&self, stmt: &Statement) -> &[TokenId] {
         let skip = usize::from(self.keyword(stmt).is_some());
-        self.sig[stmt.sig.start as usize + skip..stmt.sig.end as usize]
-            .iter()
-            .map(|&i| TokenId(i))
+        &self.sig[stmt.sig.start as usize + skip..stmt.sig.end as usize]
     }
 
     /// Every significant token of the statement: its keyword (if any), then its values.
-    pub fn statement_tokens(
-        &self,
-        stmt: &Statement,
-    ) -> impl ExactSizeIterator<Item = TokenId> + '_ {
-        self.sig[stmt.sig.start as usize..stmt.sig.end as usize]
-            .iter()
-            .map(|&i| TokenId(i))
+    pub fn statement_tokens(&self, stmt: &Statement) -> &[TokenId] {
+        &self.sig[stmt.sig.start as usize..stmt.sig.end as usize]
     }
 
     /// Byte range from the statement's first token to the end of its last.
     pub fn statement_span(&self, stmt: &Statement) -> Range<usize> {
-        let first = TokenId(self.sig[stmt.sig.start as usize]);
-        let last = TokenId(self.sig[stmt.sig.end as usize - 1]);
+        let first = self.sig[stmt.sig.start as usize];
+        let last = self.sig[stmt.sig.end as usize - 1];
         self.span(first).start..self.span(last).end
     }
 

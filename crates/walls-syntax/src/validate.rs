@@ -62,55 +62,66 @@ impl Validator<'_> {
                 ),
             );
         }
-        let mut start = 0;
-        for line in text.split_inclusive('\n') {
-            let content = line.trim_end_matches('\n').trim_end_matches('\r');
-            if content.len() > MAX_LINE_BYTES {
-                let mut cut = start + MAX_LINE_BYTES;
-                while !text.is_char_boundary(cut) {
-                    cut -= 1;
-                }
-                self.out.push(
-                    Diagnostic::error(
-                        &codes::LINE_TOO_LONG,
-                        cut..start + content.len(),
-                        format!(
-                            "line is {} bytes long; pkdgrav reads at most {MAX_LINE_BYTES}",
-                            content.len()
-                        ),
-                    )
-                    .with_help("put each statement on a line of its own"),
-                );
-            }
-            start += line.len();
-        }
+        // One pass over the tokens: newlines end lines, glued comments are flagged.
+        let mut line_start = 0;
         for (i, t) in self.tree.tokens().iter().enumerate() {
-            if t.kind == TokenKind::GluedComment {
-                let id = TokenId(i as u32);
-                let span = self.span(id);
-                let word = TokenId(i as u32 - 1);
-                let glued = format!("{}{}", self.text(word), &self.text(id)[..1]);
-                self.out.push(
-                    Diagnostic::error(
-                        &codes::GLUED_COMMENT,
-                        span.clone(),
-                        format!("comment glued to `{}`", self.text(word)),
-                    )
-                    .with_label(self.span(word), "pkdgrav reads this and the comment as one word")
-                    .with_help(format!(
-                        "pkdgrav starts a comment only at the beginning of a word, so it reads `{glued}…` as part of the word"
-                    ))
-                    .with_fix(
-                        Applicability::Safe,
-                        "insert a space before the comment",
-                        vec![Edit {
-                            span: span.start..span.start,
-                            replacement: " ".into(),
-                        }],
-                    ),
-                );
+            match t.kind {
+                TokenKind::Newline => {
+                    let id = TokenId(i as u32);
+                    self.line_length(line_start, t.start as usize);
+                    line_start = self.span(id).end;
+                }
+                TokenKind::GluedComment => self.glued_comment(TokenId(i as u32)),
+                _ => {}
             }
         }
+        self.line_length(line_start, text.len());
+    }
+
+    /// pkdgrav's line buffer holds `MAX_LINE_BYTES` before the newline.
+    fn line_length(&mut self, start: usize, end: usize) {
+        let len = end - start;
+        if len <= MAX_LINE_BYTES {
+            return;
+        }
+        let text = self.tree.text();
+        let mut cut = start + MAX_LINE_BYTES;
+        while !text.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        self.out.push(
+            Diagnostic::error(
+                &codes::LINE_TOO_LONG,
+                cut..end,
+                format!("line is {len} bytes long; pkdgrav reads at most {MAX_LINE_BYTES}"),
+            )
+            .with_help("put each statement on a line of its own"),
+        );
+    }
+
+    fn glued_comment(&mut self, id: TokenId) {
+        let span = self.span(id);
+        let word = TokenId(id.0 - 1);
+        let glued = format!("{}{}", self.text(word), &self.text(id)[..1]);
+        self.out.push(
+            Diagnostic::error(
+                &codes::GLUED_COMMENT,
+                span.clone(),
+                format!("comment glued to `{}`", self.text(word)),
+            )
+            .with_label(self.span(word), "pkdgrav reads this and the comment as one word")
+            .with_help(format!(
+                "pkdgrav starts a comment only at the beginning of a word, so it reads `{glued}…` as part of the word"
+            ))
+            .with_fix(
+                Applicability::Safe,
+                "insert a space before the comment",
+                vec![Edit {
+                    span: span.start..span.start,
+                    replacement: " ".into(),
+                }],
+            ),
+        );
     }
 
     fn items(&mut self) {
@@ -151,8 +162,7 @@ impl Validator<'_> {
                     self.statement(s);
                 }
                 Item::Stray(s) => {
-                    let values: Vec<TokenId> = tree.values(s).collect();
-                    self.extras(&values, None);
+                    self.extras(tree.values(s), None);
                 }
             }
         }
@@ -196,7 +206,7 @@ impl Validator<'_> {
             return;
         };
         let head = tree.head(stmt);
-        let values: Vec<TokenId> = tree.values(stmt).collect();
+        let values = tree.values(stmt);
         let shape = keyword.shape();
         let mut filled = 0;
         while filled < values.len() && filled < shape.arity() {
@@ -212,7 +222,7 @@ impl Validator<'_> {
             let next = values
                 .get(filled)
                 .copied()
-                .or_else(|| tree.sig.get(stmt.sig.end as usize).map(|&i| TokenId(i)));
+                .or_else(|| tree.sig.get(stmt.sig.end as usize).copied());
             self.missing(keyword, head, last, next, filled);
         }
         self.same_line(keyword, head, &values[..filled]);
@@ -228,7 +238,20 @@ impl Validator<'_> {
             && suggest::keyword_like(text).is_some()
     }
 
+    /// Whether `tok` is a good value for a slot of `shape`.
+    fn fits(&self, shape: ValueShape, tok: TokenId) -> bool {
+        match (shape, self.tree.kind(tok)) {
+            (ValueShape::Number | ValueShape::Vector, TokenKind::Number) => true,
+            (ValueShape::Integer, TokenKind::Number) => suggest::is_integer(self.text(tok)),
+            (ValueShape::TypeName, TokenKind::TypeName(_)) => true,
+            _ => false,
+        }
+    }
+
     fn slot(&mut self, keyword: Keyword, shape: ValueShape, tok: TokenId, index: usize) {
+        if self.fits(shape, tok) {
+            return;
+        }
         let kind = self.tree.kind(tok);
         let text = self.text(tok).to_string();
         let name = keyword.name();

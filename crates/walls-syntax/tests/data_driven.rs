@@ -106,7 +106,7 @@ fn tree_outline(tree: &SyntaxTree) -> String {
     let mut out = String::new();
     let line = |out: &mut String, indent: &str, tag: &str, s: &walls_syntax::Statement| {
         let words: Vec<&str> = std::iter::once(tree.head(s))
-            .chain(tree.values(s))
+            .chain(tree.values(s).iter().copied())
             .map(|t| tree.token_text(t))
             .collect();
         writeln!(out, "{indent}{tag} {}", words.join(" ")).unwrap();

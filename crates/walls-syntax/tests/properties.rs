@@ -32,10 +32,10 @@ fn check_invariants(text: &str) {
     for w in tokens.windows(2) {
         assert!(w[0].start < w[1].start, "empty or unordered token");
     }
-    let sig: Vec<_> = tree.significant().collect();
+    let sig = tree.significant().to_vec();
     let covered: Vec<_> = tree
         .statements()
-        .flat_map(|(s, _)| tree.statement_tokens(s))
+        .flat_map(|(s, _)| tree.statement_tokens(s).iter().copied())
         .collect();
     assert_eq!(
         covered, sig,

@@ -8,6 +8,7 @@ use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
+use std::sync::Arc;
 use walls_cli::{all_codes, find_code, input, lint_bytes};
 use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo};
@@ -64,7 +65,7 @@ enum Color {
 /// One checked file: the text the diagnostics refer to, or the I/O error.
 struct Checked {
     name: String,
-    outcome: Result<(String, Vec<Diagnostic>), String>,
+    outcome: Result<(Arc<str>, Vec<Diagnostic>), String>,
 }
 
 fn main() -> ExitCode {

@@ -14,6 +14,10 @@ use std::ops::Range;
 /// Writes every diagnostic of `file` as an ariadne report, with ANSI colours when
 /// `color` is set.
 pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<()> {
+    if file.diagnostics.is_empty() {
+        // Indexing the lines of a large clean file would cost more than linting it.
+        return Ok(());
+    }
     let source = Source::from(file.source);
     for d in file.diagnostics {
         report(file, d, color).write((file.path, &source), &mut *out)?;
