@@ -36,6 +36,6 @@ fuzz_target!(|data: &[u8]| {
     render::human(&mut sink, &files[0], false).unwrap();
     render::github(&mut sink, &files).unwrap();
     let _ = render::json_string(&files);
-    let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: "" };
+    let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: None };
     let _ = render::sarif(&files, &tool, &[]);
 });

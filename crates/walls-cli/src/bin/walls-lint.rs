@@ -159,7 +159,7 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
             let tool = ToolInfo {
                 name: "walls-lint",
                 version: env!("CARGO_PKG_VERSION"),
-                information_uri: "https://example.invalid/walls/docs/diagnostics.md",
+                information_uri: None,
             };
             let rules: Vec<_> = all_codes().collect();
             print_json(&render::sarif(reports, &tool, &rules))

@@ -44,8 +44,8 @@ pub struct ToolInfo<'a> {
     pub name: &'a str,
     /// The tool's version, such as `0.1.0`.
     pub version: &'a str,
-    /// Where its documentation lives.
-    pub information_uri: &'a str,
+    /// Absolute URI of its documentation, when it has a public home.
+    pub information_uri: Option<&'a str>,
 }
 
 /// How many diagnostics of each severity a set of reports holds.

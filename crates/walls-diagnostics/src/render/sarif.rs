@@ -32,18 +32,19 @@ pub fn sarif(files: &[FileReport], tool: &ToolInfo, rules: &[&'static Code]) -> 
         };
         results.extend(file.diagnostics.iter().map(|d| result(&ctx, d, rules)));
     }
+    let mut driver = json!({
+        "name": tool.name,
+        "version": tool.version,
+        "rules": rule_table,
+    });
+    if let Some(uri) = tool.information_uri {
+        driver["informationUri"] = json!(uri);
+    }
     json!({
         "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
         "version": "2.1.0",
         "runs": [{
-            "tool": {
-                "driver": {
-                    "name": tool.name,
-                    "version": tool.version,
-                    "informationUri": tool.information_uri,
-                    "rules": rule_table,
-                }
-            },
+            "tool": { "driver": driver },
             "columnKind": "unicodeCodePoints",
             "artifacts": artifacts,
             "results": results,
@@ -175,7 +176,7 @@ mod tests {
     const TOOL: ToolInfo = ToolInfo {
         name: "walls-lint",
         version: "0.1.0",
-        information_uri: "https://example.invalid/walls",
+        information_uri: Some("https://example.invalid/walls"),
     };
 
     fn log() -> Value {
