@@ -8,6 +8,7 @@ use crate::codes;
 use crate::lexer::TokenKind;
 use crate::suggest;
 use crate::tree::{Item, Statement, SyntaxTree, TokenId};
+use std::collections::HashMap;
 use std::ops::Range;
 use walls_diagnostics::{Applicability, Diagnostic, Edit};
 use walls_keywords::{Keyword, Role, ValueShape};
@@ -20,6 +21,7 @@ pub(crate) fn validate(tree: &SyntaxTree) -> Vec<Diagnostic> {
     let mut v = Validator {
         tree,
         out: Vec::new(),
+        suggestions: HashMap::new(),
     };
     v.file_rules();
     v.items();
@@ -30,11 +32,21 @@ pub(crate) fn validate(tree: &SyntaxTree) -> Vec<Diagnostic> {
 struct Validator<'t> {
     tree: &'t SyntaxTree,
     out: Vec<Diagnostic>,
+    /// "Did you mean" answers by word: generated files repeat the same mistake.
+    suggestions: HashMap<&'t str, Option<&'static str>>,
 }
 
-impl Validator<'_> {
-    fn text(&self, id: TokenId) -> &str {
+impl<'t> Validator<'t> {
+    fn text(&self, id: TokenId) -> &'t str {
         self.tree.token_text(id)
+    }
+
+    /// The keyword a word is probably a misspelling of, remembered per word.
+    fn keyword_like(&mut self, word: &'t str) -> Option<&'static str> {
+        *self
+            .suggestions
+            .entry(word)
+            .or_insert_with(|| suggest::keyword_like(word))
     }
 
     fn span(&self, id: TokenId) -> Range<usize> {
@@ -231,11 +243,11 @@ impl Validator<'_> {
 
     /// Whether a word in a value position is more likely a misspelled keyword than a
     /// malformed value (so the statement before it is short, not wrong).
-    fn misspelled_keyword(&self, tok: TokenId) -> bool {
+    fn misspelled_keyword(&mut self, tok: TokenId) -> bool {
         let text = self.text(tok);
         self.tree.kind(tok) == TokenKind::Word
             && !suggest::looks_numeric(text)
-            && suggest::keyword_like(text).is_some()
+            && self.keyword_like(text).is_some()
     }
 
     /// Whether `tok` is a good value for a slot of `shape`.
@@ -478,7 +490,7 @@ impl Validator<'_> {
                 span.clone(),
                 format!("unknown word `{text}`"),
             );
-            let suggestion = suggest::keyword_like(&text);
+            let suggestion = self.keyword_like(self.text(tok));
             d = match suggestion {
                 Some(k) => d.with_help(format!("did you mean `{k}`?")).with_fix(
                     Applicability::Unsafe,

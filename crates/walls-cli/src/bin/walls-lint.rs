@@ -132,7 +132,8 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
                     std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none()
                 }
             };
-            let mut err = std::io::stderr().lock();
+            // Standard error is unbuffered: ariadne writes a character at a time.
+            let mut err = std::io::BufWriter::new(std::io::stderr().lock());
             for r in reports {
                 render::human(&mut err, r, color)?;
             }
@@ -149,7 +150,7 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
                     plural(reports.len())
                 )?;
             }
-            Ok(())
+            err.flush()
         }
         Format::Json => {
             let mut out = std::io::stdout().lock();
@@ -164,7 +165,11 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
             let rules: Vec<_> = all_codes().collect();
             print_json(&render::sarif(reports, &tool, &rules))
         }
-        Format::Github => render::github(&mut std::io::stdout().lock(), reports),
+        Format::Github => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::github(&mut out, reports)?;
+            out.flush()
+        }
     }
 }
 
