@@ -35,7 +35,7 @@ fuzz_target!(|data: &[u8]| {
     let mut sink = Vec::new();
     render::human(&mut sink, &files[0], false).unwrap();
     render::github(&mut sink, &files).unwrap();
-    let _ = render::json_string(&files);
+    render::json(&mut sink, &files).unwrap();
     let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: None };
-    let _ = render::sarif(&files, &tool, &[]);
+    render::sarif(&mut sink, &files, &tool, &[]).unwrap();
 });

@@ -18,7 +18,8 @@ use walls_model::Mode;
 #[command(
     name = "walls-lint",
     version,
-    about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread."
+    about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error.\nHuman output goes to standard error; json, sarif and github to standard output."
 )]
 struct Args {
     /// Files to check; `-` reads standard input.
@@ -153,8 +154,9 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
             err.flush()
         }
         Format::Json => {
-            let mut out = std::io::stdout().lock();
-            writeln!(out, "{}", render::json_string(reports))
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::json(&mut out, reports)?;
+            out.flush()
         }
         Format::Sarif => {
             let tool = ToolInfo {
@@ -163,7 +165,9 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
                 information_uri: None,
             };
             let rules: Vec<_> = all_codes().collect();
-            print_json(&render::sarif(reports, &tool, &rules))
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::sarif(&mut out, reports, &tool, &rules)?;
+            out.flush()
         }
         Format::Github => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -171,12 +175,6 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
             out.flush()
         }
     }
-}
-
-fn print_json(value: &serde_json::Value) -> std::io::Result<()> {
-    let mut out = std::io::stdout().lock();
-    serde_json::to_writer_pretty(&mut out, value)?;
-    writeln!(out)
 }
 
 fn explain(query: &str) -> ExitCode {

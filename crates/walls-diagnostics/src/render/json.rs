@@ -9,10 +9,31 @@
 //! exclusive. `help` and `fix` are left out when absent; a fix is
 //! `{"message", "applicability": "safe"|"unsafe", "edits": [{"line", "column",
 //! "end_line", "end_column", "content"}]}`.
+//!
+//! The object is serialized from borrowing structs straight to the writer, one
+//! diagnostic at a time, with the keys in the order above.
 
 use super::{FileReport, Region, summarize};
 use crate::{Diagnostic, Fix, LineIndex};
-use serde::Serialize;
+use serde::{Serialize, Serializer};
+use std::io::{self, Write};
+
+/// Writes the `--format json` object of all `files`, pretty-printed with the keys in
+/// contract order and followed by a newline.
+///
+/// The JSON goes out in many small writes: pass a buffered writer.
+pub fn json(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
+    let summary = summarize(files);
+    let output = Output {
+        files: files.iter().map(|report| File { report }).collect(),
+        summary: Counts {
+            errors: summary.errors,
+            warnings: summary.warnings,
+        },
+    };
+    serde_json::to_writer_pretty(&mut *out, &output)?;
+    writeln!(out)
+}
 
 /// The whole output object.
 #[derive(Serialize)]
@@ -21,10 +42,50 @@ struct Output<'a> {
     summary: Counts,
 }
 
-#[derive(Serialize)]
+/// One file: `{"path", "diagnostics"}`, its items produced one by one while
+/// serializing.
 struct File<'a> {
+    report: &'a FileReport<'a>,
+}
+
+impl Serialize for File<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let report = self.report;
+        let index = LineIndex::new(report.source);
+        FileFields {
+            path: report.path,
+            diagnostics: Items {
+                index: &index,
+                report,
+            },
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The fields of a [`File`], once its line index is built.
+#[derive(Serialize)]
+struct FileFields<'a> {
     path: &'a str,
-    diagnostics: Vec<Item<'a>>,
+    diagnostics: Items<'a>,
+}
+
+/// A file's diagnostics as items, produced one by one while serializing.
+struct Items<'a> {
+    index: &'a LineIndex,
+    report: &'a FileReport<'a>,
+}
+
+impl Serialize for Items<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let source = self.report.source;
+        serializer.collect_seq(
+            self.report
+                .diagnostics
+                .iter()
+                .map(|d| item(self.index, source, d)),
+        )
+    }
 }
 
 #[derive(Serialize)]
@@ -64,29 +125,6 @@ struct Counts {
     warnings: usize,
 }
 
-fn output<'a>(files: &[FileReport<'a>]) -> Output<'a> {
-    let summary = summarize(files);
-    Output {
-        files: files.iter().map(file).collect(),
-        summary: Counts {
-            errors: summary.errors,
-            warnings: summary.warnings,
-        },
-    }
-}
-
-fn file<'a>(report: &FileReport<'a>) -> File<'a> {
-    let index = LineIndex::new(report.source);
-    File {
-        path: report.path,
-        diagnostics: report
-            .diagnostics
-            .iter()
-            .map(|d| item(&index, report.source, d))
-            .collect(),
-    }
-}
-
 fn item<'a>(index: &LineIndex, source: &str, d: &'a Diagnostic) -> Item<'a> {
     let r = Region::of(index, source, &d.span);
     Item {
@@ -123,21 +161,6 @@ fn fix<'a>(index: &LineIndex, source: &str, f: &'a Fix) -> JsonFix<'a> {
     }
 }
 
-/// The `--format json` object as a value.
-///
-/// Object keys of a [`serde_json::Value`] come out sorted unless serde_json's
-/// `preserve_order` feature is on; use [`json_string`] to print the keys in the
-/// order the contract lists them.
-pub fn json(files: &[FileReport]) -> serde_json::Value {
-    serde_json::to_value(output(files)).expect("plain structs always serialize")
-}
-
-/// The `--format json` object, pretty-printed with the keys in contract order
-/// (no trailing newline).
-pub fn json_string(files: &[FileReport]) -> String {
-    serde_json::to_string_pretty(&output(files)).expect("plain structs always serialize")
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -151,6 +174,26 @@ mod tests {
         }
     }
 
+    /// The bytes `json` writes for `files`.
+    fn write(files: &[FileReport]) -> Vec<u8> {
+        let mut out = Vec::new();
+        super::json(&mut out, files).unwrap();
+        out
+    }
+
+    /// What `json` writes, parsed back.
+    fn json(files: &[FileReport]) -> serde_json::Value {
+        serde_json::from_slice::<serde_json::Value>(&write(files)).unwrap()
+    }
+
+    /// What `json` writes, without the final newline (the snapshot predates it).
+    fn json_string(files: &[FileReport]) -> String {
+        let text = String::from_utf8(write(files)).unwrap();
+        text.strip_suffix('\n')
+            .expect("output ends with a newline")
+            .to_owned()
+    }
+
     #[test]
     fn snapshot() {
         let diags = diagnostics();
@@ -161,8 +204,16 @@ mod tests {
     fn value_matches_string() {
         let diags = diagnostics();
         let files = [report(&diags)];
-        let parsed: serde_json::Value = serde_json::from_str(&json_string(&files)).unwrap();
+        let text = json_string(&files);
+        assert!(!text.ends_with('\n'), "exactly one final newline");
+        let parsed: serde_json::Value = serde_json::from_str(&text).unwrap();
         assert_eq!(parsed, json(&files));
+
+        // No files at all: still the whole object.
+        assert_eq!(
+            String::from_utf8(write(&[])).unwrap(),
+            "{\n  \"files\": [],\n  \"summary\": {\n    \"errors\": 0,\n    \"warnings\": 0\n  }\n}\n"
+        );
     }
 
     #[test]

@@ -4,10 +4,13 @@
 //! diagnostics found in it) and produces one output format:
 //!
 //! * [`human`]: ariadne reports with source snippets, for terminals;
-//! * [`json`] / [`json_string`]: the `walls-lint --format json` object of the
-//!   command-line contract;
+//! * [`json`]: the `walls-lint --format json` object of the command-line contract;
 //! * [`sarif`]: a SARIF 2.1.0 log for code-scanning services;
 //! * [`github`]: GitHub Actions workflow commands (`::error file=…::…`).
+//!
+//! The machine formats ([`json`], [`sarif`], [`github`]) write straight to a
+//! [`std::io::Write`] as they go, without building the whole output in memory first;
+//! give them a buffered writer.
 //!
 //! Spans are byte ranges; renderers clamp them to the text (and to character
 //! boundaries) first, so a span past the end never panics. Lines and columns are
@@ -20,10 +23,11 @@ mod sarif;
 
 pub use github::github;
 pub use human::human;
-pub use json::{json, json_string};
+pub use json::json;
 pub use sarif::sarif;
 
 use crate::{Diagnostic, LineIndex, Severity};
+use std::borrow::Cow;
 use std::ops::Range;
 
 /// One file's diagnostics with its text.
@@ -121,11 +125,12 @@ impl Region {
     }
 }
 
-/// Diagnostic message followed by its help (if any) on a new line.
-pub(crate) fn message_with_help(d: &Diagnostic) -> String {
+/// Diagnostic message followed by its help (if any) on a new line; borrowed when
+/// there is no help.
+pub(crate) fn message_with_help(d: &Diagnostic) -> Cow<'_, str> {
     match &d.help {
-        Some(help) => format!("{}\n{help}", d.message),
-        None => d.message.clone(),
+        Some(help) => Cow::Owned(format!("{}\n{help}", d.message)),
+        None => Cow::Borrowed(&d.message),
     }
 }
 

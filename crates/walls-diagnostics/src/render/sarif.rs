@@ -5,51 +5,169 @@
 //! primary location, related locations for the secondary labels, and the fix as a
 //! SARIF `fix` with `artifactChanges`. Regions use 1-based lines and columns counted
 //! in Unicode code points (`columnKind: "unicodeCodePoints"`), `endColumn` exclusive.
+//!
+//! The log is serialized from borrowing structs straight to the writer: results and
+//! related locations are produced one at a time while writing, so memory stays flat
+//! however many diagnostics there are. Every object's fields are declared in sorted
+//! key order, the order the output has always had.
 
 use super::{FileReport, Region, ToolInfo, message_with_help};
-use crate::{Code, Diagnostic, LineIndex, Severity};
-use serde_json::{Value, json};
+use crate::{Code, Diagnostic, Label, LineIndex, Severity};
+use serde::Serialize;
+use serde::ser::{SerializeSeq, Serializer};
+use std::borrow::Cow;
+use std::io::{self, Write};
+use std::ops::Range;
 
-/// The SARIF 2.1.0 log of all `files`, with `rules` as the driver's rule table.
+/// Writes the SARIF 2.1.0 log of all `files`, with `rules` as the driver's rule
+/// table, as pretty-printed JSON followed by a newline.
 ///
 /// Results whose code is not among `rules` keep their `ruleId` but have no
-/// `ruleIndex`.
-pub fn sarif(files: &[FileReport], tool: &ToolInfo, rules: &[&'static Code]) -> Value {
-    let rule_table: Vec<Value> = rules.iter().map(|c| rule(c)).collect();
-    let artifacts: Vec<Value> = files
-        .iter()
-        .map(|f| json!({ "location": { "uri": path_to_uri(f.path) } }))
-        .collect();
-    let mut results = Vec::new();
-    for (artifact, file) in files.iter().enumerate() {
-        let index = LineIndex::new(file.source);
-        let uri = path_to_uri(file.path);
-        let ctx = Ctx {
-            index: &index,
-            source: file.source,
-            uri: &uri,
-            artifact,
-        };
-        results.extend(file.diagnostics.iter().map(|d| result(&ctx, d, rules)));
+/// `ruleIndex`. The JSON goes out in many small writes: pass a buffered writer.
+pub fn sarif(
+    out: &mut dyn Write,
+    files: &[FileReport],
+    tool: &ToolInfo,
+    rules: &[&'static Code],
+) -> io::Result<()> {
+    let uris: Vec<String> = files.iter().map(|f| path_to_uri(f.path)).collect();
+    let log = Log {
+        schema: "https://json.schemastore.org/sarif-2.1.0.json",
+        runs: [Run {
+            artifacts: uris
+                .iter()
+                .map(|uri| Artifact {
+                    location: ArtifactUri { uri },
+                })
+                .collect(),
+            column_kind: "unicodeCodePoints",
+            results: Results {
+                files,
+                uris: &uris,
+                rules,
+            },
+            tool: Tool {
+                driver: Driver {
+                    information_uri: tool.information_uri,
+                    name: tool.name,
+                    rules: rules.iter().map(|c| Rule::of(c)).collect(),
+                    version: tool.version,
+                },
+            },
+        }],
+        version: "2.1.0",
+    };
+    serde_json::to_writer_pretty(&mut *out, &log)?;
+    writeln!(out)
+}
+
+/// The whole log.
+#[derive(Serialize)]
+struct Log<'a> {
+    #[serde(rename = "$schema")]
+    schema: &'static str,
+    runs: [Run<'a>; 1],
+    version: &'static str,
+}
+
+/// The one run.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Run<'a> {
+    artifacts: Vec<Artifact<'a>>,
+    column_kind: &'static str,
+    results: Results<'a>,
+    tool: Tool<'a>,
+}
+
+/// One entry of `artifacts`, per file in order.
+#[derive(Serialize)]
+struct Artifact<'a> {
+    location: ArtifactUri<'a>,
+}
+
+/// An artifact location without an index (in the `artifacts` table itself).
+#[derive(Serialize)]
+struct ArtifactUri<'a> {
+    uri: &'a str,
+}
+
+#[derive(Serialize)]
+struct Tool<'a> {
+    driver: Driver<'a>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Driver<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    information_uri: Option<&'a str>,
+    name: &'a str,
+    rules: Vec<Rule>,
+    version: &'a str,
+}
+
+/// One entry of the driver's rule table.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Rule {
+    full_description: Text<'static>,
+    help: Text<'static>,
+    id: &'static str,
+    name: &'static str,
+    short_description: Text<'static>,
+}
+
+impl Rule {
+    fn of(code: &'static Code) -> Self {
+        Rule {
+            full_description: Text::from(code.explanation),
+            help: Text::from(code.explanation),
+            id: code.id,
+            name: code.name,
+            short_description: Text::from(code.summary),
+        }
     }
-    let mut driver = json!({
-        "name": tool.name,
-        "version": tool.version,
-        "rules": rule_table,
-    });
-    if let Some(uri) = tool.information_uri {
-        driver["informationUri"] = json!(uri);
+}
+
+/// A SARIF message or multiformat string: `{"text": …}`.
+#[derive(Serialize)]
+struct Text<'a> {
+    text: Cow<'a, str>,
+}
+
+impl<'a> From<&'a str> for Text<'a> {
+    fn from(text: &'a str) -> Self {
+        Text {
+            text: Cow::Borrowed(text),
+        }
     }
-    json!({
-        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
-        "version": "2.1.0",
-        "runs": [{
-            "tool": { "driver": driver },
-            "columnKind": "unicodeCodePoints",
-            "artifacts": artifacts,
-            "results": results,
-        }]
-    })
+}
+
+/// All results of all files, produced one by one while serializing.
+struct Results<'a> {
+    files: &'a [FileReport<'a>],
+    uris: &'a [String],
+    rules: &'a [&'static Code],
+}
+
+impl Serialize for Results<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut seq = serializer.serialize_seq(None)?;
+        for (artifact, (file, uri)) in self.files.iter().zip(self.uris).enumerate() {
+            let index = LineIndex::new(file.source);
+            let ctx = Ctx {
+                index: &index,
+                source: file.source,
+                uri,
+                artifact,
+            };
+            for d in file.diagnostics {
+                seq.serialize_element(&result(&ctx, d, self.rules))?;
+            }
+        }
+        seq.end()
+    }
 }
 
 /// What every location of one file needs.
@@ -60,89 +178,178 @@ struct Ctx<'a> {
     artifact: usize,
 }
 
-impl Ctx<'_> {
-    fn artifact_location(&self) -> Value {
-        json!({ "uri": self.uri, "index": self.artifact })
+impl<'a> Ctx<'a> {
+    fn artifact_location(&self) -> ArtifactLocation<'a> {
+        ArtifactLocation {
+            index: self.artifact,
+            uri: self.uri,
+        }
     }
 
-    fn region(&self, span: &std::ops::Range<usize>) -> Value {
+    fn region(&self, span: &Range<usize>) -> SarifRegion {
         let r = Region::of(self.index, self.source, span);
-        json!({
-            "startLine": r.line,
-            "startColumn": r.column,
-            "endLine": r.end_line,
-            "endColumn": r.end_column,
-        })
+        SarifRegion {
+            end_column: r.end_column,
+            end_line: r.end_line,
+            start_column: r.column,
+            start_line: r.line,
+        }
     }
 
-    fn physical_location(&self, span: &std::ops::Range<usize>) -> Value {
-        json!({
-            "artifactLocation": self.artifact_location(),
-            "region": self.region(span),
-        })
+    fn physical_location(&self, span: &Range<usize>) -> PhysicalLocation<'a> {
+        PhysicalLocation {
+            artifact_location: self.artifact_location(),
+            region: self.region(span),
+        }
     }
 }
 
-fn rule(code: &Code) -> Value {
-    json!({
-        "id": code.id,
-        "name": code.name,
-        "shortDescription": { "text": code.summary },
-        "fullDescription": { "text": code.explanation },
-        "help": { "text": code.explanation },
-    })
+/// A file reference in a location: its URI and index in `artifacts`.
+#[derive(Serialize)]
+struct ArtifactLocation<'a> {
+    index: usize,
+    uri: &'a str,
 }
 
-fn result(ctx: &Ctx, d: &Diagnostic, rules: &[&'static Code]) -> Value {
+/// 1-based lines and code-point columns, `endColumn` exclusive.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct SarifRegion {
+    end_column: usize,
+    end_line: usize,
+    start_column: usize,
+    start_line: usize,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct PhysicalLocation<'a> {
+    artifact_location: ArtifactLocation<'a>,
+    region: SarifRegion,
+}
+
+/// An entry of a result's `locations`.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Location<'a> {
+    physical_location: PhysicalLocation<'a>,
+}
+
+/// One result: a diagnostic.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct SarifResult<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fixes: Option<[SarifFix<'a>; 1]>,
+    level: &'static str,
+    locations: [Location<'a>; 1],
+    message: Text<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    related_locations: Option<RelatedLocations<'a>>,
+    rule_id: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rule_index: Option<usize>,
+}
+
+/// A diagnostic's secondary labels, produced one by one while serializing.
+struct RelatedLocations<'a> {
+    ctx: &'a Ctx<'a>,
+    labels: &'a [Label],
+}
+
+impl Serialize for RelatedLocations<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(
+            self.labels
+                .iter()
+                .enumerate()
+                .map(|(id, l)| RelatedLocation {
+                    id,
+                    message: Text::from(l.message.as_str()),
+                    physical_location: self.ctx.physical_location(&l.span),
+                }),
+        )
+    }
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct RelatedLocation<'a> {
+    id: usize,
+    message: Text<'a>,
+    physical_location: PhysicalLocation<'a>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct SarifFix<'a> {
+    artifact_changes: [ArtifactChange<'a>; 1],
+    description: Text<'a>,
+    properties: FixProperties,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct ArtifactChange<'a> {
+    artifact_location: ArtifactLocation<'a>,
+    replacements: Vec<Replacement<'a>>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Replacement<'a> {
+    deleted_region: SarifRegion,
+    inserted_content: Text<'a>,
+}
+
+/// The fix's property bag: whether it may be applied unasked.
+#[derive(Serialize)]
+struct FixProperties {
+    applicability: &'static str,
+}
+
+fn result<'a>(ctx: &'a Ctx<'a>, d: &'a Diagnostic, rules: &[&'static Code]) -> SarifResult<'a> {
     let level = match d.severity {
         Severity::Error => "error",
         Severity::Warning => "warning",
         Severity::Info => "note",
     };
-    let mut result = json!({
-        "ruleId": d.code.id,
-        "level": level,
-        "message": { "text": message_with_help(d) },
-        "locations": [{ "physicalLocation": ctx.physical_location(&d.span) }],
-    });
-    if let Some(i) = rules.iter().position(|c| c.id == d.code.id) {
-        result["ruleIndex"] = json!(i);
-    }
-    if !d.labels.is_empty() {
-        result["relatedLocations"] = d
-            .labels
-            .iter()
-            .enumerate()
-            .map(|(i, l)| {
-                json!({
-                    "id": i,
-                    "physicalLocation": ctx.physical_location(&l.span),
-                    "message": { "text": l.message },
-                })
-            })
-            .collect();
-    }
-    if let Some(fix) = &d.fix {
-        let replacements: Vec<Value> = fix
-            .edits
-            .iter()
-            .map(|e| {
-                json!({
-                    "deletedRegion": ctx.region(&e.span),
-                    "insertedContent": { "text": e.replacement },
-                })
-            })
-            .collect();
-        result["fixes"] = json!([{
-            "description": { "text": fix.message },
-            "artifactChanges": [{
-                "artifactLocation": ctx.artifact_location(),
-                "replacements": replacements,
+    let fixes = d.fix.as_ref().map(|fix| {
+        [SarifFix {
+            artifact_changes: [ArtifactChange {
+                artifact_location: ctx.artifact_location(),
+                replacements: fix
+                    .edits
+                    .iter()
+                    .map(|e| Replacement {
+                        deleted_region: ctx.region(&e.span),
+                        inserted_content: Text::from(e.replacement.as_str()),
+                    })
+                    .collect(),
             }],
-            "properties": { "applicability": fix.applicability.as_str() },
-        }]);
+            description: Text::from(fix.message.as_str()),
+            properties: FixProperties {
+                applicability: fix.applicability.as_str(),
+            },
+        }]
+    });
+    SarifResult {
+        fixes,
+        level,
+        locations: [Location {
+            physical_location: ctx.physical_location(&d.span),
+        }],
+        message: Text {
+            text: message_with_help(d),
+        },
+        related_locations: (!d.labels.is_empty()).then_some(RelatedLocations {
+            ctx,
+            labels: &d.labels,
+        }),
+        rule_id: d.code.id,
+        // A handful of rules: a scan is cheaper than building a map.
+        rule_index: rules.iter().position(|c| c.id == d.code.id),
     }
-    result
 }
 
 /// A file path as a URI reference: `\` becomes `/`, a Windows drive path becomes a
@@ -172,6 +379,7 @@ fn path_to_uri(path: &str) -> String {
 mod tests {
     use super::*;
     use crate::render::test_support::{MISSING_VALUE, SHAPE, SOURCE, UNKNOWN_WORD, diagnostics};
+    use serde_json::{Value, json};
 
     const TOOL: ToolInfo = ToolInfo {
         name: "walls-lint",
@@ -179,14 +387,86 @@ mod tests {
         information_uri: Some("https://example.invalid/walls"),
     };
 
-    fn log() -> Value {
+    /// The bytes `sarif` writes for `files`.
+    fn write(files: &[FileReport], tool: &ToolInfo, rules: &[&'static Code]) -> Vec<u8> {
+        let mut out = Vec::new();
+        sarif(&mut out, files, tool, rules).unwrap();
+        out
+    }
+
+    fn log_bytes() -> Vec<u8> {
         let diags = diagnostics();
         let file = FileReport {
             path: "dir/scene.walls",
             source: SOURCE,
             diagnostics: &diags,
         };
-        sarif(&[file], &TOOL, &[&UNKNOWN_WORD, &MISSING_VALUE])
+        write(&[file], &TOOL, &[&UNKNOWN_WORD, &MISSING_VALUE])
+    }
+
+    fn log() -> Value {
+        serde_json::from_slice::<Value>(&log_bytes()).unwrap()
+    }
+
+    /// The text a `serde_json::Value` of the same log pretty-prints to (keys sorted),
+    /// plus the final newline: the streamed output must be exactly that.
+    fn as_value_would_print(bytes: &[u8]) -> String {
+        let v: Value = serde_json::from_slice(bytes).unwrap();
+        serde_json::to_string_pretty(&v).unwrap() + "\n"
+    }
+
+    #[test]
+    fn same_text_as_a_value_tree() {
+        let bytes = log_bytes();
+        assert!(bytes.ends_with(b"}\n"));
+        assert_eq!(
+            String::from_utf8(bytes.clone()).unwrap(),
+            as_value_would_print(&bytes)
+        );
+
+        // No files, no rules, no documentation address: empty arrays, no informationUri.
+        let tool = ToolInfo {
+            information_uri: None,
+            ..TOOL
+        };
+        let bytes = write(&[], &tool, &[]);
+        assert_eq!(
+            String::from_utf8(bytes.clone()).unwrap(),
+            as_value_would_print(&bytes)
+        );
+        let v: Value = serde_json::from_slice(&bytes).unwrap();
+        let run = &v["runs"][0];
+        assert!(run["tool"]["driver"].get("informationUri").is_none());
+        assert_eq!(run["tool"]["driver"]["rules"], json!([]));
+        assert_eq!(run["artifacts"], json!([]));
+        assert_eq!(run["results"], json!([]));
+
+        // A file without diagnostics next to one with them: indices follow the files.
+        let diags = diagnostics();
+        let files = [
+            FileReport {
+                path: "clean.walls",
+                source: "",
+                diagnostics: &[],
+            },
+            FileReport {
+                path: "b.walls",
+                source: SOURCE,
+                diagnostics: &diags,
+            },
+        ];
+        let bytes = write(&files, &tool, &[&SHAPE]);
+        assert_eq!(
+            String::from_utf8(bytes.clone()).unwrap(),
+            as_value_would_print(&bytes)
+        );
+        let v: Value = serde_json::from_slice(&bytes).unwrap();
+        let run = &v["runs"][0];
+        assert_eq!(run["artifacts"][1]["location"]["uri"], "b.walls");
+        let loc = &run["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"];
+        assert_eq!(*loc, json!({"index": 1, "uri": "b.walls"}));
+        assert_eq!(run["results"][1]["ruleIndex"], 0);
+        assert!(run["results"][0].get("ruleIndex").is_none());
     }
 
     #[test]
