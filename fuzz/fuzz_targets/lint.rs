@@ -6,10 +6,25 @@
 
 use libfuzzer_sys::fuzz_target;
 use walls_diagnostics::render::{self, FileReport, ToolInfo};
-use walls_model::Mode;
+use walls_model::{Mode, Options};
 
 fuzz_target!(|data: &[u8]| {
-    let (text, diagnostics) = walls_cli::lint_bytes(data, Mode::Hsdem);
+    let options = Options { mode: Mode::Hsdem, min_radius: Some(0.01), dt: Some(1e-3), ..Options::default() };
+    let checked = walls_cli::check_bytes(data.to_vec(), &options);
+    let (text, diagnostics) = (checked.text, checked.diagnostics);
+    let mut scene = Vec::new();
+    walls_model::json::write_scene(&mut scene, &checked.scene, &text, Some(1.5)).unwrap();
+    let scene: serde_json::Value = serde_json::from_slice(&scene).expect("scene JSON parses");
+    // NaN and infinities would be written as null: only an infinite mass may be null.
+    for wall in scene["walls"].as_array().expect("walls") {
+        for (key, value) in wall.as_object().expect("wall object") {
+            let numbers: Vec<&serde_json::Value> = match value {
+                serde_json::Value::Array(a) => a.iter().collect(),
+                v => vec![v],
+            };
+            assert!(key == "mass" || numbers.iter().all(|v| !v.is_null()), "{key} is not finite");
+        }
+    }
     for d in &diagnostics {
         let spans = std::iter::once(&d.span).chain(d.labels.iter().map(|l| &l.span));
         for s in spans.chain(d.fix.iter().flat_map(|f| f.edits.iter().map(|e| &e.span))) {

@@ -3,9 +3,9 @@
 //! `cargo bench -p walls-cli --bench throughput`; the figures are in docs/performance.md.
 //! Lint runs in the default SSDEM mode, where the generated triangle hull is valid.
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{BatchSize, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
-use walls_model::Mode;
+use walls_model::Options;
 
 mod hull;
 use hull::triangles;
@@ -29,11 +29,15 @@ fn throughput(c: &mut Criterion) {
             })
         });
         group.bench_with_input(BenchmarkId::new("lint", text.len()), &text, |b, t| {
-            b.iter(|| {
-                black_box(walls_cli::lint_bytes(black_box(t.as_bytes()), Mode::Ssdem))
-                    .1
-                    .len()
-            })
+            b.iter_batched(
+                || t.as_bytes().to_vec(),
+                |bytes| {
+                    walls_cli::check_bytes(black_box(bytes), &Options::default())
+                        .diagnostics
+                        .len()
+                },
+                BatchSize::LargeInput,
+            )
         });
         group.finish();
     }

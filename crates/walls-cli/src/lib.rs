@@ -5,7 +5,7 @@ pub mod input;
 
 use std::sync::Arc;
 use walls_diagnostics::{Code, Diagnostic};
-use walls_model::Mode;
+use walls_model::Options;
 
 /// Every diagnostic code the tools can emit, in code order.
 pub fn all_codes() -> impl Iterator<Item = &'static Code> {
@@ -20,18 +20,37 @@ pub fn find_code(query: &str) -> Option<&'static Code> {
     all_codes().find(|c| c.id.eq_ignore_ascii_case(query) || c.name.eq_ignore_ascii_case(query))
 }
 
-/// Everything `walls-lint` checks in one file: decodes the bytes, parses, runs the
-/// model checks. Returns the text the diagnostics' spans refer to (the valid prefix, for
-/// bytes that are not UTF-8) and the diagnostics sorted by position.
-pub fn lint_bytes(bytes: &[u8], mode: Mode) -> (Arc<str>, Vec<Diagnostic>) {
+/// A file as the tools see it: its text, its scene, and every diagnostic.
+pub struct Checked {
+    /// The text the spans refer to (the valid prefix, for bytes that are not UTF-8).
+    pub text: Arc<str>,
+    /// The walls resolved from what parsed (empty for bytes that are not UTF-8).
+    pub scene: walls_model::Scene,
+    /// Syntax and model diagnostics, sorted by position.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Everything `walls-lint` checks in one file: decodes the bytes, parses, resolves the
+/// scene and runs the checker. Takes the bytes so that they are freed once the text is
+/// made from them, before the tree grows.
+pub fn check_bytes(bytes: Vec<u8>, options: &Options) -> Checked {
     match walls_syntax::decode(bytes) {
         Ok(text) => {
             let parsed = walls_syntax::parse(text);
+            let analysis = walls_model::analyze(&parsed.tree, options);
             let mut diagnostics = parsed.diagnostics;
-            diagnostics.extend(walls_model::check_mode(&parsed.tree, mode));
+            diagnostics.extend(analysis.diagnostics);
             diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
-            (parsed.tree.shared_text().clone(), diagnostics)
+            Checked {
+                text: parsed.tree.shared_text().clone(),
+                scene: analysis.scene,
+                diagnostics,
+            }
         }
-        Err((prefix, diagnostic)) => (prefix.into(), vec![*diagnostic]),
+        Err((prefix, diagnostic)) => Checked {
+            text: prefix.into(),
+            scene: walls_model::Scene::default(),
+            diagnostics: vec![*diagnostic],
+        },
     }
 }

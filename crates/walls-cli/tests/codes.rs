@@ -4,23 +4,33 @@
 
 use std::collections::HashSet;
 use std::path::Path;
-use walls_cli::{all_codes, find_code, lint_bytes};
-use walls_model::Mode;
+use walls_cli::{all_codes, check_bytes, find_code};
+use walls_model::{Mode, Options};
 
-/// The ```walls block after the line starting with `label`, and whether that line asks
-/// for `--mode hsdem`.
-fn example(explanation: &str, label: &str) -> Option<(String, Mode)> {
+/// The ```walls block after the line starting with `label`, with the options that line
+/// names (`--mode hsdem`, `--max-walls N`, `--min-radius R`, `--dt DT`).
+fn example(explanation: &str, label: &str) -> Option<(String, Options)> {
     let start = explanation.find(&format!("\n{label}"))?;
     let rest = &explanation[start + 1..];
     let line = rest.lines().next()?;
-    let mode = if line.contains("--mode hsdem") {
-        Mode::Hsdem
-    } else {
-        Mode::Ssdem
+    let flag = |name: &str| {
+        let at = line.find(name)? + name.len();
+        let value = line[at..].trim_start().split(['`', ' ', ')']).next()?;
+        value.parse::<f64>().ok()
+    };
+    let options = Options {
+        mode: if line.contains("--mode hsdem") {
+            Mode::Hsdem
+        } else {
+            Mode::Ssdem
+        },
+        max_walls: flag("--max-walls").map_or(20, |n| n as usize),
+        min_radius: flag("--min-radius"),
+        dt: flag("--dt"),
     };
     let after = rest.strip_prefix(line)?.trim_start_matches('\n');
     let body = after.strip_prefix("```walls\n")?;
-    Some((body[..body.find("```")?].to_string(), mode))
+    Some((body[..body.find("```")?].to_string(), options))
 }
 
 #[test]
@@ -29,10 +39,10 @@ fn examples_in_explanations_are_true() {
     for code in all_codes() {
         let bad = example(code.explanation, "Bad");
         // The good example is checked in the bad one's mode, so it shows the way out.
-        let mode = bad.as_ref().map_or(Mode::Ssdem, |b| b.1);
+        let mode = bad.as_ref().map_or_else(Options::default, |b| b.1.clone());
         let (good, _) = example(code.explanation, "Good")
             .unwrap_or_else(|| panic!("{} has no good example", code.id));
-        let (_, diagnostics) = lint_bytes(good.as_bytes(), mode);
+        let diagnostics = check_bytes(good.clone().into_bytes(), &mode).diagnostics;
         assert!(
             diagnostics.is_empty(),
             "{}: good example gives {diagnostics:#?}",
@@ -40,7 +50,7 @@ fn examples_in_explanations_are_true() {
         );
         match bad {
             Some((bad, mode)) => {
-                let (_, diagnostics) = lint_bytes(bad.as_bytes(), mode);
+                let diagnostics = check_bytes(bad.clone().into_bytes(), &mode).diagnostics;
                 assert!(
                     diagnostics.iter().any(|d| std::ptr::eq(d.code, code)),
                     "{}: bad example gives {diagnostics:#?}",

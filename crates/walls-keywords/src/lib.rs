@@ -55,7 +55,7 @@ pub enum Role {
 }
 
 macro_rules! keywords {
-    ($($variant:ident => $name:literal, $shape:ident, $role:ident, $ssdem:literal;)*) => {
+    ($($variant:ident => $name:literal, $shape:ident, $role:ident, $ssdem:literal, $dim:ident, $default:expr, $types:ident;)*) => {
         /// A keyword of the walls language.
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
         #[allow(missing_docs)]
@@ -86,61 +86,196 @@ macro_rules! keywords {
             pub const fn ssdem_only(self) -> bool {
                 match self { $(Keyword::$variant => $ssdem,)* }
             }
+
+            /// How the unit tokens in force scale the keyword's value.
+            pub const fn dimension(self) -> Dimension {
+                match self { $(Keyword::$variant => Dimension::$dim,)* }
+            }
+
+            /// The value before any `defaults` or wall sets it.
+            pub const fn builtin(self) -> Builtin {
+                use Builtin::*;
+                match self { $(Keyword::$variant => $default,)* }
+            }
+
+            /// The wall types whose geometry or motion reads the value.
+            pub const fn applies_to(self) -> Types {
+                match self { $(Keyword::$variant => Types::$types,)* }
+            }
         }
     };
 }
 
 keywords! {
-    Time => "time", Number, General, false;
-    LengthUnit => "lengthunit", Number, General, false;
-    MassUnit => "massunit", Number, General, false;
-    TimeUnit => "timeunit", Number, General, false;
-    Defaults => "defaults", None, Block, false;
-    Wall => "wall", None, Block, false;
-    Type => "type", TypeName, Property, false;
-    Origin => "origin", Vector, Property, false;
-    Orient => "orient", Vector, Property, false;
-    Vertex1 => "vertex1", Vector, Property, false;
-    Vertex2 => "vertex2", Vector, Property, false;
-    Velocity => "velocity", Vector, Property, false;
-    Step => "step", Number, Property, false;
-    OscAmpl => "osc-ampl", Number, Property, false;
-    OscFreq => "osc-freq", Number, Property, false;
-    OscPhase => "osc-phase", Number, Property, false;
-    OscVec => "osc-vec", Vector, Property, false;
-    Radius => "radius", Number, Property, false;
-    HoleRadius => "hole-radius", Number, Property, false;
-    Length => "length", Number, Property, false;
-    Taper => "taper", Number, Property, true;
-    OpenAngle => "open-angle", Number, Property, false;
-    AngSpeed => "ang-speed", Number, Property, false;
-    Epsn => "epsn", Number, Property, false;
-    Epst => "epst", Number, Property, false;
-    Color => "color", Integer, Property, false;
-    Transparency => "transparency", Number, Property, false;
-    KN => "k_n", Number, Property, true;
-    KT => "k_t", Number, Property, true;
-    MuS => "mu_s", Number, Property, true;
-    MuR => "mu_r", Number, Property, true;
-    MuT => "mu_t", Number, Property, true;
-    BetaS => "beta_s", Number, Property, true;
-    CohesionModel => "cohesion_model", Integer, Property, true;
-    CohesiveCoeff => "cohesive_coeff", Number, Property, true;
-    InnerOverlapBoundary => "inner_overlap_boundary", Number, Property, true;
-    KNOuter => "k_n_outer", Number, Property, true;
-    KTOuter => "k_t_outer", Number, Property, true;
-    KNInner => "k_n_inner", Number, Property, true;
-    KTInner => "k_t_inner", Number, Property, true;
-    Mass => "mass", Number, Property, true;
-    Cog => "cog", Vector, Property, true;
-    RotVec => "rot-vec", Vector, Property, true;
-    IxjVec => "ixj-vec", Vector, Property, true;
-    IyjVec => "iyj-vec", Vector, Property, true;
-    IzjVec => "izj-vec", Vector, Property, true;
-    PxjVec => "pxj-vec", Vector, Property, true;
-    PyjVec => "pyj-vec", Vector, Property, true;
-    PzjVec => "pzj-vec", Vector, Property, true;
-    Assembly => "assembly", Integer, Property, true;
+    Time => "time", Number, General, false, Time, Number(0.0), ALL;
+    LengthUnit => "lengthunit", Number, General, false, Dimensionless, Number(1.0), ALL;
+    MassUnit => "massunit", Number, General, false, Dimensionless, Number(1.0), ALL;
+    TimeUnit => "timeunit", Number, General, false, Dimensionless, Number(1.0), ALL;
+    Defaults => "defaults", None, Block, false, Dimensionless, None, ALL;
+    Wall => "wall", None, Block, false, Dimensionless, None, ALL;
+    Type => "type", TypeName, Property, false, Dimensionless, Type(WallType::Plane), ALL;
+    Origin => "origin", Vector, Property, false, Length, Vector([0.0, 0.0, 0.0]), ALL;
+    Orient => "orient", Vector, Property, false, Dimensionless, Vector([0.0, 0.0, 1.0]), NOT_POLYGON;
+    Vertex1 => "vertex1", Vector, Property, false, Length, Vector([1.0, 0.0, 0.0]), POLYGON;
+    Vertex2 => "vertex2", Vector, Property, false, Length, Vector([0.0, 1.0, 0.0]), POLYGON;
+    Velocity => "velocity", Vector, Property, false, Velocity, Vector([0.0, 0.0, 0.0]), ALL;
+    Step => "step", Number, Property, false, Time, Number(0.0), ALL;
+    OscAmpl => "osc-ampl", Number, Property, false, Length, Number(0.0), ALL;
+    OscFreq => "osc-freq", Number, Property, false, Frequency, Number(0.0), ALL;
+    OscPhase => "osc-phase", Number, Property, false, Dimensionless, Number(0.0), ALL;
+    OscVec => "osc-vec", Vector, Property, false, Dimensionless, Vector([0.0, 0.0, 1.0]), ALL;
+    Radius => "radius", Number, Property, false, Length, Number(1.0), ROUND;
+    HoleRadius => "hole-radius", Number, Property, false, Length, Number(0.0), DISK;
+    Length => "length", Number, Property, false, Length, Number(1.0), FINITE_CYLINDER;
+    Taper => "taper", Number, Property, true, Dimensionless, Number(0.0), FINITE_CYLINDER;
+    OpenAngle => "open-angle", Number, Property, false, Dimensionless, Number(0.0), SHELL;
+    AngSpeed => "ang-speed", Number, Property, false, Frequency, Number(0.0), NOT_POLYGON;
+    Epsn => "epsn", Number, Property, false, Dimensionless, Number(99.0), ALL;
+    Epst => "epst", Number, Property, false, Dimensionless, Number(99.0), ALL;
+    Color => "color", Integer, Property, false, Dimensionless, Integer(223), ALL;
+    Transparency => "transparency", Number, Property, false, Dimensionless, Number(0.0), ALL;
+    KN => "k_n", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    KT => "k_t", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    MuS => "mu_s", Number, Property, true, Dimensionless, Number(-1.0), ALL;
+    MuR => "mu_r", Number, Property, true, Dimensionless, Number(-1.0), ALL;
+    MuT => "mu_t", Number, Property, true, Dimensionless, Number(-1.0), ALL;
+    BetaS => "beta_s", Number, Property, true, Dimensionless, Number(-1.0), ALL;
+    CohesionModel => "cohesion_model", Integer, Property, true, Dimensionless, Integer(-1), ALL;
+    CohesiveCoeff => "cohesive_coeff", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    InnerOverlapBoundary => "inner_overlap_boundary", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    KNOuter => "k_n_outer", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    KTOuter => "k_t_outer", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    KNInner => "k_n_inner", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    KTInner => "k_t_inner", Number, Property, true, PkdgravUnits, Number(-1.0), ALL;
+    Mass => "mass", Number, Property, true, Mass, Number(0.0), ALL;
+    Cog => "cog", Vector, Property, true, Length, Vector([0.0, 0.0, 0.0]), ALL;
+    RotVec => "rot-vec", Vector, Property, true, Frequency, Vector([0.0, 0.0, 0.0]), ALL;
+    IxjVec => "ixj-vec", Vector, Property, true, Inertia, Vector([1.0, 0.0, 0.0]), ALL;
+    IyjVec => "iyj-vec", Vector, Property, true, Inertia, Vector([0.0, 1.0, 0.0]), ALL;
+    IzjVec => "izj-vec", Vector, Property, true, Inertia, Vector([0.0, 0.0, 1.0]), ALL;
+    PxjVec => "pxj-vec", Vector, Property, true, Dimensionless, Vector([1.0, 0.0, 0.0]), ALL;
+    PyjVec => "pyj-vec", Vector, Property, true, Dimensionless, Vector([0.0, 1.0, 0.0]), ALL;
+    PzjVec => "pzj-vec", Vector, Property, true, Dimensionless, Vector([0.0, 0.0, 1.0]), ALL;
+    Assembly => "assembly", Integer, Property, true, Dimensionless, Integer(-1), ALL;
+}
+
+/// How a value is scaled by the unit tokens in force when it is read (SPEC §1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Dimension {
+    /// × lengthunit.
+    Length,
+    /// × timeunit.
+    Time,
+    /// × massunit.
+    Mass,
+    /// × lengthunit / timeunit.
+    Velocity,
+    /// ÷ timeunit (angular speeds and frequencies, radians per time unit).
+    Frequency,
+    /// × massunit · lengthunit².
+    Inertia,
+    /// Not scaled: a pure number, a direction, a code or a fraction.
+    Dimensionless,
+    /// Not scaled although it has physical dimensions (spring constants, cohesion):
+    /// it must already be in pkdgrav units.
+    PkdgravUnits,
+}
+
+impl Dimension {
+    /// The factor a value read under these units is multiplied by.
+    pub fn factor(self, length: f64, mass: f64, time: f64) -> f64 {
+        match self {
+            Dimension::Length => length,
+            Dimension::Time => time,
+            Dimension::Mass => mass,
+            Dimension::Velocity => length / time,
+            Dimension::Frequency => 1.0 / time,
+            Dimension::Inertia => mass * length * length,
+            Dimension::Dimensionless | Dimension::PkdgravUnits => 1.0,
+        }
+    }
+
+    /// A short description for messages and hovers.
+    pub const fn describe(self) -> &'static str {
+        match self {
+            Dimension::Length => "length (× lengthunit)",
+            Dimension::Time => "time (× timeunit)",
+            Dimension::Mass => "mass (× massunit)",
+            Dimension::Velocity => "speed (× lengthunit / timeunit)",
+            Dimension::Frequency => "rate in radians per time (÷ timeunit)",
+            Dimension::Inertia => "moment of inertia (× massunit · lengthunit²)",
+            Dimension::Dimensionless => "not scaled",
+            Dimension::PkdgravUnits => "not scaled: give it in pkdgrav units",
+        }
+    }
+}
+
+/// A keyword's value before anything sets it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Builtin {
+    /// The keyword takes no value.
+    None,
+    /// A real.
+    Number(f64),
+    /// An integer.
+    Integer(i64),
+    /// A vector.
+    Vector([f64; 3]),
+    /// A wall type.
+    Type(WallType),
+}
+
+/// A set of wall types.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Types(u8);
+
+impl Types {
+    /// Every type.
+    pub const ALL: Types = Types(0b111_1111);
+    /// Triangles and rectangles, whose normal comes from their vertices.
+    pub const POLYGON: Types =
+        Types(Types::bit(WallType::Triangle) | Types::bit(WallType::Rectangle));
+    /// All but triangles and rectangles.
+    pub const NOT_POLYGON: Types = Types(Types::ALL.0 & !Types::POLYGON.0);
+    /// Types with a radius: disk, both cylinders, shell.
+    pub const ROUND: Types = Types(
+        Types::bit(WallType::Disk)
+            | Types::bit(WallType::CylinderInfinite)
+            | Types::bit(WallType::CylinderFinite)
+            | Types::bit(WallType::Shell),
+    );
+    /// Disks only.
+    pub const DISK: Types = Types(Types::bit(WallType::Disk));
+    /// Finite cylinders only.
+    pub const FINITE_CYLINDER: Types = Types(Types::bit(WallType::CylinderFinite));
+    /// Shells only.
+    pub const SHELL: Types = Types(Types::bit(WallType::Shell));
+    /// The types a reactive (finite-mass) wall may have.
+    pub const REACTIVE: Types = Types(
+        Types::bit(WallType::Triangle)
+            | Types::bit(WallType::Rectangle)
+            | Types::bit(WallType::CylinderFinite)
+            | Types::bit(WallType::Disk)
+            | Types::bit(WallType::Shell),
+    );
+
+    const fn bit(t: WallType) -> u8 {
+        1 << t as u8
+    }
+
+    /// Whether the set holds `t`.
+    pub const fn contains(self, t: WallType) -> bool {
+        self.0 & Types::bit(t) != 0
+    }
+
+    /// The names of the types in the set, canonical order.
+    pub fn names(self) -> Vec<&'static str> {
+        WallType::ALL
+            .iter()
+            .filter(|&&t| self.contains(t))
+            .map(|t| t.name())
+            .collect()
+    }
 }
 
 /// A wall geometry, the value of `type`.

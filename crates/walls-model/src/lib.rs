@@ -1,9 +1,77 @@
-//! The meaning of a walls file to pkdgrav, beyond its syntax.
+//! What a parsed walls file means to pkdgrav.
 //!
-//! For now: the contact model a file is meant for ([`Mode`]) and the checks of the
-//! features pkdgrav implements only in its soft-sphere code ([`check_mode`]).
+//! [`analyze`] reads the syntax tree front to back as pkdgrav does ([`resolve`]) into a
+//! [`Scene`] of walls with effective values in pkdgrav units, each remembering where it
+//! came from, and checks every rule of SPEC §1: single values as they are read, then
+//! blocks, walls and the file as a whole ([`codes`] documents each diagnostic).
+//! [`motion`] gives a wall's position at a time; [`json`] the scene as
+//! `walls-sim scene` prints it.
 
+mod check;
 pub mod codes;
-mod mode;
+mod fix;
+pub mod json;
+pub mod motion;
+mod resolve;
+pub mod scene;
 
-pub use mode::{Mode, check_mode};
+pub use check::{AXES_COS_TOLERANCE, RECTANGLE_COS_TOLERANCE, STEP_TRAVEL_FRACTION};
+pub use resolve::{AXIS_LENGTH_TOLERANCE, resolve};
+pub use scene::{Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall};
+use walls_diagnostics::Diagnostic;
+use walls_syntax::SyntaxTree;
+
+/// pkdgrav's two particle–wall contact models.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mode {
+    /// Soft-sphere DEM: springs and dashpots (the default).
+    #[default]
+    Ssdem,
+    /// Hard-sphere DEM: instantaneous collisions.
+    Hsdem,
+}
+
+/// What the checker is told about the run the file is for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// The contact model.
+    pub mode: Mode,
+    /// pkdgrav's MAX_NUM_WALLS (20 unless compiled otherwise).
+    pub max_walls: usize,
+    /// The smallest particle radius, for the SSDEM wall-speed check.
+    pub min_radius: Option<f64>,
+    /// The simulation timestep, the update step of walls with `step 0`.
+    pub dt: Option<f64>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            mode: Mode::Ssdem,
+            max_walls: 20,
+            min_radius: None,
+            dt: None,
+        }
+    }
+}
+
+/// The scene and every model diagnostic, sorted by position.
+#[derive(Debug, Clone)]
+pub struct Analysis {
+    /// The walls as pkdgrav builds them.
+    pub scene: Scene,
+    /// The findings, sorted by position.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Resolves and checks a parsed file. Works on files with syntax errors too: statements
+/// whose values did not parse are skipped.
+pub fn analyze(tree: &SyntaxTree, options: &Options) -> Analysis {
+    let (scene, mut diagnostics) = resolve(tree, options.mode);
+    diagnostics.extend(check::check(tree, &scene, options));
+    if options.mode == Mode::Hsdem {
+        diagnostics.extend(check::ignored_in_hsdem(tree));
+    }
+    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    Analysis { scene, diagnostics }
+}

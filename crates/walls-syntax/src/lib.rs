@@ -51,12 +51,14 @@ pub fn parse(text: impl Into<Arc<str>>) -> Parse {
     Parse { tree, diagnostics }
 }
 
-/// Reads bytes as UTF-8 text. On failure, returns the valid prefix and an error whose
-/// empty span sits at the first invalid byte (offsets are into the prefix).
-pub fn decode(bytes: &[u8]) -> Result<&str, (&str, Box<Diagnostic>)> {
-    std::str::from_utf8(bytes).map_err(|e| {
-        let at = e.valid_up_to();
-        let prefix = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+/// Reads bytes as UTF-8 text, without copying them. On failure, returns the valid
+/// prefix and an error whose empty span sits at the first invalid byte (offsets are
+/// into the prefix).
+pub fn decode(bytes: Vec<u8>) -> Result<String, (String, Box<Diagnostic>)> {
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.into_bytes();
+        let prefix = String::from_utf8_lossy(&bytes[..at]).into_owned();
         let diagnostic = Diagnostic::error(
             &codes::INVALID_UTF8,
             at..at,

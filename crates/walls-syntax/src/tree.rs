@@ -144,6 +144,27 @@ impl SyntaxTree {
         self.span(first).start..self.span(last).end
     }
 
+    /// The statement whose keyword starts at byte `offset`: the keyword and the values
+    /// up to the next keyword, as the parser groups them.
+    pub fn statement_at(&self, offset: usize) -> Option<Statement> {
+        let start = self
+            .sig
+            .partition_point(|&t| (self.tokens[t.0 as usize].start as usize) < offset);
+        let head = *self.sig.get(start)?;
+        if self.tokens[head.0 as usize].start as usize != offset
+            || !matches!(self.kind(head), TokenKind::Keyword(_))
+        {
+            return None;
+        }
+        let len = self.sig[start + 1..]
+            .iter()
+            .take_while(|&&t| !matches!(self.kind(t), TokenKind::Keyword(_)))
+            .count();
+        Some(Statement {
+            sig: start as u32..(start + 1 + len) as u32,
+        })
+    }
+
     /// Every statement of the file in source order, each with the block holding it.
     pub fn statements(&self) -> impl Iterator<Item = (&Statement, Option<&Block>)> + '_ {
         self.items.iter().flat_map(|item| {

@@ -5,14 +5,15 @@
 //! github) to standard output.
 
 use clap::{Parser, ValueEnum};
+
 use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use std::sync::Arc;
-use walls_cli::{all_codes, find_code, input, lint_bytes};
+use walls_cli::{all_codes, check_bytes, find_code, input};
 use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo};
-use walls_model::Mode;
+use walls_model::{Mode, Options};
 
 #[derive(Parser)]
 #[command(
@@ -31,6 +32,15 @@ struct Args {
     /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
     #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
     mode: ModeArg,
+    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls.
+    #[arg(long, value_name = "N", default_value_t = 20)]
+    max_walls: usize,
+    /// The smallest particle radius (pkdgrav units): enables the SSDEM wall-speed check.
+    #[arg(long, value_name = "R", value_parser = positive)]
+    min_radius: Option<f64>,
+    /// The simulation timestep (pkdgrav units): the update step of walls with `step 0`.
+    #[arg(long, value_name = "DT", value_parser = positive)]
+    dt: Option<f64>,
     /// Exit with status 1 on warnings too.
     #[arg(long)]
     deny_warnings: bool,
@@ -64,7 +74,7 @@ enum Color {
 }
 
 /// One checked file: the text the diagnostics refer to, or the I/O error.
-struct Checked {
+struct Linted {
     name: String,
     outcome: Result<(Arc<str>, Vec<Diagnostic>), String>,
 }
@@ -74,11 +84,16 @@ fn main() -> ExitCode {
     if let Some(query) = &args.explain {
         return explain(query);
     }
-    let mode = match args.mode {
-        ModeArg::Ssdem => Mode::Ssdem,
-        ModeArg::Hsdem => Mode::Hsdem,
+    let options = Options {
+        mode: match args.mode {
+            ModeArg::Ssdem => Mode::Ssdem,
+            ModeArg::Hsdem => Mode::Hsdem,
+        },
+        max_walls: args.max_walls,
+        min_radius: args.min_radius,
+        dt: args.dt,
     };
-    let checked: Vec<Checked> = args.files.par_iter().map(|p| check(p, mode)).collect();
+    let checked: Vec<Linted> = args.files.par_iter().map(|p| lint(p, &options)).collect();
 
     let mut io_failed = false;
     for c in &checked {
@@ -105,6 +120,8 @@ fn main() -> ExitCode {
         }
         return ExitCode::from(2);
     }
+    // The process ends here: freeing every tree and diagnostic first would only cost time.
+    std::mem::forget(checked);
     if io_failed {
         ExitCode::from(2)
     } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
@@ -114,12 +131,23 @@ fn main() -> ExitCode {
     }
 }
 
-fn check(path: &str, mode: Mode) -> Checked {
+fn lint(path: &str, options: &Options) -> Linted {
     let read = input::read(path);
-    let outcome = read.bytes.map(|bytes| lint_bytes(&bytes, mode));
-    Checked {
+    let outcome = read.bytes.map(|bytes| {
+        let checked = check_bytes(bytes, options);
+        (checked.text, checked.diagnostics)
+    });
+    Linted {
         name: read.name,
         outcome,
+    }
+}
+
+/// A strictly positive real, for `--min-radius` and `--dt`.
+fn positive(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
+        _ => Err(format!("`{s}` is not a positive number")),
     }
 }
 

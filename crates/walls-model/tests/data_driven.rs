@@ -1,0 +1,142 @@
+//! Tests as data. Under `tests/data/check`, each `.walls` file is checked (syntax and
+//! model) and its diagnostics, with exact spans, the text after its safe fixes and what
+//! that text still reports are compared with the `.snap` file beside it. Under
+//! `tests/data/scene`, each file's resolved scene JSON is. A first-line comment
+//! `# options: …` sets the checker's options (`--mode hsdem`, `--max-walls N`,
+//! `--min-radius R`, `--dt DT`); `# time: T` adds positions to the scene.
+//! Update with `INSTA_UPDATE=always cargo test -p walls-model` and review the diff.
+
+use std::fmt::Write as _;
+use std::path::Path;
+use walls_diagnostics::{Applicability, Diagnostic, LineIndex, apply_fixes};
+use walls_model::{Mode, Options, analyze};
+
+fn options(text: &str) -> Options {
+    let mut options = Options::default();
+    let Some(line) = text
+        .lines()
+        .next()
+        .and_then(|l| l.strip_prefix("# options:"))
+    else {
+        return options;
+    };
+    let words: Vec<&str> = line.split_whitespace().collect();
+    for pair in words.windows(2) {
+        match pair[0] {
+            "--mode" => {
+                options.mode = if pair[1] == "hsdem" {
+                    Mode::Hsdem
+                } else {
+                    Mode::Ssdem
+                }
+            }
+            "--max-walls" => options.max_walls = pair[1].parse().unwrap(),
+            "--min-radius" => options.min_radius = Some(pair[1].parse().unwrap()),
+            "--dt" => options.dt = Some(pair[1].parse().unwrap()),
+            _ => {}
+        }
+    }
+    options
+}
+
+fn lint(text: &str, options: &Options) -> Vec<Diagnostic> {
+    let parsed = walls_syntax::parse(text);
+    let mut all = parsed.diagnostics;
+    all.extend(analyze(&parsed.tree, options).diagnostics);
+    all.sort_by_key(|d| (d.span.start, d.span.end));
+    all
+}
+
+fn render(text: &str, diagnostics: &[Diagnostic]) -> String {
+    let index = LineIndex::new(text);
+    let at = |span: &std::ops::Range<usize>| {
+        let a = index.line_col(text, span.start);
+        let b = index.line_col(text, span.end);
+        format!(
+            "{}:{}-{}:{} {:?}",
+            a.line,
+            a.column,
+            b.line,
+            b.column,
+            &text[span.clone()]
+        )
+    };
+    let mut out = String::new();
+    for d in diagnostics {
+        writeln!(
+            out,
+            "{}[{}] {}: {}",
+            d.severity.as_str(),
+            d.code.id,
+            at(&d.span),
+            d.message
+        )
+        .unwrap();
+        for l in &d.labels {
+            writeln!(out, "  label {}: {}", at(&l.span), l.message).unwrap();
+        }
+        if let Some(h) = &d.help {
+            writeln!(out, "  help: {h}").unwrap();
+        }
+        if let Some(f) = &d.fix {
+            writeln!(out, "  fix ({}): {}", f.applicability.as_str(), f.message).unwrap();
+            for e in &f.edits {
+                writeln!(out, "    {} -> {:?}", at(&e.span), e.replacement).unwrap();
+            }
+        }
+    }
+    out
+}
+
+fn snapshot_beside(path: &Path, content: &str) {
+    let name = path.file_stem().unwrap().to_str().unwrap().to_string();
+    insta::with_settings!({
+        snapshot_path => path.parent().unwrap(),
+        prepend_module_to_snapshot => false,
+        omit_expression => true,
+        input_file => path,
+    }, {
+        insta::assert_snapshot!(name, content);
+    });
+}
+
+#[test]
+fn check_cases() {
+    insta::glob!("data/check/*.walls", |path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        let options = options(&text);
+        let diagnostics = lint(&text, &options);
+        assert!(
+            !diagnostics.is_empty(),
+            "{} reports nothing",
+            path.display()
+        );
+        let mut out = render(&text, &diagnostics);
+        let fixed = apply_fixes(&text, &diagnostics, Applicability::Safe);
+        if fixed != text {
+            writeln!(out, "--- after safe fixes ---\n{fixed}--- leaves ---").unwrap();
+            out.push_str(&render(&fixed, &lint(&fixed, &options)));
+        }
+        snapshot_beside(path, &out);
+    });
+}
+
+#[test]
+fn scene_cases() {
+    insta::glob!("data/scene/*.walls", |path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        let time = text
+            .lines()
+            .next()
+            .and_then(|l| l.strip_prefix("# time:"))
+            .map(|t| t.trim().parse::<f64>().unwrap());
+        let parsed = walls_syntax::parse(text.as_str());
+        let analysis = analyze(&parsed.tree, &Options::default());
+        let mut json = Vec::new();
+        walls_model::json::write_scene(&mut json, &analysis.scene, &text, time).unwrap();
+        let mut out = String::from_utf8(json).unwrap();
+        writeln!(out, "--- diagnostics ---").unwrap();
+        out.push_str(&render(&text, &analysis.diagnostics));
+        snapshot_beside(path, &out);
+    });
+}
