@@ -1,7 +1,7 @@
 //! End-to-end tests as data: each folder under the repository's `tests/lint/` holds a
 //! `cmd` file (the command line, words separated by spaces), the files it names, an
 //! optional `stdin`, and the snapshot `output.snap` of exit status, stdout and stderr.
-//! The real `walls-lint` binary runs in that folder. Update the snapshots with
+//! The real binary (`walls-lint` or `walls-sim`) runs in that folder. Update the snapshots with
 //! `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
 
 use std::io::Write;
@@ -27,6 +27,7 @@ fn lint_cases() {
         let mut words = cmd.split_whitespace();
         let bin = match words.next() {
             Some("walls-lint") => env!("CARGO_BIN_EXE_walls-lint"),
+            Some("walls-sim") => env!("CARGO_BIN_EXE_walls-sim"),
             other => panic!("{}: unknown command {other:?}", case.display()),
         };
         let mut child = Command::new(bin)

@@ -172,7 +172,7 @@ impl Checker<'_> {
             }
         }
         let mut groups: Vec<_> = hsdem_99.into_iter().collect();
-        groups.sort_by_key(|(_, walls)| walls[0].index);
+        groups.sort_by_key(|((k, _), walls)| (walls[0].index, *k));
         for ((k, source), walls) in groups {
             self.hsdem_particle_value(k, source.is_some(), &walls);
         }

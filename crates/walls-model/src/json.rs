@@ -5,7 +5,7 @@
 //! value in pkdgrav units (vectors as 3-element arrays). `orient` is the unit normal the
 //! wall uses: for triangles and rectangles, vertex1 × vertex2 normalised. `transparency`
 //! is a fraction; `mass` is null when infinite (0). With a time, each wall also has
-//! `position`, its origin displaced by its motion then.
+//! `position`, its origin displaced by its motion then (null if that overflows).
 
 use crate::motion;
 use crate::scene::{Scene, Value, Wall};
@@ -88,7 +88,8 @@ impl Serialize for WallJson<'_> {
             }
         }
         if let Some(t) = self.walls.time {
-            map.serialize_entry("position", motion::position(wall, t).as_slice())?;
+            let position = motion::position(wall, t);
+            map.serialize_entry("position", &position.as_ref().map(|p| p.as_slice()))?;
         }
         map.end()
     }
