@@ -37,17 +37,20 @@ struct Checker<'a> {
     tree: &'a SyntaxTree,
     options: &'a Options,
     out: Vec<Diagnostic>,
-    /// Code, span and message of what was reported, so a `defaults` line shared by many
-    /// walls is reported once.
-    seen: HashSet<(&'static str, usize, usize, String)>,
+    /// Code, span and (for codes about several keywords) keyword of what was reported,
+    /// so a `defaults` line shared by many walls is reported once.
+    seen: HashSet<(&'static str, usize, usize, Option<Keyword>)>,
 }
 
 impl Checker<'_> {
     fn push(&mut self, d: Diagnostic) {
-        if self
-            .seen
-            .insert((d.code.id, d.span.start, d.span.end, d.message.clone()))
-        {
+        self.push_about(d, None);
+    }
+
+    /// Reports `d` unless the same code was reported at the same span (about the same
+    /// keyword) already.
+    fn push_about(&mut self, d: Diagnostic, keyword: Option<Keyword>) {
+        if self.seen.insert((d.code.id, d.span.start, d.span.end, keyword)) {
             self.out.push(d);
         }
     }
@@ -574,7 +577,7 @@ impl Checker<'_> {
                 d = d.with_label(w.span.clone(), format!("wall {} too", w.index));
             }
         }
-        self.push(d);
+        self.push_about(d, Some(k));
     }
 
     fn file(&mut self, scene: &Scene) {
