@@ -50,7 +50,10 @@ impl Checker<'_> {
     /// Reports `d` unless the same code was reported at the same span (about the same
     /// keyword) already.
     fn push_about(&mut self, d: Diagnostic, keyword: Option<Keyword>) {
-        if self.seen.insert((d.code.id, d.span.start, d.span.end, keyword)) {
+        if self
+            .seen
+            .insert((d.code.id, d.span.start, d.span.end, keyword))
+        {
             self.out.push(d);
         }
     }
@@ -64,7 +67,7 @@ impl Checker<'_> {
             // The block's property statements by keyword, in source order within a
             // keyword (a stable sort); one buffer serves every block.
             keyed.clear();
-            keyed.extend(block.body.iter().filter_map(|s| {
+            keyed.extend(tree.body(block).iter().filter_map(|s| {
                 tree.keyword(s)
                     .filter(|k| k.role() == Role::Property)
                     .map(|k| (k, s))
@@ -347,12 +350,11 @@ impl Checker<'_> {
             );
             return;
         }
+        if a == 0.0 || wall.settings.get(Keyword::OscVec).is_some() {
+            return;
+        }
         let normal = wall.normal();
-        let osc_vec_set = !matches!(
-            wall.setting(Keyword::OscVec).map(|s| s.source),
-            Some(Source::Builtin)
-        );
-        if a == 0.0 || osc_vec_set || normal.norm() == 0.0 || normal.z.abs() > 1.0 - 1e-9 {
+        if normal.norm() == 0.0 || normal.z.abs() > 1.0 - 1e-9 {
             return;
         }
         let polygon = Types::POLYGON.contains(wall.wall_type());

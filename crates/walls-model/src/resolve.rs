@@ -37,9 +37,9 @@ pub fn resolve(tree: &SyntaxTree, mode: Mode) -> (Scene, Vec<Diagnostic>) {
         block_start: 0,
     };
     let walls = tree
-        .significant()
+        .items()
         .iter()
-        .filter(|&&t| tree.kind(t) == TokenKind::Keyword(Keyword::Wall))
+        .filter(|item| matches!(item, walls_syntax::Item::Block(b) if b.kind == walls_syntax::BlockKind::Wall))
         .count();
     r.scene.walls.reserve_exact(walls);
     for (stmt, _) in tree.statements() {

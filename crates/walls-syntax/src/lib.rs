@@ -40,12 +40,13 @@ pub fn parse(text: impl Into<Arc<str>>) -> Parse {
             sig_kinds.push(t.kind);
         }
     }
-    let items = parser::items(&sig_kinds);
+    let (items, bodies) = parser::items(&sig_kinds);
     let tree = SyntaxTree {
         text,
         tokens,
         sig,
         items,
+        bodies,
     };
     let diagnostics = validate::validate(&tree);
     Parse { tree, diagnostics }

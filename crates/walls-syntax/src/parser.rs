@@ -25,12 +25,47 @@ use walls_keywords::{Keyword, Role};
 type Input<'a> = &'a [TokenKind];
 type Extra = extra::Default;
 
-/// Parses the significant tokens into items.
-pub(crate) fn items(sig: &[TokenKind]) -> Vec<Item> {
-    file().parse(sig).into_output().unwrap_or_default()
+/// A top-level element as the grammar sees it: a block only counts its statements,
+/// which [`items`] then lays out flat (no allocation per block).
+enum Parsed {
+    Block(BlockKind, Statement, usize),
+    Item(Item),
 }
 
-fn file<'a>() -> impl Parser<'a, Input<'a>, Vec<Item>, Extra> {
+/// Parses the significant tokens into items, and the statements inside blocks.
+pub(crate) fn items(sig: &[TokenKind]) -> (Vec<Item>, Vec<Statement>) {
+    let parsed = file().parse(sig).into_output().unwrap_or_default();
+    let mut items = Vec::with_capacity(parsed.len());
+    let mut bodies = Vec::new();
+    for p in parsed {
+        match p {
+            Parsed::Item(item) => items.push(item),
+            Parsed::Block(kind, head, count) => {
+                // A statement is a keyword and the values up to the next keyword.
+                let first = bodies.len() as u32;
+                let mut at = head.sig.end as usize;
+                for _ in 0..count {
+                    let len = 1 + sig[at + 1..]
+                        .iter()
+                        .take_while(|k| !matches!(k, TokenKind::Keyword(_)))
+                        .count();
+                    bodies.push(Statement {
+                        sig: at as u32..(at + len) as u32,
+                    });
+                    at += len;
+                }
+                items.push(Item::Block(Block {
+                    kind,
+                    head,
+                    body: first..bodies.len() as u32,
+                }));
+            }
+        }
+    }
+    (items, bodies)
+}
+
+fn file<'a>() -> impl Parser<'a, Input<'a>, Vec<Parsed>, Extra> {
     let value = select! {
         TokenKind::Number => (),
         TokenKind::Word => (),
@@ -50,32 +85,20 @@ fn file<'a>() -> impl Parser<'a, Input<'a>, Vec<Item>, Extra> {
             .map_with(|_, e| statement_at(e.span()))
     };
     let wall = head(Keyword::Wall)
-        .then(property.repeated().collect::<Vec<_>>())
-        .map(|(head, body)| {
-            Item::Block(Block {
-                kind: BlockKind::Wall,
-                head,
-                body,
-            })
-        });
+        .then(property.repeated().count())
+        .map(|(head, count)| Parsed::Block(BlockKind::Wall, head, count));
     let defaults = head(Keyword::Defaults)
-        .then(choice((property, general)).repeated().collect::<Vec<_>>())
-        .map(|(head, body)| {
-            Item::Block(Block {
-                kind: BlockKind::Defaults,
-                head,
-                body,
-            })
-        });
+        .then(choice((property, general)).repeated().count())
+        .map(|(head, count)| Parsed::Block(BlockKind::Defaults, head, count));
     let stray = value
         .repeated()
         .at_least(1)
-        .map_with(|_, e| Item::Stray(statement_at(e.span())));
+        .map_with(|_, e| Parsed::Item(Item::Stray(statement_at(e.span()))));
     choice((
         wall,
         defaults,
-        general.map(Item::Statement),
-        property.map(Item::Statement),
+        general.map(|s| Parsed::Item(Item::Statement(s))),
+        property.map(|s| Parsed::Item(Item::Statement(s))),
         stray,
     ))
     .repeated()

@@ -40,9 +40,10 @@ pub struct Block {
     pub kind: BlockKind,
     /// The `wall`/`defaults` statement itself.
     pub head: Statement,
-    /// The statements inside, in order: properties, and for `defaults` also general
-    /// tokens (units and `time` close a wall block but not a defaults block).
-    pub body: Vec<Statement>,
+    /// The statements inside, as indices into the tree's statements (see
+    /// [`SyntaxTree::body`]): properties, and for `defaults` also general tokens (units
+    /// and `time` close a wall block but not a defaults block).
+    pub(crate) body: Range<u32>,
 }
 
 /// One top-level element of a file.
@@ -64,6 +65,8 @@ pub struct SyntaxTree {
     pub(crate) tokens: Vec<Token>,
     pub(crate) sig: Vec<TokenId>,
     pub(crate) items: Vec<Item>,
+    /// The statements inside blocks, in order; blocks refer to runs of them.
+    pub(crate) bodies: Vec<Statement>,
 }
 
 impl SyntaxTree {
@@ -80,6 +83,11 @@ impl SyntaxTree {
     /// Every token, trivia included, in order.
     pub fn tokens(&self) -> &[Token] {
         &self.tokens
+    }
+
+    /// The statements inside a block, in order.
+    pub fn body(&self, block: &Block) -> &[Statement] {
+        &self.bodies[block.body.start as usize..block.body.end as usize]
     }
 
     /// The top-level items, in order.
@@ -169,7 +177,7 @@ impl SyntaxTree {
     pub fn statements(&self) -> impl Iterator<Item = (&Statement, Option<&Block>)> + '_ {
         self.items.iter().flat_map(|item| {
             let (first, block, body): (&Statement, Option<&Block>, &[Statement]) = match item {
-                Item::Block(b) => (&b.head, Some(b), &b.body),
+                Item::Block(b) => (&b.head, Some(b), self.body(b)),
                 Item::Statement(s) | Item::Stray(s) => (s, None, &[]),
             };
             std::iter::once((first, block)).chain(body.iter().map(move |s| (s, block)))

@@ -158,7 +158,7 @@ impl<'t> Validator<'t> {
                 Item::Block(b) => {
                     closed_by = None;
                     self.statement(&b.head);
-                    for s in &b.body {
+                    for s in tree.body(b) {
                         self.statement(s);
                     }
                     if b.kind == crate::tree::BlockKind::Wall {

@@ -120,7 +120,7 @@ fn tree_outline(tree: &SyntaxTree) -> String {
                     &format!("{:?}", b.kind).to_lowercase(),
                     &b.head,
                 );
-                for s in &b.body {
+                for s in tree.body(b) {
                     line(&mut out, "  ", "-", s);
                 }
             }
