@@ -193,17 +193,19 @@ impl Checker<'_> {
         for (k, setting) in wall.settings.iter() {
             let Source::Set {
                 place: Place::Wall,
-                keyword,
+                values,
                 derived_from: None,
-                ..
             } = &setting.source
             else {
                 continue;
             };
-            let keyword = keyword.range();
             if k.applies_to().contains(t) {
                 continue;
             }
+            let Some(stmt) = tree.statement_containing(values.range().start) else {
+                continue;
+            };
+            let keyword = tree.span(tree.head(&stmt));
             let mut d = Diagnostic::warning(
                 &codes::IGNORED_BY_TYPE,
                 keyword.clone(),
@@ -218,13 +220,11 @@ impl Checker<'_> {
                 k.name(),
                 k.applies_to().names().join(", ")
             ));
-            if let Some(stmt) = self.tree.statement_at(keyword.start) {
-                d = d.with_fix(
-                    Applicability::Safe,
-                    format!("remove `{}`, which has no effect", k.name()),
-                    vec![self.delete(&stmt)],
-                );
-            }
+            d = d.with_fix(
+                Applicability::Safe,
+                format!("remove `{}`, which has no effect", k.name()),
+                vec![self.delete(&stmt)],
+            );
             self.push(d);
         }
     }
@@ -264,10 +264,18 @@ impl Checker<'_> {
                         ),
                     );
                     if let Some(Setting {
-                        source: Source::Set { values, scale, .. },
+                        source: Source::Set { values, .. },
                         ..
                     }) = wall.setting(Keyword::Vertex2)
                     {
+                        // Back to the units vertex2 was written in: its length as written.
+                        let written: f64 = self.tree.text()[values.range()]
+                            .split([' ', '\t', ',', '='])
+                            .filter_map(|w| w.parse::<f64>().ok())
+                            .map(|x| x * x)
+                            .sum::<f64>()
+                            .sqrt();
+                        let scale = v2.norm() / written;
                         let perpendicular: Vec3 =
                             (v2 - v1 * (v2.dot(&v1) / v1.norm_squared())) / scale;
                         d = d.with_fix(
@@ -596,14 +604,20 @@ impl Checker<'_> {
             .filter_map(|(_, s)| match &s.source {
                 Source::Set {
                     place: Place::Defaults,
-                    keyword,
+                    values,
                     ..
-                } => Some(keyword.range().start),
+                } => Some(values.range().start),
                 _ => None,
             })
             .collect();
         for (k, span) in &scene.defaults {
-            if used.contains(&span.start) {
+            let values = self.tree.statement_at(span.start).and_then(|s| {
+                self.tree
+                    .values(&s)
+                    .first()
+                    .map(|&v| self.tree.span(v).start)
+            });
+            if values.is_some_and(|v| used.contains(&v)) {
                 continue;
             }
             let mut d = Diagnostic::warning(

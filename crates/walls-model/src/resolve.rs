@@ -281,9 +281,7 @@ impl<'t> Resolver<'t> {
             value,
             source: Source::Set {
                 place,
-                keyword: keyword_span.clone().into(),
                 values: values.clone().into(),
-                scale,
                 derived_from: None,
             },
         };
@@ -309,9 +307,7 @@ impl<'t> Resolver<'t> {
                     value: Value::Number(v),
                     source: Source::Set {
                         place,
-                        keyword: keyword_span.clone().into(),
                         values: values.clone().into(),
-                        scale,
                         derived_from: Some(keyword),
                     },
                 },

@@ -80,28 +80,20 @@ pub enum Source {
     Set {
         /// In a `defaults` block or the wall's own block.
         place: Place,
-        /// The keyword token that set it (for `k_t` derived from `k_n`: the `k_n`).
-        keyword: Span,
-        /// Its values.
+        /// The values of the token that set it (for a `k_t` derived from `k_n`: the
+        /// `k_n`'s). Its keyword is the token before them.
         values: Span,
-        /// The unit factor the value was multiplied by.
-        scale: f64,
         /// Set as a consequence of another keyword: `k_t` is 2/7 of a `k_n` set later.
         derived_from: Option<Keyword>,
     },
 }
 
 impl Source {
-    /// The span to point at for this value: its values, if a token set it.
+    /// The span to point at for this value: the values of the token that set it.
     pub fn span(&self) -> Option<Range<usize>> {
         match self {
             Source::Builtin => None,
-            Source::Set {
-                values,
-                derived_from: None,
-                ..
-            } => Some(values.range()),
-            Source::Set { keyword, .. } => Some(keyword.range()),
+            Source::Set { values, .. } => Some(values.range()),
         }
     }
 }

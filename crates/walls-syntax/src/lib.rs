@@ -13,7 +13,7 @@ mod suggest;
 mod tree;
 mod validate;
 
-pub use lexer::{Token, TokenKind, lex};
+pub use lexer::{Token, TokenKind, Tokens, lex};
 use std::sync::Arc;
 pub use tree::{Block, BlockKind, Item, Statement, SyntaxTree, TokenId};
 pub use validate::MAX_LINE_BYTES;
@@ -34,10 +34,10 @@ pub fn parse(text: impl Into<Arc<str>>) -> Parse {
     let tokens = lex(&text);
     let mut sig = Vec::with_capacity(tokens.len() / 2);
     let mut sig_kinds = Vec::with_capacity(tokens.len() / 2);
-    for (i, t) in tokens.iter().enumerate() {
-        if !t.kind.is_trivia() {
+    for (i, &kind) in tokens.kinds().iter().enumerate() {
+        if !kind.is_trivia() {
             sig.push(TokenId(i as u32));
-            sig_kinds.push(t.kind);
+            sig_kinds.push(kind);
         }
     }
     let (items, bodies) = parser::items(&sig_kinds);

@@ -6,7 +6,7 @@
 //! trivia included, so [`SyntaxTree`]'s `Display` prints the input back byte for byte;
 //! statements refer to tokens by index instead of copying text.
 
-use crate::lexer::{Token, TokenKind};
+use crate::lexer::{TokenKind, Tokens};
 use std::fmt;
 use std::ops::Range;
 use std::sync::Arc;
@@ -62,7 +62,7 @@ pub enum Item {
 #[derive(Debug, Clone)]
 pub struct SyntaxTree {
     pub(crate) text: Arc<str>,
-    pub(crate) tokens: Vec<Token>,
+    pub(crate) tokens: Tokens,
     pub(crate) sig: Vec<TokenId>,
     pub(crate) items: Vec<Item>,
     /// The statements inside blocks, in order; blocks refer to runs of them.
@@ -81,7 +81,7 @@ impl SyntaxTree {
     }
 
     /// Every token, trivia included, in order.
-    pub fn tokens(&self) -> &[Token] {
+    pub fn tokens(&self) -> &Tokens {
         &self.tokens
     }
 
@@ -102,17 +102,15 @@ impl SyntaxTree {
 
     /// The kind of a token.
     pub fn kind(&self, id: TokenId) -> TokenKind {
-        self.tokens[id.0 as usize].kind
+        self.tokens.kinds()[id.0 as usize]
     }
 
     /// Byte range of a token.
     pub fn span(&self, id: TokenId) -> Range<usize> {
         let i = id.0 as usize;
-        let start = self.tokens[i].start as usize;
-        let end = self
-            .tokens
-            .get(i + 1)
-            .map_or(self.text.len(), |t| t.start as usize);
+        let starts = self.tokens.starts();
+        let start = starts[i] as usize;
+        let end = starts.get(i + 1).map_or(self.text.len(), |&s| s as usize);
         start..end
     }
 
@@ -157,9 +155,9 @@ impl SyntaxTree {
     pub fn statement_at(&self, offset: usize) -> Option<Statement> {
         let start = self
             .sig
-            .partition_point(|&t| (self.tokens[t.0 as usize].start as usize) < offset);
+            .partition_point(|&t| (self.tokens.starts()[t.0 as usize] as usize) < offset);
         let head = *self.sig.get(start)?;
-        if self.tokens[head.0 as usize].start as usize != offset
+        if self.tokens.starts()[head.0 as usize] as usize != offset
             || !matches!(self.kind(head), TokenKind::Keyword(_))
         {
             return None;
@@ -171,6 +169,18 @@ impl SyntaxTree {
         Some(Statement {
             sig: start as u32..(start + 1 + len) as u32,
         })
+    }
+
+    /// The keyword statement holding the token that starts at byte `offset` (its keyword
+    /// or one of its values).
+    pub fn statement_containing(&self, offset: usize) -> Option<Statement> {
+        let at = self
+            .sig
+            .partition_point(|&t| (self.tokens.starts()[t.0 as usize] as usize) <= offset);
+        let head = self.sig[..at]
+            .iter()
+            .rposition(|&t| matches!(self.kind(t), TokenKind::Keyword(_)))?;
+        self.statement_at(self.tokens.starts()[self.sig[head].0 as usize] as usize)
     }
 
     /// Every statement of the file in source order, each with the block holding it.
