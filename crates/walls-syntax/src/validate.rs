@@ -524,9 +524,7 @@ impl<'t> Validator<'t> {
 
     /// Whether a newline stands between two tokens.
     fn newline_between(&self, a: TokenId, b: TokenId) -> bool {
-        self.tree.tokens().kinds()[a.0 as usize + 1..b.0 as usize]
-            .iter()
-            .any(|&k| k == TokenKind::Newline)
+        self.tree.tokens().kinds()[a.0 as usize + 1..b.0 as usize].contains(&TokenKind::Newline)
     }
 }
 
