@@ -13,6 +13,10 @@ pub mod render;
 pub use line_index::{LineCol, LineIndex};
 use std::ops::Range;
 
+/// The most secondary places one diagnostic lists: a mistake repeated over thousands of
+/// walls stays one readable report (its message gives the full count).
+pub const MAX_LABELS: usize = 10;
+
 /// How serious a finding is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {

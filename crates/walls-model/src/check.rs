@@ -8,7 +8,7 @@ use crate::scene::{Place, Scene, Setting, Source, Vec3, Wall};
 use crate::{Mode, Options};
 use std::collections::{HashMap, HashSet};
 use std::ops::Range;
-use walls_diagnostics::{Applicability, Diagnostic, Edit};
+use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS};
 use walls_keywords::{Keyword, Role, Types, WallType};
 use walls_syntax::{Item, Statement, SyntaxTree, TokenKind};
 
@@ -566,7 +566,14 @@ impl Checker<'_> {
     /// One diagnostic per place that leaves the coefficient at 99 for the walls listed.
     fn hsdem_particle_value(&mut self, k: Keyword, from_token: bool, walls: &[&Wall]) {
         let first = walls[0];
-        let ids: Vec<String> = walls.iter().map(|w| w.index.to_string()).collect();
+        let mut ids: Vec<String> = walls
+            .iter()
+            .take(MAX_LABELS)
+            .map(|w| w.index.to_string())
+            .collect();
+        if walls.len() > MAX_LABELS {
+            ids.push("…".into());
+        }
         let which = match walls.len() {
             1 => format!("wall {} leaves", first.index),
             n => format!("{n} walls ({}) leave", ids.join(", ")),
@@ -583,7 +590,7 @@ impl Checker<'_> {
         )
         .with_help(format!("set `{}` for every wall, for instance once in a `defaults` block at the top", k.name()));
         if !from_token {
-            for w in &walls[1..] {
+            for w in walls[1..].iter().take(MAX_LABELS) {
                 d = d.with_label(w.span.clone(), format!("wall {} too", w.index));
             }
         }

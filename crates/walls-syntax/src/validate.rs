@@ -10,7 +10,7 @@ use crate::suggest;
 use crate::tree::{Item, Statement, SyntaxTree, TokenId};
 use std::collections::HashMap;
 use std::ops::Range;
-use walls_diagnostics::{Applicability, Diagnostic, Edit};
+use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS};
 use walls_keywords::{Keyword, Role, ValueShape};
 
 /// pkdgrav reads lines into a 4096-byte buffer: at most 4095 bytes before the newline.
@@ -194,7 +194,7 @@ impl<'t> Validator<'t> {
             ),
         };
         let mut d = Diagnostic::error(&codes::OUTSIDE_BLOCK, self.span(head), message);
-        for s in &run[1..] {
+        for s in run[1..].iter().take(MAX_LABELS) {
             let h = self.tree.head(s);
             d = d.with_label(self.span(h), "also outside a block");
         }
