@@ -1,7 +1,26 @@
 //! Shared pieces of the walls command-line tools: reading inputs (files or standard
-//! input) and the registry of diagnostic codes that `--explain` and SARIF read.
+//! input), the whole check of one file, the `--mode` argument, and the registry of
+//! diagnostic codes that `--explain` and SARIF read.
 
 pub mod input;
+
+/// `--mode`: the contact model a file is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ModeArg {
+    /// Soft-sphere DEM (the default).
+    Ssdem,
+    /// Hard-sphere DEM.
+    Hsdem,
+}
+
+impl From<ModeArg> for walls_model::Mode {
+    fn from(mode: ModeArg) -> Self {
+        match mode {
+            ModeArg::Ssdem => walls_model::Mode::Ssdem,
+            ModeArg::Hsdem => walls_model::Mode::Hsdem,
+        }
+    }
+}
 
 use std::sync::Arc;
 use walls_diagnostics::{Code, Diagnostic};

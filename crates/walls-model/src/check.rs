@@ -4,7 +4,7 @@
 
 use crate::codes;
 use crate::fix;
-use crate::scene::{Place, Scene, Setting, Source, Vec3, Wall};
+use crate::scene::{Place, Scene, Setting, Source, Vec3, Wall, direction};
 use crate::{Mode, Options};
 use std::collections::{HashMap, HashSet};
 use std::ops::Range;
@@ -236,11 +236,10 @@ impl Checker<'_> {
                 .or_else(|| self.span_of(wall, Keyword::Vertex1))
                 .unwrap_or_else(|| wall.span.clone())
         };
-        let nonzero = v1.norm() > 0.0 && v2.norm() > 0.0;
-        match t {
-            WallType::Triangle
-                if nonzero && v1.cross(&v2).norm() <= 1e-12 * v1.norm() * v2.norm() =>
-            {
+        // Directions, so that vectors too long for a double still compare.
+        let edges = direction(&v1).zip(direction(&v2));
+        match (t, edges) {
+            (WallType::Triangle, Some((d1, d2))) if d1.cross(&d2).norm() <= 1e-12 => {
                 self.push(Diagnostic::error(
                     &codes::DEGENERATE_TRIANGLE,
                     at_vertices(),
@@ -250,8 +249,8 @@ impl Checker<'_> {
                     ),
                 ));
             }
-            WallType::Rectangle if nonzero => {
-                let cos = v1.dot(&v2) / (v1.norm() * v2.norm());
+            (WallType::Rectangle, Some((d1, d2))) => {
+                let cos = d1.dot(&d2);
                 if cos.abs() > RECTANGLE_COS_TOLERANCE {
                     let mut d = Diagnostic::error(
                         &codes::RECTANGLE_NOT_RECTANGULAR,
@@ -268,29 +267,30 @@ impl Checker<'_> {
                         ..
                     }) = wall.setting(Keyword::Vertex2)
                     {
-                        // Back to the units vertex2 was written in: its length as written.
-                        let written: f64 = self.tree.text()[values.range()]
+                        // Back to the units vertex2 was written in: the ratio of its
+                        // largest component to that component as written.
+                        let written: Vec<f64> = self.tree.text()[values.range()]
                             .split([' ', '\t', ',', '='])
                             .filter_map(|w| w.parse::<f64>().ok())
-                            .map(|x| x * x)
-                            .sum::<f64>()
-                            .sqrt();
-                        let scale = v2.norm() / written;
-                        let perpendicular: Vec3 =
-                            (v2 - v1 * (v2.dot(&v1) / v1.norm_squared())) / scale;
-                        d = d.with_fix(
-                            Applicability::Unsafe,
-                            "make vertex2 perpendicular to vertex1 (keep its part across vertex1)",
-                            vec![Edit {
-                                span: values.range(),
-                                replacement: fix::vector(&perpendicular),
-                            }],
-                        );
+                            .collect();
+                        let written_max = written.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+                        let scale = v2.amax() / written_max;
+                        let perpendicular: Vec3 = (v2 - d1 * v2.dot(&d1)) / scale;
+                        if perpendicular.iter().all(|x| x.is_finite()) {
+                            d = d.with_fix(
+                                Applicability::Unsafe,
+                                "make vertex2 perpendicular to vertex1 (keep its part across vertex1)",
+                                vec![Edit {
+                                    span: values.range(),
+                                    replacement: fix::vector(&perpendicular),
+                                }],
+                            );
+                        }
                     }
                     self.push(d);
                 }
             }
-            WallType::Disk => {
+            (WallType::Disk, _) => {
                 let (r, h) = (
                     wall.number(Keyword::Radius),
                     wall.number(Keyword::HoleRadius),
@@ -310,7 +310,7 @@ impl Checker<'_> {
                     ));
                 }
             }
-            WallType::CylinderFinite => {
+            (WallType::CylinderFinite, _) => {
                 let taper = wall.number(Keyword::Taper);
                 if taper != 0.0 && wall.number(Keyword::Length) == 0.0 {
                     let span = self

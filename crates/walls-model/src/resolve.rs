@@ -368,7 +368,7 @@ impl<'t> Resolver<'t> {
         let written = &tree.text()[values.clone()];
         match (keyword, value) {
             (Keyword::Orient | Keyword::OscVec, Value::Vector(v)) => {
-                match v.try_normalize(0.0).filter(|n| n.iter().all(|x| x.is_finite())) {
+                match crate::scene::direction(&v) {
                     Some(n) => return Value::Vector(n),
                     None => self.zero_vector(keyword, span),
                 }
@@ -486,7 +486,7 @@ impl<'t> Resolver<'t> {
                     span.clone(),
                     format!("principal axis `{name}` has length {:.6}; it must be 1 ± {AXIS_LENGTH_TOLERANCE}", v.norm()),
                 );
-                if let Some(n) = v.try_normalize(0.0) {
+                if let Some(n) = crate::scene::direction(&v) {
                     d = d.with_fix(
                         Applicability::Unsafe,
                         "normalise the axis",

@@ -38,6 +38,17 @@ impl Value {
     }
 }
 
+/// The unit vector along `v`, or `None` for the zero vector. Scales by the largest
+/// component first, so vectors whose length overflows a double (1e308 1e308 0) still
+/// have a direction.
+pub fn direction(v: &Vec3) -> Option<Vec3> {
+    let largest = v.amax();
+    if largest == 0.0 || !largest.is_finite() {
+        return None;
+    }
+    (v / largest).try_normalize(0.0)
+}
+
 /// A byte range of the source, stored in 32 bits a side (a wall keeps several).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Span {
@@ -205,11 +216,13 @@ impl Wall {
     /// normalised (zero when degenerate).
     pub fn normal(&self) -> Vec3 {
         match self.wall_type() {
-            WallType::Triangle | WallType::Rectangle => self
-                .vector(Keyword::Vertex1)
-                .cross(&self.vector(Keyword::Vertex2))
-                .try_normalize(0.0)
-                .unwrap_or_else(Vec3::zeros),
+            WallType::Triangle | WallType::Rectangle => {
+                let edges = direction(&self.vector(Keyword::Vertex1))
+                    .zip(direction(&self.vector(Keyword::Vertex2)));
+                edges
+                    .and_then(|(a, b)| direction(&a.cross(&b)))
+                    .unwrap_or_else(Vec3::zeros)
+            }
             _ => self.vector(Keyword::Orient),
         }
     }

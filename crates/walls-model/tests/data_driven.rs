@@ -7,9 +7,9 @@
 //! Update with `INSTA_UPDATE=always cargo test -p walls-model` and review the diff.
 
 use std::fmt::Write as _;
-use std::path::Path;
-use walls_diagnostics::{Applicability, Diagnostic, LineIndex, apply_fixes};
+use walls_diagnostics::{Applicability, Diagnostic, apply_fixes};
 use walls_model::{Mode, Options, analyze};
+use walls_test_support::{render, snapshot_beside};
 
 fn options(text: &str) -> Options {
     let mut options = Options::default();
@@ -45,59 +45,6 @@ fn lint(text: &str, options: &Options) -> Vec<Diagnostic> {
     all.extend(analyze(&parsed.tree, options).diagnostics);
     all.sort_by_key(|d| (d.span.start, d.span.end));
     all
-}
-
-fn render(text: &str, diagnostics: &[Diagnostic]) -> String {
-    let index = LineIndex::new(text);
-    let at = |span: &std::ops::Range<usize>| {
-        let a = index.line_col(text, span.start);
-        let b = index.line_col(text, span.end);
-        format!(
-            "{}:{}-{}:{} {:?}",
-            a.line,
-            a.column,
-            b.line,
-            b.column,
-            &text[span.clone()]
-        )
-    };
-    let mut out = String::new();
-    for d in diagnostics {
-        writeln!(
-            out,
-            "{}[{}] {}: {}",
-            d.severity.as_str(),
-            d.code.id,
-            at(&d.span),
-            d.message
-        )
-        .unwrap();
-        for l in &d.labels {
-            writeln!(out, "  label {}: {}", at(&l.span), l.message).unwrap();
-        }
-        if let Some(h) = &d.help {
-            writeln!(out, "  help: {h}").unwrap();
-        }
-        if let Some(f) = &d.fix {
-            writeln!(out, "  fix ({}): {}", f.applicability.as_str(), f.message).unwrap();
-            for e in &f.edits {
-                writeln!(out, "    {} -> {:?}", at(&e.span), e.replacement).unwrap();
-            }
-        }
-    }
-    out
-}
-
-fn snapshot_beside(path: &Path, content: &str) {
-    let name = path.file_stem().unwrap().to_str().unwrap().to_string();
-    insta::with_settings!({
-        snapshot_path => path.parent().unwrap(),
-        prepend_module_to_snapshot => false,
-        omit_expression => true,
-        input_file => path,
-    }, {
-        insta::assert_snapshot!(name, content);
-    });
 }
 
 #[test]

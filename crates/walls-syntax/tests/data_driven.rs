@@ -5,9 +5,9 @@
 //! them with `git diff`.
 
 use std::fmt::Write as _;
-use std::path::Path;
-use walls_diagnostics::{Applicability, LineIndex, apply_fixes};
+use walls_diagnostics::{Applicability, apply_fixes};
 use walls_syntax::{Item, SyntaxTree, parse};
+use walls_test_support::{render, snapshot_beside};
 
 #[test]
 fn ok_files_parse_cleanly() {
@@ -46,59 +46,6 @@ fn err_files_report_every_mistake() {
         }
         snapshot_beside(path, &out);
     });
-}
-
-fn snapshot_beside(path: &Path, content: &str) {
-    let name = path.file_stem().unwrap().to_str().unwrap().to_string();
-    insta::with_settings!({
-        snapshot_path => path.parent().unwrap(),
-        prepend_module_to_snapshot => false,
-        omit_expression => true,
-        input_file => path,
-    }, {
-        insta::assert_snapshot!(name, content);
-    });
-}
-
-fn render(text: &str, diagnostics: &[walls_diagnostics::Diagnostic]) -> String {
-    let index = LineIndex::new(text);
-    let at = |span: &std::ops::Range<usize>| {
-        let a = index.line_col(text, span.start);
-        let b = index.line_col(text, span.end);
-        format!(
-            "{}:{}-{}:{} {:?}",
-            a.line,
-            a.column,
-            b.line,
-            b.column,
-            &text[span.clone()]
-        )
-    };
-    let mut out = String::new();
-    for d in diagnostics {
-        writeln!(
-            out,
-            "{}[{}] {}: {}",
-            d.severity.as_str(),
-            d.code.id,
-            at(&d.span),
-            d.message
-        )
-        .unwrap();
-        for l in &d.labels {
-            writeln!(out, "  label {}: {}", at(&l.span), l.message).unwrap();
-        }
-        if let Some(h) = &d.help {
-            writeln!(out, "  help: {h}").unwrap();
-        }
-        if let Some(f) = &d.fix {
-            writeln!(out, "  fix ({}): {}", f.applicability.as_str(), f.message).unwrap();
-            for e in &f.edits {
-                writeln!(out, "    {} -> {:?}", at(&e.span), e.replacement).unwrap();
-            }
-        }
-    }
-    out
 }
 
 /// One line per statement: its block role, keyword and values as written.

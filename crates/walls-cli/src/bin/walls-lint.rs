@@ -15,10 +15,10 @@ use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use std::sync::Arc;
-use walls_cli::{all_codes, check_bytes, find_code, input};
+use walls_cli::{ModeArg, all_codes, check_bytes, find_code, input};
 use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo};
-use walls_model::{Mode, Options};
+use walls_model::Options;
 
 #[derive(Parser)]
 #[command(
@@ -66,12 +66,6 @@ enum Format {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
-enum ModeArg {
-    Ssdem,
-    Hsdem,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
 enum Color {
     Auto,
     Always,
@@ -90,10 +84,7 @@ fn main() -> ExitCode {
         return explain(query);
     }
     let options = Options {
-        mode: match args.mode {
-            ModeArg::Ssdem => Mode::Ssdem,
-            ModeArg::Hsdem => Mode::Hsdem,
-        },
+        mode: args.mode.into(),
         max_walls: args.max_walls,
         min_radius: args.min_radius,
         dt: args.dt,

@@ -4,17 +4,17 @@
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
 //! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Parser, Subcommand};
 
 /// mimalloc, as in walls-lint: large files cost a few hundred page faults, not thousands.
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
-use walls_cli::{check_bytes, input};
+use walls_cli::{ModeArg, check_bytes, input};
 use walls_diagnostics::Severity;
 use walls_diagnostics::render::{self, FileReport};
-use walls_model::{Mode, Options};
+use walls_model::Options;
 
 #[derive(Parser)]
 #[command(
@@ -45,12 +45,6 @@ enum Command {
     },
 }
 
-#[derive(Clone, Copy, ValueEnum)]
-enum ModeArg {
-    Ssdem,
-    Hsdem,
-}
-
 fn main() -> ExitCode {
     let args = Args::parse();
     match args.command {
@@ -68,10 +62,7 @@ fn scene(path: &str, time: Option<f64>, mode: ModeArg) -> ExitCode {
         }
     };
     let options = Options {
-        mode: match mode {
-            ModeArg::Ssdem => Mode::Ssdem,
-            ModeArg::Hsdem => Mode::Hsdem,
-        },
+        mode: mode.into(),
         ..Options::default()
     };
     let checked = check_bytes(bytes, &options);
