@@ -1,0 +1,122 @@
+//! The formatter: the canonical layout of a walls file (docs/formatting.md).
+//!
+//! One statement per line; a block's `type` on its `wall` (or `defaults`) line and its
+//! other statements indented beneath; a blank line between multi-line walls; keywords in
+//! lower case; `,` and `=` written as single spaces; every value on its keyword's line
+//! (which repairs pkdgrav's same-line rule); at most one blank line in a row; a final
+//! newline. Comments are kept exactly: one on its own line stays on its own line, at the
+//! indentation of what follows; one after a statement stays after it. The text of every
+//! number is kept byte for byte, so formatting never changes what a file means.
+//!
+//! The formatter works on the lossless tree. A file whose statements do not parse (an
+//! unknown word, a short vector, …) is not formatted: [`format`] returns the blocking
+//! diagnostics instead, and nothing is lost. The syntax errors formatting repairs (values
+//! off their keyword's line, a missing final newline, a comment glued to a word) do not
+//! block it.
+
+mod config;
+mod layout;
+
+pub use config::{CONFIG_FILE, ConfigError, discover};
+use std::ops::Range;
+use walls_diagnostics::{Diagnostic, Edit};
+use walls_syntax::Parse;
+
+/// How the canonical layout may vary (`.walls-fmt.toml`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FormatOptions {
+    /// Spaces before a statement inside a block.
+    pub indent_width: usize,
+    /// Line up the comments after consecutive statements of a block.
+    pub align_trailing_comments: bool,
+    /// Keep (one of) the blank lines the author wrote between statements.
+    pub keep_blank_lines: bool,
+}
+
+impl Default for FormatOptions {
+    fn default() -> Self {
+        FormatOptions {
+            indent_width: 2,
+            align_trailing_comments: false,
+            keep_blank_lines: true,
+        }
+    }
+}
+
+/// Why a file was not formatted.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NotFormatted {
+    /// The syntax errors that leave the file's statements unclear.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// A formatted file, with where each top-level item came from and went to, so that a
+/// range of it can be formatted alone.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Formatted {
+    /// The canonical text.
+    pub text: String,
+    /// For each top-level item: its source byte range and its output byte range. The
+    /// ranges tile both texts.
+    pub(crate) pieces: Vec<(Range<usize>, Range<usize>)>,
+}
+
+/// The syntax codes whose statements the formatter cannot lay out safely.
+fn blocks_formatting(d: &Diagnostic) -> bool {
+    use walls_syntax::codes::*;
+    ![
+        &MISSING_FINAL_NEWLINE,
+        &LINE_TOO_LONG,
+        &GLUED_COMMENT,
+        &VALUE_ON_OTHER_LINE,
+    ]
+    .iter()
+    .any(|c| std::ptr::eq(*c, d.code))
+}
+
+/// Formats a parsed file, or says which syntax errors prevent it.
+pub fn format(parse: &Parse, options: &FormatOptions) -> Result<Formatted, NotFormatted> {
+    let blocking: Vec<Diagnostic> = parse
+        .diagnostics
+        .iter()
+        .filter(|d| blocks_formatting(d))
+        .cloned()
+        .collect();
+    if !blocking.is_empty() {
+        return Err(NotFormatted {
+            diagnostics: blocking,
+        });
+    }
+    Ok(layout::format(&parse.tree, options))
+}
+
+/// Formats a text (convenience for [`format`] on a fresh parse).
+pub fn format_text(text: &str, options: &FormatOptions) -> Result<String, NotFormatted> {
+    format(&walls_syntax::parse(text), options).map(|f| f.text)
+}
+
+/// The edit that formats only the top-level items (blocks, statements, with their
+/// comments) that `range` touches; `None` when they are already formatted.
+pub fn format_range(
+    parse: &Parse,
+    range: Range<usize>,
+    options: &FormatOptions,
+) -> Result<Option<Edit>, NotFormatted> {
+    let formatted = format(parse, options)?;
+    let touched: Vec<&(Range<usize>, Range<usize>)> = formatted
+        .pieces
+        .iter()
+        .filter(|(src, _)| src.start <= range.end && range.start <= src.end)
+        .collect();
+    let (Some(first), Some(last)) = (touched.first(), touched.last()) else {
+        return Ok(None);
+    };
+    let source = first.0.start..last.0.end;
+    let replacement = &formatted.text[first.1.start..last.1.end];
+    Ok(
+        (&parse.tree.text()[source.clone()] != replacement).then(|| Edit {
+            span: source,
+            replacement: replacement.to_string(),
+        }),
+    )
+}
