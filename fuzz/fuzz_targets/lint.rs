@@ -46,6 +46,9 @@ fuzz_target!(|data: &[u8]| {
         }
         assert_eq!(next, sig.len(), "tokens left outside statements");
     }
+    if let Ok(valid) = std::str::from_utf8(data) {
+        check_formatting(valid);
+    }
     let file = FileReport { path: "fuzz.walls", source: &text, diagnostics: &diagnostics };
     let files = [file];
     let mut sink = Vec::new();
@@ -55,3 +58,29 @@ fuzz_target!(|data: &[u8]| {
     let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: None };
     render::sarif(&mut sink, &files, &tool, &[]).unwrap();
 });
+
+/// Formatting either declines (syntax errors) or gives a stable text with the same
+/// comments and numbers, in order, that pkdgrav reads without a syntax error.
+fn check_formatting(text: &str) {
+    let options = walls_format::FormatOptions::default();
+    let Ok(once) = walls_format::format_text(text, &options) else {
+        return;
+    };
+    let twice = walls_format::format_text(&once, &options).expect("formatted text formats");
+    assert_eq!(twice, once, "formatting is not idempotent");
+    let texts = |t: &str, keep: fn(walls_syntax::TokenKind) -> bool| -> Vec<String> {
+        let tokens = walls_syntax::lex(t);
+        (0..tokens.len())
+            .filter(|&i| keep(tokens.kinds()[i]))
+            .map(|i| {
+                let end = tokens.starts().get(i + 1).map_or(t.len(), |&s| s as usize);
+                t[tokens.starts()[i] as usize..end].to_string()
+            })
+            .collect()
+    };
+    use walls_syntax::TokenKind as K;
+    let comment = |k| matches!(k, K::Comment | K::GluedComment);
+    assert_eq!(texts(&once, comment), texts(text, comment), "comments changed");
+    assert_eq!(texts(&once, |k| k == K::Number), texts(text, |k| k == K::Number), "numbers changed");
+    assert!(walls_syntax::parse(once.as_str()).diagnostics.is_empty(), "formatted text has syntax errors");
+}

@@ -1,4 +1,4 @@
-//! Throughput of lexing, parsing and linting generated walls files of 1k, 10k and 100k
+//! Throughput of lexing, parsing, linting and formatting generated walls files of 1k, 10k and 100k
 //! triangle walls (the 100k file is about 11 MB, a large spacecraft hull). Run with
 //! `cargo bench -p walls-cli --bench throughput`; the figures are in docs/performance.md.
 //! Lint runs in the default SSDEM mode, where the generated triangle hull is valid.
@@ -38,6 +38,15 @@ fn throughput(c: &mut Criterion) {
                 },
                 BatchSize::LargeInput,
             )
+        });
+        group.bench_with_input(BenchmarkId::new("format", text.len()), &text, |b, t| {
+            let options = walls_format::FormatOptions::default();
+            b.iter(|| {
+                let parsed = walls_syntax::parse(black_box(t.as_str()));
+                walls_format::format(&parsed, &options)
+                    .map(|f| f.text.len())
+                    .unwrap_or_default()
+            })
         });
         group.finish();
     }

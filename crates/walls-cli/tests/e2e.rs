@@ -1,7 +1,8 @@
-//! End-to-end tests as data: each folder under the repository's `tests/lint/` holds a
-//! `cmd` file (the command line, words separated by spaces), the files it names, an
-//! optional `stdin`, and the snapshot `output.snap` of exit status, stdout and stderr.
-//! The real binary (`walls-lint` or `walls-sim`) runs in that folder. Update the snapshots with
+//! End-to-end tests as data: each folder under the repository's `tests/lint/` and
+//! `tests/fmt/` holds a `cmd` file (the command line, words separated by spaces), the
+//! files it names, an optional `stdin`, and the snapshot `output.snap` of exit status,
+//! stdout, stderr and every file the command changed. The real binary (`walls-lint`,
+//! `walls-fmt` or `walls-sim`) runs in a copy of that folder. Update the snapshots with
 //! `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
 
 use std::io::Write;
@@ -10,16 +11,17 @@ use std::process::{Command, Stdio};
 
 #[test]
 fn lint_cases() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/lint");
-    let mut cases: Vec<_> = std::fs::read_dir(&root)
-        .unwrap()
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests");
+    let mut cases: Vec<_> = ["lint", "fmt"]
+        .iter()
+        .flat_map(|group| std::fs::read_dir(root.join(group)).unwrap())
         .map(|e| e.unwrap().path())
         .filter(|p| p.join("cmd").exists())
         .collect();
     cases.sort();
     assert!(
-        cases.len() >= 10,
-        "expected the lint cases under {}",
+        cases.len() >= 30,
+        "expected the cases under {}",
         root.display()
     );
     for case in cases {
@@ -27,12 +29,26 @@ fn lint_cases() {
         let mut words = cmd.split_whitespace();
         let bin = match words.next() {
             Some("walls-lint") => env!("CARGO_BIN_EXE_walls-lint"),
+            Some("walls-fmt") => env!("CARGO_BIN_EXE_walls-fmt"),
             Some("walls-sim") => env!("CARGO_BIN_EXE_walls-sim"),
             other => panic!("{}: unknown command {other:?}", case.display()),
         };
+        // Run in a copy, so that commands that write files leave the case as it is.
+        let work = tempfile::tempdir().unwrap();
+        let mut originals = Vec::new();
+        for entry in std::fs::read_dir(&case).unwrap() {
+            let from = entry.unwrap().path();
+            let name = from.file_name().unwrap().to_owned();
+            if name == "output.snap" || name == "cmd" {
+                continue;
+            }
+            std::fs::copy(&from, work.path().join(&name)).unwrap();
+            originals.push((name, std::fs::read(&from).unwrap()));
+        }
+        originals.sort();
         let mut child = Command::new(bin)
             .args(words)
-            .current_dir(&case)
+            .current_dir(work.path())
             .env_remove("NO_COLOR")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -42,13 +58,23 @@ fn lint_cases() {
         let stdin = std::fs::read(case.join("stdin")).unwrap_or_default();
         child.stdin.take().unwrap().write_all(&stdin).unwrap();
         let out = child.wait_with_output().unwrap();
-        let shown = format!(
+        let mut shown = format!(
             "$ {}exit: {}\n--- stdout ---\n{}--- stderr ---\n{}",
             cmd,
             out.status.code().unwrap(),
             String::from_utf8_lossy(&out.stdout),
             String::from_utf8_lossy(&out.stderr)
         );
+        for (name, before) in &originals {
+            let now = std::fs::read(work.path().join(name)).unwrap();
+            if &now != before {
+                shown.push_str(&format!(
+                    "--- {} now ---\n{}",
+                    name.to_string_lossy(),
+                    String::from_utf8_lossy(&now)
+                ));
+            }
+        }
         insta::with_settings!({
             snapshot_path => &case,
             prepend_module_to_snapshot => false,
