@@ -1,6 +1,6 @@
 //! `walls-fmt` writes in place by renaming a complete temporary file over the original
 //! (a new inode), keeps the original's permissions, leaves no temporary file behind, and
-//! does not touch files that are already formatted.
+//! does not touch files that are already formatted; a symbolic link is followed.
 
 #![cfg(unix)]
 
@@ -46,4 +46,28 @@ fn rewrites_by_rename_keeping_permissions() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert_eq!(left.len(), 2, "no temporary file left: {left:?}");
+}
+
+#[test]
+fn a_symbolic_link_stays_a_link() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("real.walls");
+    let link = dir.path().join("link.walls");
+    std::fs::write(&target, "WALL type plane\n").unwrap();
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let status = Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
+        .arg(&link)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(
+        std::fs::read_to_string(&target).unwrap(),
+        "wall type plane\n"
+    );
 }
