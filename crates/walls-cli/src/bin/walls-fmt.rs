@@ -239,7 +239,9 @@ fn override_with(mut options: FormatOptions, args: &Args) -> FormatOptions {
 
 /// Replaces `path` with `text`: a temporary file in the same folder, with the original's
 /// permissions, renamed over it, so that the original survives any failure before that.
+/// A symbolic link is followed: its target is rewritten and the link stays.
 fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
+    let path = &std::fs::canonicalize(path)?;
     let dir = path
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
