@@ -52,7 +52,7 @@ struct Args {
     /// When to colour human output.
     #[arg(long, value_enum, default_value_t = Color::Auto)]
     color: Color,
-    /// Explain a diagnostic code (`S101` or `unknown-word`) and exit.
+    /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
     #[arg(long, value_name = "CODE", conflicts_with = "files")]
     explain: Option<String>,
 }
@@ -202,23 +202,23 @@ fn write_reports(args: &Args, reports: &[FileReport]) -> std::io::Result<()> {
 }
 
 fn explain(query: &str) -> ExitCode {
-    match find_code(query) {
-        Some(code) => {
-            println!(
-                "{} ({}): {}\n\n{}",
-                code.id, code.name, code.summary, code.explanation
-            );
-            ExitCode::SUCCESS
-        }
-        None => {
-            let known: Vec<&str> = all_codes().map(|c| c.id).collect();
-            eprintln!(
-                "walls-lint: error: no diagnostic code `{query}`; the codes are {}",
-                known.join(", ")
-            );
-            ExitCode::from(2)
-        }
+    if let Some(code) = find_code(query) {
+        println!(
+            "{} ({}): {}\n\n{}",
+            code.id, code.name, code.summary, code.explanation
+        );
+        return ExitCode::SUCCESS;
     }
+    if let Some(keyword) = walls_keywords::keyword(query) {
+        print!("{}", keyword.markdown());
+        return ExitCode::SUCCESS;
+    }
+    let known: Vec<&str> = all_codes().map(|c| c.id).collect();
+    eprintln!(
+        "walls-lint: error: `{query}` is neither a diagnostic code ({}) nor a keyword of the language",
+        known.join(", ")
+    );
+    ExitCode::from(2)
 }
 
 fn plural(n: usize) -> &'static str {
