@@ -60,7 +60,8 @@ fuzz_target!(|data: &[u8]| {
 });
 
 /// Formatting either declines (syntax errors) or gives a stable text with the same
-/// comments and numbers, in order, that pkdgrav reads without a syntax error.
+/// comments and numbers, in order, that pkdgrav reads without a syntax error (but a
+/// line too long, when a comment is).
 fn check_formatting(text: &str) {
     let options = walls_format::FormatOptions::default();
     let Ok(once) = walls_format::format_text(text, &options) else {
@@ -82,5 +83,10 @@ fn check_formatting(text: &str) {
     let comment = |k| matches!(k, K::Comment | K::GluedComment);
     assert_eq!(texts(&once, comment), texts(text, comment), "comments changed");
     assert_eq!(texts(&once, |k| k == K::Number), texts(text, |k| k == K::Number), "numbers changed");
-    assert!(walls_syntax::parse(once.as_str()).diagnostics.is_empty(), "formatted text has syntax errors");
+    // Only a line too long for pkdgrav may remain (a long comment cannot be shortened).
+    let left = walls_syntax::parse(once.as_str()).diagnostics;
+    assert!(
+        left.iter().all(|d| std::ptr::eq(d.code, &walls_syntax::codes::LINE_TOO_LONG)),
+        "formatted text has syntax errors: {left:?}"
+    );
 }
