@@ -1,0 +1,312 @@
+//! The LSP features, each a function from an analysed document to LSP values.
+
+use crate::document::Document;
+use crate::position::{offset, range};
+use std::collections::HashMap;
+use tower_lsp_server::ls_types::{self as lsp, *};
+use walls_diagnostics::{Applicability, Severity, apply_fixes};
+use walls_format::FormatOptions;
+use walls_keywords::Keyword;
+use walls_model::{Place, Source, Value};
+use walls_syntax::{BlockKind, Item};
+
+/// The document's diagnostics, as the client shows them.
+pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
+    doc.diagnostics
+        .iter()
+        .map(|d| to_lsp(uri, doc, d))
+        .collect()
+}
+
+fn to_lsp(uri: &Uri, doc: &Document, d: &walls_diagnostics::Diagnostic) -> lsp::Diagnostic {
+    let text = doc.text();
+    let mut message = d.message.clone();
+    if let Some(help) = &d.help {
+        message.push_str("\nhelp: ");
+        message.push_str(help);
+    }
+    lsp::Diagnostic {
+        range: range(&doc.index, text, &d.span),
+        severity: Some(match d.severity {
+            Severity::Error => DiagnosticSeverity::ERROR,
+            Severity::Warning => DiagnosticSeverity::WARNING,
+            Severity::Info => DiagnosticSeverity::INFORMATION,
+        }),
+        code: Some(NumberOrString::String(d.code.id.into())),
+        source: Some("walls".into()),
+        message,
+        related_information: (!d.labels.is_empty()).then(|| {
+            d.labels
+                .iter()
+                .map(|l| DiagnosticRelatedInformation {
+                    location: Location::new(uri.clone(), range(&doc.index, text, &l.span)),
+                    message: l.message.clone(),
+                })
+                .collect()
+        }),
+        ..lsp::Diagnostic::default()
+    }
+}
+
+/// The keyword's documentation, with the value it has where the cursor is.
+pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
+    let tree = &doc.parse.tree;
+    let text = doc.text();
+    let offset = offset(&doc.index, text, at);
+    let stmt = tree.statement_containing(offset)?;
+    let keyword = tree.keyword(&stmt)?;
+    let span = tree.statement_span(&stmt);
+    if offset > span.end {
+        return None;
+    }
+    let mut value = keyword.markdown();
+    if let Some(note) = effective_value(doc, span.start, keyword) {
+        value.push('\n');
+        value.push_str(&note);
+    }
+    Some(Hover {
+        contents: HoverContents::Markup(MarkupContent {
+            kind: MarkupKind::Markdown,
+            value,
+        }),
+        range: Some(range(&doc.index, text, &span)),
+    })
+}
+
+/// For a property of a wall block: the wall's effective value and where it came from.
+fn effective_value(doc: &Document, at: usize, keyword: Keyword) -> Option<String> {
+    let tree = &doc.parse.tree;
+    let mut wall = None;
+    for item in tree.items() {
+        if let Item::Block(b) = item {
+            let start = tree.span(tree.head(&b.head)).start;
+            if start > at {
+                break;
+            }
+            wall = match b.kind {
+                BlockKind::Wall => Some(wall.map_or(0, |w: usize| w + 1)),
+                BlockKind::Defaults => wall,
+            };
+            if b.kind == BlockKind::Defaults
+                && tree
+                    .body(b)
+                    .iter()
+                    .any(|s| tree.statement_span(s).start == at)
+            {
+                return Some("Sets the default for the walls created after this block.".into());
+            }
+        }
+    }
+    let wall = doc.analysis.scene.walls.get(wall?)?;
+    let setting = wall.setting(keyword)?;
+    let shown = match setting.value {
+        Value::Number(x) => format!("{x}"),
+        Value::Integer(i) => format!("{i}"),
+        Value::Vector(v) => format!("{} {} {}", v.x, v.y, v.z),
+        Value::Type(t) => t.name().to_string(),
+    };
+    let from = match &setting.source {
+        Source::Builtin => "the built-in default".to_string(),
+        Source::Set {
+            place: Place::Wall,
+            values,
+            ..
+        } if values.range().start < at => "an earlier token of this wall".to_string(),
+        Source::Set {
+            place: Place::Wall, ..
+        } => "this token".to_string(),
+        Source::Set {
+            place: Place::Defaults,
+            values,
+            ..
+        } => format!(
+            "`defaults` on line {}",
+            doc.index.line_col(doc.text(), values.range().start).line
+        ),
+    };
+    Some(format!(
+        "In wall {}: **{shown}** (pkdgrav units), from {from}.",
+        wall.index
+    ))
+}
+
+/// The edit that formats the whole document, if it changes anything.
+pub fn format(doc: &Document) -> Option<Vec<TextEdit>> {
+    let formatted = walls_format::format(&doc.parse, &FormatOptions::default()).ok()?;
+    (formatted.text != doc.text()).then(|| vec![whole(doc, formatted.text)])
+}
+
+/// The edit that formats the items a range touches.
+pub fn format_range(doc: &Document, r: Range) -> Option<Vec<TextEdit>> {
+    let text = doc.text();
+    let span = offset(&doc.index, text, r.start)..offset(&doc.index, text, r.end);
+    let edit = walls_format::format_range(&doc.parse, span, &FormatOptions::default()).ok()??;
+    Some(vec![TextEdit::new(
+        range(&doc.index, text, &edit.span),
+        edit.replacement,
+    )])
+}
+
+fn whole(doc: &Document, new_text: String) -> TextEdit {
+    TextEdit::new(
+        range(&doc.index, doc.text(), &(0..doc.text().len())),
+        new_text,
+    )
+}
+
+/// A quick fix for every diagnostic in `r` that has one, and "fix all safe problems".
+pub fn code_actions(uri: &Uri, doc: &Document, r: Range) -> Vec<CodeActionOrCommand> {
+    let text = doc.text();
+    let span = offset(&doc.index, text, r.start)..offset(&doc.index, text, r.end);
+    let mut actions = Vec::new();
+    for d in &doc.diagnostics {
+        let Some(fix) = &d.fix else { continue };
+        if d.span.end < span.start || span.end < d.span.start {
+            continue;
+        }
+        let edits = fix
+            .edits
+            .iter()
+            .map(|e| TextEdit::new(range(&doc.index, text, &e.span), e.replacement.clone()))
+            .collect();
+        actions.push(CodeActionOrCommand::CodeAction(CodeAction {
+            title: format!("{} ({})", fix.message, d.code.id),
+            kind: Some(CodeActionKind::QUICKFIX),
+            diagnostics: Some(vec![to_lsp(uri, doc, d)]),
+            edit: Some(workspace_edit(uri, edits)),
+            is_preferred: Some(fix.applicability == Applicability::Safe),
+            ..CodeAction::default()
+        }));
+    }
+    let safe = doc
+        .diagnostics
+        .iter()
+        .filter(|d| {
+            d.fix
+                .as_ref()
+                .is_some_and(|f| f.applicability == Applicability::Safe)
+        })
+        .count();
+    if safe > 0 {
+        let fixed = apply_fixes(text, &doc.diagnostics, Applicability::Safe);
+        actions.push(CodeActionOrCommand::CodeAction(CodeAction {
+            title: format!("Fix all safe problems ({safe})"),
+            kind: Some(CodeActionKind::SOURCE_FIX_ALL),
+            edit: Some(workspace_edit(uri, vec![whole(doc, fixed)])),
+            ..CodeAction::default()
+        }));
+    }
+    actions
+}
+
+fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
+    WorkspaceEdit {
+        changes: Some(HashMap::from([(uri.clone(), edits)])),
+        ..WorkspaceEdit::default()
+    }
+}
+
+/// The outline: each wall ("wall 3: disk") and defaults block with its statements, and
+/// the statements outside blocks.
+#[allow(deprecated)] // `DocumentSymbol::deprecated` must still be given.
+pub fn symbols(doc: &Document) -> Vec<DocumentSymbol> {
+    let tree = &doc.parse.tree;
+    let text = doc.text();
+    let symbol =
+        |name: String, detail: Option<String>, kind, stmt: &walls_syntax::Statement, children| {
+            let head = tree.span(tree.head(stmt));
+            DocumentSymbol {
+                name,
+                detail,
+                kind,
+                tags: None,
+                deprecated: None,
+                range: range(&doc.index, text, &tree.statement_span(stmt)),
+                selection_range: range(&doc.index, text, &head),
+                children,
+            }
+        };
+    let values = |stmt: &walls_syntax::Statement| {
+        let v: Vec<&str> = tree
+            .values(stmt)
+            .iter()
+            .map(|&t| tree.token_text(t))
+            .collect();
+        (!v.is_empty()).then(|| v.join(" "))
+    };
+    let mut walls = doc.analysis.scene.walls.iter();
+    let mut out = Vec::new();
+    for item in tree.items() {
+        match item {
+            Item::Block(b) => {
+                let children: Vec<DocumentSymbol> = tree
+                    .body(b)
+                    .iter()
+                    .filter_map(|s| {
+                        let k = tree.keyword(s)?;
+                        Some(symbol(
+                            k.name().into(),
+                            values(s),
+                            SymbolKind::PROPERTY,
+                            s,
+                            None,
+                        ))
+                    })
+                    .collect();
+                let (name, kind) = match b.kind {
+                    BlockKind::Wall => {
+                        let w = walls.next();
+                        let name = w.map_or("wall".into(), |w| {
+                            format!("wall {}: {}", w.index, w.wall_type().name())
+                        });
+                        (name, SymbolKind::OBJECT)
+                    }
+                    BlockKind::Defaults => ("defaults".into(), SymbolKind::NAMESPACE),
+                };
+                let mut s = symbol(name, None, kind, &b.head, Some(children));
+                if let Some(last) = tree.body(b).last() {
+                    let end = tree.statement_span(last).end;
+                    s.range = range(&doc.index, text, &(tree.statement_span(&b.head).start..end));
+                }
+                out.push(s);
+            }
+            Item::Statement(s) => {
+                if let Some(k) = tree.keyword(s) {
+                    out.push(symbol(
+                        k.name().into(),
+                        values(s),
+                        SymbolKind::CONSTANT,
+                        s,
+                        None,
+                    ));
+                }
+            }
+            Item::Stray(_) => {}
+        }
+    }
+    out
+}
+
+/// A folding range for every block that spans several lines.
+pub fn folding(doc: &Document) -> Vec<FoldingRange> {
+    let tree = &doc.parse.tree;
+    let text = doc.text();
+    tree.items()
+        .iter()
+        .filter_map(|item| {
+            let Item::Block(b) = item else { return None };
+            let last = tree.body(b).last()?;
+            let start = doc
+                .index
+                .line_col(text, tree.statement_span(&b.head).start)
+                .line;
+            let end = doc.index.line_col(text, tree.statement_span(last).end).line;
+            (end > start).then(|| FoldingRange {
+                start_line: start as u32 - 1,
+                end_line: end as u32 - 1,
+                kind: Some(FoldingRangeKind::Region),
+                ..FoldingRange::default()
+            })
+        })
+        .collect()
+}

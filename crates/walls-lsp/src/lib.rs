@@ -1,0 +1,233 @@
+//! The walls language server.
+//!
+//! It maps LSP documents, edits and requests onto the other crates:
+//! - diagnostics come from the syntax check and the checker;
+//! - hovers show the keyword's documentation and its effective value;
+//! - formatting and range formatting use `walls-format`;
+//! - code actions apply the checker's fixes, plus a "fix all safe" action;
+//! - the outline shows walls and defaults blocks;
+//! - folding covers blocks.
+//!
+//! Edits are applied under one lock, and a document's diagnostics are published with
+//! its version, and only if no newer version has arrived meanwhile.
+
+mod document;
+mod features;
+pub mod position;
+
+use document::Document;
+use std::collections::HashMap;
+use std::sync::Mutex;
+use tower_lsp_server::jsonrpc::Result;
+use tower_lsp_server::ls_types::*;
+use tower_lsp_server::{Client, LanguageServer, LspService, Server};
+use walls_model::{Mode, Options};
+
+/// The server's state: the open documents and the checker's options.
+pub struct Backend {
+    client: Client,
+    state: Mutex<State>,
+}
+
+#[derive(Default)]
+struct State {
+    documents: HashMap<Uri, Document>,
+    options: Options,
+}
+
+/// The service and the socket its notifications to the client go through.
+pub fn service() -> (LspService<Backend>, tower_lsp_server::ClientSocket) {
+    LspService::new(|client| Backend {
+        client,
+        state: Mutex::new(State::default()),
+    })
+}
+
+/// Serves LSP over standard input and output until the client exits.
+pub async fn serve_stdio() {
+    let (service, socket) = service();
+    Server::new(tokio::io::stdin(), tokio::io::stdout(), socket)
+        .serve(service)
+        .await;
+}
+
+/// Reads `{"mode": "hsdem", "maxWalls": 30}` (initialization options, or the `walls`
+/// section of the settings) into the checker's options.
+fn options_from(value: &serde_json::Value, mut options: Options) -> Options {
+    match value.get("mode").and_then(|m| m.as_str()) {
+        Some("hsdem") => options.mode = Mode::Hsdem,
+        Some("ssdem") => options.mode = Mode::Ssdem,
+        _ => {}
+    }
+    if let Some(n) = value.get("maxWalls").and_then(|n| n.as_u64()) {
+        options.max_walls = n as usize;
+    }
+    options
+}
+
+impl Backend {
+    fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        // A panic in another handler must not take the server down with it.
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Publishes the diagnostics of `uri` at `version`, unless a newer version came.
+    async fn publish(&self, uri: Uri, version: i32) {
+        let diagnostics = {
+            let state = self.lock();
+            match state.documents.get(&uri) {
+                Some(doc) if doc.version == version => features::diagnostics(&uri, doc),
+                _ => return,
+            }
+        };
+        self.client
+            .publish_diagnostics(uri, diagnostics, Some(version))
+            .await;
+    }
+
+    fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {
+        self.lock().documents.get(uri).map(f)
+    }
+}
+
+impl LanguageServer for Backend {
+    async fn initialize(&self, params: InitializeParams) -> Result<InitializeResult> {
+        if let Some(init) = &params.initialization_options {
+            let mut state = self.lock();
+            state.options = options_from(init, state.options.clone());
+        }
+        Ok(InitializeResult {
+            capabilities: ServerCapabilities {
+                text_document_sync: Some(TextDocumentSyncCapability::Kind(
+                    TextDocumentSyncKind::FULL,
+                )),
+                hover_provider: Some(HoverProviderCapability::Simple(true)),
+                document_formatting_provider: Some(OneOf::Left(true)),
+                document_range_formatting_provider: Some(OneOf::Left(true)),
+                code_action_provider: Some(CodeActionProviderCapability::Simple(true)),
+                document_symbol_provider: Some(OneOf::Left(true)),
+                folding_range_provider: Some(FoldingRangeProviderCapability::Simple(true)),
+                ..ServerCapabilities::default()
+            },
+            server_info: Some(ServerInfo {
+                name: "walls-lsp".into(),
+                version: Some(env!("CARGO_PKG_VERSION").into()),
+            }),
+            ..InitializeResult::default()
+        })
+    }
+
+    async fn shutdown(&self) -> Result<()> {
+        Ok(())
+    }
+
+    async fn did_open(&self, params: DidOpenTextDocumentParams) {
+        let doc = params.text_document;
+        {
+            let mut state = self.lock();
+            let document = Document::new(doc.version, doc.text, &state.options);
+            state.documents.insert(doc.uri.clone(), document);
+        }
+        self.publish(doc.uri, doc.version).await;
+    }
+
+    async fn did_change(&self, params: DidChangeTextDocumentParams) {
+        let uri = params.text_document.uri;
+        let version = params.text_document.version;
+        // Full synchronisation: the last change holds the whole text.
+        let Some(change) = params.content_changes.into_iter().last() else {
+            return;
+        };
+        {
+            let mut state = self.lock();
+            if state
+                .documents
+                .get(&uri)
+                .is_some_and(|d| d.version > version)
+            {
+                return;
+            }
+            let document = Document::new(version, change.text, &state.options);
+            state.documents.insert(uri.clone(), document);
+        }
+        self.publish(uri, version).await;
+    }
+
+    async fn did_close(&self, params: DidCloseTextDocumentParams) {
+        let uri = params.text_document.uri;
+        self.lock().documents.remove(&uri);
+        self.client.publish_diagnostics(uri, Vec::new(), None).await;
+    }
+
+    async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {
+        let section = params
+            .settings
+            .get("walls")
+            .unwrap_or(&params.settings)
+            .clone();
+        let versions: Vec<(Uri, i32)> = {
+            let mut state = self.lock();
+            state.options = options_from(&section, state.options.clone());
+            let options = state.options.clone();
+            let uris: Vec<Uri> = state.documents.keys().cloned().collect();
+            uris.into_iter()
+                .filter_map(|uri| {
+                    let doc = state.documents.remove(&uri)?;
+                    let version = doc.version;
+                    let text = doc.text().to_string();
+                    state
+                        .documents
+                        .insert(uri.clone(), Document::new(version, text, &options));
+                    Some((uri, version))
+                })
+                .collect()
+        };
+        for (uri, version) in versions {
+            self.publish(uri, version).await;
+        }
+    }
+
+    async fn hover(&self, params: HoverParams) -> Result<Option<Hover>> {
+        let p = params.text_document_position_params;
+        Ok(self
+            .with_document(&p.text_document.uri, |doc| features::hover(doc, p.position))
+            .flatten())
+    }
+
+    async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
+        Ok(self
+            .with_document(&params.text_document.uri, features::format)
+            .flatten())
+    }
+
+    async fn range_formatting(
+        &self,
+        params: DocumentRangeFormattingParams,
+    ) -> Result<Option<Vec<TextEdit>>> {
+        Ok(self
+            .with_document(&params.text_document.uri, |doc| {
+                features::format_range(doc, params.range)
+            })
+            .flatten())
+    }
+
+    async fn code_action(&self, params: CodeActionParams) -> Result<Option<CodeActionResponse>> {
+        let uri = params.text_document.uri.clone();
+        Ok(self
+            .with_document(&uri, |doc| features::code_actions(&uri, doc, params.range))
+            .filter(|actions| !actions.is_empty()))
+    }
+
+    async fn document_symbol(
+        &self,
+        params: DocumentSymbolParams,
+    ) -> Result<Option<DocumentSymbolResponse>> {
+        Ok(self.with_document(&params.text_document.uri, |doc| {
+            DocumentSymbolResponse::Nested(features::symbols(doc))
+        }))
+    }
+
+    async fn folding_range(&self, params: FoldingRangeParams) -> Result<Option<Vec<FoldingRange>>> {
+        Ok(self.with_document(&params.text_document.uri, features::folding))
+    }
+}

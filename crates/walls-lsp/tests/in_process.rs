@@ -1,0 +1,219 @@
+//! The server driven in process, as an editor drives it: initialize, open, change,
+//! and every request, with the notifications it sends back.
+
+use futures::StreamExt;
+use serde_json::{Value, json};
+use tower::{Service, ServiceExt};
+use tower_lsp_server::jsonrpc::Request;
+
+const URI: &str = "file:///work/scene.walls";
+
+struct Client {
+    service: tower_lsp_server::LspService<walls_lsp::Backend>,
+    socket: tower_lsp_server::ClientSocket,
+    next_id: i64,
+}
+
+impl Client {
+    async fn start(init: Value) -> Self {
+        let (service, socket) = walls_lsp::service();
+        let mut c = Client {
+            service,
+            socket,
+            next_id: 1,
+        };
+        let caps = c
+            .request(
+                "initialize",
+                json!({"capabilities": {}, "initializationOptions": init}),
+            )
+            .await;
+        assert_eq!(caps["serverInfo"]["name"], "walls-lsp");
+        c.notify("initialized", json!({})).await;
+        c
+    }
+
+    async fn request(&mut self, method: &'static str, params: Value) -> Value {
+        let id = self.next_id;
+        self.next_id += 1;
+        let req = Request::build(method).params(params).id(id).finish();
+        let response = self
+            .service
+            .ready()
+            .await
+            .unwrap()
+            .call(req)
+            .await
+            .unwrap()
+            .unwrap();
+        let (_, result) = response.into_parts();
+        result.expect("request succeeds")
+    }
+
+    async fn notify(&mut self, method: &'static str, params: Value) {
+        let req = Request::build(method).params(params).finish();
+        self.service.ready().await.unwrap().call(req).await.unwrap();
+    }
+
+    /// The next `publishDiagnostics` notification.
+    async fn diagnostics(&mut self) -> Value {
+        loop {
+            let message = self
+                .socket
+                .next()
+                .await
+                .expect("the server sends diagnostics");
+            if message.method() == "textDocument/publishDiagnostics" {
+                return message.params().cloned().unwrap();
+            }
+        }
+    }
+
+    async fn open(&mut self, text: &str) -> Value {
+        self.notify(
+            "textDocument/didOpen",
+            json!({"textDocument": {"uri": URI, "languageId": "walls", "version": 1, "text": text}}),
+        )
+        .await;
+        self.diagnostics().await
+    }
+}
+
+fn codes(published: &Value) -> Vec<String> {
+    published["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["code"].as_str().unwrap().to_string())
+        .collect()
+}
+
+#[tokio::test]
+async fn diagnostics_follow_versions_and_settings() {
+    let mut c = Client::start(json!({})).await;
+    let published = c.open("wall type disk\n  raduis 0.5\n").await;
+    assert_eq!(published["version"], 1);
+    assert_eq!(codes(&published), ["S101"]);
+    let d = &published["diagnostics"][0];
+    assert_eq!(
+        d["range"],
+        json!({"start": {"line": 1, "character": 2}, "end": {"line": 1, "character": 8}})
+    );
+    assert_eq!(d["source"], "walls");
+
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": URI, "version": 2}, "contentChanges": [{"text": "wall type triangle\n"}]}),
+    )
+    .await;
+    let published = c.diagnostics().await;
+    assert_eq!(published["version"], 2);
+    assert!(codes(&published).is_empty());
+
+    // An older version arriving late changes nothing.
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": URI, "version": 1}, "contentChanges": [{"text": "raduis\n"}]}),
+    )
+    .await;
+    // The mode comes from the settings: HSDEM refuses triangles.
+    c.notify(
+        "workspace/didChangeConfiguration",
+        json!({"settings": {"walls": {"mode": "hsdem"}}}),
+    )
+    .await;
+    let published = c.diagnostics().await;
+    assert_eq!(published["version"], 2);
+    assert_eq!(codes(&published), ["M003", "M003", "M001"]);
+}
+
+#[tokio::test]
+async fn hover_formatting_actions_symbols_folding() {
+    let mut c = Client::start(json!({"mode": "ssdem"})).await;
+    let text = "lengthunit 2\ndefaults radius 0.25\nWALL TYPE disk\n  radius,0.5\n  color 3\nwall type plane\n  radius 1\n";
+    let published = c.open(text).await;
+    assert_eq!(codes(&published), ["C207", "C201"]);
+
+    let hover = c
+        .request(
+            "textDocument/hover",
+            json!({"textDocument": {"uri": URI}, "position": {"line": 3, "character": 4}}),
+        )
+        .await;
+    let shown = hover["contents"]["value"].as_str().unwrap();
+    assert!(
+        shown.starts_with("**radius** — a number, length (× lengthunit); default 1"),
+        "{shown}"
+    );
+    assert!(
+        shown.contains("In wall 0: **1** (pkdgrav units), from this token."),
+        "{shown}"
+    );
+
+    let edits = c
+        .request(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": URI}, "options": {"tabSize": 2, "insertSpaces": true}}),
+        )
+        .await;
+    assert_eq!(
+        edits[0]["newText"],
+        "lengthunit 2\ndefaults radius 0.25\n\nwall type disk\n  radius 0.5\n  color 3\n\nwall type plane\n  radius 1\n"
+    );
+
+    let actions = c
+        .request(
+            "textDocument/codeAction",
+            json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 6, "character": 0}, "end": {"line": 6, "character": 10}}, "context": {"diagnostics": []}}),
+        )
+        .await;
+    let titles: Vec<&str> = actions
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["title"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        titles,
+        [
+            "remove `radius`, which has no effect (C201)",
+            "Fix all safe problems (2)"
+        ]
+    );
+    let fix_all = &actions[1]["edit"]["changes"][URI][0]["newText"];
+    assert_eq!(
+        fix_all,
+        "lengthunit 2\ndefaults\nWALL TYPE disk\n  radius,0.5\n  color 3\nwall type plane\n"
+    );
+
+    let symbols = c
+        .request(
+            "textDocument/documentSymbol",
+            json!({"textDocument": {"uri": URI}}),
+        )
+        .await;
+    let names: Vec<&str> = symbols
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        ["lengthunit", "defaults", "wall 0: disk", "wall 1: plane"]
+    );
+    assert_eq!(symbols[2]["children"][0]["detail"], "disk");
+    assert_eq!(symbols[2]["children"][1]["name"], "radius");
+    assert_eq!(symbols[2]["children"][1]["detail"], "0.5");
+
+    let folds = c
+        .request(
+            "textDocument/foldingRange",
+            json!({"textDocument": {"uri": URI}}),
+        )
+        .await;
+    assert_eq!(
+        folds,
+        json!([{"startLine": 2, "endLine": 4, "kind": "region"}, {"startLine": 5, "endLine": 6, "kind": "region"}])
+    );
+}
