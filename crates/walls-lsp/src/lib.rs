@@ -6,11 +6,15 @@
 //! - formatting and range formatting use `walls-format`;
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
 //! - the outline shows walls and defaults blocks;
-//! - folding covers blocks.
+//! - folding covers blocks;
+//! - completion knows the context (type names after `type`, the wall type's tokens
+//!   first), semantic tokens colour the file, inlay hints show inherited, scaled and
+//!   derived values, and go to definition leads from a value to the token that set it.
 //!
 //! Edits are applied under one lock, and a document's diagnostics are published with
 //! its version, and only if no newer version has arrived meanwhile.
 
+mod assist;
 mod document;
 mod features;
 pub mod position;
@@ -107,6 +111,24 @@ impl LanguageServer for Backend {
                 code_action_provider: Some(CodeActionProviderCapability::Simple(true)),
                 document_symbol_provider: Some(OneOf::Left(true)),
                 folding_range_provider: Some(FoldingRangeProviderCapability::Simple(true)),
+                completion_provider: Some(CompletionOptions {
+                    trigger_characters: Some(vec![" ".into()]),
+                    ..CompletionOptions::default()
+                }),
+                semantic_tokens_provider: Some(
+                    SemanticTokensOptions {
+                        legend: SemanticTokensLegend {
+                            token_types: assist::TOKEN_TYPES.to_vec(),
+                            token_modifiers: Vec::new(),
+                        },
+                        full: Some(SemanticTokensFullOptions::Bool(true)),
+                        range: Some(true),
+                        ..SemanticTokensOptions::default()
+                    }
+                    .into(),
+                ),
+                inlay_hint_provider: Some(OneOf::Left(true)),
+                definition_provider: Some(OneOf::Left(true)),
                 ..ServerCapabilities::default()
             },
             server_info: Some(ServerInfo {
@@ -225,6 +247,59 @@ impl LanguageServer for Backend {
         Ok(self.with_document(&params.text_document.uri, |doc| {
             DocumentSymbolResponse::Nested(features::symbols(doc))
         }))
+    }
+
+    async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
+        let p = params.text_document_position;
+        Ok(self
+            .with_document(&p.text_document.uri, |doc| {
+                assist::completion(doc, p.position)
+            })
+            .map(CompletionResponse::Array))
+    }
+
+    async fn semantic_tokens_full(
+        &self,
+        params: SemanticTokensParams,
+    ) -> Result<Option<SemanticTokensResult>> {
+        Ok(self.with_document(&params.text_document.uri, |doc| {
+            SemanticTokens {
+                result_id: None,
+                data: assist::semantic_tokens(doc, None),
+            }
+            .into()
+        }))
+    }
+
+    async fn semantic_tokens_range(
+        &self,
+        params: SemanticTokensRangeParams,
+    ) -> Result<Option<SemanticTokensRangeResult>> {
+        Ok(self.with_document(&params.text_document.uri, |doc| {
+            SemanticTokens {
+                result_id: None,
+                data: assist::semantic_tokens(doc, Some(params.range)),
+            }
+            .into()
+        }))
+    }
+
+    async fn inlay_hint(&self, params: InlayHintParams) -> Result<Option<Vec<InlayHint>>> {
+        Ok(self.with_document(&params.text_document.uri, |doc| {
+            assist::inlay_hints(doc, params.range)
+        }))
+    }
+
+    async fn goto_definition(
+        &self,
+        params: GotoDefinitionParams,
+    ) -> Result<Option<GotoDefinitionResponse>> {
+        let p = params.text_document_position_params;
+        let uri = p.text_document.uri;
+        Ok(self
+            .with_document(&uri, |doc| assist::definition(doc, &uri, p.position))
+            .filter(|l| !l.is_empty())
+            .map(GotoDefinitionResponse::Array))
     }
 
     async fn folding_range(&self, params: FoldingRangeParams) -> Result<Option<Vec<FoldingRange>>> {

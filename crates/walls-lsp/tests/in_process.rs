@@ -217,3 +217,106 @@ async fn hover_formatting_actions_symbols_folding() {
         json!([{"startLine": 2, "endLine": 4, "kind": "region"}, {"startLine": 5, "endLine": 6, "kind": "region"}])
     );
 }
+
+#[tokio::test]
+async fn completion_tokens_hints_definition() {
+    let mut c = Client::start(json!({})).await;
+    let text =
+        "lengthunit 2\ndefaults color 3\nwall type disk\n  radius 0.5 # r\n  k_n 7\n  type \n";
+    c.open(text).await;
+    let at = |line: u32, character: u32| json!({"textDocument": {"uri": URI}, "position": {"line": line, "character": character}});
+
+    let types = c.request("textDocument/completion", at(5, 7)).await;
+    let labels: Vec<&str> = types
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        labels,
+        [
+            "plane",
+            "triangle",
+            "rectangle",
+            "disk",
+            "cylinder-infinite",
+            "cylinder-finite",
+            "shell",
+            "disc"
+        ]
+    );
+
+    let keywords = c.request("textDocument/completion", at(4, 7)).await;
+    let items = keywords.as_array().unwrap();
+    let item = |name: &str| items.iter().find(|i| i["label"] == name).unwrap().clone();
+    assert!(
+        item("hole-radius")["sortText"].as_str().unwrap()
+            < item("vertex1")["sortText"].as_str().unwrap()
+    );
+    assert_eq!(item("origin")["insertText"], "origin ${1:0} ${2:0} ${3:0}");
+    assert_eq!(
+        item("type")["insertText"],
+        "type ${1|plane,triangle,rectangle,disk,cylinder-infinite,cylinder-finite,shell|}"
+    );
+    let in_comment = c.request("textDocument/completion", at(3, 15)).await;
+    assert_eq!(in_comment, json!([]));
+
+    let tokens = c
+        .request(
+            "textDocument/semanticTokens/full",
+            json!({"textDocument": {"uri": URI}}),
+        )
+        .await;
+    let data = tokens["data"].as_array().unwrap();
+    // lengthunit (keyword), 2 (number): [line, start, length, type, modifiers] deltas.
+    assert_eq!(
+        data[..10],
+        [
+            json!(0),
+            json!(0),
+            json!(10),
+            json!(0),
+            json!(0),
+            json!(0),
+            json!(11),
+            json!(1),
+            json!(3),
+            json!(0)
+        ]
+    );
+    let ranged = c
+        .request("textDocument/semanticTokens/range", json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 3, "character": 0}, "end": {"line": 3, "character": 99}}}))
+        .await;
+    assert_eq!(
+        ranged["data"].as_array().unwrap().len(),
+        3 * 5,
+        "radius, 0.5 and the comment"
+    );
+
+    let hints = c
+        .request("textDocument/inlayHint", json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 0, "character": 0}, "end": {"line": 9, "character": 0}}}))
+        .await;
+    let labels: Vec<&str> = hints
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|h| h["label"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        labels,
+        ["inherits color 3", "= 1 in pkdgrav units", "k_t = 2"]
+    );
+    assert_eq!(hints[1]["position"], json!({"line": 3, "character": 12}));
+
+    let from_wall = c.request("textDocument/definition", at(2, 1)).await;
+    assert_eq!(
+        from_wall,
+        json!([{"uri": URI, "range": {"start": {"line": 1, "character": 15}, "end": {"line": 1, "character": 16}}}])
+    );
+    let from_radius = c.request("textDocument/definition", at(3, 3)).await;
+    assert_eq!(
+        from_radius[0]["range"]["start"],
+        json!({"line": 3, "character": 9})
+    );
+}
