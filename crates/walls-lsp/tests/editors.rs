@@ -2,7 +2,7 @@
 //! Neovim (headless, `tests/nvim/lsp.lua`) as a user's editor.
 
 use serde_json::{Value, json};
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{BufRead, BufReader, Write};
 use std::process::{Command, Stdio};
 
 fn frame(message: &Value) -> Vec<u8> {
