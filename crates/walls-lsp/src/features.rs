@@ -124,8 +124,18 @@ fn effective_value(doc: &Document, at: usize, keyword: Keyword) -> Option<String
             doc.index.line_col(doc.text(), values.range().start).line
         ),
     };
+    // Unit scaling: the numbers as written differ from the value.
+    let scaled = match (&setting.source, setting.value) {
+        (Source::Set { values, .. }, Value::Number(x)) => doc.text()[values.range()]
+            .parse::<f64>()
+            .ok()
+            .filter(|&raw| raw != x)
+            .map(|raw| format!(" Written as {raw}, scaled by the units in force."))
+            .unwrap_or_default(),
+        _ => String::new(),
+    };
     Some(format!(
-        "In wall {}: **{shown}** (pkdgrav units), from {from}.",
+        "In wall {}: **{shown}** (pkdgrav units), from {from}.{scaled}",
         wall.index
     ))
 }

@@ -320,3 +320,25 @@ async fn completion_tokens_hints_definition() {
         json!({"line": 3, "character": 9})
     );
 }
+
+#[tokio::test]
+async fn a_whole_session_snapshot() {
+    let mut c = Client::start(json!({})).await;
+    let text =
+        "lengthunit 2\ndefaults color 3\nwall type disk # d\n  radius 0.5\n  origin 1 2\n3\n";
+    let published = c.open(text).await;
+    let doc = json!({"textDocument": {"uri": URI}});
+    let at = |line: u32, character: u32| json!({"textDocument": {"uri": URI}, "position": {"line": line, "character": character}});
+    let all_lines = json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 0, "character": 0}, "end": {"line": 9, "character": 0}}});
+    let session = json!({
+        "diagnostics": published,
+        "hover": c.request("textDocument/hover", at(3, 3)).await,
+        "symbols": c.request("textDocument/documentSymbol", doc.clone()).await,
+        "folding": c.request("textDocument/foldingRange", doc.clone()).await,
+        "formatting": c.request("textDocument/formatting", json!({"textDocument": {"uri": URI}, "options": {"tabSize": 2, "insertSpaces": true}})).await,
+        "actions": c.request("textDocument/codeAction", json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 4, "character": 0}, "end": {"line": 5, "character": 1}}, "context": {"diagnostics": []}})).await,
+        "hints": c.request("textDocument/inlayHint", all_lines.clone()).await,
+        "definition": c.request("textDocument/definition", at(2, 1)).await,
+    });
+    insta::assert_json_snapshot!(session);
+}
