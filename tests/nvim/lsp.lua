@@ -1,5 +1,5 @@
 -- Drives walls-lsp from a real Neovim (0.7+), headless, as a user's editor would:
--- opens a file, waits for diagnostics, asks for hover, completion, symbols and
+-- opens a file, waits for diagnostics, asks for hover, completion, symbols, fixes and
 -- formatting, and writes what it saw as JSON for the Rust test to check.
 -- Environment: WALLS_LSP (server binary), WALLS_FILE (file to open), WALLS_OUT (JSON).
 
@@ -37,6 +37,15 @@ local function main()
   local symbols = request("textDocument/documentSymbol", { textDocument = doc })
   result.symbols = {}
   for _, s in ipairs(symbols) do table.insert(result.symbols, s.name) end
+  local diagnostic = vim.diagnostic.get(buf)[1]
+  local actions = request("textDocument/codeAction", {
+    textDocument = doc,
+    range = { start = { line = diagnostic.lnum, character = diagnostic.col },
+              ["end"] = { line = diagnostic.end_lnum, character = diagnostic.end_col } },
+    context = { diagnostics = {} },
+  })
+  result.actions = {}
+  for _, a in ipairs(actions) do table.insert(result.actions, a.title) end
   vim.lsp.buf.formatting_sync(nil, 10000)
   result.formatted = vim.api.nvim_buf_get_lines(buf, 0, -1, false)
   vim.fn.writefile({ vim.fn.json_encode(result) }, os.getenv("WALLS_OUT"))

@@ -140,17 +140,56 @@ fn effective_value(doc: &Document, at: usize, keyword: Keyword) -> Option<String
     ))
 }
 
+/// The formatting options for a document: from the `.walls-fmt.toml` above its file, as
+/// `walls-fmt` would find them (defaults for other URIs or a broken configuration).
+fn format_options(uri: &Uri) -> FormatOptions {
+    let path = uri
+        .as_str()
+        .strip_prefix("file://")
+        .map(|p| std::path::PathBuf::from(percent_decode(p)));
+    path.as_deref()
+        .and_then(std::path::Path::parent)
+        .and_then(|dir| walls_format::discover(dir).ok())
+        .map(|(options, _)| options)
+        .unwrap_or_default()
+}
+
+/// `%xx` escapes of a URI path decoded (UTF-8 assumed; anything else kept as written).
+fn percent_decode(s: &str) -> String {
+    let b = s.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        let hex = |c: u8| (c as char).to_digit(16);
+        match (
+            b[i],
+            b.get(i + 1).copied().and_then(hex),
+            b.get(i + 2).copied().and_then(hex),
+        ) {
+            (b'%', Some(h), Some(l)) => {
+                out.push((h * 16 + l) as u8);
+                i += 3;
+            }
+            (c, _, _) => {
+                out.push(c);
+                i += 1;
+            }
+        }
+    }
+    String::from_utf8(out).unwrap_or_else(|_| s.to_string())
+}
+
 /// The edit that formats the whole document, if it changes anything.
-pub fn format(doc: &Document) -> Option<Vec<TextEdit>> {
-    let formatted = walls_format::format(&doc.parse, &FormatOptions::default()).ok()?;
+pub fn format(uri: &Uri, doc: &Document) -> Option<Vec<TextEdit>> {
+    let formatted = walls_format::format(&doc.parse, &format_options(uri)).ok()?;
     (formatted.text != doc.text()).then(|| vec![whole(doc, formatted.text)])
 }
 
 /// The edit that formats the items a range touches.
-pub fn format_range(doc: &Document, r: Range) -> Option<Vec<TextEdit>> {
+pub fn format_range(uri: &Uri, doc: &Document, r: Range) -> Option<Vec<TextEdit>> {
     let text = doc.text();
     let span = offset(&doc.index, text, r.start)..offset(&doc.index, text, r.end);
-    let edit = walls_format::format_range(&doc.parse, span, &FormatOptions::default()).ok()??;
+    let edit = walls_format::format_range(&doc.parse, span, &format_options(uri)).ok()??;
     Some(vec![TextEdit::new(
         range(&doc.index, text, &edit.span),
         edit.replacement,

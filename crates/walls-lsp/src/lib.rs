@@ -217,8 +217,9 @@ impl LanguageServer for Backend {
     }
 
     async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
+        let uri = params.text_document.uri;
         Ok(self
-            .with_document(&params.text_document.uri, features::format)
+            .with_document(&uri, |doc| features::format(&uri, doc))
             .flatten())
     }
 
@@ -226,10 +227,9 @@ impl LanguageServer for Backend {
         &self,
         params: DocumentRangeFormattingParams,
     ) -> Result<Option<Vec<TextEdit>>> {
+        let uri = params.text_document.uri;
         Ok(self
-            .with_document(&params.text_document.uri, |doc| {
-                features::format_range(doc, params.range)
-            })
+            .with_document(&uri, |doc| features::format_range(&uri, doc, params.range))
             .flatten())
     }
 

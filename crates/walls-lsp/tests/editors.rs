@@ -113,6 +113,13 @@ fn neovim_shows_diagnostics_hovers_completes_formats() {
     );
     assert_eq!(result["symbols"], json!(["wall 0: disk"]));
     assert_eq!(
+        result["actions"],
+        json!([
+            "remove `vertex1`, which has no effect (C201)",
+            "Fix all safe problems (1)"
+        ])
+    );
+    assert_eq!(
         result["formatted"],
         json!(["wall type disk", "  radius 0.5", "  vertex1 1 0 0"])
     );

@@ -342,3 +342,25 @@ async fn a_whole_session_snapshot() {
     });
     insta::assert_json_snapshot!(session);
 }
+
+#[tokio::test]
+async fn formatting_reads_the_project_configuration() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join(".walls-fmt.toml"), "indent_width = 4\n").unwrap();
+    let path = dir.path().join("my scene.walls");
+    let uri = format!("file://{}", path.display()).replace(' ', "%20");
+    let mut c = Client::start(json!({})).await;
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "walls", "version": 1, "text": "wall type disk radius 1\n"}}),
+    )
+    .await;
+    c.diagnostics().await;
+    let edits = c
+        .request(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
+        )
+        .await;
+    assert_eq!(edits[0]["newText"], "wall type disk\n    radius 1\n");
+}
