@@ -35,6 +35,9 @@ struct Layout<'t> {
     options: &'t FormatOptions,
     /// The next token not yet laid out.
     cursor: usize,
+    /// Comments inside the last statement beyond the one its line keeps: they go on
+    /// their own lines before what follows, where reading the output puts them too.
+    carried: Vec<&'t str>,
     out: String,
 }
 
@@ -44,14 +47,15 @@ pub(crate) fn format(tree: &SyntaxTree, options: &FormatOptions) -> Formatted {
         tree,
         options,
         cursor: 0,
+        carried: Vec::new(),
         out: String::with_capacity(tree.text().len() + tree.text().len() / 8),
     };
     let mut pieces = Vec::with_capacity(tree.items().len());
     let mut src_start = 0;
+    let mut out_start = 0;
     let mut previous_block_lines: Option<usize> = None;
     let items = tree.items();
     for (i, item) in items.iter().enumerate() {
-        let out_start = l.out.len();
         let statements: Vec<&Statement> = match item {
             Item::Block(b) => std::iter::once(&b.head).chain(tree.body(b)).collect(),
             Item::Statement(s) | Item::Stray(s) => vec![s],
@@ -89,8 +93,13 @@ pub(crate) fn format(tree: &SyntaxTree, options: &FormatOptions) -> Formatted {
         } else {
             l.line_end()
         };
-        pieces.push((src_start..src_end, out_start..l.out.len()));
-        src_start = src_end;
+        // Comments carried into the next item bind the two into one piece, so that a
+        // range formatted alone never splits a comment from where it is written.
+        if l.carried.is_empty() {
+            pieces.push((src_start..src_end, out_start..l.out.len()));
+            src_start = src_end;
+            out_start = l.out.len();
+        }
     }
     if items.is_empty() {
         let (comments, _) = l.gap(tree.tokens().len());
@@ -128,7 +137,8 @@ impl<'t> Layout<'t> {
     /// whether a blank line came before it, and whether a blank line comes after the
     /// last of them (before token `end`).
     fn gap(&mut self, end: usize) -> (Vec<(bool, &'t str)>, bool) {
-        let mut comments = Vec::new();
+        let mut comments: Vec<(bool, &'t str)> =
+            self.carried.drain(..).map(|c| (false, c)).collect();
         let mut newlines = 0;
         for i in self.cursor..end {
             match self.kind(i) {
@@ -183,6 +193,10 @@ impl<'t> Layout<'t> {
             comments.push(self.text(i));
             self.cursor = i + 1;
         }
+        // The statement's line keeps one comment; the others follow on their own lines.
+        if comments.len() > 1 {
+            self.carried = comments.split_off(1);
+        }
         Piece {
             leading,
             blank_before,
@@ -198,7 +212,7 @@ impl<'t> Layout<'t> {
         // statement of `defaults` (`defaults epsn 0.9`), when nothing stands between.
         let joins = |head: &Piece, next: &Piece| match head.keyword {
             Some(Keyword::Wall) => next.keyword == Some(Keyword::Type),
-            Some(Keyword::Defaults) => true,
+            Some(Keyword::Defaults) => !next.words.is_empty(),
             _ => false,
         };
         if body_start == 1
@@ -233,9 +247,11 @@ impl<'t> Layout<'t> {
             if p.blank_before && keep {
                 lines.push(Line::Blank);
             }
-            let mut comments = p.comments.into_iter();
-            lines.push(Line::Statement(indent, p.words, comments.next()));
-            lines.extend(comments.map(|c| Line::Comment(indent, c)));
+            lines.push(Line::Statement(
+                indent,
+                p.words,
+                p.comments.into_iter().next(),
+            ));
         }
         lines
     }

@@ -106,7 +106,15 @@ pub fn format_range(
     let touched: Vec<&(Range<usize>, Range<usize>)> = formatted
         .pieces
         .iter()
-        .filter(|(src, _)| src.start <= range.end && range.start <= src.end)
+        .filter(|(src, _)| {
+            if range.is_empty() {
+                // A cursor touches the item it stands in (or the last, at the very end).
+                src.start <= range.start
+                    && (range.start < src.end || src.end == parse.tree.text().len())
+            } else {
+                src.start < range.end && range.start < src.end
+            }
+        })
         .collect();
     let (Some(first), Some(last)) = (touched.first(), touched.last()) else {
         return Ok(None);

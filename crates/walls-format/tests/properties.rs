@@ -11,7 +11,19 @@ use walls_model::{Options, Value, analyze};
 use walls_syntax::{TokenKind, lex, parse};
 
 fn sep() -> impl Strategy<Value = &'static str> {
-    prop::sample::select(vec![" ", "  ", "\t", ",", "=", " = ", ", ", "\n  ", "\n\n"])
+    prop::sample::select(vec![
+        " ",
+        "  ",
+        "\t",
+        ",",
+        "=",
+        " = ",
+        ", ",
+        "\n  ",
+        "\n\n",
+        " # inside\n",
+        " !x\n  ",
+    ])
 }
 
 fn comment() -> impl Strategy<Value = String> {
@@ -46,8 +58,7 @@ fn statement() -> impl Strategy<Value = String> {
                 ValueShape::TypeName => vec![WallType::SPELLINGS[t].0.to_string()],
                 ValueShape::None => vec![],
             };
-            // Values may sit on later lines (the formatter joins them), but never behind
-            // a comment: that would make them part of the comment.
+            // Values may sit on later lines, after comments (the formatter joins them).
             let mut s = name;
             for (v, sep) in values.iter().zip(seps) {
                 s.push_str(sep);

@@ -1,5 +1,6 @@
-//! The real binary with real clients: raw JSON-RPC over standard input and output, and
-//! Neovim (headless, `tests/nvim/lsp.lua`) as a user's editor.
+//! The real binary with real clients: raw JSON-RPC over standard input and output,
+//! Neovim (headless, `tests/nvim/lsp.lua`) as a user's editor, and the Neovim plugin of
+//! `editors/neovim` (`tests/nvim/plugin.lua`).
 
 use serde_json::{Value, json};
 use std::io::{BufRead, BufReader, Write};
@@ -122,5 +123,34 @@ fn neovim_shows_diagnostics_hovers_completes_formats() {
     assert_eq!(
         result["formatted"],
         json!(["wall type disk", "  radius 0.5", "  vertex1 1 0 0"])
+    );
+}
+
+#[test]
+fn the_neovim_plugin_detects_and_attaches() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("walls-box.dat");
+    std::fs::write(&file, "wall type plane\n  radius 2\n").unwrap();
+    let out = dir.path().join("result.json");
+    let repo = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+    let run = Command::new("nvim")
+        .args(["--headless", "-u", "NONE", "-i", "NONE", "-n"])
+        .args(["--cmd", &format!("set runtimepath^={repo}/editors/neovim")])
+        .args(["--cmd", "filetype plugin on"])
+        .args(["-c", &format!("luafile {repo}/tests/nvim/plugin.lua")])
+        .env("WALLS_LSP", env!("CARGO_BIN_EXE_walls-lsp"))
+        .env("WALLS_FILE", &file)
+        .env("WALLS_OUT", &out)
+        .output()
+        .expect("Neovim is installed (scripts/install-test-tools installs it)");
+    assert!(
+        run.status.success(),
+        "nvim failed: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let result: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(
+        result,
+        json!({"filetype": "walls", "commentstring": "# %s", "codes": ["C201"]})
     );
 }

@@ -114,7 +114,9 @@ enum Raw {
     Separator,
     #[regex(r"\r?\n")]
     Newline,
-    #[regex(r"[#!][^\r\n]*", allow_greedy = true)]
+    // To the end of the line: a lone `\r` is part of the comment (pkdgrav only ends
+    // lines at `\n`), a `\r` before the `\n` is the line end's.
+    #[regex(r"[#!]([^\n]*[^\r\n])?", allow_greedy = true)]
     Comment,
     #[regex(r"[+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?", priority = 5)]
     Number,

@@ -154,6 +154,10 @@ fn words_split_only_at_separators() {
     assert_eq!(kinds("plane!x"), [TypeName(WallType::Plane), GluedComment]);
     assert_eq!(kinds("1 #x\r\n"), [Number, Whitespace, Comment, Newline]);
     assert_eq!(kinds(",#x"), [Separator, Comment]);
+    // A lone carriage return does not end a comment; one before a newline does.
+    assert_eq!(kinds("#a\rwall\n"), [Comment, Newline]);
+    assert_eq!(kinds("#a\r\n"), [Comment, Newline]);
+    assert_eq!(kinds("#\r"), [Comment, Whitespace]);
     assert_eq!(
         kinds("wall\r\n"),
         [Keyword(walls_keywords::Keyword::Wall), Newline]
