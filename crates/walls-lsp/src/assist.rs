@@ -283,6 +283,8 @@ pub fn inlay_hints(doc: &Document, r: Range) -> Vec<InlayHint> {
             }
         }
     }
+    // Only the hints inside the requested range.
+    hints.retain(|h| h.position >= r.start && h.position <= r.end);
     hints
 }
 

@@ -1,6 +1,7 @@
 //! An open document: its text, tree, scene and diagnostics, recomputed on each change.
 
-use walls_diagnostics::{Diagnostic, LineIndex};
+use crate::position::Lines;
+use walls_diagnostics::Diagnostic;
 use walls_model::{Analysis, Options};
 use walls_syntax::Parse;
 
@@ -12,8 +13,8 @@ pub struct Document {
     pub parse: Parse,
     /// The resolved scene and model diagnostics.
     pub analysis: Analysis,
-    /// Lines of the text, for positions.
-    pub index: LineIndex,
+    /// Lines of the text, as LSP counts them, for positions.
+    pub index: Lines,
     /// Syntax and model diagnostics, sorted by position.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -26,7 +27,7 @@ impl Document {
         let mut diagnostics = parse.diagnostics.clone();
         diagnostics.extend(analysis.diagnostics.iter().cloned());
         diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
-        let index = LineIndex::new(parse.tree.text());
+        let index = Lines::new(parse.tree.text());
         Document {
             version,
             parse,

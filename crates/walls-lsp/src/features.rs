@@ -1,14 +1,14 @@
 //! The LSP features, each a function from an analysed document to LSP values.
 
 use crate::document::Document;
-use crate::position::{offset, range};
+use crate::position::{offset, position, range};
 use std::collections::HashMap;
 use tower_lsp_server::ls_types::{self as lsp, *};
 use walls_diagnostics::{Applicability, Severity, apply_fixes};
 use walls_format::FormatOptions;
-use walls_keywords::Keyword;
+use walls_keywords::{Keyword, Role};
 use walls_model::{Place, Source, Value};
-use walls_syntax::{BlockKind, Item};
+use walls_syntax::{BlockKind, Item, Statement};
 
 /// The document's diagnostics, as the client shows them.
 pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
@@ -53,6 +53,10 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
     let tree = &doc.parse.tree;
     let text = doc.text();
     let offset = offset(&doc.index, text, at);
+    // A position past the end of its line (or of the text) points at nothing.
+    if position(&doc.index, text, offset) != at {
+        return None;
+    }
     let stmt = tree.statement_containing(offset)?;
     let keyword = tree.keyword(&stmt)?;
     let span = tree.statement_span(&stmt);
@@ -60,7 +64,7 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
         return None;
     }
     let mut value = keyword.markdown();
-    if let Some(note) = effective_value(doc, span.start, keyword) {
+    if let Some(note) = effective_value(doc, &stmt, keyword) {
         value.push('\n');
         value.push_str(&note);
     }
@@ -73,69 +77,90 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
     })
 }
 
-/// For a property of a wall block: the wall's effective value and where it came from.
-fn effective_value(doc: &Document, at: usize, keyword: Keyword) -> Option<String> {
+/// For a property in a wall block: the wall's effective value and where it came from;
+/// for one in a `defaults` block, what that means. Nothing for statements outside blocks.
+fn effective_value(doc: &Document, stmt: &Statement, keyword: Keyword) -> Option<String> {
     let tree = &doc.parse.tree;
-    let mut wall = None;
-    for item in tree.items() {
-        if let Item::Block(b) = item {
-            let start = tree.span(tree.head(&b.head)).start;
-            if start > at {
-                break;
-            }
-            wall = match b.kind {
-                BlockKind::Wall => Some(wall.map_or(0, |w: usize| w + 1)),
-                BlockKind::Defaults => wall,
-            };
-            if b.kind == BlockKind::Defaults
-                && tree
-                    .body(b)
-                    .iter()
-                    .any(|s| tree.statement_span(s).start == at)
-            {
-                return Some("Sets the default for the walls created after this block.".into());
-            }
-        }
+    let block = tree.statements().find(|(s, _)| *s == stmt)?.1?;
+    if keyword.role() != Role::Property {
+        return None;
     }
-    let wall = doc.analysis.scene.walls.get(wall?)?;
+    if block.kind == BlockKind::Defaults {
+        return Some("Sets the default for the walls created after this block.".into());
+    }
+    let index = tree
+        .items()
+        .iter()
+        .filter_map(|i| match i {
+            Item::Block(b) if b.kind == BlockKind::Wall => Some(b),
+            _ => None,
+        })
+        .position(|b| std::ptr::eq(b, block))?;
+    let wall = doc.analysis.scene.walls.get(index)?;
     let setting = wall.setting(keyword)?;
+    let values = tree.values(stmt);
+    let here = match (values.first(), values.last()) {
+        (Some(&a), Some(&b)) => Some(tree.span(a).start..tree.span(b).end),
+        _ => None,
+    };
+    let line = |at: usize| doc.index.line_of(at) + 1;
+    let from = match &setting.source {
+        Source::Builtin => "the built-in default".to_string(),
+        Source::Set {
+            derived_from: Some(k),
+            values,
+            ..
+        } => format!(
+            "the `{}` on line {} (2/7 of it)",
+            k.name(),
+            line(values.range().start)
+        ),
+        Source::Set { values, .. } if Some(values.range()) == here => "this token".to_string(),
+        Source::Set {
+            place: Place::Wall,
+            values,
+            ..
+        } => format!(
+            "the `{}` on line {}, which wins",
+            keyword.name(),
+            line(values.range().start)
+        ),
+        Source::Set {
+            place: Place::Defaults,
+            values,
+            ..
+        } => format!("`defaults` on line {}", line(values.range().start)),
+    };
     let shown = match setting.value {
         Value::Number(x) => format!("{x}"),
         Value::Integer(i) => format!("{i}"),
         Value::Vector(v) => format!("{} {} {}", v.x, v.y, v.z),
         Value::Type(t) => t.name().to_string(),
     };
-    let from = match &setting.source {
-        Source::Builtin => "the built-in default".to_string(),
-        Source::Set {
-            place: Place::Wall,
-            values,
-            ..
-        } if values.range().start < at => "an earlier token of this wall".to_string(),
-        Source::Set {
-            place: Place::Wall, ..
-        } => "this token".to_string(),
-        Source::Set {
-            place: Place::Defaults,
-            values,
-            ..
-        } => format!(
-            "`defaults` on line {}",
-            doc.index.line_col(doc.text(), values.range().start).line
-        ),
-    };
-    // Unit scaling: the numbers as written differ from the value.
-    let scaled = match (&setting.source, setting.value) {
-        (Source::Set { values, .. }, Value::Number(x)) => doc.text()[values.range()]
+    // What happened to the number as written: unit scaling, or a percentage.
+    let written = match (&setting.source, setting.value) {
+        (
+            Source::Set {
+                values,
+                derived_from: None,
+                ..
+            },
+            Value::Number(x),
+        ) if Some(values.range()) == here => doc.text()[values.range()]
             .parse::<f64>()
             .ok()
-            .filter(|&raw| raw != x)
-            .map(|raw| format!(" Written as {raw}, scaled by the units in force."))
-            .unwrap_or_default(),
-        _ => String::new(),
+            .filter(|&raw| raw != x),
+        _ => None,
+    };
+    let note = match written {
+        Some(raw) if keyword == Keyword::Transparency => {
+            format!(" Written as {raw}, a percentage.")
+        }
+        Some(raw) => format!(" Written as {raw}, scaled by the units in force."),
+        None => String::new(),
     };
     Some(format!(
-        "In wall {}: **{shown}** (pkdgrav units), from {from}.{scaled}",
+        "In wall {}: **{shown}** (pkdgrav units), from {from}.{note}",
         wall.index
     ))
 }
@@ -339,20 +364,16 @@ pub fn symbols(doc: &Document) -> Vec<DocumentSymbol> {
 /// A folding range for every block that spans several lines.
 pub fn folding(doc: &Document) -> Vec<FoldingRange> {
     let tree = &doc.parse.tree;
-    let text = doc.text();
     tree.items()
         .iter()
         .filter_map(|item| {
             let Item::Block(b) = item else { return None };
             let last = tree.body(b).last()?;
-            let start = doc
-                .index
-                .line_col(text, tree.statement_span(&b.head).start)
-                .line;
-            let end = doc.index.line_col(text, tree.statement_span(last).end).line;
+            let start = doc.index.line_of(tree.statement_span(&b.head).start);
+            let end = doc.index.line_of(tree.statement_span(last).end);
             (end > start).then(|| FoldingRange {
-                start_line: start as u32 - 1,
-                end_line: end as u32 - 1,
+                start_line: start as u32,
+                end_line: end as u32,
                 kind: Some(FoldingRangeKind::Region),
                 ..FoldingRange::default()
             })

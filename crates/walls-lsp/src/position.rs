@@ -1,39 +1,69 @@
 //! Byte offsets to LSP positions and back. LSP counts columns in UTF-16 code units by
-//! default; inside, everything is byte offsets.
+//! default and ends lines at `\n`, `\r\n` and a lone `\r`; inside, everything is byte
+//! offsets.
 
 use tower_lsp_server::ls_types::{Position, Range};
-use walls_diagnostics::LineIndex;
 
-/// The LSP position of byte `offset` in `text`.
-pub fn position(index: &LineIndex, text: &str, offset: usize) -> Position {
-    let (line, column) = index.utf16_col(text, offset);
+/// Where each line starts, by LSP's rules: a line ends at `\n`, `\r\n` or a lone `\r`.
+#[derive(Debug, Clone)]
+pub struct Lines {
+    starts: Vec<usize>,
+}
+
+impl Lines {
+    /// Indexes `text`.
+    pub fn new(text: &str) -> Self {
+        let b = text.as_bytes();
+        let mut starts = vec![0];
+        for (i, &c) in b.iter().enumerate() {
+            let ends = c == b'\n' || (c == b'\r' && b.get(i + 1) != Some(&b'\n'));
+            if ends {
+                starts.push(i + 1);
+            }
+        }
+        Lines { starts }
+    }
+
+    /// The 0-based line holding byte `offset`.
+    pub fn line_of(&self, offset: usize) -> usize {
+        self.starts.partition_point(|&s| s <= offset) - 1
+    }
+}
+
+/// The LSP position of byte `offset` in `text` (an offset inside a character counts as
+/// that character's start).
+pub fn position(lines: &Lines, text: &str, offset: usize) -> Position {
+    let offset = offset.min(text.len());
+    let line = lines.line_of(offset);
+    let start = lines.starts[line];
+    let column: usize = text[start..]
+        .char_indices()
+        .take_while(|&(i, _)| start + i < offset)
+        .map(|(_, c)| c.len_utf16())
+        .sum();
     Position::new(line as u32, column as u32)
 }
 
 /// The LSP range of a byte range.
-pub fn range(index: &LineIndex, text: &str, span: &std::ops::Range<usize>) -> Range {
+pub fn range(lines: &Lines, text: &str, span: &std::ops::Range<usize>) -> Range {
     Range::new(
-        position(index, text, span.start),
-        position(index, text, span.end),
+        position(lines, text, span.start),
+        position(lines, text, span.end),
     )
 }
 
 /// The byte offset of an LSP position; positions past a line's end or the text's end
 /// are clamped to them.
-pub fn offset(index: &LineIndex, text: &str, p: Position) -> usize {
+pub fn offset(lines: &Lines, text: &str, p: Position) -> usize {
     let line = p.line as usize;
-    if line >= index.line_count() {
+    if line >= lines.starts.len() {
         return text.len();
     }
-    let start = index.line_start(line);
-    let end = if line + 1 < index.line_count() {
-        index.line_start(line + 1)
-    } else {
-        text.len()
-    };
+    let start = lines.starts[line];
+    let end = lines.starts.get(line + 1).copied().unwrap_or(text.len());
     let mut units = 0;
     for (i, c) in text[start..end].char_indices() {
-        if units >= p.character as usize || c == '\n' {
+        if units >= p.character as usize || c == '\n' || c == '\r' {
             return start + i;
         }
         units += c.len_utf16();
@@ -46,9 +76,18 @@ mod tests {
     use super::*;
 
     #[test]
+    fn lone_carriage_returns_end_lines() {
+        let text = "wall\rtype\r\nplane\n";
+        let lines = Lines::new(text);
+        assert_eq!(position(&lines, text, 5), Position::new(1, 0));
+        assert_eq!(position(&lines, text, 11), Position::new(2, 0));
+        assert_eq!(super::offset(&lines, text, Position::new(1, 9)), 9);
+    }
+
+    #[test]
     fn utf16_round_trip() {
         let text = "# μ𝄞x\nwall\n";
-        let index = LineIndex::new(text);
+        let index = Lines::new(text);
         for offset in [0, 2, 4, 8, 9, 10, 14, text.len()] {
             let p = position(&index, text, offset);
             assert_eq!(super::offset(&index, text, p), offset, "{offset} {p:?}");

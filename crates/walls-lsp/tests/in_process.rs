@@ -364,3 +364,50 @@ async fn formatting_reads_the_project_configuration() {
         .await;
     assert_eq!(edits[0]["newText"], "wall type disk\n    radius 1\n");
 }
+
+#[tokio::test]
+async fn hovers_say_where_values_really_come_from() {
+    let mut c = Client::start(json!({})).await;
+    let text = "wall type plane\n  k_t 1\n  k_n 7\n  origin 1 1 1\n  origin 2 2 2\n  transparency 50\nlengthunit 2\norigin 1 1 1\n";
+    c.open(text).await;
+    let mut hover = async |line: u32, character: u32| -> Value {
+        c.request("textDocument/hover", json!({"textDocument": {"uri": URI}, "position": {"line": line, "character": character}}))
+            .await
+    };
+    let note = |h: &Value| {
+        h["contents"]["value"]
+            .as_str()
+            .unwrap()
+            .rsplit("\n\n")
+            .next()
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(
+        note(&hover(1, 3).await),
+        "In wall 0: **2** (pkdgrav units), from the `k_n` on line 3 (2/7 of it)."
+    );
+    assert_eq!(
+        note(&hover(3, 3).await),
+        "In wall 0: **2 2 2** (pkdgrav units), from the `origin` on line 5, which wins."
+    );
+    assert_eq!(
+        note(&hover(5, 3).await),
+        "In wall 0: **0.5** (pkdgrav units), from this token. Written as 50, a percentage."
+    );
+    // Outside any block: the documentation only.
+    assert!(note(&hover(7, 1).await).starts_with("A point of the wall"));
+    // Past the end of a line, or of the file: nothing.
+    assert_eq!(hover(0, 40).await, Value::Null);
+    assert_eq!(hover(40, 0).await, Value::Null);
+}
+
+#[tokio::test]
+async fn a_lone_carriage_return_ends_a_line() {
+    let mut c = Client::start(json!({})).await;
+    let published = c.open("wall type plane\r  raduis 1\n").await;
+    assert_eq!(
+        published["diagnostics"][0]["range"],
+        json!({"start": {"line": 1, "character": 2}, "end": {"line": 1, "character": 8}})
+    );
+}
