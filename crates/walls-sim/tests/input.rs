@@ -1,0 +1,151 @@
+//! Reading particles (CSV, standard and reduced `.ss`) and pkdgrav parameter files, and
+//! the located errors for broken ones.
+
+use walls_sim::input::{read_csv, read_par, read_ss};
+
+#[test]
+fn csv_with_and_without_optional_columns() {
+    let ps =
+        read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,-2\n2, 0.2, 1,2,3, 4,5,6\n").unwrap();
+    assert_eq!(ps.len(), 2);
+    assert_eq!(
+        (
+            ps[1].mass,
+            ps[1].radius,
+            ps[1].pos.z,
+            ps[1].vel.x,
+            ps[1].index
+        ),
+        (2.0, 0.2, 3.0, 4.0, 1)
+    );
+    let ps =
+        read_csv("radius,mass,x,y,z,vx,vy,vz,wx,wy,wz,color\n0.1,1,0,0,0,0,0,0,1,2,3,7\n").unwrap();
+    assert_eq!((ps[0].mass, ps[0].spin.y, ps[0].color), (1.0, 2.0, 7));
+}
+
+#[test]
+fn csv_errors_say_where() {
+    let e = read_csv("mass,radius,x,y,z,vx,vy\n").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "line 1: the header has no `vz` column (it needs mass,radius,x,y,z,vx,vy,vz)"
+    );
+    let e = read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0,0,0,0\n1,0.1,0,zero,0,0,0,0\n")
+        .unwrap_err();
+    assert_eq!(e.to_string(), "line 3: `y` is `zero`, not a finite number");
+    let e = read_csv("mass,radius,x,y,z,vx,vy,vz\n0,0.1,0,0,0,0,0,0\n").unwrap_err();
+    assert_eq!(e.to_string(), "line 2: mass and radius must be positive");
+    assert!(
+        read_csv("mass,radius,x,y,z,vx,vy,vz,spin\n")
+            .unwrap_err()
+            .message
+            .contains("unknown column `spin`")
+    );
+}
+
+fn header(time: f64, count: i32, magic: i32) -> Vec<u8> {
+    let mut b = time.to_be_bytes().to_vec();
+    b.extend(count.to_be_bytes());
+    b.extend(magic.to_be_bytes());
+    b
+}
+
+#[test]
+fn standard_and_reduced_ss_files() {
+    let mut b = header(1.5, 1, -1);
+    for x in [2.0f64, 0.25, 1.0, 2.0, 3.0, -1.0, 0.0, 0.5, 0.0, 0.0, 9.0] {
+        b.extend(x.to_be_bytes());
+    }
+    b.extend(5i32.to_be_bytes());
+    b.extend(42i32.to_be_bytes());
+    assert_eq!(b.len(), 16 + 96);
+    let (time, ps) = read_ss(&b).unwrap();
+    assert_eq!(time, 1.5);
+    let p = &ps[0];
+    assert_eq!(
+        (
+            p.mass, p.radius, p.pos.y, p.vel.x, p.vel.z, p.spin.z, p.color, p.index
+        ),
+        (2.0, 0.25, 2.0, -1.0, 0.5, 9.0, 5, 42)
+    );
+
+    let mut r = header(0.0, 2, -10101);
+    for i in 0i32..2 {
+        for x in [1.0f32, 0.5, i as f32, 0.0, 0.0] {
+            r.extend(x.to_be_bytes());
+        }
+        r.extend(3i32.to_be_bytes());
+        r.extend(i.to_be_bytes());
+    }
+    let (_, ps) = read_ss(&r).unwrap();
+    assert_eq!(
+        (ps.len(), ps[1].pos.x, ps[1].radius, ps[1].index),
+        (2, 1.0, 0.5, 1)
+    );
+}
+
+#[test]
+fn broken_ss_files_say_where() {
+    let e = read_ss(&header(0.0, 1, 7)).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "byte 12: magic number 7: a .ss file has −1 (standard) or −10101 (reduced)"
+    );
+    let e = read_ss(&header(0.0, 2, -1)).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "byte 8: 2 particles of 96 bytes need 208 bytes, the file has 16"
+    );
+    let e = read_ss(&[0u8; 10]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "byte 8: the file ends inside a record (10 bytes in all)"
+    );
+}
+
+#[test]
+fn parameter_files() {
+    let p = read_par(
+        "# a pkdgrav run\nachInFile = \"ic.ss\"\nachWallsFile = walls.dat  # the walls\ndDelta = 1e-6\nnSteps = 2000\n\
+         dEpsN = 0.8\ndEpsT=1\ndKn = 1e5\ndMuS = 0.5\ndzUnifGrav = -9.8\nbWallsEdgeDetect = 0\nnOther = 3\n",
+    )
+    .unwrap();
+    assert_eq!(p.in_file.as_deref(), Some("ic.ss"));
+    assert_eq!(p.walls_file.as_deref(), Some("walls.dat"));
+    assert_eq!(
+        (p.dt, p.steps, p.eps_n, p.eps_t, p.k_n, p.mu_s),
+        (
+            Some(1e-6),
+            Some(2000),
+            Some(0.8),
+            Some(1.0),
+            Some(1e5),
+            Some(0.5)
+        )
+    );
+    assert_eq!(p.gravity.unwrap().z, -9.8);
+    assert_eq!(p.edge_detect, Some(false));
+    assert_eq!(p.k_t, None);
+    assert_eq!(
+        read_par("dDelta = fast\n").unwrap_err().to_string(),
+        "line 1: `dDelta` is `fast`, not a number"
+    );
+    assert_eq!(
+        read_par("nSteps = 2.5\n").unwrap_err().to_string(),
+        "line 1: `nSteps` is 2.5, not a whole number"
+    );
+    assert_eq!(
+        read_par("dDelta 1\n").unwrap_err().to_string(),
+        "line 1: `dDelta 1` is not `name = value`"
+    );
+}
+
+proptest::proptest! {
+    #[test]
+    fn any_bytes_read_or_fail_cleanly(bytes in proptest::collection::vec(proptest::num::u8::ANY, 0..300)) {
+        let _ = read_ss(&bytes);
+        let text = String::from_utf8_lossy(&bytes);
+        let _ = read_csv(&text);
+        let _ = read_par(&text);
+    }
+}
