@@ -6,6 +6,7 @@
 pub mod geometry;
 pub mod input;
 pub mod kinematics;
+pub mod ssdem;
 
 pub use geometry::{Feature, Nearest, Shape};
 pub use kinematics::{Motion, OscillationStepping};
