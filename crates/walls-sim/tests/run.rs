@@ -1,0 +1,230 @@
+//! Particles against walls with the SSDEM model, against analytic answers.
+
+use nalgebra::Vector3;
+use walls_model::{Options, Scene, analyze};
+use walls_sim::input::Particle;
+use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
+
+type Vec3 = Vector3<f64>;
+
+fn scene(text: &str) -> Scene {
+    let parsed = walls_syntax::parse(text);
+    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+    analyze(&parsed.tree, &Options::default()).scene
+}
+
+fn particle(pos: [f64; 3], vel: [f64; 3]) -> Particle {
+    Particle {
+        mass: 1.0,
+        radius: 0.1,
+        pos: Vec3::from(pos),
+        vel: Vec3::from(vel),
+        spin: Vec3::zeros(),
+        color: 3,
+        index: 0,
+    }
+}
+
+fn settings(particles: &[Particle], eps_n: f64, t_end: f64, gravity: [f64; 3]) -> Settings {
+    // Stiff enough that a particle at speed 1 overlaps by 1 % of its radius.
+    let k_n = 1e6;
+    Settings {
+        dt: default_dt(particles, k_n),
+        t_end,
+        gravity: Vec3::from(gravity),
+        material: ParticleMaterial {
+            eps_n,
+            eps_t: 1.0,
+            k_n,
+            k_t: 2.0 / 7.0 * k_n,
+            mu_s: 0.0,
+        },
+    }
+}
+
+#[test]
+fn rebound_at_eps_n_from_every_wall_type() {
+    // Each wall is met head-on by a particle 0.5 away moving at 1 towards it.
+    let cases = [
+        ("wall type plane\n", [0.0, 0.0, 0.5], [0.0, 0.0, -1.0]),
+        (
+            "wall type rectangle\n  origin -1 -1 0\n  vertex1 2 0 0\n  vertex2 0 2 0\n",
+            [0.0, 0.0, 0.5],
+            [0.0, 0.0, -1.0],
+        ),
+        (
+            "wall type triangle\n  origin -1 -1 0\n  vertex1 3 0 0\n  vertex2 0 3 0\n",
+            [0.0, 0.0, 0.5],
+            [0.0, 0.0, -1.0],
+        ),
+        (
+            "wall type disk\n  radius 1\n",
+            [0.0, 0.0, -0.5],
+            [0.0, 0.0, 1.0],
+        ),
+        (
+            "wall type cylinder-infinite\n  radius 1\n",
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+        ),
+        (
+            "wall type cylinder-finite\n  radius 1\n  length 2\n",
+            [3.0, 0.0, 0.0],
+            [-1.0, 0.0, 0.0],
+        ),
+        (
+            "wall type shell\n  radius 1\n",
+            [0.0, 0.3, 0.0],
+            [0.0, 1.0, 0.0],
+        ),
+    ];
+    for eps in [0.9, 0.5] {
+        for (walls, pos, vel) in cases {
+            let ps = vec![particle(pos, vel)];
+            let out = run(
+                &scene(walls),
+                ps.clone(),
+                &settings(&ps, eps, 2.0, [0.0; 3]),
+            );
+            let bounces: Vec<_> = out
+                .events
+                .iter()
+                .filter(|e| e.kind == EventKind::Bounce)
+                .collect();
+            assert_eq!(bounces.len(), 1, "{walls}: {:?}", out.events);
+            let ratio = bounces[0].vn_out / bounces[0].vn_in;
+            assert!(
+                (ratio / eps - 1.0).abs() < 0.01,
+                "{walls} ε = {eps}: {ratio}"
+            );
+            assert!(out.warnings.is_empty(), "{:?}", out.warnings);
+        }
+    }
+}
+
+#[test]
+fn a_walls_own_restitution_wins_over_the_particles() {
+    let ps = vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -1.0])];
+    let out = run(
+        &scene("wall type plane\n  epsn 0.3\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 1.0, [0.0; 3]),
+    );
+    let e = &out.events[0];
+    assert!((e.vn_out / e.vn_in / 0.3 - 1.0).abs() < 0.01);
+}
+
+#[test]
+fn elastic_kick_off_a_moving_wall() {
+    // The wall moves up at 0.5; the particle comes down at 1: it leaves at 2u − v = 2.
+    let ps = vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -1.0])];
+    let out = run(
+        &scene("wall type plane\n  velocity 0 0 0.5\n"),
+        ps.clone(),
+        &settings(&ps, 1.0, 0.5, [0.0; 3]),
+    );
+    let v = out.particles[0].particle.vel.z;
+    assert!((v / 2.0 - 1.0).abs() < 0.01, "{v}");
+}
+
+#[test]
+fn death_and_sticky_walls() {
+    let ps = vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -1.0])];
+    let gone = run(
+        &scene("wall type plane\n  epsn -1\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 1.0, [0.0; 3]),
+    );
+    assert!(!gone.particles[0].alive);
+    assert_eq!(gone.events[0].kind, EventKind::Remove);
+    // Stuck to a wall moving sideways, it moves with it.
+    let stuck = run(
+        &scene("wall type plane\n  epsn 0\n  velocity 1 0 0\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 1.0, [0.0; 3]),
+    );
+    assert_eq!(stuck.events[0].kind, EventKind::Stick);
+    assert!((stuck.particles[0].particle.vel - Vec3::new(1.0, 0.0, 0.0)).norm() < 1e-12);
+}
+
+#[test]
+fn stuck_to_a_spinning_drum_it_moves_at_omega_times_r() {
+    // Inside a drum of radius 1 spinning at 2 about z, a particle thrown at the wall sticks
+    // and then goes round at Ω·r, r being its centre's distance from the axis.
+    let ps = vec![particle([0.5, 0.0, 0.0], [1.0, 0.0, 0.0])];
+    let out = run(
+        &scene("wall type cylinder-infinite\n  radius 1\n  epsn 0\n  ang-speed 2\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 3.0, [0.0; 3]),
+    );
+    let p = &out.particles[0].particle;
+    let r = (p.pos.x.powi(2) + p.pos.y.powi(2)).sqrt();
+    assert!(
+        (p.vel.norm() - 2.0 * r).abs() < 1e-9,
+        "{} vs {}",
+        p.vel.norm(),
+        2.0 * r
+    );
+    assert!((r - 0.9).abs() < 0.01, "it stays at the wall: r = {r}");
+}
+
+#[test]
+fn elastic_bouncing_under_gravity_keeps_its_energy() {
+    let ps = vec![particle([0.0, 0.0, 1.0], [0.0, 0.0, 0.0])];
+    let out = run(
+        &scene("wall type plane\n"),
+        ps.clone(),
+        &settings(&ps, 1.0, 6.0, [0.0, 0.0, -1.0]),
+    );
+    let (before, after) = out.energy;
+    assert!(out.events.len() >= 2, "{:?} {:?}", out.events, out.particles[0].particle.pos);
+    assert!((after / before - 1.0).abs() < 1e-3, "{before} → {after}");
+}
+
+#[test]
+fn holes_and_openings_let_particles_through() {
+    // Along the axis of a disk with a hole wider than the particle: no contact.
+    let ps = vec![particle([0.0, 0.0, 1.0], [0.0, 0.0, -1.0])];
+    let out = run(
+        &scene("wall type disk\n  radius 2\n  hole-radius 0.5\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 3.0, [0.0; 3]),
+    );
+    assert!(out.events.is_empty() && out.particles[0].particle.pos.z < -1.0);
+    // Up through a shell's opening from inside: out; down from inside: a bounce.
+    let up = vec![particle([0.0, 0.0, 0.0], [0.0, 0.0, 1.0])];
+    let shell = scene("wall type shell\n  radius 1\n  open-angle 45\n");
+    let out = run(&shell, up.clone(), &settings(&up, 0.9, 3.0, [0.0; 3]));
+    assert!(out.events.is_empty() && out.particles[0].particle.pos.z > 2.0);
+    let down = vec![particle([0.0, 0.0, 0.0], [0.0, 0.0, -1.0])];
+    let out = run(&shell, down.clone(), &settings(&down, 0.9, 3.0, [0.0; 3]));
+    assert_eq!(out.events[0].kind, EventKind::Bounce);
+}
+
+#[test]
+fn off_a_triangles_vertex_along_the_line_to_the_centre() {
+    // Aimed so that it meets the vertex at the origin along (−1, −1, 1)/√3.
+    let dir = Vec3::new(-1.0, -1.0, 1.0).normalize();
+    let start = dir * 0.5;
+    let ps = vec![particle(start.into(), (-dir).into())];
+    let out = run(
+        &scene("wall type triangle\n  vertex1 1 0 0\n  vertex2 0 1 0\n"),
+        ps.clone(),
+        &settings(&ps, 1.0, 1.0, [0.0; 3]),
+    );
+    let v = out.particles[0].particle.vel;
+    assert!((v.normalize() - dir).norm() < 1e-6, "leaves along {v:?}");
+}
+
+#[test]
+fn overlaps_beyond_pkdgrav_limits_warn_and_stop() {
+    // Soft springs and a fast particle: 3 % and 15 % warnings, then the 50 % stop.
+    let ps = vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -10.0])];
+    let mut s = settings(&ps, 0.9, 1.0, [0.0; 3]);
+    s.material.k_n = 1e3;
+    s.dt = default_dt(&ps, 1e3);
+    let out = run(&scene("wall type plane\n"), ps, &s);
+    assert_eq!(out.warnings.len(), 3, "{:?}", out.warnings);
+    assert!(out.warnings[2].contains("pkdgrav aborts above 50%"));
+    assert!(out.t < 1.0);
+}
