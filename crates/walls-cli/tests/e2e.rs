@@ -1,9 +1,9 @@
-//! End-to-end tests as data: each folder under the repository's `tests/lint/` and
-//! `tests/fmt/` holds a `cmd` file (the command line, words separated by spaces), the
-//! files it names, an optional `stdin`, and the snapshot `output.snap` of exit status,
-//! stdout, stderr and every file the command changed. The real binary (`walls-lint`,
-//! `walls-fmt` or `walls-sim`) runs in a copy of that folder. Update the snapshots with
-//! `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
+//! End-to-end tests as data: each folder under the repository's `tests/lint/`,
+//! `tests/fmt/` and `tests/sim/` holds a `cmd` file (the command line, words separated by
+//! spaces), the files it names, an optional `stdin`, and the snapshot `output.snap` of
+//! exit status, stdout, stderr and every file the command changed. The real binary
+//! (`walls-lint`, `walls-fmt` or `walls-sim`) runs in a copy of that folder. Update the
+//! snapshots with `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
 
 use std::io::Write;
 use std::path::Path;
@@ -12,7 +12,7 @@ use std::process::{Command, Stdio};
 #[test]
 fn lint_cases() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests");
-    let mut cases: Vec<_> = ["lint", "fmt"]
+    let mut cases: Vec<_> = ["lint", "fmt", "sim"]
         .iter()
         .flat_map(|group| std::fs::read_dir(root.join(group)).unwrap())
         .map(|e| e.unwrap().path())

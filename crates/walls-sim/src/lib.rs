@@ -8,6 +8,7 @@ pub mod hsdem;
 pub mod input;
 pub mod kinematics;
 pub mod run;
+pub mod setup;
 pub mod ssdem;
 
 pub use geometry::{Feature, Nearest, Shape};

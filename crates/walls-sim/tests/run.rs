@@ -177,7 +177,12 @@ fn elastic_bouncing_under_gravity_keeps_its_energy() {
         &settings(&ps, 1.0, 6.0, [0.0, 0.0, -1.0]),
     );
     let (before, after) = out.energy;
-    assert!(out.events.len() >= 2, "{:?} {:?}", out.events, out.particles[0].particle.pos);
+    assert!(
+        out.events.len() >= 2,
+        "{:?} {:?}",
+        out.events,
+        out.particles[0].particle.pos
+    );
     assert!((after / before - 1.0).abs() < 1e-3, "{before} → {after}");
 }
 

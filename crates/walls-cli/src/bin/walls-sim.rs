@@ -30,6 +30,9 @@ struct Args {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Run particles against the walls (SSDEM) and report where they end up, what
+    /// happened at walls, the energy and pkdgrav's warnings.
+    Run(RunArgs),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
@@ -45,10 +48,229 @@ enum Command {
     },
 }
 
+/// `walls-sim run`: the SPEC §2 command line.
+#[derive(clap::Args)]
+struct RunArgs {
+    /// The walls file.
+    #[arg(value_name = "FILE")]
+    file: String,
+    /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
+    /// .ss file. Without it, nine particles are dropped onto the scene.
+    #[arg(long, value_name = "FILE")]
+    particles: Option<String>,
+    /// A pkdgrav parameter file: timestep, steps, material, gravity, and the particle
+    /// file (achInFile) when --particles is not given.
+    #[arg(long, value_name = "FILE")]
+    par: Option<String>,
+    /// The contact model.
+    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
+    method: ModeArg,
+    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
+    #[arg(long, value_parser = positive)]
+    dt: Option<f64>,
+    /// When to stop (default: three free falls over the scene).
+    #[arg(long, value_parser = positive)]
+    t_end: Option<f64>,
+    /// Uniform gravity.
+    #[arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = finite)]
+    gravity: Option<Vec<f64>>,
+    /// The particles' normal restitution (what walls' 99 means).
+    #[arg(long, value_parser = finite)]
+    epsn: Option<f64>,
+    /// The particles' tangential restitution.
+    #[arg(long, value_parser = finite)]
+    epst: Option<f64>,
+    /// The particles' normal spring constant.
+    #[arg(long = "k-n", value_parser = positive)]
+    k_n: Option<f64>,
+    /// The particles' tangential spring constant (default 2/7 of k_n).
+    #[arg(long = "k-t", value_parser = finite)]
+    k_t: Option<f64>,
+    /// The particles' static friction.
+    #[arg(long = "mu-s", value_parser = finite)]
+    mu_s: Option<f64>,
+    /// Print the result as JSON on standard output.
+    #[arg(long)]
+    json: bool,
+}
+
 fn main() -> ExitCode {
     let args = Args::parse();
     match args.command {
         Command::Scene { file, time, mode } => scene(&file, time, mode),
+        Command::Run(run) => simulate(&run),
+    }
+}
+
+fn simulate(args: &RunArgs) -> ExitCode {
+    match simulate_inner(args) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("walls-sim: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
+    use walls_sim::input::{read_csv, read_par, read_ss};
+    use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
+    use walls_sim::setup;
+    if args.method == ModeArg::Hsdem {
+        return Err("HSDEM stepping is not implemented yet: run with --method ssdem".into());
+    }
+    let checked = check_bytes(input::read(&args.file).bytes?, &Options::default());
+    let errors = checked
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .count();
+    if errors > 0 {
+        eprintln!(
+            "walls-sim: {}: {errors} error(s); running what could be resolved (see walls-lint)",
+            args.file
+        );
+    }
+    let scene = &checked.scene;
+    let par = match &args.par {
+        Some(p) => Some(
+            read_par(&std::fs::read_to_string(p).map_err(|e| format!("cannot read {p}: {e}"))?)
+                .map_err(|e| format!("{p}: {e}"))?,
+        ),
+        None => None,
+    };
+    let particle_file = args.particles.clone().or_else(|| {
+        let par_dir = std::path::Path::new(args.par.as_deref()?)
+            .parent()?
+            .to_path_buf();
+        par.as_ref()?
+            .in_file
+            .as_ref()
+            .map(|f| par_dir.join(f).to_string_lossy().into_owned())
+    });
+    let (particles, embedded) = match &particle_file {
+        Some(f) => {
+            let bytes = std::fs::read(f).map_err(|e| format!("cannot read {f}: {e}"))?;
+            let ps = if f.ends_with(".csv") {
+                read_csv(&String::from_utf8_lossy(&bytes))
+            } else {
+                read_ss(&bytes).map(|(_, ps)| ps)
+            }
+            .map_err(|e| format!("{f}: {e}"))?;
+            (ps, false)
+        }
+        None => (setup::default_particles(scene), true),
+    };
+    if particles.is_empty() {
+        return Err("no particles to run".into());
+    }
+    let gravity = match (&args.gravity, par.as_ref().and_then(|p| p.gravity)) {
+        (Some(g), _) => nalgebra::Vector3::new(g[0], g[1], g[2]),
+        (None, Some(g)) => g,
+        (None, None) if embedded => nalgebra::Vector3::new(0.0, 0.0, -1.0),
+        (None, None) => nalgebra::Vector3::zeros(),
+    };
+    let from_par = |f: fn(&walls_sim::input::Params) -> Option<f64>| par.as_ref().and_then(f);
+    let k_n = args
+        .k_n
+        .or(from_par(|p| p.k_n))
+        .unwrap_or_else(|| setup::default_k_n(scene, &particles, &gravity));
+    let material = ParticleMaterial {
+        eps_n: args.epsn.or(from_par(|p| p.eps_n)).unwrap_or(0.8),
+        eps_t: args.epst.or(from_par(|p| p.eps_t)).unwrap_or(1.0),
+        k_n,
+        k_t: args.k_t.or(from_par(|p| p.k_t)).unwrap_or(2.0 / 7.0 * k_n),
+        mu_s: args.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(0.0),
+    };
+    let dt = args
+        .dt
+        .or(from_par(|p| p.dt))
+        .unwrap_or_else(|| default_dt(&particles, k_n));
+    let t_end = args
+        .t_end
+        .or_else(|| par.as_ref().and_then(|p| Some(p.steps? as f64 * p.dt?)))
+        .unwrap_or_else(|| setup::default_duration(scene, &particles, &gravity));
+    let settings = Settings {
+        dt,
+        t_end,
+        gravity,
+        material,
+    };
+    let out = run(scene, particles, &settings);
+    let kind = |k: EventKind| match k {
+        EventKind::Bounce => "bounce",
+        EventKind::Stick => "stick",
+        EventKind::Remove => "remove",
+    };
+    let mut model = vec!["ssdem: spring-dashpot"];
+    if material.mu_s > 0.0
+        || scene
+            .walls
+            .iter()
+            .any(|w| w.number(walls_keywords::Keyword::MuS) > 0.0)
+    {
+        model.push("tangential spring with Coulomb friction");
+    }
+    if gravity.norm() > 0.0 {
+        model.push("uniform gravity");
+    }
+    if out.events.iter().any(|e| e.kind == EventKind::Stick) {
+        model.push("sticky walls");
+    }
+    if out.events.iter().any(|e| e.kind == EventKind::Remove) {
+        model.push("death walls");
+    }
+    let v3 = |v: &nalgebra::Vector3<f64>| serde_json::json!([v.x, v.y, v.z]);
+    let report = serde_json::json!({
+        "t": out.t,
+        "steps": out.steps,
+        "particles": out.particles.iter().map(|s| serde_json::json!({
+            "pos": v3(&s.particle.pos),
+            "vel": v3(&s.particle.vel),
+            "spin": v3(&s.particle.spin),
+            "alive": s.alive,
+            "stuck_to": s.stuck_to.map(|(w, _)| w),
+        })).collect::<Vec<_>>(),
+        "events": out.events.iter().map(|e| serde_json::json!({
+            "t": e.t, "particle": e.particle, "wall": e.wall, "kind": kind(e.kind),
+            "vn_in": e.vn_in, "vn_out": e.vn_out,
+        })).collect::<Vec<_>>(),
+        "energy": {"initial": out.energy.0, "final": out.energy.1},
+        "model": model,
+        "warnings": out.warnings,
+    });
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+    } else {
+        eprintln!(
+            "walls-sim: t = {:.6} after {} steps of {dt:.3e}: {} particles ({} alive), {} wall events, energy {:.6e} → {:.6e}",
+            out.t,
+            out.steps,
+            out.particles.len(),
+            out.particles.iter().filter(|s| s.alive).count(),
+            out.events.len(),
+            out.energy.0,
+            out.energy.1
+        );
+        for w in &out.warnings {
+            eprintln!("walls-sim: warning: {w}");
+        }
+    }
+    Ok(if errors > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// A strictly positive real.
+fn positive(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
+        _ => Err(format!("`{s}` is not a positive number")),
     }
 }
 

@@ -1,0 +1,121 @@
+//! What a run needs when the user does not say: the embedded particles, and material
+//! values, timestep and duration derived from the scene (docs/evaluator.md).
+//!
+//! * Particles: nine, on a 3 × 3 grid over the middle of the scene, one scene-size above
+//!   its top, with radius 2 % of the scene's size and unit density: deterministic, so
+//!   that the same file gives the same run.
+//! * Gravity: 1 along −z (pkdgrav units) for the embedded particles, none otherwise.
+//! * Material: ε_n 0.8, ε_t 1, μ_s 0, and k_n stiff enough that the fastest expected
+//!   impact (the larger of the fastest particle and free fall over the scene) overlaps
+//!   by 1 % of the smallest radius; k_t = 2/7 k_n.
+//! * Duration: three free-fall times over the scene (or three crossings at the fastest
+//!   speed without gravity).
+
+use crate::input::Particle;
+use nalgebra::Vector3;
+use walls_keywords::{Keyword, WallType};
+use walls_model::Scene;
+
+type Vec3 = Vector3<f64>;
+
+/// The box around the walls' finite parts (planes and infinite cylinders by their
+/// origin), at least a unit across.
+pub fn bounds(scene: &Scene) -> (Vec3, Vec3) {
+    let mut lo = Vec3::repeat(f64::INFINITY);
+    let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+    for w in &scene.walls {
+        let o = w.vector(Keyword::Origin);
+        let reach = match w.wall_type() {
+            WallType::Triangle | WallType::Rectangle => {
+                let (a, b) = (w.vector(Keyword::Vertex1), w.vector(Keyword::Vertex2));
+                for corner in [o + a, o + b, o + a + b] {
+                    lo = lo.inf(&corner);
+                    hi = hi.sup(&corner);
+                }
+                0.0
+            }
+            WallType::Disk | WallType::Shell | WallType::CylinderInfinite => {
+                w.number(Keyword::Radius)
+            }
+            WallType::CylinderFinite => w
+                .number(Keyword::Radius)
+                .max(w.number(Keyword::Length) / 2.0),
+            WallType::Plane => 0.0,
+        };
+        lo = lo.inf(&(o - Vec3::repeat(reach)));
+        hi = hi.sup(&(o + Vec3::repeat(reach)));
+    }
+    if !lo.iter().all(|x| x.is_finite()) {
+        return (Vec3::repeat(-0.5), Vec3::repeat(0.5));
+    }
+    let centre = (lo + hi) / 2.0;
+    let half = ((hi - lo) / 2.0).sup(&Vec3::repeat(0.5));
+    (centre - half, centre + half)
+}
+
+/// The embedded particles for `scene`.
+pub fn default_particles(scene: &Scene) -> Vec<Particle> {
+    let (lo, hi) = bounds(scene);
+    let size = (hi - lo).max();
+    let r = 0.02 * size;
+    let mass = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
+    let centre = (lo + hi) / 2.0;
+    let mut out = Vec::new();
+    for i in -1..=1 {
+        for j in -1..=1 {
+            let pos = Vec3::new(
+                centre.x + i as f64 * 6.0 * r,
+                centre.y + j as f64 * 6.0 * r,
+                hi.z + size,
+            );
+            out.push(Particle {
+                mass,
+                radius: r,
+                pos,
+                vel: Vec3::zeros(),
+                spin: Vec3::zeros(),
+                color: 3,
+                index: out.len() as i32,
+            });
+        }
+    }
+    out
+}
+
+/// A normal spring constant for which the fastest expected impact overlaps by 1 % of the
+/// smallest radius: k_n = m·(v/(0.01·r))².
+pub fn default_k_n(scene: &Scene, particles: &[Particle], gravity: &Vec3) -> f64 {
+    let (lo, hi) = bounds(scene);
+    let span = particles
+        .iter()
+        .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()));
+    let fall = (2.0 * gravity.norm() * span.max()).sqrt();
+    let fastest = particles.iter().map(|p| p.vel.norm()).fold(0.0, f64::max);
+    let v = fall.max(fastest).max(1e-12);
+    let m = particles.iter().map(|p| p.mass).fold(0.0, f64::max);
+    let r = particles
+        .iter()
+        .map(|p| p.radius)
+        .fold(f64::INFINITY, f64::min);
+    m * (v / (0.01 * r)).powi(2)
+}
+
+/// How long to run when not told: three free falls (or crossings) over the scene.
+pub fn default_duration(scene: &Scene, particles: &[Particle], gravity: &Vec3) -> f64 {
+    let (lo, hi) = bounds(scene);
+    let span = particles
+        .iter()
+        .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()))
+        .max();
+    let g = gravity.norm();
+    if g > 0.0 {
+        3.0 * (2.0 * span / g).sqrt()
+    } else {
+        let fastest = particles.iter().map(|p| p.vel.norm()).fold(0.0, f64::max);
+        if fastest > 0.0 {
+            3.0 * span / fastest
+        } else {
+            1.0
+        }
+    }
+}
