@@ -233,3 +233,37 @@ fn overlaps_beyond_pkdgrav_limits_warn_and_stop() {
     assert!(out.warnings[2].contains("pkdgrav aborts above 50%"));
     assert!(out.t < 1.0);
 }
+
+#[test]
+fn a_vibrated_plate_throws_a_resting_particle_only_above_one_g() {
+    // A plate z = A·sin(ωt) carries a particle resting on it. The particle leaves when the
+    // plate decelerates faster than gravity: at ωt = arcsin(g/(Aω²)), and only if Aω²/g > 1.
+    let (a, g): (f64, f64) = (0.01, 1.0);
+    for gamma in [0.5f64, 2.0, 4.0] {
+        let omega = (gamma * g / a).sqrt();
+        let walls = format!("wall type plane\n  osc-ampl {a}\n  osc-freq {omega}\n");
+        // At rest on the plate: at the spring's equilibrium, moving with it.
+        let k_n = 1e6;
+        let ps = vec![particle([0.0, 0.0, 0.1 - g / k_n], [0.0, 0.0, a * omega])];
+        let period = std::f64::consts::TAU / omega;
+        let out = run(
+            &scene(&walls),
+            ps.clone(),
+            &settings(&ps, 0.5, 2.0 * period, [0.0, 0.0, -g]),
+        );
+        let first = out.events.first();
+        if gamma < 1.0 {
+            assert!(
+                first.is_none(),
+                "Γ = {gamma}: it stays on the plate: {first:?}"
+            );
+            continue;
+        }
+        let phase = first.expect("it lifts off").t * omega;
+        let expected = (1.0 / gamma).asin();
+        assert!(
+            (phase - expected).abs() < 0.02,
+            "Γ = {gamma}: lift-off at phase {phase}, expected {expected}"
+        );
+    }
+}
