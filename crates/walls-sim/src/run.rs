@@ -15,7 +15,6 @@ use crate::input::Particle;
 use crate::kinematics::Motion;
 use crate::ssdem::{Material, Touch, contact};
 use nalgebra::Vector3;
-use std::collections::HashMap;
 use walls_keywords::Keyword;
 use walls_model::{Scene, Wall, motion::position};
 
@@ -126,6 +125,32 @@ struct Open {
     vn_in: f64,
 }
 
+/// The open contacts of each particle, by wall. A particle touches a few walls at most, so
+/// a short list per particle is faster than a map keyed by pairs (docs/performance.md).
+struct OpenContacts(Vec<Vec<(usize, Open)>>);
+
+impl OpenContacts {
+    /// Closes the contact of particle `i` with wall `w`, if open.
+    fn remove(&mut self, i: usize, w: usize) -> Option<Open> {
+        let list = &mut self.0[i];
+        let k = list.iter().position(|(wall, _)| *wall == w)?;
+        Some(list.swap_remove(k).1)
+    }
+
+    /// The contact of particle `i` with wall `w`, opened with `new` if it is not.
+    fn entry(&mut self, i: usize, w: usize, new: impl FnOnce() -> Open) -> &mut Open {
+        let list = &mut self.0[i];
+        let k = match list.iter().position(|(wall, _)| *wall == w) {
+            Some(k) => k,
+            None => {
+                list.push((w, new()));
+                list.len() - 1
+            }
+        };
+        &mut list[k].1
+    }
+}
+
 /// A wall's material for a contact: the wall's values, the particles' where it says so.
 fn wall_material(wall: &Wall, p: &ParticleMaterial) -> Material {
     let own = |k, fallback: f64| match wall.number(k) {
@@ -178,7 +203,7 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
         .map(|w| wall_material(w, &settings.material))
         .collect();
     let initial = energy(&states, &g);
-    let mut open: HashMap<(usize, usize), Open> = HashMap::new();
+    let mut open = OpenContacts((0..states.len()).map(|_| Vec::new()).collect());
     let mut events = Vec::new();
     let mut warnings = Vec::new();
     let mut warned = [false; 3];
@@ -237,7 +262,7 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
                 let near = shape.nearest(&s.particle.pos);
                 let overlap = r - near.distance;
                 if overlap <= 0.0 {
-                    if let Some(o) = open.remove(&(i, w)) {
+                    if let Some(o) = open.remove(i, w) {
                         let n = near.normal;
                         let wall_v = Motion::new(&scene.walls[w]).point_velocity(
                             &near.point,
@@ -280,7 +305,7 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
                 let n = near.normal;
                 let u = s.particle.vel + s.particle.spin.cross(&(-n * r)) - wall_v;
                 let mat = &materials[w];
-                let entry = open.entry((i, w)).or_insert_with(|| Open {
+                let entry = open.entry(i, w, || Open {
                     spring: Vec3::zeros(),
                     vn_in: -n.dot(&u),
                 });
@@ -294,7 +319,7 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
                         vn_in: entry.vn_in,
                         vn_out: 0.0,
                     });
-                    open.remove(&(i, w));
+                    open.remove(i, w);
                     break;
                 }
                 if mat.eps_n == 0.0 {
@@ -308,7 +333,7 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
                         vn_in: entry.vn_in,
                         vn_out: 0.0,
                     });
-                    open.remove(&(i, w));
+                    open.remove(i, w);
                     break;
                 }
                 let touch = Touch {
