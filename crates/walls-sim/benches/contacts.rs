@@ -13,7 +13,7 @@ use std::hint::black_box;
 use walls_model::{Options, Scene, analyze};
 use walls_sim::geometry::Shape;
 use walls_sim::input::Particle;
-use walls_sim::run::{ParticleMaterial, Settings, default_dt, run};
+use walls_sim::run::{Settings, default_dt, run};
 use walls_sim::setup;
 
 type Vec3 = Vector3<f64>;
@@ -86,13 +86,7 @@ fn contacts(c: &mut Criterion) {
         dt,
         t_end: dt * steps as f64,
         gravity: Vec3::new(0.0, 0.0, -1.0),
-        material: ParticleMaterial {
-            eps_n: 0.8,
-            eps_t: 1.0,
-            k_n,
-            k_t: 2.0 / 7.0 * k_n,
-            mu_s: 0.0,
-        },
+        material: setup::default_material(k_n),
     };
     group.throughput(Throughput::Elements((ps.len() * steps) as u64));
     group.sample_size(10);

@@ -126,12 +126,30 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
             },
             index: n as i32,
         };
-        if !(particle.mass > 0.0 && particle.radius > 0.0) {
-            return Err(error(line, "mass and radius must be positive"));
-        }
+        particle.check().map_err(|says| error(line, says))?;
         out.push(particle);
     }
     Ok(out)
+}
+
+impl Particle {
+    /// Whether a run can use it: a positive mass and radius, finite values.
+    fn check(&self) -> Result<(), &'static str> {
+        if !(self.mass > 0.0 && self.radius > 0.0) {
+            return Err("mass and radius must be positive");
+        }
+        let values = [self.mass, self.radius];
+        let vectors = [self.pos, self.vel, self.spin];
+        if values
+            .iter()
+            .chain(vectors.iter().flatten())
+            .all(|x| x.is_finite())
+        {
+            Ok(())
+        } else {
+            Err("its values must be finite numbers")
+        }
+    }
 }
 
 /// A cursor over big-endian XDR data that reports the byte offset of a short read.
@@ -196,7 +214,8 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
         ));
     }
     let mut out = Vec::with_capacity(count as usize);
-    for _ in 0..count {
+    for k in 0..count {
+        let start = x.at;
         let p = if magic == STANDARD {
             let mass = x.f64()?;
             let radius = x.f64()?;
@@ -226,6 +245,8 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
                 index: x.i32()?,
             }
         };
+        p.check()
+            .map_err(|says| error(format!("byte {start}"), format!("particle {k}: {says}")))?;
         out.push(p);
     }
     Ok((time, out))
@@ -262,6 +283,44 @@ pub struct Params {
     pub edge_detect: Option<bool>,
 }
 
+/// The range a run parameter must lie in, whether it comes from a `.par` file or the
+/// command line: a zero or negative timestep would never end, a negative spring would
+/// make the timestep NaN.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rule {
+    /// Any finite number (gravity).
+    Any,
+    /// Greater than 0 (timestep, k_n, duration).
+    Positive,
+    /// 0 or more (k_t, friction).
+    NonNegative,
+    /// Normal restitution: above 0, at most 1.
+    Restitution,
+    /// Tangential restitution: −1 to 1.
+    Tangential,
+}
+
+impl Rule {
+    /// `x` if it obeys the rule, else what the rule asks for.
+    pub fn check(self, x: f64) -> Result<f64, &'static str> {
+        if !x.is_finite() {
+            return Err("a finite number");
+        }
+        let (ok, says) = match self {
+            Rule::Any => (true, ""),
+            Rule::Positive => (x > 0.0, "greater than 0"),
+            Rule::NonNegative => (x >= 0.0, "0 or more"),
+            Rule::Restitution => (x > 0.0 && x <= 1.0, "above 0 and at most 1"),
+            Rule::Tangential => ((-1.0..=1.0).contains(&x), "from -1 to 1"),
+        };
+        if ok && x.is_finite() {
+            Ok(x)
+        } else {
+            Err(says)
+        }
+    }
+}
+
 /// Reads a pkdgrav parameter file; other parameters are ignored.
 pub fn read_par(text: &str) -> Result<Params, InputError> {
     let mut values: HashMap<&str, (usize, &str)> = HashMap::new();
@@ -278,34 +337,37 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         };
         values.insert(name.trim(), (n + 1, value.trim().trim_matches('"')));
     }
-    let number = |name: &str| -> Result<Option<f64>, InputError> {
+    let number = |name: &str, rule: Rule| -> Result<Option<f64>, InputError> {
         values
             .get(name)
             .map(|&(n, v)| {
-                v.parse::<f64>()
-                    .ok()
-                    .filter(|x| x.is_finite())
-                    .ok_or_else(|| {
-                        error(
-                            format!("line {n}"),
-                            format!("`{name}` is `{v}`, not a number"),
-                        )
-                    })
+                let x = v.parse::<f64>().map_err(|_| {
+                    error(
+                        format!("line {n}"),
+                        format!("`{name}` is `{v}`, not a number"),
+                    )
+                })?;
+                rule.check(x).map_err(|says| {
+                    error(
+                        format!("line {n}"),
+                        format!("`{name}` is `{v}`; it must be {says}"),
+                    )
+                })
             })
             .transpose()
     };
     let text_of = |name: &str| values.get(name).map(|&(_, v)| v.to_string());
     let gravity = ["dxUnifGrav", "dyUnifGrav", "dzUnifGrav"];
     let g = [
-        number(gravity[0])?,
-        number(gravity[1])?,
-        number(gravity[2])?,
+        number(gravity[0], Rule::Any)?,
+        number(gravity[1], Rule::Any)?,
+        number(gravity[2], Rule::Any)?,
     ];
     Ok(Params {
         in_file: text_of("achInFile"),
         walls_file: text_of("achWallsFile"),
-        dt: number("dDelta")?,
-        steps: match number("nSteps")? {
+        dt: number("dDelta", Rule::Positive)?,
+        steps: match number("nSteps", Rule::NonNegative)? {
             Some(x) if x >= 0.0 && x.fract() == 0.0 => Some(x as u64),
             Some(x) => {
                 return Err(error(
@@ -315,13 +377,13 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             }
             None => None,
         },
-        eps_n: number("dEpsN")?,
-        eps_t: number("dEpsT")?,
-        k_n: number("dKn")?,
-        k_t: number("dKt")?,
-        mu_s: number("dMuS")?,
-        mu_r: number("dMuR")?,
-        mu_t: number("dMuT")?,
+        eps_n: number("dEpsN", Rule::Restitution)?,
+        eps_t: number("dEpsT", Rule::Tangential)?,
+        k_n: number("dKn", Rule::Positive)?,
+        k_t: number("dKt", Rule::NonNegative)?,
+        mu_s: number("dMuS", Rule::NonNegative)?,
+        mu_r: number("dMuR", Rule::NonNegative)?,
+        mu_t: number("dMuT", Rule::NonNegative)?,
         gravity: g.iter().any(Option::is_some).then(|| {
             Vec3::new(
                 g[0].unwrap_or(0.0),
@@ -329,6 +391,6 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 g[2].unwrap_or(0.0),
             )
         }),
-        edge_detect: number("bWallsEdgeDetect")?.map(|x| x != 0.0),
+        edge_detect: number("bWallsEdgeDetect", Rule::Any)?.map(|x| x != 0.0),
     })
 }

@@ -184,9 +184,15 @@ fn energy(states: &[State], g: &Vec3) -> f64 {
 }
 
 /// Runs `particles` against the walls of `scene`.
+///
+/// # Panics
+///
+/// If the timestep is not a positive finite number: the run would never end. Callers
+/// check it first ([`crate::input::Rule::Positive`]).
 pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outcome {
     let g = settings.gravity;
     let dt = settings.dt;
+    assert!(dt > 0.0 && dt.is_finite(), "timestep {dt}");
     let mut states: Vec<State> = particles
         .into_iter()
         .map(|particle| State {
@@ -309,27 +315,21 @@ pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outc
                     spring: Vec3::zeros(),
                     vn_in: -n.dot(&u),
                 });
-                if mat.eps_n < 0.0 {
-                    s.alive = false;
+                if mat.eps_n <= 0.0 {
+                    // A death wall removes the particle; a sticky wall holds it.
+                    let kind = if mat.eps_n < 0.0 {
+                        s.alive = false;
+                        EventKind::Remove
+                    } else {
+                        s.stuck_to = Some((w, s.particle.pos - origins[w]));
+                        s.particle.vel = wall_v;
+                        EventKind::Stick
+                    };
                     events.push(Event {
                         t,
                         particle: i,
                         wall: w,
-                        kind: EventKind::Remove,
-                        vn_in: entry.vn_in,
-                        vn_out: 0.0,
-                    });
-                    open.remove(i, w);
-                    break;
-                }
-                if mat.eps_n == 0.0 {
-                    s.stuck_to = Some((w, s.particle.pos - origins[w]));
-                    s.particle.vel = wall_v;
-                    events.push(Event {
-                        t,
-                        particle: i,
-                        wall: w,
-                        kind: EventKind::Stick,
+                        kind,
                         vn_in: entry.vn_in,
                         vn_out: 0.0,
                     });

@@ -12,6 +12,7 @@
 //!   speed without gravity).
 
 use crate::input::Particle;
+use crate::run::ParticleMaterial;
 use nalgebra::Vector3;
 use walls_keywords::{Keyword, WallType};
 use walls_model::Scene;
@@ -80,6 +81,18 @@ pub fn default_particles(scene: &Scene) -> Vec<Particle> {
         }
     }
     out
+}
+
+/// The particles' material when the user gives only (or not even) `k_n`: ε_n 0.8,
+/// ε_t 1, μ_s 0, k_t = 2/7 k_n.
+pub fn default_material(k_n: f64) -> ParticleMaterial {
+    ParticleMaterial {
+        eps_n: 0.8,
+        eps_t: 1.0,
+        k_n,
+        k_t: 2.0 / 7.0 * k_n,
+        mu_s: 0.0,
+    }
 }
 
 /// A normal spring constant for which the fastest expected impact overlaps by 1 % of the

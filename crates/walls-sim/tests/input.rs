@@ -101,6 +101,29 @@ fn broken_ss_files_say_where() {
         e.to_string(),
         "byte 8: the file ends inside a record (10 bytes in all)"
     );
+    // Records a run cannot use: a particle with no mass, a NaN position.
+    let reduced = |particles: &[[f32; 5]]| {
+        let mut r = header(0.0, particles.len() as i32, -10101);
+        for (i, p) in particles.iter().enumerate() {
+            p.iter().for_each(|v| r.extend(v.to_be_bytes()));
+            r.extend(3i32.to_be_bytes());
+            r.extend((i as i32).to_be_bytes());
+        }
+        r
+    };
+    let good = [1.0, 0.5, 0.0, 0.0, 0.0];
+    for (file, message) in [
+        (
+            reduced(&[good, [0.0, 0.5, 0.0, 0.0, 0.0]]),
+            "byte 44: particle 1: mass and radius must be positive",
+        ),
+        (
+            reduced(&[good, good, [1.0, 0.5, f32::NAN, 0.0, 0.0]]),
+            "byte 72: particle 2: its values must be finite numbers",
+        ),
+    ] {
+        assert_eq!(read_ss(&file).unwrap_err().to_string(), message);
+    }
 }
 
 #[test]
@@ -138,6 +161,36 @@ fn parameter_files() {
         read_par("dDelta 1\n").unwrap_err().to_string(),
         "line 1: `dDelta 1` is not `name = value`"
     );
+    // Values a run cannot use: a timestep that never advances, a spring that makes the
+    // default timestep NaN, a restitution that creates energy, an infinity.
+    for (text, message) in [
+        (
+            "dDelta = -1e-5\n",
+            "line 1: `dDelta` is `-1e-5`; it must be greater than 0",
+        ),
+        (
+            "# k\ndKn = -5\n",
+            "line 2: `dKn` is `-5`; it must be greater than 0",
+        ),
+        (
+            "dEpsN = 2\n",
+            "line 1: `dEpsN` is `2`; it must be above 0 and at most 1",
+        ),
+        (
+            "dEpsT = -1.5\n",
+            "line 1: `dEpsT` is `-1.5`; it must be from -1 to 1",
+        ),
+        (
+            "dMuS = -0.1\n",
+            "line 1: `dMuS` is `-0.1`; it must be 0 or more",
+        ),
+        (
+            "dzUnifGrav = inf\n",
+            "line 1: `dzUnifGrav` is `inf`; it must be a finite number",
+        ),
+    ] {
+        assert_eq!(read_par(text).unwrap_err().to_string(), message);
+    }
 }
 
 proptest::proptest! {

@@ -34,10 +34,7 @@ fn settings(particles: &[Particle], eps_n: f64, t_end: f64, gravity: [f64; 3]) -
         gravity: Vec3::from(gravity),
         material: ParticleMaterial {
             eps_n,
-            eps_t: 1.0,
-            k_n,
-            k_t: 2.0 / 7.0 * k_n,
-            mu_s: 0.0,
+            ..walls_sim::setup::default_material(k_n)
         },
     }
 }

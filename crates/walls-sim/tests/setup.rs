@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 use walls_model::{Options, Scene, analyze};
-use walls_sim::run::{ParticleMaterial, Settings, default_dt, run};
+use walls_sim::run::{Settings, default_dt, run};
 use walls_sim::setup;
 
 fn scene(text: &str) -> Scene {
@@ -31,13 +31,7 @@ fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {
         // Half the default duration: one and a half free falls, enough to land.
         t_end: setup::default_duration(&scene, &particles, &gravity) / 2.0,
         gravity,
-        material: ParticleMaterial {
-            eps_n: 0.8,
-            eps_t: 1.0,
-            k_n,
-            k_t: 2.0 / 7.0 * k_n,
-            mu_s: 0.0,
-        },
+        material: setup::default_material(k_n),
     };
     let out = run(&scene, particles.clone(), &settings);
     assert!(out.warnings.is_empty(), "{:?}", out.warnings);

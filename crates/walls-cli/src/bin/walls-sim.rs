@@ -15,6 +15,7 @@ use walls_cli::{ModeArg, check_bytes, input};
 use walls_diagnostics::Severity;
 use walls_diagnostics::render::{self, FileReport};
 use walls_model::Options;
+use walls_sim::input::Rule;
 
 #[derive(Parser)]
 #[command(
@@ -40,7 +41,7 @@ enum Command {
         #[arg(value_name = "FILE")]
         file: String,
         /// Also give each wall's `position` at this time (pkdgrav units).
-        #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = finite)]
+        #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
         time: Option<f64>,
         /// The contact model the file is for (it decides which values are errors).
         #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
@@ -66,28 +67,28 @@ struct RunArgs {
     #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
     method: ModeArg,
     /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
-    #[arg(long, value_parser = positive)]
+    #[arg(long, value_parser = ruled(Rule::Positive))]
     dt: Option<f64>,
     /// When to stop (default: three free falls over the scene).
-    #[arg(long, value_parser = positive)]
+    #[arg(long, value_parser = ruled(Rule::Positive))]
     t_end: Option<f64>,
     /// Uniform gravity.
-    #[arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = finite)]
+    #[arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     gravity: Option<Vec<f64>>,
     /// The particles' normal restitution (what walls' 99 means).
-    #[arg(long, value_parser = finite)]
+    #[arg(long, value_parser = ruled(Rule::Restitution))]
     epsn: Option<f64>,
     /// The particles' tangential restitution.
-    #[arg(long, value_parser = finite)]
+    #[arg(long, value_parser = ruled(Rule::Tangential))]
     epst: Option<f64>,
     /// The particles' normal spring constant.
-    #[arg(long = "k-n", value_parser = positive)]
+    #[arg(long = "k-n", value_parser = ruled(Rule::Positive))]
     k_n: Option<f64>,
     /// The particles' tangential spring constant (default 2/7 of k_n).
-    #[arg(long = "k-t", value_parser = finite)]
+    #[arg(long = "k-t", value_parser = ruled(Rule::NonNegative))]
     k_t: Option<f64>,
     /// The particles' static friction.
-    #[arg(long = "mu-s", value_parser = finite)]
+    #[arg(long = "mu-s", value_parser = ruled(Rule::NonNegative))]
     mu_s: Option<f64>,
     /// Print the result as JSON on standard output.
     #[arg(long)]
@@ -175,12 +176,13 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         .k_n
         .or(from_par(|p| p.k_n))
         .unwrap_or_else(|| setup::default_k_n(scene, &particles, &gravity));
+    let default = setup::default_material(k_n);
     let material = ParticleMaterial {
-        eps_n: args.epsn.or(from_par(|p| p.eps_n)).unwrap_or(0.8),
-        eps_t: args.epst.or(from_par(|p| p.eps_t)).unwrap_or(1.0),
+        eps_n: args.epsn.or(from_par(|p| p.eps_n)).unwrap_or(default.eps_n),
+        eps_t: args.epst.or(from_par(|p| p.eps_t)).unwrap_or(default.eps_t),
         k_n,
-        k_t: args.k_t.or(from_par(|p| p.k_t)).unwrap_or(2.0 / 7.0 * k_n),
-        mu_s: args.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(0.0),
+        k_t: args.k_t.or(from_par(|p| p.k_t)).unwrap_or(default.k_t),
+        mu_s: args.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(default.mu_s),
     };
     let dt = args
         .dt
@@ -267,10 +269,13 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
 }
 
 /// A strictly positive real.
-fn positive(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
-        _ => Err(format!("`{s}` is not a positive number")),
+/// A value parser for a number that must obey `rule`, as the `.par` file's values must.
+fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
+    move |s| {
+        let x = s
+            .parse::<f64>()
+            .map_err(|_| format!("`{s}` is not a number"))?;
+        rule.check(x).map_err(|says| format!("it must be {says}"))
     }
 }
 
@@ -314,13 +319,5 @@ fn scene(path: &str, time: Option<f64>, mode: ModeArg) -> ExitCode {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
-    }
-}
-
-/// A finite real, for `--time`.
-fn finite(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(x) if x.is_finite() => Ok(x),
-        _ => Err(format!("`{s}` is not a finite number")),
     }
 }
