@@ -152,7 +152,10 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
     let (particles, embedded) = match &particle_file {
         Some(f) => {
             let bytes = std::fs::read(f).map_err(|e| format!("cannot read {f}: {e}"))?;
-            let ps = if f.ends_with(".csv") {
+            let csv = std::path::Path::new(f)
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+            let ps = if csv {
                 read_csv(&String::from_utf8_lossy(&bytes))
             } else {
                 read_ss(&bytes).map(|(_, ps)| ps)
