@@ -3,7 +3,10 @@
 //! rectangle):
 //! - particle–wall contact checks per second (the nearest point of every wall to every
 //!   particle), against the target of 10⁷ per core;
-//! - particle-steps per second of a whole SSDEM run.
+//! - particle-steps per second of a whole SSDEM run;
+//! - and, apart from the scene, the particle–particle broad phase: building the cell grid
+//!   and visiting every overlapping pair, per particle, for 10⁴ and 10⁵ spheres of radius
+//!   0.01 at random in a box at volume fraction 0.3 (group "grid").
 //!
 //! Run with `cargo bench -p walls-sim --bench contacts`; figures in docs/performance.md.
 
@@ -12,6 +15,7 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use walls_model::{Options, Scene, analyze};
 use walls_sim::geometry::Shape;
+use walls_sim::grid::CellGrid;
 use walls_sim::input::Particle;
 use walls_sim::run::{Settings, default_dt, run};
 use walls_sim::setup;
@@ -100,5 +104,40 @@ fn contacts(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, contacts);
+/// `n` spheres of radius `r` uniformly at random (a fixed SplitMix64 sequence, overlaps
+/// allowed) in a cube sized for volume fraction `phi`.
+fn random_box(n: usize, r: f64, phi: f64) -> Vec<Vec3> {
+    let side = (n as f64 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3) / phi).cbrt();
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut uniform = move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        (z ^ (z >> 31)) as f64 / u64::MAX as f64
+    };
+    (0..n)
+        .map(|_| Vec3::new(uniform(), uniform(), uniform()) * side)
+        .collect()
+}
+
+fn grid(c: &mut Criterion) {
+    let mut group = c.benchmark_group("grid");
+    for n in [10_000, 100_000] {
+        let positions = random_box(n, 0.01, 0.3);
+        let radii = vec![0.01; n];
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(format!("build and visit pairs, {n} particles"), |b| {
+            b.iter(|| {
+                let grid = CellGrid::new(black_box(&positions), black_box(&radii));
+                let mut pairs = 0usize;
+                grid.for_each_pair(|_, _| pairs += 1);
+                pairs
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, contacts, grid);
 criterion_main!(benches);

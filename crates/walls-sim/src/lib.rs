@@ -4,6 +4,7 @@
 //! pkdgrav run (CSV, `.ss`, `.par`). Particle contacts and integration build on these.
 
 pub mod geometry;
+pub mod grid;
 pub mod hsdem;
 pub mod input;
 pub mod kinematics;
