@@ -7,6 +7,7 @@ pub mod geometry;
 pub mod hsdem;
 pub mod input;
 pub mod kinematics;
+pub mod poly;
 pub mod run;
 pub mod setup;
 pub mod ssdem;
