@@ -8,6 +8,7 @@ pub mod grid;
 pub mod hsdem;
 pub mod input;
 pub mod kinematics;
+pub mod poly;
 pub mod run;
 pub mod setup;
 pub mod ssdem;
