@@ -1,7 +1,7 @@
 //! End-to-end tests as data: each folder under the repository's `tests/lint/`,
 //! `tests/fmt/` and `tests/sim/` holds a `cmd` file (the command line, words separated by
 //! spaces), the files it names, an optional `stdin`, and the snapshot `output.snap` of
-//! exit status, stdout, stderr and every file the command changed. The real binary
+//! exit status, stdout, stderr and every file the command changed or made. The real binary
 //! (`walls-lint`, `walls-fmt` or `walls-sim`) runs in a copy of that folder. Update the
 //! snapshots with `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
 
@@ -75,6 +75,21 @@ fn lint_cases() {
                 ));
             }
         }
+        // Files the command made, such as a trajectory, in path order.
+        let mut made = Vec::new();
+        files_under(work.path(), &mut made);
+        made.sort();
+        for path in made {
+            let name = path.strip_prefix(work.path()).unwrap();
+            if originals.iter().any(|(o, _)| Path::new(o) == name) {
+                continue;
+            }
+            shown.push_str(&format!(
+                "--- {} made ---\n{}",
+                name.display(),
+                String::from_utf8_lossy(&std::fs::read(&path).unwrap())
+            ));
+        }
         insta::with_settings!({
             snapshot_path => &case,
             prepend_module_to_snapshot => false,
@@ -82,5 +97,17 @@ fn lint_cases() {
         }, {
             insta::assert_snapshot!("output", shown);
         });
+    }
+}
+
+/// Every file under `dir`, recursively.
+fn files_under(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            files_under(&path, out);
+        } else {
+            out.push(path);
+        }
     }
 }

@@ -16,7 +16,6 @@ use std::hint::black_box;
 use walls_model::{Options, Scene, analyze};
 use walls_sim::geometry::Shape;
 use walls_sim::grid::CellGrid;
-use walls_sim::input::Particle;
 use walls_sim::run::{Settings, default_dt, run};
 use walls_sim::setup;
 
@@ -27,30 +26,6 @@ fn scene() -> Scene {
     analyze(&walls_syntax::parse(text).tree, &Options::default()).scene
 }
 
-/// `n` particles spread through the scene's box by a fixed low-discrepancy sequence.
-fn particles(scene: &Scene, n: usize) -> Vec<Particle> {
-    let (lo, hi) = setup::bounds(scene);
-    let frac = |i: usize, a: f64| (i as f64 * a).fract();
-    (0..n)
-        .map(|i| {
-            let u = Vec3::new(
-                frac(i, 0.754_877_666),
-                frac(i, 0.569_840_291),
-                frac(i, 0.430_159_709),
-            );
-            Particle {
-                mass: 1e-3,
-                radius: 0.01,
-                pos: lo + (hi - lo).component_mul(&u),
-                vel: Vec3::zeros(),
-                spin: Vec3::zeros(),
-                color: 3,
-                index: i as i32,
-            }
-        })
-        .collect()
-}
-
 fn contacts(c: &mut Criterion) {
     let scene = scene();
     let shapes: Vec<Shape> = scene
@@ -58,7 +33,10 @@ fn contacts(c: &mut Criterion) {
         .iter()
         .map(|w| Shape::of(w, w.vector(walls_keywords::Keyword::Origin)))
         .collect();
-    let points: Vec<Vec3> = particles(&scene, 10_000).iter().map(|p| p.pos).collect();
+    let points: Vec<Vec3> = setup::scattered(&scene, 10_000, 0.01)
+        .iter()
+        .map(|p| p.pos)
+        .collect();
     let mut group = c.benchmark_group("sample scene");
     group.throughput(Throughput::Elements((points.len() * shapes.len()) as u64));
     group.bench_function("contact checks", |b| {
@@ -72,25 +50,14 @@ fn contacts(c: &mut Criterion) {
             touching
         })
     });
-    // Particles clear of every wall, so that the run is not stopped by a deep overlap.
-    let ps: Vec<Particle> = particles(&scene, 12_000)
-        .into_iter()
-        .filter(|p| {
-            shapes
-                .iter()
-                .all(|s| s.nearest(&p.pos).distance > 2.0 * p.radius)
-        })
-        .take(10_000)
-        .collect();
+    let ps = setup::scattered(&scene, 10_000, 0.01);
     assert_eq!(ps.len(), 10_000);
     let steps = 20;
     let k_n = 1e3;
     let dt = default_dt(&ps, k_n);
     let settings = Settings {
-        dt,
-        t_end: dt * steps as f64,
         gravity: Vec3::new(0.0, 0.0, -1.0),
-        material: setup::default_material(k_n),
+        ..Settings::new(dt, dt * steps as f64, setup::default_material(k_n))
     };
     group.throughput(Throughput::Elements((ps.len() * steps) as u64));
     group.sample_size(10);

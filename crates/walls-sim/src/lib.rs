@@ -1,7 +1,9 @@
 //! The reference evaluator of walls files (SPEC §3): where each wall is and how fast its
 //! surface moves, and which point of it a particle is nearest, with the feature it
-//! touches (face, edge, vertex, rim, hole rim); and the particles and parameters of a
-//! pkdgrav run (CSV, `.ss`, `.par`). Particle contacts and integration build on these.
+//! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
+//! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
+//! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
+//! ([`run`]), with their trajectories ([`trajectory`]).
 
 pub mod geometry;
 pub mod grid;
@@ -12,6 +14,7 @@ pub mod poly;
 pub mod run;
 pub mod setup;
 pub mod ssdem;
+pub mod trajectory;
 
 pub use geometry::{Feature, Nearest, Shape};
 pub use kinematics::{Motion, OscillationStepping};

@@ -3,6 +3,13 @@
 //! capped by Coulomb friction. The wall counts as infinitely massive and flat: the
 //! reduced mass and radius are the particle's.
 //!
+//! Rolling and twisting resistance (SPEC §3) oppose the relative spin: rolling with
+//! torque μ_r·|F_n|·l against the spin across the normal (l the lever: the particle's
+//! radius against a wall, the reduced radius between particles), twisting with
+//! μ_t·|F_n|·a against the spin about the normal, a = √(2Rx − x²) being the radius of the
+//! contact circle of a sphere of radius R overlapping by x. Each is capped so that it
+//! cannot reverse the spin within a step.
+//!
 //! Damping from restitution: C = −2·ln ε·√(m·k/(π² + ln²ε)), 0 when ε is 0 or 1. The
 //! contact lasts π/ω_d with ω_d² = k/m − (C/2m)².
 
@@ -24,6 +31,10 @@ pub struct Material {
     pub k_t: f64,
     /// Static friction coefficient (0: frictionless).
     pub mu_s: f64,
+    /// Rolling friction coefficient (0: none).
+    pub mu_r: f64,
+    /// Twisting friction coefficient (0: none).
+    pub mu_t: f64,
 }
 
 /// The damping coefficient for restitution `eps` of a spring `k` on mass `m`.
@@ -100,4 +111,47 @@ pub fn contact(
         force: f_n + f_t,
         torque,
     }
+}
+
+/// Where a rolling and twisting resistance acts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rolling {
+    /// Spin of the particle relative to what it touches.
+    pub spin: Vec3,
+    /// Unit normal from what it touches to the particle.
+    pub normal: Vec3,
+    /// The size of the normal force.
+    pub normal_force: f64,
+    /// The rolling lever.
+    pub lever: f64,
+    /// The radius of the contact circle.
+    pub contact_radius: f64,
+    /// The moment of inertia that the torque turns (for the cap).
+    pub inertia: f64,
+}
+
+/// The rolling and twisting resistance torque on a particle over a step of `dt`.
+pub fn resistance(c: &Rolling, mu_r: f64, mu_t: f64, dt: f64) -> Vec3 {
+    let n = &c.normal;
+    let about = n * n.dot(&c.spin);
+    let across = c.spin - about;
+    // The largest torque that stops, without reversing, a spin w within the step.
+    let stop = |w: f64| c.inertia * w / dt;
+    let mut torque = Vec3::zeros();
+    if mu_r > 0.0
+        && let Some((axis, w)) = nalgebra::Unit::try_new_and_get(across, 0.0)
+    {
+        torque -= axis.into_inner() * (mu_r * c.normal_force * c.lever).min(stop(w));
+    }
+    if mu_t > 0.0
+        && let Some((axis, w)) = nalgebra::Unit::try_new_and_get(about, 0.0)
+    {
+        torque -= axis.into_inner() * (mu_t * c.normal_force * c.contact_radius).min(stop(w));
+    }
+    torque
+}
+
+/// The radius of the circle where a sphere of radius `r` overlaps a flat wall by `x`.
+pub fn contact_radius(r: f64, x: f64) -> f64 {
+    (2.0 * r * x - x * x).max(0.0).sqrt()
 }

@@ -2,7 +2,8 @@
 //! 1e−12 relative.
 
 use nalgebra::Vector3;
-use walls_sim::hsdem::{bounce, plane_hit};
+use walls_sim::hsdem::{Hit, bounce, first_hit, supported};
+use walls_sim::{Feature, Shape};
 
 type Vec3 = Vector3<f64>;
 
@@ -68,53 +69,162 @@ fn tangential_restitution_and_spin() {
     assert!(close(&after, &before), "{before:?} {after:?}");
 }
 
+fn shape(text: &str) -> Shape {
+    let parsed = walls_syntax::parse(text);
+    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+    let scene = walls_model::analyze(&parsed.tree, &walls_model::Options::default()).scene;
+    let wall = &scene.walls[0];
+    Shape::of(wall, wall.vector(walls_keywords::Keyword::Origin))
+}
+
+fn exact(t: Option<Hit>, expected: f64, feature: Feature) {
+    let hit = t.unwrap_or_else(|| panic!("no hit; expected {expected}"));
+    assert!(
+        (hit.t - expected).abs() <= 1e-12 * expected.abs().max(1e-300),
+        "{} vs {expected}",
+        hit.t
+    );
+    assert_eq!(hit.feature, feature);
+}
+
 #[test]
 fn predicting_a_hit_on_a_moving_plane() {
-    // Falling at 2 from height 1 (radius 0.1) onto a plane rising at 0.5: contact after
-    // (1 − 0.1)/2.5 = 0.36.
-    let t = plane_hit(
-        &Vec3::new(0.0, 0.0, 1.0),
-        &Vec3::new(0.0, 0.0, -2.0),
-        0.1,
-        &Vec3::zeros(),
-        &Vec3::z(),
-        &Vec3::new(0.0, 0.0, 0.5),
-        1.0,
+    // Falling at 2 from height 1 (radius 0.1) onto a plane rising at 0.5: in the plane's
+    // frame it falls at 2.5, so contact after (1 − 0.1)/2.5 = 0.36.
+    let plane = shape("wall type plane\n");
+    let (p, d) = (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, -2.5));
+    exact(
+        first_hit(&plane, &p, &d, 0.1, 1.0, true),
+        0.36,
+        Feature::Face,
     );
-    assert!((t.unwrap() - 0.36).abs() <= 1e-12 * 0.36);
-    // Not within a shorter step, nor when moving away, and from below as well.
-    assert_eq!(
-        plane_hit(
-            &Vec3::new(0.0, 0.0, 1.0),
-            &Vec3::new(0.0, 0.0, -2.0),
-            0.1,
-            &Vec3::zeros(),
-            &Vec3::z(),
-            &Vec3::zeros(),
-            0.1
-        ),
-        None
+    // Not within a shorter step, nor when moving away; from below as well.
+    assert_eq!(first_hit(&plane, &p, &d, 0.1, 0.3, true), None);
+    assert_eq!(first_hit(&plane, &p, &-d, 0.1, 1.0, true), None);
+    let below = first_hit(&plane, &-p, &Vec3::new(0.0, 0.0, 3.0), 0.1, 1.0, true);
+    exact(below, 0.3, Feature::Face);
+}
+
+#[test]
+fn predicting_hits_on_every_feature_hsdem_supports() {
+    let r = 0.1;
+    let rect = shape("wall type rectangle\n  vertex1 2 0 0\n  vertex2 0 1 0\n");
+    let down = Vec3::new(0.0, 0.0, -1.0);
+    // The face: from height 1 at speed 1, 0.9.
+    exact(
+        first_hit(&rect, &Vec3::new(1.0, 0.5, 1.0), &down, r, 2.0, true),
+        0.9,
+        Feature::Face,
     );
-    assert_eq!(
-        plane_hit(
-            &Vec3::new(0.0, 0.0, 1.0),
-            &Vec3::new(0.0, 0.0, 2.0),
-            0.1,
-            &Vec3::zeros(),
-            &Vec3::z(),
-            &Vec3::zeros(),
-            1.0
-        ),
-        None
+    // Edge 1 (along e2 at x = 2) from beside it, centre in the plane: 1 − r away.
+    let p = Vec3::new(3.0, 0.5, 0.0);
+    let left = Vec3::new(-1.0, 0.0, 0.0);
+    exact(
+        first_hit(&rect, &p, &left, r, 2.0, true),
+        1.0 - r,
+        Feature::Edge(1),
     );
-    let below = plane_hit(
-        &Vec3::new(0.0, 0.0, -1.0),
-        &Vec3::new(0.0, 0.0, 3.0),
-        0.1,
-        &Vec3::zeros(),
-        &Vec3::z(),
-        &Vec3::zeros(),
-        1.0,
+    // With edge detection off, the edge is not seen.
+    assert_eq!(first_hit(&rect, &p, &left, r, 2.0, false), None);
+    // Vertex 3 (origin + e1 + e2 = (2, 1, 0)) along the diagonal: |(1,1,1)|·(1 − r/√3)/√3.
+    let dir = Vec3::new(1.0, 1.0, 1.0).normalize();
+    let corner = Vec3::new(2.0, 1.0, 0.0);
+    exact(
+        first_hit(&rect, &(corner + dir * 2.0), &-dir, r, 5.0, true),
+        2.0 - r,
+        Feature::Vertex(3),
     );
-    assert!((below.unwrap() - 0.3).abs() <= 1e-12 * 0.3);
+    // A disk's face, its rim (a quartic) and its hole's rim.
+    let disk = shape("wall type disk\n  radius 1\n  hole-radius 0.3\n");
+    exact(
+        first_hit(&disk, &Vec3::new(0.6, 0.0, 1.0), &down, r, 2.0, true),
+        0.9,
+        Feature::Face,
+    );
+    // In the disk's plane towards the rim from outside: it meets the rim at distance r.
+    exact(
+        first_hit(&disk, &Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
+        2.0 - r,
+        Feature::Rim(0),
+    );
+    // Down the axis, a particle wider than the hole rests on the hole's rim: it touches
+    // when its centre is √(r² − h²) above the plane (h the hole's radius).
+    let big = 0.5;
+    let touch_height = (big * big - 0.09f64).sqrt();
+    exact(
+        first_hit(&disk, &Vec3::new(0.0, 0.0, 1.0), &down, big, 2.0, true),
+        1.0 - touch_height,
+        Feature::HoleRim,
+    );
+    // Cylinders: from outside by the earlier root, from inside by the later.
+    let tube = shape("wall type cylinder-infinite\n  radius 1\n");
+    exact(
+        first_hit(&tube, &Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
+        2.0 - r,
+        Feature::Side,
+    );
+    exact(
+        first_hit(&tube, &Vec3::zeros(), &left, r, 5.0, true),
+        1.0 - r,
+        Feature::Side,
+    );
+    let can = shape("wall type cylinder-finite\n  radius 1\n  length 2\n");
+    exact(
+        first_hit(&can, &Vec3::new(0.5, 0.0, 0.0), &-left, r, 5.0, true),
+        0.5 - r,
+        Feature::Side,
+    );
+    // Its upper end's rim, met from above just outside the radius.
+    let rim = first_hit(&can, &Vec3::new(1.05, 0.0, 3.0), &down, r, 5.0, true).expect("rim");
+    let height = (r * r - 0.05f64 * 0.05).sqrt();
+    assert!((rim.t - (2.0 - height)).abs() < 1e-12, "{rim:?}");
+    assert_eq!(rim.feature, Feature::Rim(1));
+    // A zero-radius disk is a point.
+    let point = shape("wall type disk\n  radius 0\n");
+    exact(
+        first_hit(&point, &Vec3::new(0.0, 0.0, 1.0), &down, r, 2.0, true),
+        0.9,
+        Feature::Point,
+    );
+    // Triangles, shells and tapers are not pkdgrav HSDEM shapes.
+    for text in [
+        "wall type triangle\n",
+        "wall type shell\n",
+        "wall type cylinder-finite\n  taper 0.5\n",
+    ] {
+        assert!(!supported(&shape(text)), "{text}");
+    }
+}
+
+#[test]
+fn a_near_miss_is_missed_and_a_clip_is_a_corner() {
+    // Passing the rectangle's corner (0, 1, 0) in its plane just beyond r, then just within.
+    let rect = shape("wall type rectangle\n  vertex1 1 0 0\n  vertex2 0 1 0\n");
+    let r = 0.1;
+    let miss = first_hit(
+        &rect,
+        &Vec3::new(-1.0, 1.0 + 1.01 * r, 0.0),
+        &Vec3::x(),
+        r,
+        5.0,
+        true,
+    );
+    assert_eq!(miss, None);
+    let y = 0.99 * r;
+    let clip = first_hit(
+        &rect,
+        &Vec3::new(-1.0, 1.0 + y, 0.0),
+        &Vec3::x(),
+        r,
+        5.0,
+        true,
+    );
+    let expected = 1.0 - (r * r - y * y).sqrt();
+    let clip = clip.expect("it clips the corner");
+    assert_eq!(clip.feature, Feature::Vertex(2));
+    assert!(
+        (clip.t - expected).abs() < 1e-12,
+        "{} vs {expected}",
+        clip.t
+    );
 }

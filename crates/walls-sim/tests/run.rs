@@ -29,13 +29,15 @@ fn settings(particles: &[Particle], eps_n: f64, t_end: f64, gravity: [f64; 3]) -
     // Stiff enough that a particle at speed 1 overlaps by 1 % of its radius.
     let k_n = 1e6;
     Settings {
-        dt: default_dt(particles, k_n),
-        t_end,
         gravity: Vec3::from(gravity),
-        material: ParticleMaterial {
-            eps_n,
-            ..walls_sim::setup::default_material(k_n)
-        },
+        ..Settings::new(
+            default_dt(particles, k_n),
+            t_end,
+            ParticleMaterial {
+                eps_n,
+                ..walls_sim::setup::default_material(k_n)
+            },
+        )
     }
 }
 
@@ -263,4 +265,110 @@ fn a_vibrated_plate_throws_a_resting_particle_only_above_one_g() {
             "Γ = {gamma}: lift-off at phase {phase}, expected {expected}"
         );
     }
+}
+
+#[test]
+fn particles_bounce_off_each_other_at_eps_n_keeping_momentum() {
+    // Head-on at a closing speed of 1.5: the pair's contact time is π√(μ/k) with μ = m/2,
+    // which the default timestep resolves in 100 steps.
+    for eps in [0.9, 0.5] {
+        let a = particle([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
+        let mut b = particle([0.5, 0.0, 0.0], [-0.5, 0.0, 0.0]);
+        b.mass = 2.0;
+        let ps = vec![a, b];
+        let out = run(
+            &scene("wall type plane\n  origin 0 0 -5\n"),
+            ps.clone(),
+            &settings(&ps, eps, 1.0, [0.0; 3]),
+        );
+        assert_eq!(out.pair_contacts, 1);
+        let (va, vb) = (out.particles[0].particle.vel, out.particles[1].particle.vel);
+        let ratio = (vb.x - va.x) / 1.5;
+        assert!((ratio / eps - 1.0).abs() < 0.01, "ε = {eps}: {ratio}");
+        let momentum = va + vb * 2.0;
+        assert!(
+            (momentum - Vec3::new(0.0, 0.0, 0.0)).norm() < 1e-12,
+            "{momentum:?}"
+        );
+    }
+    // Switched off, they pass through each other.
+    let ps = vec![
+        particle([0.0; 3], [1.0, 0.0, 0.0]),
+        particle([0.5, 0.0, 0.0], [-1.0, 0.0, 0.0]),
+    ];
+    let mut s = settings(&ps, 0.9, 1.0, [0.0; 3]);
+    s.particle_contacts = false;
+    let out = run(&scene("wall type plane\n  origin 0 0 -5\n"), ps, &s);
+    assert_eq!(out.pair_contacts, 0);
+    assert!((out.particles[0].particle.vel.x - 1.0).abs() < 1e-12);
+}
+
+/// A particle resting on the plane z = 0 (radius 0.1, mass 1, k_n 10³, g = 1), at its
+/// equilibrium overlap of 1 % of the radius, with velocity `vel` and spin `spin`.
+fn resting(
+    vel: [f64; 3],
+    spin: [f64; 3],
+    mu_r: f64,
+    mu_t: f64,
+    t_end: f64,
+) -> walls_sim::run::Outcome {
+    let k_n = 1e3;
+    let mut p = particle([0.0, 0.0, 0.1 - 1.0 / k_n], vel);
+    p.spin = Vec3::from(spin);
+    let ps = vec![p];
+    let s = Settings {
+        gravity: Vec3::new(0.0, 0.0, -1.0),
+        ..Settings::new(
+            default_dt(&ps, k_n),
+            t_end,
+            ParticleMaterial {
+                eps_n: 0.5,
+                mu_s: 0.5,
+                mu_r,
+                mu_t,
+                ..walls_sim::setup::default_material(k_n)
+            },
+        )
+    };
+    run(&scene("wall type plane\n"), ps, &s)
+}
+
+#[test]
+fn rolling_resistance_slows_a_rolling_ball_at_five_sevenths_mu_r_g() {
+    // Rolling at v0 = 1 without slipping (ω = v0/R about y): the torque μ_r·R·mg against
+    // the spin, shared with the friction that keeps it rolling, decelerates it at
+    // (5/7)·μ_r·g. With μ_r = 0.2 it has slowed to 0.5 at t = 3.5 and stops at t = 7.
+    let (mu_r, g) = (0.2, 1.0);
+    let half = resting([1.0, 0.0, 0.0], [0.0, 10.0, 0.0], mu_r, 0.0, 3.5);
+    let v = half.particles[0].particle.vel.x;
+    let expected = 1.0 - 5.0 / 7.0 * mu_r * g * 3.5;
+    assert!((v / expected - 1.0).abs() < 0.01, "{v} vs {expected}");
+    // Stopped after v0²/(2a) = 3.5, where the tangential spring (undamped with ε_t = 1)
+    // rocks it by a few thousandths.
+    let stopped = resting([1.0, 0.0, 0.0], [0.0, 10.0, 0.0], mu_r, 0.0, 9.0);
+    let p = &stopped.particles[0].particle;
+    assert!((p.pos.x / 3.5 - 1.0).abs() < 0.01, "{p:?}");
+    assert!(p.vel.norm() < 1e-2 && p.spin.norm() < 0.1, "{p:?}");
+    // Without it the ball rolls on.
+    let free = resting([1.0, 0.0, 0.0], [0.0, 10.0, 0.0], 0.0, 0.0, 3.5);
+    assert!((free.particles[0].particle.vel.x - 1.0).abs() < 1e-3);
+}
+
+#[test]
+fn twisting_resistance_stops_a_spin_about_the_normal_without_reversing_it() {
+    // Spinning at 10 about z on the plane: torque μ_t·a·mg with a = √(2Rx − x²) the
+    // contact circle's radius at overlap x = mg/k_n, so ω falls at μ_t·a·mg/(0.4·mR²).
+    let (mu_t, x, r): (f64, f64, f64) = (1.0, 1e-3, 0.1);
+    let a = (2.0 * r * x - x * x).sqrt();
+    let rate = mu_t * a / (0.4 * r * r);
+    let out = resting([0.0; 3], [0.0, 0.0, 10.0], 0.0, mu_t, 1.0);
+    let w = out.particles[0].particle.spin.z;
+    assert!(
+        (w / (10.0 - rate) - 1.0).abs() < 0.01,
+        "{w} vs {}",
+        10.0 - rate
+    );
+    let out = resting([0.0; 3], [0.0, 0.0, 10.0], 0.0, mu_t, 10.0 / rate + 1.0);
+    let w = out.particles[0].particle.spin.z;
+    assert!(w.abs() < 1e-3, "stopped, not reversed: {w}");
 }

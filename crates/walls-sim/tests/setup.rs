@@ -27,11 +27,13 @@ fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {
     let gravity = Vector3::new(0.0, 0.0, -1.0);
     let k_n = setup::default_k_n(&scene, &particles, &gravity);
     let settings = Settings {
-        dt: default_dt(&particles, k_n),
-        // Half the default duration: one and a half free falls, enough to land.
-        t_end: setup::default_duration(&scene, &particles, &gravity) / 2.0,
         gravity,
-        material: setup::default_material(k_n),
+        ..Settings::new(
+            default_dt(&particles, k_n),
+            // Half the default duration: one and a half free falls, enough to land.
+            setup::default_duration(&scene, &particles, &gravity) / 2.0,
+            setup::default_material(k_n),
+        )
     };
     let out = run(&scene, particles.clone(), &settings);
     assert!(out.warnings.is_empty(), "{:?}", out.warnings);

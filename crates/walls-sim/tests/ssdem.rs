@@ -78,6 +78,8 @@ fn material(eps_n: f64, eps_t: f64, mu_s: f64) -> Material {
         k_n,
         k_t: 2.0 / 7.0 * k_n,
         mu_s,
+        mu_r: 0.0,
+        mu_t: 0.0,
     }
 }
 

@@ -31,9 +31,9 @@ struct Args {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run particles against the walls (SSDEM) and report where they end up, what
-    /// happened at walls, the energy and pkdgrav's warnings.
-    Run(RunArgs),
+    /// Run particles against the walls (SSDEM or HSDEM) and report where they end up,
+    /// what happened at walls, the energy and pkdgrav's warnings.
+    Run(Box<RunArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
@@ -90,9 +90,42 @@ struct RunArgs {
     /// The particles' static friction.
     #[arg(long = "mu-s", value_parser = ruled(Rule::NonNegative))]
     mu_s: Option<f64>,
+    /// The particles' rolling friction (SSDEM).
+    #[arg(long = "mu-r", value_parser = ruled(Rule::NonNegative))]
+    mu_r: Option<f64>,
+    /// The particles' twisting friction (SSDEM).
+    #[arg(long = "mu-t", value_parser = ruled(Rule::NonNegative))]
+    mu_t: Option<f64>,
+    /// Particles pass through each other (they still meet walls).
+    #[arg(long)]
+    no_particle_contacts: bool,
+    /// HSDEM: only faces and cylinder sides count, not edges, corners and rims
+    /// (pkdgrav's bWallsEdgeDetect = 0).
+    #[arg(long)]
+    no_edges: bool,
+    /// Write the trajectory to DIR: particles.csv and walls.csv, at step 0 and every
+    /// --every steps.
+    #[arg(long, value_name = "DIR")]
+    out: Option<std::path::PathBuf>,
+    /// How oscillating walls move: on the exact sinusoid, or step by step at the
+    /// oscillation velocity of each step's start, as pkdgrav does.
+    #[arg(long, value_enum, default_value_t = Oscillation::Exact)]
+    oscillation: Oscillation,
+    /// Steps between trajectory rows.
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..))]
+    every: u64,
     /// Print the result as JSON on standard output.
     #[arg(long)]
     json: bool,
+}
+
+/// How oscillating walls advance in a run.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Oscillation {
+    /// The exact sinusoid of SPEC §1 at every step.
+    Exact,
+    /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
+    Pkdgrav,
 }
 
 fn main() -> ExitCode {
@@ -115,12 +148,13 @@ fn simulate(args: &RunArgs) -> ExitCode {
 
 fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
     use walls_sim::input::{read_csv, read_par, read_ss};
-    use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
+    use walls_sim::run::{Method, ParticleMaterial, Settings, default_dt, run_observed};
     use walls_sim::setup;
-    if args.method == ModeArg::Hsdem {
-        return Err("HSDEM stepping is not implemented yet: run with --method ssdem".into());
-    }
-    let checked = check_bytes(input::read(&args.file).bytes?, &Options::default());
+    let options = Options {
+        mode: args.method.into(),
+        ..Options::default()
+    };
+    let checked = check_bytes(input::read(&args.file).bytes?, &options);
     let errors = checked
         .diagnostics
         .iter()
@@ -175,6 +209,10 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         (None, None) => nalgebra::Vector3::zeros(),
     };
     let from_par = |f: fn(&walls_sim::input::Params) -> Option<f64>| par.as_ref().and_then(f);
+    let method = match args.method {
+        ModeArg::Ssdem => Method::Soft,
+        ModeArg::Hsdem => Method::Hard,
+    };
     let k_n = args
         .k_n
         .or(from_par(|p| p.k_n))
@@ -186,84 +224,68 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         k_n,
         k_t: args.k_t.or(from_par(|p| p.k_t)).unwrap_or(default.k_t),
         mu_s: args.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(default.mu_s),
+        mu_r: args.mu_r.or(from_par(|p| p.mu_r)).unwrap_or(default.mu_r),
+        mu_t: args.mu_t.or(from_par(|p| p.mu_t)).unwrap_or(default.mu_t),
     };
-    let dt = args
-        .dt
-        .or(from_par(|p| p.dt))
-        .unwrap_or_else(|| default_dt(&particles, k_n));
     let t_end = args
         .t_end
         .or_else(|| par.as_ref().and_then(|p| Some(p.steps? as f64 * p.dt?)))
         .unwrap_or_else(|| setup::default_duration(scene, &particles, &gravity));
+    let dt = args
+        .dt
+        .or(from_par(|p| p.dt))
+        .unwrap_or_else(|| match method {
+            Method::Soft => default_dt(&particles, k_n),
+            Method::Hard => setup::default_hard_dt(&particles, &gravity, t_end),
+        });
     let settings = Settings {
-        dt,
-        t_end,
+        method,
         gravity,
-        material,
+        particle_contacts: !args.no_particle_contacts,
+        edges: !args.no_edges && par.as_ref().and_then(|p| p.edge_detect).unwrap_or(true),
+        stepping: match args.oscillation {
+            Oscillation::Exact => walls_sim::OscillationStepping::Exact,
+            Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
+        },
+        ..Settings::new(dt, t_end, material)
     };
-    let out = run(scene, particles, &settings);
-    let kind = |k: EventKind| match k {
-        EventKind::Bounce => "bounce",
-        EventKind::Stick => "stick",
-        EventKind::Remove => "remove",
+    let mut trajectory = match &args.out {
+        Some(dir) => Some(
+            walls_sim::trajectory::Trajectory::create(dir)
+                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
+        ),
+        None => None,
     };
-    let mut model = vec!["ssdem: spring-dashpot"];
-    if material.mu_s > 0.0
-        || scene
-            .walls
-            .iter()
-            .any(|w| w.number(walls_keywords::Keyword::MuS) > 0.0)
-    {
-        model.push("tangential spring with Coulomb friction");
+    let progress = progress_bar((t_end / dt).ceil() as u64);
+    let mut written: std::io::Result<()> = Ok(());
+    if let Some(out) = &mut trajectory {
+        let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
+        written = out.record(0, 0.0, &start, scene);
     }
-    if gravity.norm() > 0.0 {
-        model.push("uniform gravity");
-    }
-    if out.events.iter().any(|e| e.kind == EventKind::Stick) {
-        model.push("sticky walls");
-    }
-    if out.events.iter().any(|e| e.kind == EventKind::Remove) {
-        model.push("death walls");
-    }
-    let v3 = |v: &nalgebra::Vector3<f64>| serde_json::json!([v.x, v.y, v.z]);
-    let report = serde_json::json!({
-        "t": out.t,
-        "steps": out.steps,
-        "particles": out.particles.iter().map(|s| serde_json::json!({
-            "pos": v3(&s.particle.pos),
-            "vel": v3(&s.particle.vel),
-            "spin": v3(&s.particle.spin),
-            "alive": s.alive,
-            "stuck_to": s.stuck_to.map(|(w, _)| w),
-        })).collect::<Vec<_>>(),
-        "events": out.events.iter().map(|e| serde_json::json!({
-            "t": e.t, "particle": e.particle, "wall": e.wall, "kind": kind(e.kind),
-            "vn_in": e.vn_in, "vn_out": e.vn_out,
-        })).collect::<Vec<_>>(),
-        "energy": {"initial": out.energy.0, "final": out.energy.1},
-        "model": model,
-        "warnings": out.warnings,
-    });
-    if args.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
-        );
-    } else {
-        eprintln!(
-            "walls-sim: t = {:.6} after {} steps of {dt:.3e}: {} particles ({} alive), {} wall events, energy {:.6e} → {:.6e}",
-            out.t,
-            out.steps,
-            out.particles.len(),
-            out.particles.iter().filter(|s| s.alive).count(),
-            out.events.len(),
-            out.energy.0,
-            out.energy.1
-        );
-        for w in &out.warnings {
-            eprintln!("walls-sim: warning: {w}");
+    let outcome = run_observed(scene, particles, &settings, &mut |step, t, states| {
+        if let Some(bar) = &progress {
+            bar.set_position(step);
         }
+        if let Some(out) = &mut trajectory
+            && step % args.every == 0
+            && written.is_ok()
+        {
+            written = out.record(step, t, states, scene);
+        }
+    });
+    if let Some(bar) = progress {
+        bar.finish_and_clear();
     }
+    if let Some(out) = trajectory {
+        written = written.and_then(|()| out.finish());
+    }
+    if let (Err(e), Some(dir)) = (written, &args.out) {
+        return Err(format!(
+            "cannot write the trajectory to {}: {e}",
+            dir.display()
+        ));
+    }
+    report(args, scene, &settings, &outcome)?;
     Ok(if errors > 0 {
         ExitCode::from(1)
     } else {
@@ -271,7 +293,124 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
     })
 }
 
-/// A strictly positive real.
+/// A progress bar over `steps` steps, when standard error is a terminal.
+fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(steps);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("walls-sim {bar:40} {pos}/{len} steps, {eta} left")
+    {
+        bar.set_style(style);
+    }
+    Some(bar)
+}
+
+/// The components of the model a run used, for the JSON `model` field.
+fn model(
+    scene: &walls_model::Scene,
+    settings: &walls_sim::run::Settings,
+    outcome: &walls_sim::run::Outcome,
+) -> Vec<&'static str> {
+    use walls_keywords::Keyword;
+    use walls_sim::run::{EventKind, Method};
+    let walls_have = |k: Keyword| scene.walls.iter().any(|w| w.number(k) > 0.0);
+    let m = &settings.material;
+    let mut model = vec![];
+    match settings.method {
+        Method::Soft => {
+            model.push("ssdem: spring-dashpot");
+            if m.mu_s > 0.0 || walls_have(Keyword::MuS) {
+                model.push("tangential spring with Coulomb friction");
+            }
+            if m.mu_r > 0.0 || walls_have(Keyword::MuR) {
+                model.push("rolling resistance");
+            }
+            if m.mu_t > 0.0 || walls_have(Keyword::MuT) {
+                model.push("twisting resistance");
+            }
+        }
+        Method::Hard => {
+            model.push("hsdem: exact collision prediction");
+            if settings.edges {
+                model.push("edge, corner and rim collisions");
+            }
+        }
+    }
+    if settings.particle_contacts && outcome.particles.len() > 1 {
+        model.push("particle-particle contacts (cell grid)");
+    }
+    if settings.gravity.norm() > 0.0 {
+        model.push("uniform gravity");
+    }
+    if outcome.events.iter().any(|e| e.kind == EventKind::Stick) {
+        model.push("sticky walls");
+    }
+    if outcome.events.iter().any(|e| e.kind == EventKind::Remove) {
+        model.push("death walls");
+    }
+    model
+}
+
+/// Prints the outcome: JSON on standard output, or a summary on standard error.
+fn report(
+    args: &RunArgs,
+    scene: &walls_model::Scene,
+    settings: &walls_sim::run::Settings,
+    out: &walls_sim::run::Outcome,
+) -> Result<(), String> {
+    use walls_sim::run::EventKind;
+    let kind = |k: EventKind| match k {
+        EventKind::Bounce => "bounce",
+        EventKind::Stick => "stick",
+        EventKind::Remove => "remove",
+    };
+    if args.json {
+        let v3 = |v: &nalgebra::Vector3<f64>| serde_json::json!([v.x, v.y, v.z]);
+        let report = serde_json::json!({
+            "t": out.t,
+            "steps": out.steps,
+            "particles": out.particles.iter().map(|s| serde_json::json!({
+                "pos": v3(&s.particle.pos),
+                "vel": v3(&s.particle.vel),
+                "spin": v3(&s.particle.spin),
+                "alive": s.alive,
+                "stuck_to": s.stuck_to.map(|(w, _)| w),
+            })).collect::<Vec<_>>(),
+            "events": out.events.iter().map(|e| serde_json::json!({
+                "t": e.t, "particle": e.particle, "wall": e.wall, "kind": kind(e.kind),
+                "vn_in": e.vn_in, "vn_out": e.vn_out,
+            })).collect::<Vec<_>>(),
+            "pair_contacts": out.pair_contacts,
+            "energy": {"initial": out.energy.0, "final": out.energy.1},
+            "model": model(scene, settings, out),
+            "warnings": out.warnings,
+        });
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+    } else {
+        eprintln!(
+            "walls-sim: t = {:.6} after {} steps of {:.3e}: {} particles ({} alive), {} wall events, {} particle contacts, energy {:.6e} → {:.6e}",
+            out.t,
+            out.steps,
+            settings.dt,
+            out.particles.len(),
+            out.particles.iter().filter(|s| s.alive).count(),
+            out.events.len(),
+            out.pair_contacts,
+            out.energy.0,
+            out.energy.1
+        );
+        for w in &out.warnings {
+            eprintln!("walls-sim: warning: {w}");
+        }
+    }
+    Ok(())
+}
+
 /// A value parser for a number that must obey `rule`, as the `.par` file's values must.
 fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |s| {

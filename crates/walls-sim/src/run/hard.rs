@@ -1,0 +1,470 @@
+//! The hard-sphere run (HSDEM): kick-drift-kick as in pkdgrav, where each drift moves
+//! particles in straight lines from one predicted collision to the next (SPEC §3).
+//!
+//! Within a step each wall translates at a constant velocity, the chord from where it
+//! is at the start of the step to where it is at the end (for a wall moving at constant
+//! velocity that is exact; an oscillating wall follows the sinusoid at the ends of every
+//! step and straight lines between); its spin adds to the velocity a contact feels.
+//! Collisions are processed in time order from a queue; each particle keeps its own
+//! clock, and a particle's queued collision is dropped when it, or its partner, has
+//! collided since (a version count per particle).
+//!
+//! Things the prediction cannot see are caught at the start of the next prediction: a
+//! particle that overlaps a wall or another particle and is moving into it collides at
+//! once. Particle pairs are candidates when their spheres, swollen by the distance each
+//! travels in the step at its speed after the first kick, overlap ([`crate::grid`]); a
+//! collision that speeds a particle up beyond that can miss a pair within the step, and
+//! is then caught as an overlap at the next.
+//!
+//! A particle colliding more than [`COLLISION_CAP`] times in one step is in inelastic
+//! collapse (pkdgrav switches to other coefficients there): it is held where it is for
+//! the rest of the step, and the run says so.
+
+use super::{
+    Event, EventKind, Materials, Origins, Outcome, PARALLEL_FROM, Settings, State, WallNow, carry,
+    energy,
+};
+use crate::geometry::Feature;
+use crate::grid::CellGrid;
+use crate::hsdem::{Body, bounce, first_hit, pair_bounce, sphere_entry, supported};
+use crate::ssdem::Material;
+use nalgebra::Vector3;
+use rayon::prelude::*;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+use walls_keywords::Keyword;
+use walls_model::Scene;
+
+type Vec3 = Vector3<f64>;
+
+/// Collisions one particle may have in one step before it counts as inelastic collapse.
+pub const COLLISION_CAP: u32 = 1000;
+
+/// A wall during one step: as it stands at the start, and its chord velocity.
+struct WallStep {
+    start: WallNow,
+    chord: Vec3,
+}
+
+impl WallStep {
+    /// Where the wall's origin is at `tau` into the step.
+    fn origin(&self, tau: f64) -> Vec3 {
+        self.start.origin + self.chord * tau
+    }
+
+    /// The velocity of the wall's material at `q`, at `tau` into the step.
+    fn point_velocity(&self, q: &Vec3, tau: f64) -> Vec3 {
+        self.chord + self.start.spin.cross(&(q - self.origin(tau)))
+    }
+}
+
+/// What a particle meets.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Partner {
+    Wall(usize),
+    Particle(usize),
+}
+
+/// A queued collision of particle `i`, valid while both versions are unchanged.
+#[derive(Debug, Clone, Copy)]
+struct Queued {
+    tau: f64,
+    i: usize,
+    partner: Partner,
+    version_i: u32,
+    version_j: u32,
+}
+
+impl PartialEq for Queued {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Queued {}
+impl PartialOrd for Queued {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Queued {
+    /// Earliest first in a max-heap; ties by particle for a deterministic order.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other
+            .tau
+            .total_cmp(&self.tau)
+            .then_with(|| other.i.cmp(&self.i))
+    }
+}
+
+/// The state of one drift.
+struct Drift<'a> {
+    states: &'a mut [State],
+    walls: &'a [WallStep],
+    usable: &'a [bool],
+    materials: &'a [Material],
+    between: Material,
+    edges: bool,
+    dt: f64,
+    /// Each particle's own clock within the step.
+    clock: Vec<f64>,
+    version: Vec<u32>,
+    collisions: Vec<u32>,
+    neighbours: Vec<Vec<usize>>,
+    queue: BinaryHeap<Queued>,
+}
+
+impl Drift<'_> {
+    /// Where particle `j` is at `tau` into the step.
+    fn position(&self, j: usize, tau: f64) -> Vec3 {
+        let p = &self.states[j].particle;
+        if self.states[j].free() {
+            p.pos + p.vel * (tau - self.clock[j])
+        } else {
+            p.pos
+        }
+    }
+
+    /// Moves particle `i` to `tau` into the step.
+    fn advance(&mut self, i: usize, tau: f64) {
+        if self.states[i].free() {
+            self.states[i].particle.pos = self.position(i, tau);
+        }
+        self.clock[i] = tau;
+    }
+
+    /// Queues the first collision of particle `i` from its clock on, if any in the step.
+    fn predict(&mut self, i: usize) {
+        if let Some(q) = self.prediction(i) {
+            self.queue.push(q);
+        }
+    }
+
+    /// The first collision of particle `i` from its clock on, if any in the step.
+    fn prediction(&self, i: usize) -> Option<Queued> {
+        if !self.states[i].free() || self.collisions[i] >= COLLISION_CAP {
+            return None;
+        }
+        let tau = self.clock[i];
+        let left = self.dt - tau;
+        let p = self.states[i].particle.clone();
+        let mut best: Option<(f64, Partner)> = None;
+        let mut consider = |t: f64, partner: Partner| {
+            if best.is_none_or(|(b, _)| t < b) {
+                best = Some((t, partner));
+            }
+        };
+        for (w, wall) in self.walls.iter().enumerate() {
+            if !self.usable[w] {
+                continue;
+            }
+            // In the wall's frame at the start of the step.
+            let here = p.pos - wall.chord * tau;
+            let d = p.vel - wall.chord;
+            let near = wall.start.shape.nearest(&here);
+            let counts = self.edges || matches!(near.feature, Feature::Face | Feature::Side);
+            if counts && near.distance <= p.radius {
+                let v = wall.point_velocity(&(near.point + wall.chord * tau), tau);
+                if near.normal.dot(&(p.vel - v)) < 0.0 {
+                    consider(0.0, Partner::Wall(w));
+                    continue;
+                }
+            }
+            if let Some(hit) = first_hit(&wall.start.shape, &here, &d, p.radius, left, self.edges) {
+                consider(hit.t, Partner::Wall(w));
+            }
+        }
+        for k in 0..self.neighbours[i].len() {
+            let j = self.neighbours[i][k];
+            if !self.states[j].free() {
+                continue;
+            }
+            let q = &self.states[j].particle;
+            let a = p.pos - self.position(j, tau);
+            let b = p.vel - q.vel;
+            let s = p.radius + q.radius;
+            if a.norm() <= s && a.dot(&b) < 0.0 {
+                consider(0.0, Partner::Particle(j));
+            } else if let Some(t) = sphere_entry(&a, &b, s).filter(|t| *t <= left) {
+                consider(t, Partner::Particle(j));
+            }
+        }
+        let (t, partner) = best?;
+        let version_j = match partner {
+            Partner::Particle(j) => self.version[j],
+            Partner::Wall(_) => 0,
+        };
+        Some(Queued {
+            tau: tau + t,
+            i,
+            partner,
+            version_i: self.version[i],
+            version_j,
+        })
+    }
+}
+
+/// What happened in one drift.
+#[derive(Default)]
+struct DriftReport {
+    events: Vec<Event>,
+    pair_collisions: u64,
+    collapsed: Vec<usize>,
+}
+
+/// Moves the free particles over one step from collision to collision.
+fn drift(d: &mut Drift, t0: f64) -> DriftReport {
+    let mut report = DriftReport::default();
+    // The first predictions are most of the work when collisions are rare: in parallel
+    // for many particles, queued in particle order.
+    let first: Vec<Option<Queued>> = if d.states.len() >= PARALLEL_FROM {
+        (0..d.states.len())
+            .into_par_iter()
+            .map(|i| d.prediction(i))
+            .collect()
+    } else {
+        (0..d.states.len()).map(|i| d.prediction(i)).collect()
+    };
+    d.queue.extend(first.into_iter().flatten());
+    while let Some(q) = d.queue.pop() {
+        let i = q.i;
+        if q.version_i != d.version[i] {
+            continue;
+        }
+        if let Partner::Particle(j) = q.partner
+            && q.version_j != d.version[j]
+        {
+            // The partner moved on: look again from now.
+            d.advance(i, q.tau);
+            d.predict(i);
+            continue;
+        }
+        d.advance(i, q.tau);
+        d.version[i] += 1;
+        d.collisions[i] += 1;
+        match q.partner {
+            Partner::Wall(w) => {
+                report.events.push(wall_collision(d, i, w, q.tau, t0));
+            }
+            Partner::Particle(j) => {
+                d.advance(j, q.tau);
+                d.version[j] += 1;
+                d.collisions[j] += 1;
+                pair_collision(d, i, j);
+                report.pair_collisions += 1;
+                if d.collisions[j] == COLLISION_CAP {
+                    report.collapsed.push(j);
+                }
+                d.predict(j);
+            }
+        }
+        if d.collisions[i] == COLLISION_CAP {
+            report.collapsed.push(i);
+        }
+        d.predict(i);
+    }
+    for i in 0..d.states.len() {
+        if d.collisions[i] < COLLISION_CAP {
+            d.advance(i, d.dt);
+        }
+    }
+    report
+}
+
+/// Particle `i` meets wall `w` at `tau` into the step that began at `t0`: a bounce, a
+/// stick or a removal.
+fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event {
+    let wall = &d.walls[w];
+    let s = &mut d.states[i];
+    let p = &s.particle;
+    let near = wall.start.shape.nearest(&(p.pos - wall.chord * tau));
+    let point = near.point + wall.chord * tau;
+    let n = near.normal;
+    let wall_v = wall.point_velocity(&point, tau);
+    let contact_v = p.vel + p.spin.cross(&(-n * p.radius)) - wall_v;
+    let vn_in = -n.dot(&contact_v);
+    let mat = &d.materials[w];
+    let kind = if mat.eps_n < 0.0 {
+        s.alive = false;
+        EventKind::Remove
+    } else if mat.eps_n == 0.0 {
+        s.stuck_to = Some((w, p.pos - wall.origin(tau)));
+        s.particle.vel = wall_v;
+        EventKind::Stick
+    } else {
+        let b = bounce(p.radius, &p.vel, &p.spin, &wall_v, &n, mat.eps_n, mat.eps_t);
+        s.particle.vel = b.velocity;
+        s.particle.spin = b.spin;
+        EventKind::Bounce
+    };
+    let vn_out = match kind {
+        EventKind::Bounce => n.dot(&(s.particle.vel - wall_v)),
+        _ => 0.0,
+    };
+    Event {
+        t: t0 + tau,
+        particle: i,
+        wall: w,
+        kind,
+        vn_in,
+        vn_out,
+    }
+}
+
+/// Particles `i` and `j`, both at the same clock, collide.
+fn pair_collision(d: &mut Drift, i: usize, j: usize) {
+    let body = |s: &State| Body {
+        mass: s.particle.mass,
+        radius: s.particle.radius,
+        velocity: s.particle.vel,
+        spin: s.particle.spin,
+    };
+    let (a, b) = (body(&d.states[i]), body(&d.states[j]));
+    let n = (d.states[i].particle.pos - d.states[j].particle.pos)
+        .try_normalize(0.0)
+        .unwrap_or_else(Vec3::z);
+    let (ba, bb) = pair_bounce(&a, &b, &n, d.between.eps_n, d.between.eps_t);
+    d.states[i].particle.vel = ba.velocity;
+    d.states[i].particle.spin = ba.spin;
+    d.states[j].particle.vel = bb.velocity;
+    d.states[j].particle.spin = bb.spin;
+}
+
+pub(super) fn run(
+    scene: &Scene,
+    mut states: Vec<State>,
+    settings: &Settings,
+    observe: &mut dyn FnMut(u64, f64, &[State]),
+) -> Outcome {
+    let g = settings.gravity;
+    let dt = settings.dt;
+    let Materials {
+        walls: materials,
+        between,
+    } = Materials::new(scene, &settings.material);
+    let mut warnings = Vec::new();
+    let mut origins = Origins::new(scene, settings.stepping);
+    let usable: Vec<bool> = origins
+        .walls(scene, 0.0)
+        .iter()
+        .map(|w| supported(&w.shape))
+        .collect();
+    for (w, wall) in scene.walls.iter().enumerate() {
+        if !usable[w] {
+            warnings.push(format!(
+                "wall {w} ({}{}) is not supported by pkdgrav's hard-sphere code; particles pass through it",
+                wall.wall_type().name(),
+                if wall.number(Keyword::Taper) != 0.0 { " with taper" } else { "" }
+            ));
+        }
+    }
+    let literal: Vec<String> = scene
+        .walls
+        .iter()
+        .enumerate()
+        .filter(|(_, w)| w.number(Keyword::Epsn) == 99.0 || w.number(Keyword::Epst) == 99.0)
+        .map(|(i, _)| i.to_string())
+        .collect();
+    if !literal.is_empty() {
+        warnings.push(format!(
+            "epsn or epst left at 99 on walls {}: pkdgrav's hard-sphere code would use 99 as the coefficient; this run uses the particles' values",
+            literal.join(", ")
+        ));
+    }
+    let initial = energy(&states, &g);
+    let mut events = Vec::new();
+    let mut pair_contacts = 0;
+    let mut collapse_warned = false;
+    let mut t = 0.0;
+    let mut steps = 0u64;
+    let n = states.len();
+    while t < settings.t_end - dt * 1e-9 {
+        for s in states.iter_mut().filter(|s| s.free()) {
+            s.particle.vel += g * (dt / 2.0);
+        }
+        let start = origins.walls(scene, t);
+        origins.advance(scene, t, dt);
+        let walls: Vec<WallStep> = start
+            .into_iter()
+            .zip(&origins.now)
+            .map(|(start, end)| {
+                let chord = (end - start.origin) / dt;
+                WallStep {
+                    start,
+                    chord: if chord.iter().all(|x| x.is_finite()) {
+                        chord
+                    } else {
+                        Vec3::zeros()
+                    },
+                }
+            })
+            .collect();
+        let neighbours = if settings.particle_contacts && n > 1 {
+            candidates(&states, dt)
+        } else {
+            vec![Vec::new(); n]
+        };
+        let mut d = Drift {
+            states: &mut states,
+            walls: &walls,
+            usable: &usable,
+            materials: &materials,
+            between,
+            edges: settings.edges,
+            dt,
+            clock: vec![0.0; n],
+            version: vec![0; n],
+            collisions: vec![0; n],
+            neighbours,
+            queue: BinaryHeap::new(),
+        };
+        let report = drift(&mut d, t);
+        pair_contacts += report.pair_collisions;
+        events.extend(report.events);
+        if let Some(&i) = report.collapsed.first()
+            && !collapse_warned
+        {
+            collapse_warned = true;
+            warnings.push(format!(
+                "particle {i} had {COLLISION_CAP} collisions within one step (t = {t}): inelastic collapse, or jammed between walls; it was held where it was for the rest of that step"
+            ));
+        }
+        t += dt;
+        steps += 1;
+        for s in states.iter_mut() {
+            if s.free() {
+                s.particle.vel += g * (dt / 2.0);
+            } else if s.alive
+                && let Some((w, _)) = s.stuck_to
+            {
+                carry(s, &WallNow::new(&scene.walls[w], origins.now[w], t), dt);
+            }
+        }
+        observe(steps, t, &states);
+    }
+    let last = energy(&states, &g);
+    Outcome {
+        t,
+        steps,
+        particles: states,
+        events,
+        pair_contacts,
+        energy: (initial, last),
+        warnings,
+    }
+}
+
+/// For each particle, the free particles it could meet within a step of `dt`.
+fn candidates(states: &[State], dt: f64) -> Vec<Vec<usize>> {
+    let grid = CellGrid::from_fn(states.len(), |i| {
+        let p = &states[i].particle;
+        states[i]
+            .free()
+            .then_some((p.pos, p.radius + p.vel.norm() * dt))
+    });
+    let mut out = vec![Vec::new(); states.len()];
+    grid.for_each_pair(|i, j| {
+        out[i].push(j);
+        out[j].push(i);
+    });
+    out
+}

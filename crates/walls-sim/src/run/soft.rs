@@ -1,0 +1,398 @@
+//! The soft-sphere run (SSDEM): pkdgrav's kick-drift-kick leapfrog, with the
+//! spring–dashpot of [`crate::ssdem`] against every wall and every particle a particle
+//! overlaps, and rolling and twisting resistance where the material has them.
+//!
+//! pkdgrav's overlap warnings (3 % and 15 % of the radius) are reported once each; an
+//! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
+//! on one particle is a warning. Particle pairs are found with a cell grid
+//! ([`crate::grid`]) rebuilt every step.
+
+use super::{
+    Event, EventKind, Materials, Origins, Outcome, OverlapWarnings, PARALLEL_FROM, Settings, State,
+    WallNow, carry, energy,
+};
+use crate::grid::CellGrid;
+use crate::ssdem::{Material, Rolling, Touch, contact, contact_radius, resistance};
+use nalgebra::Vector3;
+use rayon::prelude::*;
+use walls_model::Scene;
+
+type Vec3 = Vector3<f64>;
+
+/// An open contact: the tangential spring, the normal speed it began with, and the last
+/// step it was seen.
+struct Open {
+    spring: Vec3,
+    vn_in: f64,
+    seen: u64,
+}
+
+/// The open contacts of each particle with particles of higher index. A particle touches
+/// a few others at most, so a short list per particle is faster than a map keyed by pairs
+/// (docs/performance.md); its wall contacts are kept the same way, in its [`Load`].
+struct OpenContacts(Vec<Vec<(usize, Open)>>);
+
+impl OpenContacts {
+    fn new(n: usize) -> Self {
+        OpenContacts((0..n).map(|_| Vec::new()).collect())
+    }
+
+    /// The contact of particle `i` with `other`, opened with `new` if it is not.
+    fn entry(&mut self, i: usize, other: usize, new: impl FnOnce() -> Open) -> &mut Open {
+        let list = &mut self.0[i];
+        let k = match list.iter().position(|(o, _)| *o == other) {
+            Some(k) => k,
+            None => {
+                list.push((other, new()));
+                list.len() - 1
+            }
+        };
+        &mut list[k].1
+    }
+
+    /// Closes every contact not seen at `step`.
+    fn sweep(&mut self, step: u64) {
+        for list in &mut self.0 {
+            list.retain(|(_, o)| o.seen == step);
+        }
+    }
+}
+
+/// The inertia of a solid sphere.
+fn inertia(m: f64, r: f64) -> f64 {
+    0.4 * m * r * r
+}
+
+/// The walls as they stand in a step, with their materials.
+struct Walls<'a> {
+    now: Vec<WallNow>,
+    materials: &'a [Material],
+}
+
+/// What acts on one particle in a step: the force and torque summed so far, and its
+/// open wall contacts.
+#[derive(Default)]
+struct Load {
+    force: Vec3,
+    torque: Vec3,
+    walls: Vec<(usize, Open)>,
+}
+
+/// What one particle's wall contacts did in a step.
+#[derive(Default)]
+struct ParticleStep {
+    events: Vec<Event>,
+    /// The deepest overlap, as a fraction of the radius, and its wall.
+    deepest: Option<(f64, usize)>,
+    touching: usize,
+}
+
+/// One particle's contacts with the walls at time `t`, added to its `load` (which holds
+/// gravity and the particle contacts already), then the closing kick.
+fn wall_step(
+    i: usize,
+    s: &mut State,
+    load: &mut Load,
+    walls: &Walls,
+    t: f64,
+    dt: f64,
+    step: u64,
+) -> ParticleStep {
+    let mut out = ParticleStep::default();
+    let open = &mut load.walls;
+    if !s.alive {
+        return out;
+    }
+    if let Some((w, _)) = s.stuck_to {
+        carry(s, &walls.now[w], dt);
+        return out;
+    }
+    let (m, r) = (s.particle.mass, s.particle.radius);
+    for (w, wall) in walls.now.iter().enumerate() {
+        let near = wall.shape.nearest(&s.particle.pos);
+        let overlap = r - near.distance;
+        let n = near.normal;
+        let wall_v = wall.point_velocity(&near.point);
+        let k = open.iter().position(|(o, _)| *o == w);
+        if overlap <= 0.0 {
+            if let Some(k) = k {
+                let o = open.swap_remove(k).1;
+                out.events.push(Event {
+                    t,
+                    particle: i,
+                    wall: w,
+                    kind: EventKind::Bounce,
+                    vn_in: o.vn_in,
+                    vn_out: n.dot(&(s.particle.vel - wall_v)),
+                });
+            }
+            continue;
+        }
+        out.touching += 1;
+        if out.deepest.is_none_or(|(f, _)| overlap / r > f) {
+            out.deepest = Some((overlap / r, w));
+        }
+        let u = s.particle.vel + s.particle.spin.cross(&(-n * r)) - wall_v;
+        let mat = &walls.materials[w];
+        let k = k.unwrap_or_else(|| {
+            open.push((
+                w,
+                Open {
+                    spring: Vec3::zeros(),
+                    vn_in: -n.dot(&u),
+                    seen: step,
+                },
+            ));
+            open.len() - 1
+        });
+        if mat.eps_n <= 0.0 {
+            // A death wall removes the particle; a sticky wall holds it.
+            let kind = if mat.eps_n < 0.0 {
+                s.alive = false;
+                EventKind::Remove
+            } else {
+                s.stuck_to = Some((w, s.particle.pos - wall.origin));
+                s.particle.vel = wall_v;
+                EventKind::Stick
+            };
+            out.events.push(Event {
+                t,
+                particle: i,
+                wall: w,
+                kind,
+                vn_in: open[k].1.vn_in,
+                vn_out: 0.0,
+            });
+            open.swap_remove(k);
+            return out;
+        }
+        let touch = Touch {
+            overlap,
+            normal: n,
+            velocity: u,
+        };
+        let c = contact(m, r, &touch, &mut open[k].1.spring, dt, mat);
+        load.force += c.force;
+        load.torque += c.torque;
+        if mat.mu_r > 0.0 || mat.mu_t > 0.0 {
+            let rolling = Rolling {
+                spin: s.particle.spin - wall.spin,
+                normal: n,
+                normal_force: n.dot(&c.force).abs(),
+                lever: r,
+                contact_radius: contact_radius(r, overlap),
+                inertia: inertia(m, r),
+            };
+            load.torque += resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+        }
+    }
+    s.acc = load.force / m;
+    s.alpha = load.torque / inertia(m, r);
+    s.particle.vel += s.acc * (dt / 2.0);
+    s.particle.spin += s.alpha * (dt / 2.0);
+    out
+}
+
+pub(super) fn run(
+    scene: &Scene,
+    mut states: Vec<State>,
+    settings: &Settings,
+    observe: &mut dyn FnMut(u64, f64, &[State]),
+) -> Outcome {
+    let g = settings.gravity;
+    let dt = settings.dt;
+    let Materials {
+        walls: materials,
+        between,
+    } = Materials::new(scene, &settings.material);
+    let initial = energy(&states, &g);
+    let n = states.len();
+    let mut loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
+    let mut pairs_open = OpenContacts::new(n);
+    let mut pair_contacts = 0;
+    let mut reports: Vec<ParticleStep> = Vec::with_capacity(n);
+    let mut events = Vec::new();
+    let mut warnings = Vec::new();
+    let mut overlaps = OverlapWarnings::default();
+    let mut warned_crowd = false;
+    let mut t = 0.0;
+    let mut steps = 0u64;
+    let parallel = n >= PARALLEL_FROM;
+    let mut origins = Origins::new(scene, settings.stepping);
+    'run: while t < settings.t_end - dt * 1e-9 {
+        // Kick and drift.
+        let kick_drift = |s: &mut State| {
+            if s.free() {
+                s.particle.vel += s.acc * (dt / 2.0);
+                s.particle.spin += s.alpha * (dt / 2.0);
+                let v = s.particle.vel;
+                s.particle.pos += v * dt;
+            }
+        };
+        if parallel {
+            states.par_iter_mut().for_each(kick_drift);
+        } else {
+            states.iter_mut().for_each(kick_drift);
+        }
+        origins.advance(scene, t, dt);
+        t += dt;
+        steps += 1;
+        let walls = Walls {
+            now: origins.walls(scene, t),
+            materials: &materials,
+        };
+        for (s, load) in states.iter().zip(&mut loads) {
+            load.force = g * s.particle.mass;
+            load.torque = Vec3::zeros();
+        }
+        if settings.particle_contacts && n > 1 {
+            let stop = pair_forces(
+                &states,
+                &between,
+                dt,
+                steps,
+                &mut pairs_open,
+                &mut loads,
+                &mut pair_contacts,
+                &mut |fraction, what| overlaps.check(fraction, what, t, &mut warnings),
+            );
+            pairs_open.sweep(steps);
+            if stop {
+                break 'run;
+            }
+        }
+        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
+            wall_step(i, s, load, &walls, t, dt, steps)
+        };
+        if parallel {
+            states
+                .par_iter_mut()
+                .zip(loads.par_iter_mut())
+                .enumerate()
+                .map(each)
+                .collect_into_vec(&mut reports);
+        } else {
+            reports.clear();
+            reports.extend(
+                states
+                    .iter_mut()
+                    .zip(loads.iter_mut())
+                    .enumerate()
+                    .map(each),
+            );
+        }
+        // In particle order, so that the outcome does not depend on the threads.
+        let mut stop = false;
+        for (i, report) in reports.iter_mut().enumerate() {
+            events.append(&mut report.events);
+            if let Some((fraction, w)) = report.deepest {
+                stop |= overlaps.check(
+                    fraction,
+                    &format!("particle {i}, wall {w}"),
+                    t,
+                    &mut warnings,
+                );
+            }
+            if report.touching > 3 && !warned_crowd {
+                warned_crowd = true;
+                warnings.push(format!(
+                    "particle {i} touches {} walls at once (t = {t}); pkdgrav handles at most 3",
+                    report.touching
+                ));
+            }
+        }
+        if stop {
+            break 'run;
+        }
+        observe(steps, t, &states);
+    }
+    let last = energy(&states, &g);
+    Outcome {
+        t,
+        steps,
+        particles: states,
+        events,
+        pair_contacts,
+        energy: (initial, last),
+        warnings,
+    }
+}
+
+/// Adds the forces and torques of every overlapping pair of free particles; true when an
+/// overlap is past pkdgrav's abort.
+#[allow(clippy::too_many_arguments)]
+fn pair_forces(
+    states: &[State],
+    mat: &Material,
+    dt: f64,
+    step: u64,
+    open: &mut OpenContacts,
+    loads: &mut [Load],
+    began: &mut u64,
+    overlap_too_big: &mut dyn FnMut(f64, &str) -> bool,
+) -> bool {
+    let grid = CellGrid::from_fn(states.len(), |i| {
+        let s = &states[i];
+        s.free().then_some((s.particle.pos, s.particle.radius))
+    });
+    let mut stop = false;
+    grid.for_each_pair(|i, j| {
+        let (p, q) = (&states[i].particle, &states[j].particle);
+        let d = p.pos - q.pos;
+        let distance = d.norm();
+        let overlap = p.radius + q.radius - distance;
+        if overlap <= 0.0 || stop {
+            return;
+        }
+        if overlap_too_big(
+            overlap / p.radius.min(q.radius),
+            &format!("particles {i} and {j}"),
+        ) {
+            stop = true;
+        }
+        let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
+        let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
+        let reduced = p.mass * q.mass / (p.mass + q.mass);
+        let entry = open.entry(i, j, || {
+            *began += 1;
+            Open {
+                spring: Vec3::zeros(),
+                vn_in: -n.dot(&u),
+                seen: step,
+            }
+        });
+        entry.seen = step;
+        let touch = Touch {
+            overlap,
+            normal: n,
+            velocity: u,
+        };
+        let c = contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat);
+        loads[i].force += c.force;
+        loads[j].force -= c.force;
+        // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂ from j.
+        loads[i].torque += c.torque;
+        loads[j].torque += c.torque * (q.radius / p.radius);
+        if mat.mu_r > 0.0 || mat.mu_t > 0.0 {
+            let lever = p.radius * q.radius / (p.radius + q.radius);
+            let rolling = Rolling {
+                spin: p.spin - q.spin,
+                normal: n,
+                normal_force: n.dot(&c.force).abs(),
+                lever,
+                contact_radius: lens_radius(p.radius, q.radius, distance),
+                inertia: inertia(p.mass, p.radius).min(inertia(q.mass, q.radius)),
+            };
+            let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+            loads[i].torque += m;
+            loads[j].torque -= m;
+        }
+    });
+    stop
+}
+
+/// The radius of the circle where spheres of radii `a` and `b`, `d` apart, intersect.
+fn lens_radius(a: f64, b: f64, d: f64) -> f64 {
+    let h = (d * d + a * a - b * b) / (2.0 * d);
+    (a * a - h * h).max(0.0).sqrt()
+}
