@@ -41,7 +41,13 @@ impl Value {
 /// The unit vector along `v`, or `None` for the zero vector. Scales by the largest
 /// component first, so vectors whose length overflows a double (1e308 1e308 0) still
 /// have a direction.
+#[inline]
 pub fn direction(v: &Vec3) -> Option<Vec3> {
+    // The common case in one square root; tiny and huge vectors take the scaled path.
+    let n2 = v.norm_squared();
+    if n2.is_normal() && n2 < f64::MAX {
+        return Some(v / n2.sqrt());
+    }
     let largest = v.amax();
     if largest == 0.0 || !largest.is_finite() {
         return None;

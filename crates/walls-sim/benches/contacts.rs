@@ -33,7 +33,7 @@ fn contacts(c: &mut Criterion) {
         .iter()
         .map(|w| Shape::of(w, w.vector(walls_keywords::Keyword::Origin)))
         .collect();
-    let points: Vec<Vec3> = setup::scattered(&scene, 10_000, 0.01)
+    let points: Vec<Vec3> = setup::packed(&scene, 10_000, 0.01)
         .iter()
         .map(|p| p.pos)
         .collect();
@@ -50,7 +50,7 @@ fn contacts(c: &mut Criterion) {
             touching
         })
     });
-    let ps = setup::scattered(&scene, 10_000, 0.01);
+    let ps = setup::packed(&scene, 10_000, 0.01);
     assert_eq!(ps.len(), 10_000);
     let steps = 20;
     let k_n = 1e3;

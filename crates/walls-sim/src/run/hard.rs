@@ -169,6 +169,11 @@ impl Drift<'_> {
                     continue;
                 }
             }
+            // Too far to reach the wall within the step: its distance falls at most at
+            // the relative speed.
+            if near.distance > p.radius + d.norm() * left {
+                continue;
+            }
             if let Some(hit) = first_hit(&wall.start.shape, &here, &d, p.radius, left, self.edges) {
                 consider(hit.t, Partner::Wall(w));
             }

@@ -82,7 +82,7 @@ impl Settings {
 
 /// Below this many particles a step runs on one thread: handing the work to rayon costs
 /// more than it saves (docs/performance.md).
-const PARALLEL_FROM: usize = 2048;
+const PARALLEL_FROM: usize = 1024;
 
 /// Steps per pair contact in the default timestep π·√(m/(2k_n))/N: at 100 the rebound
 /// is within 1 % of ε for ε from 0.1 to 0.95 (docs/evaluator.md).
@@ -347,21 +347,29 @@ struct OverlapWarnings {
 impl OverlapWarnings {
     /// Notes an overlap of `fraction` of the radius; true when it is above 50 %, where
     /// pkdgrav aborts.
-    fn check(&mut self, fraction: f64, what: &str, t: f64, warnings: &mut Vec<String>) -> bool {
+    fn check(
+        &mut self,
+        fraction: f64,
+        what: &dyn Fn() -> String,
+        t: f64,
+        warnings: &mut Vec<String>,
+    ) -> bool {
         for (k, level) in [0.03, 0.15].iter().enumerate() {
             if fraction > *level && !self.warned[k] {
                 self.warned[k] = true;
                 warnings.push(format!(
-                    "overlap of {:.1}% of the radius ({what}, t = {t}): more than {:.0}%",
+                    "overlap of {:.1}% of the radius ({}, t = {t}): more than {:.0}%",
                     fraction * 100.0,
+                    what(),
                     level * 100.0
                 ));
             }
         }
         if fraction > 0.5 {
             warnings.push(format!(
-                "overlap of {:.1}% of the radius ({what}, t = {t}): pkdgrav aborts above 50%; the run stops",
-                fraction * 100.0
+                "overlap of {:.1}% of the radius ({}, t = {t}): pkdgrav aborts above 50%; the run stops",
+                fraction * 100.0,
+                what()
             ));
         }
         fraction > 0.5

@@ -209,6 +209,7 @@ pub(super) fn run(
     let n = states.len();
     let mut loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
     let mut pairs_open = OpenContacts::new(n);
+    let mut candidates = PairList::new(&states);
     let mut pair_contacts = 0;
     let mut reports: Vec<ParticleStep> = Vec::with_capacity(n);
     let mut events = Vec::new();
@@ -246,11 +247,13 @@ pub(super) fn run(
             load.torque = Vec3::zeros();
         }
         if settings.particle_contacts && n > 1 {
+            candidates.update(&states);
             let stop = pair_forces(
                 &states,
                 &between,
                 dt,
                 steps,
+                &candidates,
                 &mut pairs_open,
                 &mut loads,
                 &mut pair_contacts,
@@ -288,7 +291,7 @@ pub(super) fn run(
             if let Some((fraction, w)) = report.deepest {
                 stop |= overlaps.check(
                     fraction,
-                    &format!("particle {i}, wall {w}"),
+                    &|| format!("particle {i}, wall {w}"),
                     t,
                     &mut warnings,
                 );
@@ -318,6 +321,58 @@ pub(super) fn run(
     }
 }
 
+/// The candidate particle pairs, kept from step to step (a Verlet list): the pairs whose
+/// spheres, swollen by half the skin each, overlapped when the list was built. It is
+/// rebuilt on the cell grid once some particle has moved more than half the skin since,
+/// so every pair that overlaps now is in it. The skin is 0.4 of the largest radius: in
+/// a settled pile the list lasts many steps (docs/performance.md).
+struct PairList {
+    pairs: Vec<(u32, u32)>,
+    built_at: Vec<Vec3>,
+    skin: f64,
+}
+
+impl PairList {
+    fn new(states: &[State]) -> PairList {
+        let largest = states.iter().map(|s| s.particle.radius).fold(0.0, f64::max);
+        let mut list = PairList {
+            pairs: Vec::new(),
+            built_at: Vec::new(),
+            skin: 0.4 * largest,
+        };
+        list.build(states);
+        list
+    }
+
+    fn build(&mut self, states: &[State]) {
+        let half = self.skin / 2.0;
+        let grid = CellGrid::from_fn(states.len(), |i| {
+            let s = &states[i];
+            s.free()
+                .then_some((s.particle.pos, s.particle.radius + half))
+        });
+        self.pairs = grid.pairs();
+        self.built_at = states.iter().map(|s| s.particle.pos).collect();
+    }
+
+    /// Rebuilds the list if some free particle has moved more than half the skin.
+    fn update(&mut self, states: &[State]) {
+        let limit = (self.skin / 2.0).powi(2);
+        let moved = |(s, at): (&State, &Vec3)| {
+            let d2 = (s.particle.pos - at).norm_squared();
+            s.free() && (d2 > limit || d2.is_nan())
+        };
+        let stale = if states.len() >= PARALLEL_FROM {
+            states.par_iter().zip(&self.built_at).any(moved)
+        } else {
+            states.iter().zip(&self.built_at).any(moved)
+        };
+        if stale {
+            self.build(states);
+        }
+    }
+}
+
 /// Adds the forces and torques of every overlapping pair of free particles; true when an
 /// overlap is past pkdgrav's abort.
 #[allow(clippy::too_many_arguments)]
@@ -326,29 +381,30 @@ fn pair_forces(
     mat: &Material,
     dt: f64,
     step: u64,
+    candidates: &PairList,
     open: &mut OpenContacts,
     loads: &mut [Load],
     began: &mut u64,
-    overlap_too_big: &mut dyn FnMut(f64, &str) -> bool,
+    overlap_too_big: &mut dyn FnMut(f64, &dyn Fn() -> String) -> bool,
 ) -> bool {
-    let grid = CellGrid::from_fn(states.len(), |i| {
-        let s = &states[i];
-        s.free().then_some((s.particle.pos, s.particle.radius))
-    });
     let mut stop = false;
-    grid.for_each_pair(|i, j| {
+    for &(i, j) in &candidates.pairs {
+        let (i, j) = (i as usize, j as usize);
+        if !states[i].free() || !states[j].free() {
+            continue;
+        }
         let (p, q) = (&states[i].particle, &states[j].particle);
         let d = p.pos - q.pos;
         let distance = d.norm();
         let overlap = p.radius + q.radius - distance;
-        if overlap <= 0.0 || stop {
-            return;
+        if overlap <= 0.0 {
+            continue;
         }
-        if overlap_too_big(
-            overlap / p.radius.min(q.radius),
-            &format!("particles {i} and {j}"),
-        ) {
+        if overlap_too_big(overlap / p.radius.min(q.radius), &|| {
+            format!("particles {i} and {j}")
+        }) {
             stop = true;
+            break;
         }
         let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
         let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
@@ -387,7 +443,7 @@ fn pair_forces(
             loads[i].torque += m;
             loads[j].torque -= m;
         }
-    });
+    }
     stop
 }
 
