@@ -398,3 +398,66 @@ fn off_an_oscillating_plate_at_the_velocity_of_its_step() {
         );
     }
 }
+
+#[test]
+fn a_vibrated_plate_throws_a_resting_particle_only_above_one_g() {
+    // A hard sphere cannot rest: on the plate it bounces in every step, by about g·dt.
+    // It has left the plate when it goes a whole 1 % of a period without a collision; the
+    // last collision before that is the lift-off, at ωt = arcsin(g/(Aω²)) when
+    // Aω²/g > 1, and never otherwise.
+    let (a, g): (f64, f64) = (0.01, 1.0);
+    for gamma in [0.5f64, 2.0, 4.0] {
+        let omega = (gamma * g / a).sqrt();
+        let period = std::f64::consts::TAU / omega;
+        let walls =
+            format!("wall type plane\n  osc-ampl {a}\n  osc-freq {omega}\n  epsn 0.5\n  epst 1\n");
+        let dt = period / 20_000.0;
+        let out = run(
+            &scene(&walls),
+            vec![particle([0.0, 0.0, 0.1], [0.0, 0.0, a * omega])],
+            &settings(0.8, dt, period, [0.0, 0.0, -g]),
+        );
+        let times: Vec<f64> = out.events.iter().map(|e| e.t).collect();
+        let lift = times
+            .windows(2)
+            .find(|w| w[1] - w[0] > 0.01 * period)
+            .map(|w| w[0]);
+        let lift = lift.or_else(|| {
+            times
+                .last()
+                .filter(|t| period - **t > 0.01 * period)
+                .copied()
+        });
+        if gamma < 1.0 {
+            assert_eq!(lift, None, "Γ = {gamma}: it stays on the plate");
+            continue;
+        }
+        let phase = lift.expect("it lifts off") * omega;
+        let expected = (1.0 / gamma).asin();
+        assert!(
+            (phase - expected).abs() < 0.01,
+            "Γ = {gamma}: lift-off at phase {phase}, expected {expected}"
+        );
+    }
+}
+
+#[test]
+fn off_a_spinning_disk_the_contact_feels_its_surface_velocity() {
+    // Falling at 1 onto a disk spinning at 2 about z, at x = 0.5: the disk's surface there
+    // moves at (0, 1, 0). With εt = −1 the contact point's tangential velocity relative to
+    // the disk reverses: v′ = (0, 4/7, 1) and ω′ = (10/(7R), 0, 0) (SPEC §3).
+    let out = run(
+        &scene("wall type disk\n  radius 1\n  ang-speed 2\n  epsn 1\n  epst -1\n"),
+        vec![particle([0.5, 0.0, 0.5], [0.0, 0.0, -1.0])],
+        &settings(0.8, 0.1, 0.5, [0.0; 3]),
+    );
+    let p = &out.particles[0].particle;
+    assert!(
+        (p.vel - Vec3::new(0.0, 4.0 / 7.0, 1.0)).norm() < 1e-12,
+        "{p:?}"
+    );
+    assert!(
+        (p.spin - Vec3::new(10.0 / 0.7, 0.0, 0.0)).norm() < 1e-12,
+        "{p:?}"
+    );
+}
