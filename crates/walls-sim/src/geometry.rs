@@ -290,7 +290,8 @@ fn disk(p: &Vec3, c: &Vec3, n: &Vec3, radius: f64, hole: f64) -> Nearest {
     if rho > radius {
         answer(p, c + out * radius, *n, Feature::Rim(0))
     } else if rho < hole {
-        answer(p, c + out * hole, *n, Feature::HoleRim)
+        let near = answer(p, c + out * hole, *n, Feature::HoleRim);
+        on_axis(near, radial.norm() == 0.0, n, n.dot(&d))
     } else {
         answer(p, c + radial, *n, Feature::Face)
     }
@@ -329,7 +330,23 @@ fn cone(p: &Vec3, c: &Vec3, axis: &Vec3, radius: f64, length: f64, taper: f64) -
     // The side's own normal in the profile plane: perpendicular to the segment, outwards.
     let slope = b - a;
     let side = direction(&(out * slope.x - axis * slope.y)).unwrap_or(out);
-    answer(p, q, side, feature)
+    let near = answer(p, q, side, feature);
+    let rim = matches!(feature, Feature::Rim(_));
+    on_axis(near, rim && radial.norm() == 0.0, axis, x - q2.x)
+}
+
+/// A point on the axis of a ring is as near to every point of it: the contact is the
+/// whole ring, and its net normal runs along the axis, towards the point's side
+/// (`side` > 0: along `axis`). Without this the normal would lean to an arbitrary rim
+/// point and push a particle dropped down the axis sideways.
+fn on_axis(near: Nearest, symmetric: bool, axis: &Vec3, side: f64) -> Nearest {
+    if !symmetric {
+        return near;
+    }
+    Nearest {
+        normal: if side < 0.0 { -axis } else { *axis },
+        ..near
+    }
 }
 
 fn shell(p: &Vec3, c: &Vec3, axis: &Vec3, radius: f64, open: f64) -> Nearest {

@@ -63,7 +63,12 @@ pub fn pair_bounce(a: &Body, b: &Body, n: &Vec3, eps_n: f64, eps_t: f64) -> (Bou
     let u = a.velocity + a.spin.cross(&arm_a) - b.velocity - b.spin.cross(&arm_b);
     let un = n * n.dot(&u);
     let ut = u - un;
-    let reduced = a.mass * b.mass / (a.mass + b.mass);
+    // An infinite mass (a particle stuck to a wall) is a wall to the other.
+    let reduced = if b.mass.is_infinite() {
+        a.mass
+    } else {
+        a.mass * b.mass / (a.mass + b.mass)
+    };
     // The impulse on a; b gets the opposite.
     let normal = -un * (reduced * (1.0 + eps_n));
     let tangential = -ut * (reduced * 2.0 / 7.0 * (1.0 - eps_t));
@@ -311,7 +316,8 @@ fn side_entry(
 /// A sphere meeting the circle of `radius` around `c` in the plane across unit `axis`:
 /// the ray against the torus of tube radius r, a quartic (notes-dem-physics §2). Moving
 /// along the axis itself the quartic has only double roots, so that case is the point
-/// quadratic with the distance √(r² − radius²).
+/// quadratic with the distance √(r² − radius²); near the axis, a search on the distance
+/// to the circle backs the quartic up.
 fn ring_entry(
     p: &Vec3,
     d: &Vec3,
@@ -342,5 +348,64 @@ fn ring_entry(
         2.0 * alpha * beta,
         alpha * alpha,
     ];
-    crate::poly::first_entry(&coefficients, t_max)
+    let quartic = crate::poly::first_entry(&coefficients, t_max);
+    if radius >= 2.0 * r || !t_max.is_finite() {
+        return quartic;
+    }
+    // A sphere wider than the ring meets it with its centre near the axis, where both
+    // of the quartic's roots are nearly double: rounding blurs the root and can hide
+    // the crossing. The squared distance to the circle less r², (ρ − R)² + z² − r², is
+    // well conditioned there: polish the quartic's root on it by Newton's method, or,
+    // without a root, look at it at the times nearest the ring's plane and its axis and
+    // at 32 more across the step, and bisect its first fall below zero.
+    let gap = |t: f64| {
+        let rho = (pxy + dxy * t).norm();
+        let z = pz + dz * t;
+        (rho - radius).powi(2) + z * z - r * r
+    };
+    if let Some(mut t) = quartic {
+        for _ in 0..4 {
+            let q = pxy + dxy * t;
+            let rho = q.norm();
+            let slope = 2.0 * (rho - radius) * q.dot(&dxy) / rho + 2.0 * (pz + dz * t) * dz;
+            let next = t - gap(t) / slope;
+            if !(0.0..=t_max).contains(&next) || gap(next).abs() >= gap(t).abs() {
+                break;
+            }
+            t = next;
+        }
+        return Some(t);
+    }
+    if gap(0.0) <= 0.0 {
+        return None;
+    }
+    let mut times: Vec<f64> = (1..=32).map(|k| t_max * f64::from(k) / 32.0).collect();
+    for t in [-pz / dz, -pxy.dot(&dxy) / dxy.norm_squared()] {
+        if t.is_finite() && (0.0..=t_max).contains(&t) {
+            times.push(t);
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let mut lo = 0.0;
+    let mut hi = None;
+    for t in times {
+        if gap(t) <= 0.0 {
+            hi = Some(t);
+            break;
+        }
+        lo = t;
+    }
+    let mut hi = hi?;
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if gap(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(hi)
 }

@@ -68,7 +68,7 @@ pub struct Touch {
 
 /// The contact force on a particle of mass `m` and radius `r` touching a wall. `spring`
 /// is the contact's tangential spring: it is turned into the tangent plane, stretched by
-/// the tangential motion over `dt`, and cut back when the contact slides.
+/// the tangential motion over `dt`, and reset when the contact slides.
 pub fn contact(
     m: f64,
     r: f64,
@@ -94,16 +94,12 @@ pub fn contact(
     let mut f_t = -(*spring * mat.k_t) - ut * c_t;
     let cap = mat.mu_s * f_n.norm();
     if f_t.norm() > cap {
-        // Sliding: the friction is the cap, the spring what would give it.
+        // Sliding: the friction is the cap, and the spring starts again (SPEC §3).
         f_t = match f_t.try_normalize(0.0) {
             Some(d) => d * cap,
             None => Vec3::zeros(),
         };
-        *spring = if mat.k_t > 0.0 {
-            -(f_t + ut * c_t) / mat.k_t
-        } else {
-            Vec3::zeros()
-        };
+        *spring = Vec3::zeros();
     }
     // The tangential force acts at the contact point, −r·n̂ from the centre.
     let torque = (-normal * r).cross(&f_t);

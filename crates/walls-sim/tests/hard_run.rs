@@ -461,3 +461,106 @@ fn off_a_spinning_disk_the_contact_feels_its_surface_velocity() {
         "{p:?}"
     );
 }
+
+fn elastic(dt: f64, t_end: f64) -> Settings {
+    Settings {
+        material: ParticleMaterial {
+            eps_n: 1.0,
+            eps_t: 1.0,
+            ..walls_sim::setup::default_material(1.0)
+        },
+        ..settings(1.0, dt, t_end, [0.0; 3])
+    }
+}
+
+#[test]
+fn a_newtons_cradle_passes_the_speed_on_within_one_step() {
+    // B hits A, which then hits C 0.4 further on, all within one step of 1: A was at rest
+    // when the candidates were found, so C is found again when A speeds up.
+    let far = scene("wall type plane\n  origin 0 0 -5\n  epsn 1\n  epst 1\n");
+    let ps = vec![
+        particle([-0.3, 0.0, 0.0], [1.0, 0.0, 0.0]),
+        particle([0.0; 3], [0.0; 3]),
+        particle([0.6, 0.0, 0.0], [0.0; 3]),
+    ];
+    let out = run(&far, ps, &elastic(1.0, 1.0));
+    assert_eq!(out.pair_contacts, 2);
+    let v: Vec<f64> = out.particles.iter().map(|s| s.particle.vel.x).collect();
+    assert!(
+        close(v[0], 0.0) && close(v[1], 0.0) && close(v[2], 1.0),
+        "{v:?}"
+    );
+}
+
+#[test]
+fn particles_held_by_walls_are_obstacles() {
+    // A lands on a sticky floor and stays; B, falling onto it, bounces off it as off a
+    // wall (pkdgrav treats a stuck particle as infinitely massive), leaving A in place.
+    let ps = vec![
+        particle([0.0, 0.0, 0.15], [0.0, 0.0, -1.0]),
+        particle([0.0, 0.0, 0.6], [0.0, 0.0, -1.0]),
+    ];
+    let out = run(
+        &scene("wall type plane\n  epsn 0\n  epst 1\n"),
+        ps,
+        &elastic(0.01, 1.0),
+    );
+    assert_eq!(out.pair_contacts, 1);
+    let (a, b) = (&out.particles[0], &out.particles[1]);
+    assert_eq!(a.stuck_to.map(|s| s.0), Some(0));
+    assert!(close(a.particle.pos.z, 0.1), "{a:?}");
+    assert!(close(b.particle.vel.z, 1.0), "{b:?}");
+    // It met A at z = 0.3 at t = 0.3, and rose for 0.7 after.
+    assert!(close(b.particle.pos.z, 1.0), "{b:?}");
+    // A particle held at the collision cap is an obstacle too: one jammed between plates
+    // stops another crossing its path.
+    let walls = "wall type plane\n  epsn 1\n  epst 1\nwall type plane\n  origin 0 0 0.200001\n  epsn 1\n  epst 1\n";
+    let mut k = particle([0.5, 0.0, 0.1000005], [-1.0, 0.0, 0.0]);
+    k.radius = 0.05;
+    let ps = vec![particle([0.0, 0.0, 0.1000005], [0.0, 0.0, 1.0]), k];
+    let out = run(&scene(walls), ps, &elastic(1.0, 1.0));
+    assert!(out.pair_contacts >= 1, "{:?}", out.warnings);
+    assert!(
+        out.particles[1].particle.vel.x > 0.0,
+        "{:?}",
+        out.particles[1]
+    );
+}
+
+#[test]
+fn a_stuck_particle_turns_and_spins_with_its_wall_from_when_it_sticks() {
+    // Spinning at 30, it sticks to a still floor and stops spinning (it keeps no energy).
+    let mut p = particle([0.0, 0.0, 0.5], [0.0, 0.0, -1.0]);
+    p.spin = Vec3::new(0.0, 0.0, 30.0);
+    let out = run(
+        &scene("wall type plane\n  epsn 0\n  epst 1\n"),
+        vec![p],
+        &settings(0.8, 0.1, 1.0, [0.0; 3]),
+    );
+    assert_eq!(out.particles[0].particle.spin, Vec3::zeros());
+    assert!(close(out.energy.1, 0.0), "{:?}", out.energy);
+    // In a drum spinning at 2, stuck 0.09 into a step of 0.1: it has turned 2·0.01 rad by
+    // the step's end, not 2·0.1, and spins with the drum.
+    let out = run(
+        &scene("wall type cylinder-infinite\n  radius 1\n  epsn 0\n  epst 1\n  ang-speed 2\n"),
+        vec![particle([0.81, 0.0, 0.0], [1.0, 0.0, 0.0])],
+        &settings(0.8, 0.1, 0.1, [0.0; 3]),
+    );
+    let s = &out.particles[0];
+    assert!(close(out.events[0].t, 0.09), "{:?}", out.events);
+    let angle = s.particle.pos.y.atan2(s.particle.pos.x);
+    assert!((angle - 0.02).abs() < 1e-12, "{angle}");
+    assert_eq!(s.particle.spin, Vec3::new(0.0, 0.0, 2.0));
+}
+
+#[test]
+fn dropped_down_the_axis_onto_a_small_hole_it_bounces_straight_back() {
+    // The whole rim touches at once; the bounce is along the axis.
+    let out = run(
+        &scene("wall type disk\n  radius 1\n  hole-radius 0.05\n  epsn 1\n  epst 1\n"),
+        vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -1.0])],
+        &settings(0.8, 0.1, 0.5, [0.0; 3]),
+    );
+    let v = out.particles[0].particle.vel;
+    assert!((v - Vec3::new(0.0, 0.0, 1.0)).norm() < 1e-12, "{v:?}");
+}

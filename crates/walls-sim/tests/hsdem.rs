@@ -228,3 +228,44 @@ fn a_near_miss_is_missed_and_a_clip_is_a_corner() {
         clip.t
     );
 }
+
+#[test]
+fn a_hole_smaller_than_the_particle_stops_it_on_and_near_the_axis() {
+    // Radius 0.1 down onto a hole of radius 0.05, on the axis and off it by up to 1e−7:
+    // near the axis the ring quartic's roots are nearly double, and rounding must not
+    // let the particle through. It meets the rim when its centre is √(r² − h²) above.
+    let disk = shape("wall type disk\n  radius 1\n  hole-radius 0.05\n");
+    let r: f64 = 0.1;
+    for offset in [0.0, 1e-13, 1e-11, 1e-9, 1e-7] {
+        // The nearest rim point is on the particle's side, 0.05 − offset across.
+        let expected = 0.5 - (r * r - (0.05 - offset) * (0.05 - offset)).sqrt();
+        let hit = first_hit(
+            &disk,
+            &Vec3::new(offset, 0.0, 0.5),
+            &Vec3::new(0.0, 0.0, -1.0),
+            r,
+            1.0,
+            true,
+        );
+        let hit = hit.unwrap_or_else(|| panic!("offset {offset}: it fell through"));
+        assert_eq!(hit.feature, Feature::HoleRim);
+        assert!(
+            (hit.t - expected).abs() < 1e-12,
+            "offset {offset}: {} vs {expected}",
+            hit.t
+        );
+    }
+    // A finite cylinder's end narrower than the particle, approached along its axis.
+    let can = shape("wall type cylinder-finite\n  radius 0.05\n  length 2\n");
+    for tilt in [0.0, 1e-11, 1e-9] {
+        let d = Vec3::new(tilt, 0.0, -1.0).normalize();
+        let hit = first_hit(&can, &Vec3::new(0.0, 0.0, 3.0), &d, r, 5.0, true);
+        let hit = hit.unwrap_or_else(|| panic!("tilt {tilt}: missed the end"));
+        assert_eq!(hit.feature, Feature::Rim(1));
+        assert!(
+            (hit.t - (2.0 - (r * r - 0.0025f64).sqrt())).abs() < 1e-8,
+            "tilt {tilt}: {}",
+            hit.t
+        );
+    }
+}

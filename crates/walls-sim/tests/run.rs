@@ -372,3 +372,43 @@ fn twisting_resistance_stops_a_spin_about_the_normal_without_reversing_it() {
     let w = out.particles[0].particle.spin.z;
     assert!(w.abs() < 1e-3, "stopped, not reversed: {w}");
 }
+
+#[test]
+fn a_particle_stuck_to_a_wall_is_an_obstacle_to_the_others() {
+    // A lands on a sticky floor; B falls onto it and bounces off, A staying put.
+    let ps = vec![
+        particle([0.0, 0.0, 0.15], [0.0, 0.0, -1.0]),
+        particle([0.0, 0.0, 0.6], [0.0, 0.0, -1.0]),
+    ];
+    let out = run(
+        &scene("wall type plane\n  epsn 0\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 1.0, [0.0; 3]),
+    );
+    assert_eq!(out.pair_contacts, 1);
+    let (a, b) = (&out.particles[0], &out.particles[1]);
+    assert_eq!(a.stuck_to.map(|s| s.0), Some(0));
+    assert!((a.particle.pos.z - 0.1).abs() < 1e-3, "{a:?}");
+    // Against an infinite mass the pair rebounds at the pair's εn.
+    assert!((b.particle.vel.z / 0.9 - 1.0).abs() < 0.01, "{b:?}");
+}
+
+#[test]
+fn rolling_resistance_between_particles_does_not_reverse_their_relative_spin() {
+    // Two particles pressed together, one spinning across the normal: the resistance
+    // acts on the relative spin through the reduced inertia, so it stops it, and the
+    // total spin (equal particles) is kept.
+    let mut a = particle([0.0, 0.0, 0.0], [-0.01, 0.0, 0.0]);
+    a.spin = Vec3::new(0.0, 0.01, 0.0);
+    let b = particle([0.199, 0.0, 0.0], [0.01, 0.0, 0.0]);
+    let ps = vec![a, b];
+    let mut s = settings(&ps, 0.5, 0.5, [0.0; 3]);
+    s.material.mu_r = 1.0;
+    let out = run(&scene("wall type plane\n  origin 0 0 -5\n"), ps, &s);
+    let (wa, wb) = (
+        out.particles[0].particle.spin.y,
+        out.particles[1].particle.spin.y,
+    );
+    assert!((wa + wb - 0.01).abs() < 1e-12, "{wa} + {wb}");
+    assert!(wa - wb >= -1e-12, "relative spin reversed: {wa} − {wb}");
+}

@@ -22,7 +22,7 @@
 
 use super::{
     Event, EventKind, Materials, Origins, Outcome, PARALLEL_FROM, Settings, State, WallNow, carry,
-    energy,
+    energy, turned,
 };
 use crate::geometry::Feature;
 use crate::grid::CellGrid;
@@ -109,27 +109,79 @@ struct Drift<'a> {
     clock: Vec<f64>,
     version: Vec<u32>,
     collisions: Vec<u32>,
-    neighbours: Vec<Vec<usize>>,
+    candidates: Candidates,
     queue: BinaryHeap<Queued>,
 }
 
 impl Drift<'_> {
+    /// Whether particle `j` has hit the collision cap in this step: it stays where it is.
+    fn held(&self, j: usize) -> bool {
+        self.collisions[j] >= COLLISION_CAP
+    }
+
+    /// Whether particle `j` moves in this drift: alive and not held (a particle stuck
+    /// to a wall moves with it).
+    fn moves(&self, j: usize) -> bool {
+        self.states[j].alive && !self.held(j)
+    }
+
+    /// Whether particle `j` is an obstacle of infinite mass to the others: stuck to a
+    /// wall (pkdgrav's rule) or held.
+    fn immovable(&self, j: usize) -> bool {
+        self.states[j].stuck_to.is_some() || self.held(j)
+    }
+
+    /// The velocity of particle `j` in this drift.
+    fn velocity(&self, j: usize) -> Vec3 {
+        if self.moves(j) {
+            self.states[j].particle.vel
+        } else {
+            Vec3::zeros()
+        }
+    }
+
     /// Where particle `j` is at `tau` into the step.
     fn position(&self, j: usize, tau: f64) -> Vec3 {
-        let p = &self.states[j].particle;
-        if self.states[j].free() {
-            p.pos + p.vel * (tau - self.clock[j])
-        } else {
-            p.pos
-        }
+        self.states[j].particle.pos + self.velocity(j) * (tau - self.clock[j])
     }
 
     /// Moves particle `i` to `tau` into the step.
     fn advance(&mut self, i: usize, tau: f64) {
-        if self.states[i].free() {
-            self.states[i].particle.pos = self.position(i, tau);
-        }
+        self.states[i].particle.pos = self.position(i, tau);
         self.clock[i] = tau;
+    }
+
+    /// Particle `i` has become an obstacle (stuck to a wall, or held at the cap) and
+    /// predicts nothing itself any more: its neighbours look again, from `tau`.
+    fn alert_neighbours(&mut self, i: usize, tau: f64) {
+        for k in self.candidates.neighbours[i].clone() {
+            if self.states[k].free() && !self.held(k) {
+                self.advance(k, tau);
+                self.predict(k);
+            }
+        }
+    }
+
+    /// After particle `i` changed velocity: if it may now travel beyond the margin it
+    /// was binned with, widens the margin and finds its candidates again, by a scan
+    /// (rare: only a collision that speeds it up does this).
+    fn widen(&mut self, i: usize) {
+        let c = &mut self.candidates;
+        let s = &self.states[i];
+        let reach = (s.particle.pos - c.start[i]).norm()
+            + s.particle.vel.norm() * (self.dt - self.clock[i]);
+        if !s.alive || reach <= c.margin[i] {
+            return;
+        }
+        c.margin[i] = reach;
+        for k in 0..self.states.len() {
+            let near = (c.start[i] - c.start[k]).norm()
+                < s.particle.radius + self.states[k].particle.radius + c.margin[i] + c.margin[k];
+            if k != i && self.states[k].alive && near && !c.neighbours[i].contains(&k) {
+                c.neighbours[i].push(k);
+                c.neighbours[k].push(i);
+            }
+        }
     }
 
     /// Queues the first collision of particle `i` from its clock on, if any in the step.
@@ -141,7 +193,7 @@ impl Drift<'_> {
 
     /// The first collision of particle `i` from its clock on, if any in the step.
     fn prediction(&self, i: usize) -> Option<Queued> {
-        if !self.states[i].free() || self.collisions[i] >= COLLISION_CAP {
+        if !self.states[i].free() || self.held(i) {
             return None;
         }
         let tau = self.clock[i];
@@ -178,15 +230,13 @@ impl Drift<'_> {
                 consider(hit.t, Partner::Wall(w));
             }
         }
-        for k in 0..self.neighbours[i].len() {
-            let j = self.neighbours[i][k];
-            if !self.states[j].free() {
+        for &j in &self.candidates.neighbours[i] {
+            if !self.states[j].alive {
                 continue;
             }
-            let q = &self.states[j].particle;
             let a = p.pos - self.position(j, tau);
-            let b = p.vel - q.vel;
-            let s = p.radius + q.radius;
+            let b = p.vel - self.velocity(j);
+            let s = p.radius + self.states[j].particle.radius;
             if a.norm() <= s && a.dot(&b) < 0.0 {
                 consider(0.0, Partner::Particle(j));
             } else if let Some(t) = sphere_entry(&a, &b, s).filter(|t| *t <= left) {
@@ -249,28 +299,35 @@ fn drift(d: &mut Drift, t0: f64) -> DriftReport {
         match q.partner {
             Partner::Wall(w) => {
                 report.events.push(wall_collision(d, i, w, q.tau, t0));
+                if d.states[i].stuck_to.is_some() {
+                    d.alert_neighbours(i, q.tau);
+                }
             }
             Partner::Particle(j) => {
                 d.advance(j, q.tau);
-                d.version[j] += 1;
-                d.collisions[j] += 1;
                 pair_collision(d, i, j);
                 report.pair_collisions += 1;
-                if d.collisions[j] == COLLISION_CAP {
-                    report.collapsed.push(j);
+                if !d.immovable(j) {
+                    d.version[j] += 1;
+                    d.collisions[j] += 1;
+                    if d.collisions[j] == COLLISION_CAP {
+                        report.collapsed.push(j);
+                        d.alert_neighbours(j, q.tau);
+                    }
+                    d.widen(j);
+                    d.predict(j);
                 }
-                d.predict(j);
             }
         }
         if d.collisions[i] == COLLISION_CAP {
             report.collapsed.push(i);
+            d.alert_neighbours(i, q.tau);
         }
+        d.widen(i);
         d.predict(i);
     }
     for i in 0..d.states.len() {
-        if d.collisions[i] < COLLISION_CAP {
-            d.advance(i, d.dt);
-        }
+        d.advance(i, d.dt);
     }
     report
 }
@@ -292,8 +349,12 @@ fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event
         s.alive = false;
         EventKind::Remove
     } else if mat.eps_n == 0.0 {
-        s.stuck_to = Some((w, p.pos - wall.origin(tau)));
+        // Held from τ on: the carry at the end of the step turns it by the wall's spin
+        // over the whole step, so start it turned back by τ's worth.
+        let offset = turned(&wall.start.spin, -tau, p.pos - wall.origin(tau));
+        s.stuck_to = Some((w, offset));
         s.particle.vel = wall_v;
+        s.particle.spin = wall.start.spin;
         EventKind::Stick
     } else {
         let b = bounce(p.radius, &p.vel, &p.spin, &wall_v, &n, mat.eps_n, mat.eps_t);
@@ -323,15 +384,22 @@ fn pair_collision(d: &mut Drift, i: usize, j: usize) {
         velocity: s.particle.vel,
         spin: s.particle.spin,
     };
-    let (a, b) = (body(&d.states[i]), body(&d.states[j]));
+    let a = body(&d.states[i]);
+    let mut b = body(&d.states[j]);
+    b.velocity = d.velocity(j);
+    if d.immovable(j) {
+        b.mass = f64::INFINITY;
+    }
     let n = (d.states[i].particle.pos - d.states[j].particle.pos)
         .try_normalize(0.0)
         .unwrap_or_else(Vec3::z);
     let (ba, bb) = pair_bounce(&a, &b, &n, d.between.eps_n, d.between.eps_t);
     d.states[i].particle.vel = ba.velocity;
     d.states[i].particle.spin = ba.spin;
-    d.states[j].particle.vel = bb.velocity;
-    d.states[j].particle.spin = bb.spin;
+    if !d.immovable(j) {
+        d.states[j].particle.vel = bb.velocity;
+        d.states[j].particle.spin = bb.spin;
+    }
 }
 
 pub(super) fn run(
@@ -403,11 +471,7 @@ pub(super) fn run(
                 }
             })
             .collect();
-        let neighbours = if settings.particle_contacts && n > 1 {
-            candidates(&states, dt)
-        } else {
-            vec![Vec::new(); n]
-        };
+        let candidates = Candidates::new(&states, dt, settings.particle_contacts && n > 1);
         let mut d = Drift {
             states: &mut states,
             walls: &walls,
@@ -419,7 +483,7 @@ pub(super) fn run(
             clock: vec![0.0; n],
             version: vec![0; n],
             collisions: vec![0; n],
-            neighbours,
+            candidates,
             queue: BinaryHeap::new(),
         };
         let report = drift(&mut d, t);
@@ -458,18 +522,37 @@ pub(super) fn run(
     }
 }
 
-/// For each particle, the free particles it could meet within a step of `dt`.
-fn candidates(states: &[State], dt: f64) -> Vec<Vec<usize>> {
-    let grid = CellGrid::from_fn(states.len(), |i| {
-        let p = &states[i].particle;
-        states[i]
-            .free()
-            .then_some((p.pos, p.radius + p.vel.norm() * dt))
-    });
-    let mut out = vec![Vec::new(); states.len()];
-    grid.for_each_pair(|i, j| {
-        out[i].push(j);
-        out[j].push(i);
-    });
-    out
+/// The particles each particle could meet within a step: those whose spheres, swollen
+/// by the distance each can travel in the step (its margin), overlap at the start.
+struct Candidates {
+    neighbours: Vec<Vec<usize>>,
+    start: Vec<Vec3>,
+    margin: Vec<f64>,
+}
+
+impl Candidates {
+    /// The candidates of the particles still in, at speeds after the first kick; none
+    /// when particles do not meet each other.
+    fn new(states: &[State], dt: f64, meet: bool) -> Candidates {
+        let n = states.len();
+        let start: Vec<Vec3> = states.iter().map(|s| s.particle.pos).collect();
+        let margin: Vec<f64> = states.iter().map(|s| s.particle.vel.norm() * dt).collect();
+        let mut neighbours = vec![Vec::new(); n];
+        if meet {
+            let grid = CellGrid::from_fn(n, |i| {
+                let s = &states[i];
+                s.alive
+                    .then_some((s.particle.pos, s.particle.radius + margin[i]))
+            });
+            grid.for_each_pair(|i, j| {
+                neighbours[i].push(j);
+                neighbours[j].push(i);
+            });
+        }
+        Candidates {
+            neighbours,
+            start,
+            margin,
+        }
+    }
 }

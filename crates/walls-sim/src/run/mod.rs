@@ -323,19 +323,26 @@ impl Origins {
     }
 }
 
+/// `v` turned about the axis of `spin` by its rate times `time`.
+fn turned(spin: &Vec3, time: f64, v: Vec3) -> Vec3 {
+    match nalgebra::Unit::try_new(*spin, 0.0) {
+        Some(axis) => nalgebra::Rotation3::from_axis_angle(&axis, spin.norm() * time) * v,
+        None => v,
+    }
+}
+
 /// Moves a particle held by a sticky wall along with it over a step of `dt` ending with
-/// the wall as `now`: with its origin, and around its spin axis.
+/// the wall as `now`: with its origin, and around its spin axis; it spins with the wall
+/// (as pkdgrav sets it).
 fn carry(s: &mut State, now: &WallNow, dt: f64) {
     let Some((w, offset)) = s.stuck_to else {
         return;
     };
-    let offset = match nalgebra::Unit::try_new(now.spin, 0.0) {
-        Some(axis) => nalgebra::Rotation3::from_axis_angle(&axis, now.spin.norm() * dt) * offset,
-        None => offset,
-    };
+    let offset = turned(&now.spin, dt, offset);
     s.stuck_to = Some((w, offset));
     s.particle.pos = now.origin + offset;
     s.particle.vel = now.point_velocity(&s.particle.pos);
+    s.particle.spin = now.spin;
 }
 
 /// pkdgrav's overlap warnings: the first overlap above 3 % and above 15 % of a radius.

@@ -108,6 +108,7 @@ fn wall_step(
         return out;
     }
     let (m, r) = (s.particle.mass, s.particle.radius);
+    let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     for (w, wall) in walls.now.iter().enumerate() {
         let near = wall.shape.nearest(&s.particle.pos);
         let overlap = r - near.distance;
@@ -153,6 +154,7 @@ fn wall_step(
             } else {
                 s.stuck_to = Some((w, s.particle.pos - wall.origin));
                 s.particle.vel = wall_v;
+                s.particle.spin = wall.spin;
                 EventKind::Stick
             };
             out.events.push(Event {
@@ -183,9 +185,16 @@ fn wall_step(
                 contact_radius: contact_radius(r, overlap),
                 inertia: inertia(m, r),
             };
-            load.torque += resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+            resist += resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+            stop = stop.max(inertia(m, r) * rolling.spin.norm() / dt);
         }
     }
+    // Each contact's resistance is capped, but together they must not reverse the spin
+    // either (a corner's floor and side on one spin component).
+    if resist.norm() > stop {
+        resist *= stop / resist.norm();
+    }
+    load.torque += resist;
     s.acc = load.force / m;
     s.alpha = load.torque / inertia(m, r);
     s.particle.vel += s.acc * (dt / 2.0);
@@ -348,19 +357,20 @@ impl PairList {
         let half = self.skin / 2.0;
         let grid = CellGrid::from_fn(states.len(), |i| {
             let s = &states[i];
-            s.free()
+            s.alive
                 .then_some((s.particle.pos, s.particle.radius + half))
         });
         self.pairs = grid.pairs();
         self.built_at = states.iter().map(|s| s.particle.pos).collect();
     }
 
-    /// Rebuilds the list if some free particle has moved more than half the skin.
+    /// Rebuilds the list if some particle (free, or carried by its wall) has moved more
+    /// than half the skin.
     fn update(&mut self, states: &[State]) {
         let limit = (self.skin / 2.0).powi(2);
         let moved = |(s, at): (&State, &Vec3)| {
             let d2 = (s.particle.pos - at).norm_squared();
-            s.free() && (d2 > limit || d2.is_nan())
+            s.alive && (d2 > limit || d2.is_nan())
         };
         let stale = if states.len() >= PARALLEL_FROM {
             states.par_iter().zip(&self.built_at).any(moved)
@@ -390,7 +400,10 @@ fn pair_forces(
     let mut stop = false;
     for &(i, j) in &candidates.pairs {
         let (i, j) = (i as usize, j as usize);
-        if !states[i].free() || !states[j].free() {
+        // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's rule);
+        // two stuck ones, or a removed one, meet nothing.
+        let (free_i, free_j) = (states[i].free(), states[j].free());
+        if !states[i].alive || !states[j].alive || !(free_i || free_j) {
             continue;
         }
         let (p, q) = (&states[i].particle, &states[j].particle);
@@ -408,7 +421,11 @@ fn pair_forces(
         }
         let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
         let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
-        let reduced = p.mass * q.mass / (p.mass + q.mass);
+        let reduced = match (free_i, free_j) {
+            (true, true) => p.mass * q.mass / (p.mass + q.mass),
+            (true, false) => p.mass,
+            _ => q.mass,
+        };
         let entry = open.entry(i, j, || {
             *began += 1;
             Open {
@@ -424,24 +441,36 @@ fn pair_forces(
             velocity: u,
         };
         let c = contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat);
-        loads[i].force += c.force;
-        loads[j].force -= c.force;
         // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂ from j.
-        loads[i].torque += c.torque;
-        loads[j].torque += c.torque * (q.radius / p.radius);
+        let mut torque = (c.torque, c.torque * (q.radius / p.radius));
         if mat.mu_r > 0.0 || mat.mu_t > 0.0 {
             let lever = p.radius * q.radius / (p.radius + q.radius);
+            // Equal and opposite torques change the relative spin through the reduced
+            // inertia (or the free one's, against a stuck particle).
+            let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
             let rolling = Rolling {
                 spin: p.spin - q.spin,
                 normal: n,
                 normal_force: n.dot(&c.force).abs(),
                 lever,
                 contact_radius: lens_radius(p.radius, q.radius, distance),
-                inertia: inertia(p.mass, p.radius).min(inertia(q.mass, q.radius)),
+                inertia: match (free_i, free_j) {
+                    (true, true) => ii * ij / (ii + ij),
+                    (true, false) => ii,
+                    _ => ij,
+                },
             };
             let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
-            loads[i].torque += m;
-            loads[j].torque -= m;
+            torque.0 += m;
+            torque.1 -= m;
+        }
+        if free_i {
+            loads[i].force += c.force;
+            loads[i].torque += torque.0;
+        }
+        if free_j {
+            loads[j].force -= c.force;
+            loads[j].torque += torque.1;
         }
     }
     stop
