@@ -163,8 +163,9 @@ impl Drift<'_> {
     }
 
     /// After particle `i` changed velocity: if it may now travel beyond the margin it
-    /// was binned with, widens the margin and finds its candidates again, by a scan
-    /// (rare: only a collision that speeds it up does this).
+    /// was binned with, widens the margin and finds its candidates again (rare: margins
+    /// allow for twice each particle's speed, so only a collision that more than doubles
+    /// it does this), among the particles whose start lies within reach along x.
     fn widen(&mut self, i: usize) {
         let c = &mut self.candidates;
         let s = &self.states[i];
@@ -174,7 +175,21 @@ impl Drift<'_> {
             return;
         }
         c.margin[i] = reach;
-        for k in 0..self.states.len() {
+        let span = s.particle.radius + reach + c.widest;
+        let x = c.start[i].x;
+        let start = &c.start;
+        let by_x = c.by_x.get_or_insert_with(|| {
+            let mut order: Vec<usize> = (0..start.len())
+                .filter(|&k| start[k].x.is_finite())
+                .collect();
+            order.sort_by(|&a, &b| start[a].x.total_cmp(&start[b].x));
+            order
+        });
+        let from = by_x.partition_point(|&k| start[k].x < x - span);
+        for &k in &by_x[from..] {
+            if c.start[k].x > x + span {
+                break;
+            }
             let near = (c.start[i] - c.start[k]).norm()
                 < s.particle.radius + self.states[k].particle.radius + c.margin[i] + c.margin[k];
             if k != i && self.states[k].alive && near && !c.neighbours[i].contains(&k) {
@@ -182,6 +197,7 @@ impl Drift<'_> {
                 c.neighbours[k].push(i);
             }
         }
+        c.widest = c.widest.max(s.particle.radius + reach);
     }
 
     /// Queues the first collision of particle `i` from its clock on, if any in the step.
@@ -523,20 +539,29 @@ pub(super) fn run(
 }
 
 /// The particles each particle could meet within a step: those whose spheres, swollen
-/// by the distance each can travel in the step (its margin), overlap at the start.
+/// by a margin of twice the distance each travels in the step at its speed after the
+/// first kick, overlap at the start.
 struct Candidates {
     neighbours: Vec<Vec<usize>>,
     start: Vec<Vec3>,
     margin: Vec<f64>,
+    /// The particles in order of their start's x, for finding candidates again; sorted
+    /// the first time it is needed in a step.
+    by_x: Option<Vec<usize>>,
+    /// The largest radius plus margin.
+    widest: f64,
 }
 
 impl Candidates {
-    /// The candidates of the particles still in, at speeds after the first kick; none
-    /// when particles do not meet each other.
+    /// The candidates of the particles still in; none when particles do not meet each
+    /// other.
     fn new(states: &[State], dt: f64, meet: bool) -> Candidates {
         let n = states.len();
         let start: Vec<Vec3> = states.iter().map(|s| s.particle.pos).collect();
-        let margin: Vec<f64> = states.iter().map(|s| s.particle.vel.norm() * dt).collect();
+        let margin: Vec<f64> = states
+            .iter()
+            .map(|s| 2.0 * s.particle.vel.norm() * dt)
+            .collect();
         let mut neighbours = vec![Vec::new(); n];
         if meet {
             let grid = CellGrid::from_fn(n, |i| {
@@ -549,10 +574,17 @@ impl Candidates {
                 neighbours[j].push(i);
             });
         }
+        let widest = states
+            .iter()
+            .zip(&margin)
+            .map(|(s, m)| s.particle.radius + m)
+            .fold(0.0, f64::max);
         Candidates {
             neighbours,
             start,
             margin,
+            by_x: None,
+            widest,
         }
     }
 }
