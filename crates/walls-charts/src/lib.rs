@@ -1,0 +1,255 @@
+//! What the chart binaries share: drawing a chart of named series to SVG and PNG with
+//! its data as CSV beside them, in `docs/charts/`, and finding a Pareto front.
+//!
+//! Each binary under `src/bin` measures one thing and writes one or more charts;
+//! `scripts/charts` runs them all. PNGs are drawn with the DejaVu Sans font embedded
+//! here (`assets/`, under its own licence), so nothing depends on the fonts a machine
+//! has.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::io;
+use std::path::{Path, PathBuf};
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mark {
+    /// A line through the points, with a dot at each.
+    Line,
+    /// Dots only.
+    Dots,
+    /// A dashed line, for a front or a reference.
+    Dashed,
+}
+
+/// One named series of (x, y) points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The legend's name, also the CSV's `series` column.
+    pub name: String,
+    /// The points, in drawing order.
+    pub points: Vec<(f64, f64)>,
+    /// How it is drawn.
+    pub mark: Mark,
+}
+
+impl Series {
+    /// A series drawn as `mark`.
+    pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>, mark: Mark) -> Series {
+        Series {
+            name: name.into(),
+            points,
+            mark,
+        }
+    }
+}
+
+/// A chart: its file name (without extension), title, axis labels and scales.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chart {
+    /// File name in `docs/charts`, without extension.
+    pub name: String,
+    /// Title over the plot.
+    pub title: String,
+    /// The x axis's label.
+    pub x_label: String,
+    /// The y axis's label.
+    pub y_label: String,
+    /// Logarithmic x axis.
+    pub log_x: bool,
+    /// Logarithmic y axis.
+    pub log_y: bool,
+}
+
+/// The folder the charts go to: `docs/charts` of the repository.
+pub fn out_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/charts")
+}
+
+/// The points of `points` not dominated by another (smaller or equal in both
+/// coordinates, smaller in one), sorted by x: the Pareto front when both are costs.
+pub fn pareto_front(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut sorted: Vec<(f64, f64)> = points
+        .iter()
+        .copied()
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
+        .collect();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    for p in sorted {
+        if front.last().is_none_or(|last| p.1 < last.1) {
+            front.push(p);
+        }
+    }
+    front
+}
+
+/// Writes `chart` of `series` as `<name>.csv`, `<name>.svg` and `<name>.png` in `dir`.
+pub fn write(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    let mut csv = csv::Writer::from_path(dir.join(format!("{}.csv", chart.name)))?;
+    csv.write_record(["series", "x", "y"])?;
+    for s in series {
+        for (x, y) in &s.points {
+            csv.write_record([s.name.clone(), x.to_string(), y.to_string()])?;
+        }
+    }
+    csv.flush()?;
+    register_font();
+    let svg = dir.join(format!("{}.svg", chart.name));
+    draw(
+        SVGBackend::new(&svg, (900, 600)).into_drawing_area(),
+        chart,
+        series,
+    )?;
+    let png = dir.join(format!("{}.png", chart.name));
+    draw(
+        BitMapBackend::new(&png, (900, 600)).into_drawing_area(),
+        chart,
+        series,
+    )
+}
+
+/// Makes the embedded font plotters' sans-serif, once.
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        // The bytes are a valid TrueType font, so this cannot fail in practice; if it
+        // did, the PNG would lack text, which the SVG (text as text) would not.
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            include_bytes!("../assets/DejaVuSans.ttf"),
+        );
+    });
+}
+
+/// The range covering every finite point's coordinate `pick`, padded a little (in
+/// decades when logarithmic).
+fn range(series: &[Series], pick: fn(&(f64, f64)) -> f64, log: bool) -> (f64, f64) {
+    let values = series
+        .iter()
+        .flat_map(|s| s.points.iter().map(pick))
+        .filter(|v| v.is_finite() && (!log || *v > 0.0));
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !lo.is_finite() {
+        return if log { (0.1, 10.0) } else { (0.0, 1.0) };
+    }
+    if log {
+        (lo / 2.0, hi * 2.0)
+    } else {
+        let pad = ((hi - lo) * 0.05).max(1e-12);
+        (lo - pad, hi + pad)
+    }
+}
+
+/// Picks the axis type for each scale and draws.
+fn draw<DB: DrawingBackend>(
+    area: DrawingArea<DB, Shift>,
+    chart: &Chart,
+    series: &[Series],
+) -> io::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let (x0, x1) = range(series, |p| p.0, chart.log_x);
+    let (y0, y1) = range(series, |p| p.1, chart.log_y);
+    let failed = |e: String| io::Error::other(e);
+    area.fill(&WHITE).map_err(|e| failed(e.to_string()))?;
+    let mut builder = ChartBuilder::on(&area);
+    builder
+        .caption(&chart.title, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(75);
+    macro_rules! plot {
+        ($x:expr, $y:expr) => {{
+            let mut ctx = builder
+                .build_cartesian_2d($x, $y)
+                .map_err(|e| failed(e.to_string()))?;
+            ctx.configure_mesh()
+                .x_desc(&chart.x_label)
+                .y_desc(&chart.y_label)
+                .x_label_formatter(&|v| tick(*v))
+                .y_label_formatter(&|v| tick(*v))
+                .label_style(("sans-serif", 14))
+                .draw()
+                .map_err(|e| failed(e.to_string()))?;
+            for (k, s) in series.iter().enumerate() {
+                let color = Palette99::pick(k).to_rgba();
+                let points: Vec<(f64, f64)> = s
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|(x, y)| {
+                        x.is_finite()
+                            && y.is_finite()
+                            && (!chart.log_x || *x > 0.0)
+                            && (!chart.log_y || *y > 0.0)
+                    })
+                    .collect();
+                let drawn = match s.mark {
+                    Mark::Line => {
+                        ctx.draw_series(LineSeries::new(points.clone(), color.stroke_width(2)))
+                            .map_err(|e| failed(e.to_string()))?;
+                        ctx.draw_series(points.iter().map(|p| Circle::new(*p, 3, color.filled())))
+                    }
+                    Mark::Dots => {
+                        ctx.draw_series(points.iter().map(|p| Circle::new(*p, 4, color.filled())))
+                    }
+                    Mark::Dashed => ctx.draw_series(DashedLineSeries::new(
+                        points.clone(),
+                        8,
+                        5,
+                        BLACK.stroke_width(2),
+                    )),
+                };
+                let legend_color = if s.mark == Mark::Dashed {
+                    BLACK.to_rgba()
+                } else {
+                    color
+                };
+                drawn
+                    .map_err(|e| failed(e.to_string()))?
+                    .label(&s.name)
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 18, y)], legend_color.stroke_width(2))
+                    });
+            }
+            ctx.configure_series_labels()
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 13))
+                .draw()
+                .map_err(|e| failed(e.to_string()))?;
+        }};
+    }
+    match (chart.log_x, chart.log_y) {
+        (true, true) => plot!((x0..x1).log_scale(), (y0..y1).log_scale()),
+        (true, false) => plot!((x0..x1).log_scale(), y0..y1),
+        (false, true) => plot!(x0..x1, (y0..y1).log_scale()),
+        (false, false) => plot!(x0..x1, y0..y1),
+    }
+    area.present().map_err(|e| failed(e.to_string()))
+}
+
+/// A tick label: three significant digits, in scientific notation outside 10⁻³…10⁴.
+fn tick(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if (1e-3..1e4).contains(&a) {
+        let digits = (2 - a.log10().floor() as i32).max(0) as usize;
+        let text = format!("{v:.digits$}");
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text
+        }
+    } else {
+        format!("{v:.1e}")
+    }
+}
