@@ -14,6 +14,7 @@
 
 mod hard;
 mod soft;
+mod stability;
 
 pub use hard::COLLISION_CAP;
 
@@ -41,6 +42,22 @@ pub enum Method {
     Hard,
 }
 
+/// How the soft-sphere run integrates the equations of motion.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Integrator {
+    /// Kick-drift-kick leapfrog: half a kick, a drift, the forces, half a kick. Second
+    /// order; the dashpot sees the velocity of the first half kick.
+    #[default]
+    Leapfrog,
+    /// The same leapfrog, with the dashpot fed velocities predicted to the end of the
+    /// step with the last acceleration, as pkdgrav does.
+    LeapfrogPredicted,
+    /// Explicit Euler: a drift with the last velocity, a whole kick with the last
+    /// acceleration, then the forces. First order and not symplectic; for comparison
+    /// (docs/accuracy.md).
+    ExplicitEuler,
+}
+
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
@@ -61,6 +78,8 @@ pub struct Settings {
     pub edges: bool,
     /// How oscillating walls advance: the exact sinusoid, or pkdgrav's steps.
     pub stepping: OscillationStepping,
+    /// SSDEM: the integrator (HSDEM is always kick-drift-kick).
+    pub integrator: Integrator,
 }
 
 impl Settings {
@@ -76,6 +95,7 @@ impl Settings {
             particle_contacts: true,
             edges: true,
             stepping: OscillationStepping::Exact,
+            integrator: Integrator::Leapfrog,
         }
     }
 }

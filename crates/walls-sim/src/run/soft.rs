@@ -1,4 +1,6 @@
-//! The soft-sphere run (SSDEM): pkdgrav's kick-drift-kick leapfrog, with the
+//! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
+//! variant that feeds the dashpot velocities predicted to the step's end, or explicit
+//! Euler), with the
 //! spring–dashpot of [`crate::ssdem`] against every wall and every particle a particle
 //! overlaps, and rolling and twisting resistance where the material has them.
 //!
@@ -8,8 +10,8 @@
 //! ([`crate::grid`]) rebuilt every step.
 
 use super::{
-    Event, EventKind, Materials, Origins, Outcome, OverlapWarnings, PARALLEL_FROM, Settings, State,
-    WallNow, carry, energy,
+    Event, EventKind, Integrator, Materials, Origins, Outcome, OverlapWarnings, PARALLEL_FROM,
+    Settings, State, WallNow, carry, energy,
 };
 use crate::grid::CellGrid;
 use crate::ssdem::{Material, Rolling, Touch, contact, contact_radius, resistance};
@@ -67,6 +69,11 @@ fn inertia(m: f64, r: f64) -> f64 {
 struct Walls<'a> {
     now: Vec<WallNow>,
     materials: &'a [Material],
+    /// The fraction of a step the kick after the forces covers.
+    closing_kick: f64,
+    /// The fraction of a step by which contact velocities are predicted ahead with the
+    /// last acceleration (pkdgrav's dashpot velocity: ½).
+    predict: f64,
 }
 
 /// What acts on one particle in a step: the force and torque summed so far, and its
@@ -85,6 +92,8 @@ struct ParticleStep {
     /// The deepest overlap, as a fraction of the radius, and its wall.
     deepest: Option<(f64, usize)>,
     touching: usize,
+    /// Radii moved in the step, when more than one: it may skip through a wall.
+    too_fast: Option<f64>,
 }
 
 /// One particle's contacts with the walls at time `t`, added to its `load` (which holds
@@ -108,6 +117,10 @@ fn wall_step(
         return out;
     }
     let (m, r) = (s.particle.mass, s.particle.radius);
+    let travel = s.particle.vel.norm() * dt / r;
+    if travel > 1.0 {
+        out.too_fast = Some(travel);
+    }
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     for (w, wall) in walls.now.iter().enumerate() {
         let near = wall.shape.nearest(&s.particle.pos);
@@ -133,7 +146,8 @@ fn wall_step(
         if out.deepest.is_none_or(|(f, _)| overlap / r > f) {
             out.deepest = Some((overlap / r, w));
         }
-        let u = s.particle.vel + s.particle.spin.cross(&(-n * r)) - wall_v;
+        let vel = s.particle.vel + s.acc * (dt * walls.predict);
+        let u = vel + s.particle.spin.cross(&(-n * r)) - wall_v;
         let mat = &walls.materials[w];
         let k = k.unwrap_or_else(|| {
             open.push((
@@ -197,8 +211,8 @@ fn wall_step(
     load.torque += resist;
     s.acc = load.force / m;
     s.alpha = load.torque / inertia(m, r);
-    s.particle.vel += s.acc * (dt / 2.0);
-    s.particle.spin += s.alpha * (dt / 2.0);
+    s.particle.vel += s.acc * (dt * walls.closing_kick);
+    s.particle.spin += s.alpha * (dt * walls.closing_kick);
     out
 }
 
@@ -225,18 +239,34 @@ pub(super) fn run(
     let mut warnings = Vec::new();
     let mut overlaps = OverlapWarnings::default();
     let mut warned_crowd = false;
+    let (mut warned_fast, mut warned_gain) = (false, false);
+    let oscillating: Vec<bool> = scene
+        .walls
+        .iter()
+        .map(|w| w.number(walls_keywords::Keyword::OscAmpl) != 0.0)
+        .collect();
+    warnings.extend(super::stability::soft_warnings(scene, &states, settings));
     let mut t = 0.0;
     let mut steps = 0u64;
     let parallel = n >= PARALLEL_FROM;
+    // (first kick before the drift, kick after it with the last acceleration, closing
+    // kick, contact-velocity prediction) as fractions of a step.
+    let (opening_kick, late_kick, closing_kick, predict) = match settings.integrator {
+        Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0),
+        Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5),
+        Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0),
+    };
     let mut origins = Origins::new(scene, settings.stepping);
     'run: while t < settings.t_end - dt * 1e-9 {
-        // Kick and drift.
+        // Kick (leapfrog's first half; none in symplectic Euler) and drift.
         let kick_drift = |s: &mut State| {
             if s.free() {
-                s.particle.vel += s.acc * (dt / 2.0);
-                s.particle.spin += s.alpha * (dt / 2.0);
+                s.particle.vel += s.acc * (dt * opening_kick);
+                s.particle.spin += s.alpha * (dt * opening_kick);
                 let v = s.particle.vel;
                 s.particle.pos += v * dt;
+                s.particle.vel += s.acc * (dt * late_kick);
+                s.particle.spin += s.alpha * (dt * late_kick);
             }
         };
         if parallel {
@@ -250,6 +280,8 @@ pub(super) fn run(
         let walls = Walls {
             now: origins.walls(scene, t),
             materials: &materials,
+            closing_kick,
+            predict,
         };
         for (s, load) in states.iter().zip(&mut loads) {
             load.force = g * s.particle.mass;
@@ -296,7 +328,6 @@ pub(super) fn run(
         // In particle order, so that the outcome does not depend on the threads.
         let mut stop = false;
         for (i, report) in reports.iter_mut().enumerate() {
-            events.append(&mut report.events);
             if let Some((fraction, w)) = report.deepest {
                 stop |= overlaps.check(
                     fraction,
@@ -305,6 +336,28 @@ pub(super) fn run(
                     &mut warnings,
                 );
             }
+            if let Some(travel) = report.too_fast
+                && !warned_fast
+            {
+                warned_fast = true;
+                warnings.push(format!(
+                    "particle {i} moves {travel:.1} radii in a step (t = {t}): it can pass through a thin wall without touching it; take a smaller timestep"
+                ));
+            }
+            for e in &report.events {
+                if e.kind == EventKind::Bounce
+                    && e.vn_out > e.vn_in * (1.0 + 1e-9)
+                    && !oscillating[e.wall]
+                    && !warned_gain
+                {
+                    warned_gain = true;
+                    warnings.push(format!(
+                        "particle {i} left wall {} faster than it came ({} → {}, t = {t}): the contact gained energy; the timestep is too large for the springs",
+                        e.wall, e.vn_in, e.vn_out
+                    ));
+                }
+            }
+            events.append(&mut report.events);
             if report.touching > 3 && !warned_crowd {
                 warned_crowd = true;
                 warnings.push(format!(
