@@ -4,6 +4,8 @@
 //! - particle–wall contact checks per second (the nearest point of every wall to every
 //!   particle), against the target of 10⁷ per core;
 //! - particle-steps per second of a whole SSDEM run;
+//! - the plan's saving: a static plane run with the parts it needs and with every part
+//!   forced on (group "plan");
 //! - and, apart from the scene, the particle–particle broad phase: building the cell grid
 //!   and visiting every overlapping pair, per particle, for 10⁴ and 10⁵ spheres of radius
 //!   0.01 at random in a box at volume fraction 0.3 (group "grid").
@@ -16,7 +18,7 @@ use std::hint::black_box;
 use walls_model::{Options, Scene, analyze};
 use walls_sim::geometry::Shape;
 use walls_sim::grid::CellGrid;
-use walls_sim::run::{Settings, default_dt, run};
+use walls_sim::run::{Planning, Settings, default_dt, run};
 use walls_sim::setup;
 
 type Vec3 = Vector3<f64>;
@@ -106,5 +108,59 @@ fn grid(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, contacts, grid);
+/// A layer of `n` particles of radius `r` and unit density resting on the plane z = 0
+/// (at the overlap where the spring `k_n` carries their weight under gravity 1), 3r apart.
+fn resting_layer(n: usize, r: f64, k_n: f64) -> Vec<walls_sim::input::Particle> {
+    let side = (n as f64).sqrt().ceil() as usize;
+    let mass = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
+    (0..n)
+        .map(|i| walls_sim::input::Particle {
+            mass,
+            radius: r,
+            pos: Vec3::new(
+                (i % side) as f64 * 3.0 * r,
+                (i / side) as f64 * 3.0 * r,
+                r - mass / k_n,
+            ),
+            vel: Vec3::zeros(),
+            spin: Vec3::zeros(),
+            color: 3,
+            index: i as i32,
+        })
+        .collect()
+}
+
+/// The plan's saving: 2,000 particles resting on a static plane, run with the parts the
+/// scene needs and with every part forced on (issue 8: at least 2×).
+fn plan(c: &mut Criterion) {
+    let scene = analyze(
+        &walls_syntax::parse("wall type plane\n").tree,
+        &Options::default(),
+    )
+    .scene;
+    let k_n = 1e3;
+    let ps = resting_layer(2_000, 0.01, k_n);
+    let dt = default_dt(&ps, k_n);
+    let steps = 200;
+    let needed = Settings {
+        gravity: Vec3::new(0.0, 0.0, -1.0),
+        ..Settings::new(dt, dt * steps as f64, setup::default_material(k_n))
+    };
+    let everything = Settings {
+        planning: Planning::Everything,
+        ..needed.clone()
+    };
+    let mut group = c.benchmark_group("plan");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements((ps.len() * steps) as u64));
+    for (how, settings) in [("planned", &needed), ("every part", &everything)] {
+        group.bench_function(
+            format!("2,000 particles resting on a static plane, {how}"),
+            |b| b.iter(|| run(&scene, black_box(ps.clone()), settings).steps),
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, contacts, grid, plan);
 criterion_main!(benches);

@@ -10,6 +10,7 @@ pub mod grid;
 pub mod hsdem;
 pub mod input;
 pub mod kinematics;
+pub mod plan;
 pub mod poly;
 pub mod run;
 pub mod setup;

@@ -66,6 +66,23 @@ pub struct Touch {
     pub velocity: Vec3,
 }
 
+/// The damping coefficient divided by √m: C = √m · this, for restitution `eps` of a
+/// spring `k` (so that it can be worked out once per material, not per contact).
+pub fn damping_per_root_mass(eps: f64, k: f64) -> f64 {
+    damping(eps, k, 1.0)
+}
+
+/// The normal force alone, for scenes without sliding friction: what [`contact`] gives
+/// when μ_s = 0, without keeping a tangential spring, with the damping coefficient `c_n`
+/// worked out beforehand.
+pub fn normal_contact(touch: &Touch, k_n: f64, c_n: f64) -> ContactForce {
+    let un = touch.normal * touch.normal.dot(&touch.velocity);
+    ContactForce {
+        force: touch.normal * (k_n * touch.overlap) - un * c_n,
+        torque: Vec3::zeros(),
+    }
+}
+
 /// The contact force on a particle of mass `m` and radius `r` touching a wall. `spring`
 /// is the contact's tangential spring: it is turned into the tangent plane, stretched by
 /// the tangential motion over `dt`, and reset when the contact slides.

@@ -34,6 +34,10 @@ enum Command {
     /// Run particles against the walls (SSDEM or HSDEM) and report where they end up,
     /// what happened at walls, the energy and pkdgrav's warnings.
     Run(Box<RunArgs>),
+    /// List the parts of the model a run would use (moving walls, spin, friction terms,
+    /// edges, particle contacts, reactive walls, sticky and death walls, gravity), with
+    /// the reason for each; takes the same options as `run`.
+    Plan(Box<RunArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
@@ -111,12 +115,31 @@ struct RunArgs {
     /// oscillation velocity of each step's start, as pkdgrav does.
     #[arg(long, value_enum, default_value_t = Oscillation::Exact)]
     oscillation: Oscillation,
+    /// SSDEM: the integrator: kick-drift-kick leapfrog; the same with pkdgrav's dashpot
+    /// velocity predicted to the step's end; or explicit Euler (for comparison).
+    #[arg(long, value_enum, default_value_t = IntegratorArg::Leapfrog)]
+    integrator: IntegratorArg,
+    /// Run every part of the model, whatever the scene needs (for comparison; see
+    /// `walls-sim plan`).
+    #[arg(long)]
+    all_parts: bool,
     /// Steps between trajectory rows.
     #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..))]
     every: u64,
     /// Print the result as JSON on standard output.
     #[arg(long)]
     json: bool,
+}
+
+/// The SSDEM integrator.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum IntegratorArg {
+    /// Kick-drift-kick leapfrog.
+    Leapfrog,
+    /// Kick-drift-kick with the dashpot at the velocity predicted to the step's end.
+    Pkdgrav,
+    /// Explicit Euler.
+    Euler,
 }
 
 /// How oscillating walls advance in a run.
@@ -133,6 +156,39 @@ fn main() -> ExitCode {
     match args.command {
         Command::Scene { file, time, mode } => scene(&file, time, mode),
         Command::Run(run) => simulate(&run),
+        Command::Plan(run) => plan(&run),
+    }
+}
+
+fn plan(args: &RunArgs) -> ExitCode {
+    let prepared = match prepare(args) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("walls-sim: error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let (_, parts) = walls_sim::plan::parts(
+        &prepared.checked.scene,
+        &prepared.particles,
+        &prepared.settings,
+    );
+    if args.json {
+        let list: Vec<_> = parts
+            .iter()
+            .map(|p| serde_json::json!({"part": p.name, "used": p.used, "reason": p.reason}))
+            .collect();
+        println!("{}", serde_json::json!({ "plan": list }));
+    } else {
+        for p in &parts {
+            let mark = if p.used { "uses" } else { "skips" };
+            println!("{mark:5} {}: {}", p.name, p.reason);
+        }
+    }
+    if prepared.errors > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
     }
 }
 
@@ -146,9 +202,12 @@ fn simulate(args: &RunArgs) -> ExitCode {
     }
 }
 
-fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
+/// Reads and checks everything a run needs: the walls file (checked in the run's mode),
+/// the particles, the `.par` file, and the settings from options, `.par` and defaults.
+fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     use walls_sim::input::{read_csv, read_par, read_ss};
-    use walls_sim::run::{Method, ParticleMaterial, Settings, default_dt, run_observed};
+    use walls_sim::run::{Integrator, Planning};
+    use walls_sim::run::{Method, ParticleMaterial, Settings, default_dt};
     use walls_sim::setup;
     let options = Options {
         mode: args.method.into(),
@@ -247,8 +306,44 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
             Oscillation::Exact => walls_sim::OscillationStepping::Exact,
             Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
         },
+        integrator: match args.integrator {
+            IntegratorArg::Leapfrog => Integrator::Leapfrog,
+            IntegratorArg::Pkdgrav => Integrator::LeapfrogPredicted,
+            IntegratorArg::Euler => Integrator::ExplicitEuler,
+        },
+        planning: if args.all_parts {
+            Planning::Everything
+        } else {
+            Planning::Needed
+        },
         ..Settings::new(dt, t_end, material)
     };
+    Ok(Prepared {
+        checked,
+        particles,
+        settings,
+        errors,
+    })
+}
+
+/// What a run needs, read and checked.
+struct Prepared {
+    checked: walls_cli::Checked,
+    particles: Vec<walls_sim::input::Particle>,
+    settings: walls_sim::run::Settings,
+    errors: usize,
+}
+
+fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
+    use walls_sim::run::run_observed;
+    let Prepared {
+        checked,
+        particles,
+        settings,
+        errors,
+    } = prepare(args)?;
+    let scene = &checked.scene;
+    let (t_end, dt) = (settings.t_end, settings.dt);
     let mut trajectory = match &args.out {
         Some(dir) => Some(
             walls_sim::trajectory::Trajectory::create(dir)
@@ -262,17 +357,22 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
         written = out.record(0, 0.0, &start, scene);
     }
-    let outcome = run_observed(scene, particles, &settings, &mut |step, t, states| {
-        if let Some(bar) = &progress {
-            bar.set_position(step);
-        }
-        if let Some(out) = &mut trajectory
-            && step % args.every == 0
-            && written.is_ok()
-        {
-            written = out.record(step, t, states, scene);
-        }
-    });
+    let outcome = run_observed(
+        scene,
+        particles.clone(),
+        &settings,
+        &mut |step, t, states| {
+            if let Some(bar) = &progress {
+                bar.set_position(step);
+            }
+            if let Some(out) = &mut trajectory
+                && step % args.every == 0
+                && written.is_ok()
+            {
+                written = out.record(step, t, states, scene);
+            }
+        },
+    );
     if let Some(bar) = progress {
         bar.finish_and_clear();
     }
@@ -285,7 +385,7 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
             dir.display()
         ));
     }
-    report(args, scene, &settings, &outcome)?;
+    report(args, scene, &particles, &settings, &outcome)?;
     Ok(if errors > 0 {
         ExitCode::from(1)
     } else {
@@ -307,49 +407,25 @@ fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
-/// The components of the model a run used, for the JSON `model` field.
+/// The parts of the model a run used, for the JSON `model` field: the plan's (as the
+/// run saw it), plus sticky and death walls when a particle met one.
 fn model(
     scene: &walls_model::Scene,
+    particles: &[walls_sim::input::Particle],
     settings: &walls_sim::run::Settings,
-    outcome: &walls_sim::run::Outcome,
 ) -> Vec<&'static str> {
-    use walls_keywords::Keyword;
-    use walls_sim::run::{EventKind, Method};
-    let walls_have = |k: Keyword| scene.walls.iter().any(|w| w.number(k) > 0.0);
-    let m = &settings.material;
-    let mut model = vec![];
-    match settings.method {
-        Method::Soft => {
-            model.push("ssdem: spring-dashpot");
-            if m.mu_s > 0.0 || walls_have(Keyword::MuS) {
-                model.push("tangential spring with Coulomb friction");
-            }
-            if m.mu_r > 0.0 || walls_have(Keyword::MuR) {
-                model.push("rolling resistance");
-            }
-            if m.mu_t > 0.0 || walls_have(Keyword::MuT) {
-                model.push("twisting resistance");
-            }
-        }
-        Method::Hard => {
-            model.push("hsdem: exact collision prediction");
-            if settings.edges {
-                model.push("edge, corner and rim collisions");
-            }
-        }
-    }
-    if settings.particle_contacts && outcome.particles.len() > 1 {
-        model.push("particle-particle contacts (cell grid)");
-    }
-    if settings.gravity.norm() > 0.0 {
-        model.push("uniform gravity");
-    }
-    if outcome.events.iter().any(|e| e.kind == EventKind::Stick) {
-        model.push("sticky walls");
-    }
-    if outcome.events.iter().any(|e| e.kind == EventKind::Remove) {
-        model.push("death walls");
-    }
+    let (_, parts) = walls_sim::plan::parts(scene, particles, settings);
+    let everything = settings.planning == walls_sim::run::Planning::Everything;
+    let mut model = vec![match settings.method {
+        walls_sim::run::Method::Soft => "ssdem: spring-dashpot",
+        walls_sim::run::Method::Hard => "hsdem: exact collision prediction",
+    }];
+    model.extend(
+        parts
+            .iter()
+            .filter(|p| p.used || (everything && p.name != "reactive walls"))
+            .map(|p| p.name),
+    );
     model
 }
 
@@ -357,6 +433,7 @@ fn model(
 fn report(
     args: &RunArgs,
     scene: &walls_model::Scene,
+    particles: &[walls_sim::input::Particle],
     settings: &walls_sim::run::Settings,
     out: &walls_sim::run::Outcome,
 ) -> Result<(), String> {
@@ -384,7 +461,7 @@ fn report(
             })).collect::<Vec<_>>(),
             "pair_contacts": out.pair_contacts,
             "energy": {"initial": out.energy.0, "final": out.energy.1},
-            "model": model(scene, settings, out),
+            "model": model(scene, particles, settings),
             "warnings": out.warnings,
         });
         println!(

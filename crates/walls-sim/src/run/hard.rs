@@ -27,6 +27,7 @@ use super::{
 use crate::geometry::Feature;
 use crate::grid::CellGrid;
 use crate::hsdem::{Body, bounce, first_hit, pair_bounce, sphere_entry, supported};
+use crate::plan::Plan;
 use crate::ssdem::Material;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -422,6 +423,7 @@ pub(super) fn run(
     scene: &Scene,
     mut states: Vec<State>,
     settings: &Settings,
+    plan: &Plan,
     observe: &mut dyn FnMut(u64, f64, &[State]),
 ) -> Outcome {
     let g = settings.gravity;
@@ -471,7 +473,9 @@ pub(super) fn run(
             s.particle.vel += g * (dt / 2.0);
         }
         let start = origins.walls(scene, t);
-        origins.advance(scene, t, dt);
+        if plan.moving_walls {
+            origins.advance(scene, t, dt);
+        }
         let walls: Vec<WallStep> = start
             .into_iter()
             .zip(&origins.now)
@@ -487,14 +491,14 @@ pub(super) fn run(
                 }
             })
             .collect();
-        let candidates = Candidates::new(&states, dt, settings.particle_contacts && n > 1);
+        let candidates = Candidates::new(&states, dt, plan.particle_contacts && n > 1);
         let mut d = Drift {
             states: &mut states,
             walls: &walls,
             usable: &usable,
             materials: &materials,
             between,
-            edges: settings.edges,
+            edges: plan.edges,
             dt,
             clock: vec![0.0; n],
             version: vec![0; n],

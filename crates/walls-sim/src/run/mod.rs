@@ -21,6 +21,7 @@ pub use hard::COLLISION_CAP;
 use crate::geometry::Shape;
 use crate::input::Particle;
 use crate::kinematics::{Motion, OscillationStepping};
+use crate::plan::Plan;
 use crate::ssdem::Material;
 use nalgebra::Vector3;
 use walls_keywords::Keyword;
@@ -80,6 +81,18 @@ pub struct Settings {
     pub stepping: OscillationStepping,
     /// SSDEM: the integrator (HSDEM is always kick-drift-kick).
     pub integrator: Integrator,
+    /// Which parts of the model run: those the scene needs, or all of them.
+    pub planning: Planning,
+}
+
+/// How a run chooses the parts of the model it runs ([`crate::plan`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Planning {
+    /// Only the parts the scene needs.
+    #[default]
+    Needed,
+    /// Every part, whatever the scene: for comparison.
+    Everything,
 }
 
 impl Settings {
@@ -96,6 +109,7 @@ impl Settings {
             edges: true,
             stepping: OscillationStepping::Exact,
             integrator: Integrator::Leapfrog,
+            planning: Planning::Needed,
         }
     }
 }
@@ -217,9 +231,13 @@ pub fn run_observed(
             ..State::new(p)
         })
         .collect();
+    let plan = match settings.planning {
+        Planning::Needed => Plan::for_run(scene, &particles, settings),
+        Planning::Everything => Plan::everything(),
+    };
     match settings.method {
-        Method::Soft => soft::run(scene, states, settings, observe),
-        Method::Hard => hard::run(scene, states, settings, observe),
+        Method::Soft => soft::run(scene, states, settings, &plan, observe),
+        Method::Hard => hard::run(scene, states, settings, &plan, observe),
     }
 }
 

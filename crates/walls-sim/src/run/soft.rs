@@ -14,7 +14,11 @@ use super::{
     Settings, State, WallNow, carry, energy,
 };
 use crate::grid::CellGrid;
-use crate::ssdem::{Material, Rolling, Touch, contact, contact_radius, resistance};
+use crate::plan::Plan;
+use crate::ssdem::{
+    Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
+    resistance,
+};
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use walls_model::Scene;
@@ -67,7 +71,10 @@ fn inertia(m: f64, r: f64) -> f64 {
 
 /// The walls as they stand in a step, with their materials.
 struct Walls<'a> {
-    now: Vec<WallNow>,
+    now: &'a [WallNow],
+    plan: &'a Plan,
+    /// Each wall's normal damping over √m, worked out once.
+    damping: &'a [f64],
     materials: &'a [Material],
     /// The fraction of a step the kick after the forces covers.
     closing_kick: f64,
@@ -187,10 +194,14 @@ fn wall_step(
             normal: n,
             velocity: u,
         };
-        let c = contact(m, r, &touch, &mut open[k].1.spring, dt, mat);
+        let c = if walls.plan.sliding_friction {
+            contact(m, r, &touch, &mut open[k].1.spring, dt, mat)
+        } else {
+            normal_contact(&touch, mat.k_n, walls.damping[w] * m.sqrt())
+        };
         load.force += c.force;
         load.torque += c.torque;
-        if mat.mu_r > 0.0 || mat.mu_t > 0.0 {
+        if walls.plan.rolling || walls.plan.twisting {
             let rolling = Rolling {
                 spin: s.particle.spin - wall.spin,
                 normal: n,
@@ -220,6 +231,7 @@ pub(super) fn run(
     scene: &Scene,
     mut states: Vec<State>,
     settings: &Settings,
+    plan: &Plan,
     observe: &mut dyn FnMut(u64, f64, &[State]),
 ) -> Outcome {
     let g = settings.gravity;
@@ -257,6 +269,12 @@ pub(super) fn run(
         Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0),
     };
     let mut origins = Origins::new(scene, settings.stepping);
+    // Placed once when no wall moves (the plan), else every step.
+    let mut now = origins.walls(scene, 0.0);
+    let damping: Vec<f64> = materials
+        .iter()
+        .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
+        .collect();
     'run: while t < settings.t_end - dt * 1e-9 {
         // Kick (leapfrog's first half; none in symplectic Euler) and drift.
         let kick_drift = |s: &mut State| {
@@ -274,11 +292,18 @@ pub(super) fn run(
         } else {
             states.iter_mut().for_each(kick_drift);
         }
-        origins.advance(scene, t, dt);
+        if plan.moving_walls {
+            origins.advance(scene, t, dt);
+        }
         t += dt;
         steps += 1;
+        if plan.moving_walls {
+            now = origins.walls(scene, t);
+        }
         let walls = Walls {
-            now: origins.walls(scene, t),
+            now: &now,
+            plan,
+            damping: &damping,
             materials: &materials,
             closing_kick,
             predict,
@@ -287,13 +312,14 @@ pub(super) fn run(
             load.force = g * s.particle.mass;
             load.torque = Vec3::zeros();
         }
-        if settings.particle_contacts && n > 1 {
+        if plan.particle_contacts && n > 1 {
             candidates.update(&states);
             let stop = pair_forces(
                 &states,
                 &between,
                 dt,
                 steps,
+                plan,
                 &candidates,
                 &mut pairs_open,
                 &mut loads,
@@ -444,6 +470,7 @@ fn pair_forces(
     mat: &Material,
     dt: f64,
     step: u64,
+    plan: &Plan,
     candidates: &PairList,
     open: &mut OpenContacts,
     loads: &mut [Load],
@@ -493,10 +520,15 @@ fn pair_forces(
             normal: n,
             velocity: u,
         };
-        let c = contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat);
+        let c = if plan.sliding_friction {
+            contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat)
+        } else {
+            let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
+            normal_contact(&touch, mat.k_n, c_n)
+        };
         // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂ from j.
         let mut torque = (c.torque, c.torque * (q.radius / p.radius));
-        if mat.mu_r > 0.0 || mat.mu_t > 0.0 {
+        if plan.rolling || plan.twisting {
             let lever = p.radius * q.radius / (p.radius + q.radius);
             // Equal and opposite torques change the relative spin through the reduced
             // inertia (or the free one's, against a stuck particle).
