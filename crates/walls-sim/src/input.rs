@@ -298,6 +298,11 @@ pub enum Rule {
     Restitution,
     /// Tangential restitution: −1 to 1.
     Tangential,
+    /// An allowed overlap as a fraction of the radius: above 0, below 0.5 (pkdgrav stops
+    /// at half the radius).
+    Overlap,
+    /// A fraction such as a packing fraction: above 0, at most 1.
+    Fraction,
 }
 
 impl Rule {
@@ -312,6 +317,11 @@ impl Rule {
             Rule::NonNegative => (x >= 0.0, "0 or more"),
             Rule::Restitution => (x > 0.0 && x <= 1.0, "above 0 and at most 1"),
             Rule::Tangential => ((-1.0..=1.0).contains(&x), "from -1 to 1"),
+            Rule::Overlap => (
+                x > 0.0 && x < 0.5,
+                "above 0 and below 0.5 (pkdgrav stops at an overlap of half the radius)",
+            ),
+            Rule::Fraction => (x > 0.0 && x <= 1.0, "above 0 and at most 1"),
         };
         if ok && x.is_finite() {
             Ok(x)

@@ -3,8 +3,10 @@
 //! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
 //! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
 //! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
-//! ([`run`]), with their trajectories ([`trajectory`]).
+//! ([`run`]), with their trajectories ([`trajectory`]); and advice on k_n and the
+//! timestep for the real pkdgrav run ([`advise`]).
 
+pub mod advise;
 pub mod geometry;
 pub mod grid;
 pub mod hsdem;

@@ -1,5 +1,6 @@
 //! `walls-sim`: evaluate a walls file. `walls-sim scene FILE [--time T]` prints the
-//! resolved scene as JSON (SPEC §2).
+//! resolved scene as JSON (SPEC §2); `walls-sim run` runs particles against it;
+//! `walls-sim advise` suggests dKn, dKt and dDelta for the real pkdgrav run.
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
 //! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
@@ -21,7 +22,7 @@ use walls_sim::input::Rule;
 #[command(
     name = "walls-sim",
     version,
-    about = "Evaluate pkdgrav walls files: the resolved scene, wall motion.",
+    about = "Evaluate pkdgrav walls files: the resolved scene, wall motion, runs, and advice for pkdgrav's k_n and timestep.",
     after_help = "Exit status: 0 success, 1 the file has errors (the output is what could be resolved), 2 usage or I/O error."
 )]
 struct Args {
@@ -38,6 +39,9 @@ enum Command {
     /// edges, particle contacts, reactive walls, sticky and death walls, gravity), with
     /// the reason for each; takes the same options as `run`.
     Plan(Box<RunArgs>),
+    /// Suggest the spring constants and timestep (dKn, dKt, dDelta) for the real
+    /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
+    Advise(Box<AdviseArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
@@ -142,6 +146,76 @@ enum IntegratorArg {
     Euler,
 }
 
+/// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,
+/// "Advice for the real run").
+#[derive(clap::Args)]
+#[command(
+    group(clap::ArgGroup::new("amount").required(true).args(["mass", "density"])),
+    after_help = "k_n is the larger of m·(v/x)² (the fastest impact stops within the overlap x) and φ·ρ·g·H·s²/x (the pile's bottom bears its weight within x); k_t = 2/7·k_n; dDelta = π·√(m/(2k_n))/N. Values are SI unless --units pkdgrav; the output gives both."
+)]
+struct AdviseArgs {
+    /// The typical (most energetic) particle's mass: kg, or M_sun with --units pkdgrav.
+    #[arg(long, value_name = "M", value_parser = ruled(Rule::Positive))]
+    mass: Option<f64>,
+    /// Or its density: kg/m^3, or M_sun/AU^3.
+    #[arg(long, value_name = "RHO", value_parser = ruled(Rule::Positive))]
+    density: Option<f64>,
+    /// The typical particle's radius: m, or AU.
+    #[arg(long, value_name = "S", value_parser = ruled(Rule::Positive))]
+    radius: f64,
+    /// The maximum expected speed, of a particle at a wall or of two particles towards
+    /// each other: m/s, or AU/(yr/2pi).
+    #[arg(long, value_name = "V", value_parser = ruled(Rule::Positive))]
+    speed: f64,
+    /// The allowed overlap, as a fraction of the radius (pkdgrav warns at 0.03 and 0.15).
+    #[arg(long, value_name = "FRACTION", default_value_t = walls_sim::advise::DEFAULT_OVERLAP, value_parser = ruled(Rule::Overlap))]
+    overlap: f64,
+    /// Gravity (uniform, or at the surface), for the static criterion with --height:
+    /// m/s^2, or AU/(yr/2pi)^2.
+    #[arg(long, value_name = "G", requires = "height", value_parser = ruled(Rule::Positive))]
+    gravity: Option<f64>,
+    /// The pile's height (or the body's radius), for the static criterion: m, or AU.
+    #[arg(long, value_name = "H", requires = "gravity", value_parser = ruled(Rule::Positive))]
+    height: Option<f64>,
+    /// The pile's packing fraction (static criterion).
+    #[arg(long, value_name = "PHI", default_value_t = walls_sim::advise::DEFAULT_PACKING, value_parser = ruled(Rule::Fraction))]
+    packing: f64,
+    /// Steps per contact (pkdgrav's demparams uses 30; 50 for a closer restitution).
+    #[arg(long, value_name = "N", default_value_t = walls_sim::advise::DEFAULT_STEPS_PER_CONTACT, value_parser = ruled(Rule::Positive))]
+    steps_per_contact: f64,
+    /// The shortest contact the timestep must resolve: between particles (reduced mass
+    /// m/2), or only against walls (m, √2 longer).
+    #[arg(long, value_enum, default_value_t = ContactArg::Pair)]
+    contact: ContactArg,
+    /// The walls file, for an achWallsFile line.
+    #[arg(long, value_name = "FILE", value_parser = par_name)]
+    walls: Option<String>,
+    /// The units of the inputs.
+    #[arg(long, value_enum, default_value_t = UnitsArg::Si)]
+    units: UnitsArg,
+    /// Print the advice as JSON on standard output.
+    #[arg(long)]
+    json: bool,
+}
+
+/// The shortest contact of a run.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum ContactArg {
+    /// Particles touch each other (and walls).
+    Pair,
+    /// Particles touch only walls.
+    Wall,
+}
+
+/// The units of `advise`'s inputs.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum UnitsArg {
+    /// kg, m, s.
+    Si,
+    /// pkdgrav's: M_sun, AU, yr/2pi (G = 1).
+    Pkdgrav,
+}
+
 /// How oscillating walls advance in a run.
 #[derive(Clone, Copy, clap::ValueEnum)]
 enum Oscillation {
@@ -157,6 +231,7 @@ fn main() -> ExitCode {
         Command::Scene { file, time, mode } => scene(&file, time, mode),
         Command::Run(run) => simulate(&run),
         Command::Plan(run) => plan(&run),
+        Command::Advise(args) => advise(&args),
     }
 }
 
@@ -189,6 +264,271 @@ fn plan(args: &RunArgs) -> ExitCode {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+/// A file name pkdgrav's parameter reader reads back as written.
+fn par_name(s: &str) -> Result<String, String> {
+    walls_sim::advise::par_string(s)
+        .map(str::to_string)
+        .map_err(|why| format!("pkdgrav cannot read that name: {why}"))
+}
+
+fn advise(args: &AdviseArgs) -> ExitCode {
+    use walls_sim::advise::{self, Amount, Column, Contact, Inputs, UnitSystem};
+    let inputs = Inputs {
+        units: match args.units {
+            UnitsArg::Si => UnitSystem::Si,
+            UnitsArg::Pkdgrav => UnitSystem::Pkdgrav,
+        },
+        amount: match (args.mass, args.density) {
+            (Some(m), _) => Amount::Mass(m),
+            (None, Some(rho)) => Amount::Density(rho),
+            (None, None) => unreachable!("clap requires --mass or --density"),
+        },
+        radius: args.radius,
+        speed: args.speed,
+        overlap: args.overlap,
+        column: match (args.gravity, args.height) {
+            (Some(gravity), Some(height)) => Some(Column {
+                gravity,
+                height,
+                packing: args.packing,
+            }),
+            _ => None,
+        },
+        steps_per_contact: args.steps_per_contact,
+        contact: match args.contact {
+            ContactArg::Pair => Contact::Pair,
+            ContactArg::Wall => Contact::Wall,
+        },
+    };
+    let advice = match advise::advise(&inputs) {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("walls-sim: error: --{e}");
+            return ExitCode::from(2);
+        }
+    };
+    let text = if args.json {
+        advice_json(&advice, args)
+    } else {
+        advice_text(&advice, args)
+    };
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            eprintln!("walls-sim: error: cannot write output: {e}");
+        }
+        return ExitCode::from(2);
+    }
+    if !args.json {
+        for w in &advice.warnings {
+            eprintln!("walls-sim: warning: {w}");
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+/// The advice for people: inputs, derivation, units, then the .par lines.
+fn advice_text(a: &walls_sim::advise::Advice, args: &AdviseArgs) -> String {
+    use std::fmt::Write as _;
+    use walls_sim::advise::{Contact, Criterion, Dimension, Quantity, significant as g};
+    let si = |q: &Quantity| format!("{} {}", g(q.si, 6), q.dimension.si_unit());
+    let pkd = |q: &Quantity| format!("{} {}", g(q.pkdgrav, 6), q.dimension.pkdgrav_unit());
+    let mut o = String::new();
+    let row = |o: &mut String, name: &str, q: &Quantity, note: &str| {
+        let line = format!("  {name:<22}{:<24}{:<30}{note}", si(q), pkd(q));
+        let _ = writeln!(o, "{}", line.trim_end());
+    };
+    let given = match args.units {
+        UnitsArg::Si => "given in SI",
+        UnitsArg::Pkdgrav => "given in pkdgrav units",
+    };
+    let _ = writeln!(o, "Inputs ({given})\n  {:<22}{:<24}pkdgrav units", "", "SI");
+    let (mass_note, density_note) = if args.mass.is_some() {
+        ("", "derived: m/(4/3·π·s³)")
+    } else {
+        ("derived: 4/3·π·s³·ρ", "")
+    };
+    row(&mut o, "mass m", &a.mass, mass_note);
+    row(&mut o, "radius s", &a.radius, "");
+    row(&mut o, "density ρ", &a.density, density_note);
+    row(&mut o, "maximum speed v", &a.speed, "");
+    row(
+        &mut o,
+        "allowed overlap x",
+        &a.max_overlap,
+        &format!("{} % of s", g(100.0 * a.overlap_fraction, 6)),
+    );
+    if let Some(c) = &a.column {
+        row(&mut o, "gravity g", &c.gravity, "");
+        row(&mut o, "pile height H", &c.height, "");
+        let _ = writeln!(o, "  {:<22}{}", "packing φ", g(c.packing, 6));
+    }
+    let _ = writeln!(
+        o,
+        "  {:<22}{}",
+        "steps per contact N",
+        g(a.steps_per_contact, 6)
+    );
+    let _ = writeln!(o, "\nDerivation");
+    let eq = |o: &mut String, what: &str, formula: &str, q: &Quantity| {
+        let _ = writeln!(o, "  {what:<24}{formula:<18}= {}", si(q));
+    };
+    eq(&mut o, "kinetic k_n", "m·(v/x)²", &a.k_n_kinetic);
+    match &a.column {
+        Some(c) => eq(&mut o, "static k_n", "φ·ρ·g·H·s²/x", &c.k_n),
+        None => {
+            let _ = writeln!(
+                o,
+                "  {:<24}(no --gravity and --height: not estimated)",
+                "static k_n"
+            );
+        }
+    }
+    let _ = writeln!(
+        o,
+        "  → k_n = {}: the {} criterion governs (the larger)",
+        si(&a.k_n),
+        match a.governs {
+            Criterion::Kinetic => "kinetic",
+            Criterion::Static => "static",
+        }
+    );
+    eq(&mut o, "k_t", "2/7·k_n", &a.k_t);
+    eq(
+        &mut o,
+        "contact, pair (μ = m/2)",
+        "π·√(m/(2k_n))",
+        &a.contact_time_pair,
+    );
+    eq(
+        &mut o,
+        "contact, wall (μ = m)",
+        "π·√(m/k_n)",
+        &a.contact_time_wall,
+    );
+    let resolved = match a.contact {
+        Contact::Pair => "pair",
+        Contact::Wall => "wall",
+    };
+    let _ = writeln!(
+        o,
+        "  {:<24}{:<18}= {} ({} steps per wall contact)",
+        "dt",
+        format!("{resolved} contact/{}", g(a.steps_per_contact, 6)),
+        si(&a.dt),
+        g(a.steps_per_wall_contact, 4)
+    );
+    let percent = |q: &Quantity| g(100.0 * q.si / a.radius.si, 4);
+    let _ = writeln!(
+        o,
+        "  peak overlap at v: {} against a wall ({} % of s), {} between two particles ({} %)",
+        si(&a.peak_overlap_wall),
+        percent(&a.peak_overlap_wall),
+        si(&a.peak_overlap_pair),
+        percent(&a.peak_overlap_pair),
+    );
+    if let Some(c) = &a.column {
+        let _ = writeln!(
+            o,
+            "  at rest at the pile's bottom: {} ({} % of s); a fall over H reaches √(2gH) = {}",
+            si(&c.overlap),
+            percent(&c.overlap),
+            si(&c.free_fall_speed),
+        );
+    }
+    let u = &a.units;
+    let _ = writeln!(
+        o,
+        "\nUnits: pkdgrav's are the AU, the solar mass and the time in which G = 1\n  1 AU = {} m (IAU 2012); 1 M_sun = {} kg (IAU 2015 GM_sun / G)\n  1 yr/2pi = √(AU³/(G·M_sun)) = {} s, with G = {} m^3/(kg s^2) (CODATA 2014)\n  k_n: 1 M_sun/(yr/2pi)^2 = {} kg/s^2; dt: 1 yr/2pi = {} s\n  a walls file in SI units: lengthunit {}  massunit {}  timeunit {}",
+        g(u.length, 10),
+        g(u.mass, 6),
+        g(u.time, 6),
+        g(walls_sim::advise::G_SI, 6),
+        g(u.factor(Dimension::Stiffness), 6),
+        g(u.time, 6),
+        g(1.0 / u.length, 6),
+        g(1.0 / u.mass, 6),
+        g(1.0 / u.time, 6),
+    );
+    let _ = writeln!(o, "\n# pkdgrav parameters: paste into the .par file");
+    for line in a.par_lines(args.walls.as_deref()) {
+        let _ = writeln!(o, "{line}");
+    }
+    o
+}
+
+/// The advice as JSON: every quantity as {si, pkdgrav, si_unit, pkdgrav_unit}.
+fn advice_json(a: &walls_sim::advise::Advice, args: &AdviseArgs) -> String {
+    use serde_json::{Value, json};
+    use walls_sim::advise::{Contact, Criterion, Quantity};
+    let q = |q: &Quantity| {
+        json!({
+            "si": q.si,
+            "pkdgrav": q.pkdgrav,
+            "si_unit": q.dimension.si_unit(),
+            "pkdgrav_unit": q.dimension.pkdgrav_unit(),
+        })
+    };
+    let column = a.column.as_ref();
+    let u = &a.units;
+    let mut par = json!({
+        "dKn": a.k_n.pkdgrav,
+        "dKt": a.k_t.pkdgrav,
+        "dDelta": a.dt.pkdgrav,
+    });
+    if let (Some(file), Value::Object(map)) = (&args.walls, &mut par) {
+        map.insert("achWallsFile".into(), json!(file));
+    }
+    let value = json!({
+        "inputs": {
+            "units": match args.units { UnitsArg::Si => "si", UnitsArg::Pkdgrav => "pkdgrav" },
+            "mass": q(&a.mass),
+            "radius": q(&a.radius),
+            "density": q(&a.density),
+            "speed": q(&a.speed),
+            "overlap": a.overlap_fraction,
+            "max_overlap": q(&a.max_overlap),
+            "gravity": column.map(|c| q(&c.gravity)),
+            "height": column.map(|c| q(&c.height)),
+            "packing": column.map(|c| c.packing),
+            "steps_per_contact": a.steps_per_contact,
+            "contact": match a.contact { Contact::Pair => "pair", Contact::Wall => "wall" },
+        },
+        "k_n_kinetic": q(&a.k_n_kinetic),
+        "k_n_static": column.map(|c| q(&c.k_n)),
+        "governs": match a.governs { Criterion::Kinetic => "kinetic", Criterion::Static => "static" },
+        "k_n": q(&a.k_n),
+        "k_t": q(&a.k_t),
+        "contact_time": {"pair": q(&a.contact_time_pair), "wall": q(&a.contact_time_wall)},
+        "dt": q(&a.dt),
+        "steps_per_wall_contact": a.steps_per_wall_contact,
+        "peak_overlap": {
+            "wall": q(&a.peak_overlap_wall),
+            "pair": q(&a.peak_overlap_pair),
+            "pile": column.map(|c| q(&c.overlap)),
+        },
+        "free_fall_speed": column.map(|c| q(&c.free_fall_speed)),
+        "units": {
+            "length_m": u.length,
+            "mass_kg": u.mass,
+            "time_s": u.time,
+            "g_si": walls_sim::advise::G_SI,
+            "walls_file_in_si": {
+                "lengthunit": 1.0 / u.length,
+                "massunit": 1.0 / u.mass,
+                "timeunit": 1.0 / u.time,
+            },
+        },
+        "par": par,
+        "par_lines": a.par_lines(args.walls.as_deref()),
+        "warnings": a.warnings,
+    });
+    match serde_json::to_string_pretty(&value) {
+        Ok(text) => text + "\n",
+        Err(e) => unreachable!("JSON of numbers and strings: {e}"),
     }
 }
 
