@@ -492,6 +492,14 @@ fn near_a_hull_of_10k_triangles_few_walls_are_candidates() {
         most = most.max(found.len());
     }
     assert!(touching > queries / 10, "{touching} queries touch the hull");
+    // A wide reach: hundreds of candidates, still ascending and complete.
+    let p = Vec3::new(0.3, 0.4, 0.8);
+    let found = candidates(&index, &p, 0.3, &origins);
+    let within: Vec<usize> = (0..shapes.len())
+        .filter(|&w| shapes[w].nearest(&p).distance <= 0.3)
+        .collect();
+    assert!(within.len() > 200, "{}", within.len());
+    assert!(within.iter().all(|w| found.binary_search(w).is_ok()));
     let mean = total as f64 / queries as f64;
     assert!(mean < 30.0, "{mean} candidates on average of 10,000 walls");
     assert!(most < 100, "{most} candidates at most of 10,000 walls");
