@@ -134,6 +134,59 @@ impl Shape {
         }
     }
 
+    /// An axis-aligned box `(lo, hi)` holding every point the shape's [`Shape::nearest`]
+    /// can answer, or `None` for a shape with no such box: planes and infinite
+    /// cylinders, and the degenerate polygons whose nearest point is not confined to
+    /// their vertices (a triangle whose edges are parallel, a rectangle with a zero
+    /// edge; the model flags both).
+    ///
+    /// The boxes are tight, not merely safe: a triangle's or rectangle's is its
+    /// vertices'; a disk's is its rim circle's, centre ± radius·√(1 − nᵢ²) on each axis
+    /// i (the hole does not narrow it); a finite cylinder's or cone's covers its two end
+    /// rims (its side lies between them); a shell's is its whole sphere.
+    pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
+        match self {
+            Shape::Plane { .. } | Shape::InfiniteCylinder { .. } => None,
+            Shape::Triangle { origin, e1, e2 } => {
+                direction(&e1.cross(e2))?;
+                Some(corners(&[*origin, origin + e1, origin + e2]))
+            }
+            Shape::Rectangle { origin, e1, e2 } => {
+                if e1.norm_squared() == 0.0 || e2.norm_squared() == 0.0 {
+                    return None;
+                }
+                Some(corners(&[
+                    *origin,
+                    origin + e1,
+                    origin + e2,
+                    origin + e1 + e2,
+                ]))
+            }
+            Shape::Disk {
+                center,
+                normal,
+                radius,
+                ..
+            } => Some(rim_bounds(center, normal, radius.abs())),
+            Shape::FiniteCylinder {
+                center,
+                axis,
+                radius,
+                length,
+                taper,
+            } => {
+                let half = axis * (length / 2.0);
+                let (lo0, hi0) = rim_bounds(&(center - half), axis, radius.abs());
+                let (lo1, hi1) = rim_bounds(&(center + half), axis, (radius * (1.0 - taper)).abs());
+                Some((lo0.inf(&lo1), hi0.sup(&hi1)))
+            }
+            Shape::Shell { center, radius, .. } => {
+                let r = Vec3::repeat(radius.abs());
+                Some((center - r, center + r))
+            }
+        }
+    }
+
     /// The nearest point of the shape to `p`.
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         match self {
@@ -179,6 +232,30 @@ impl Shape {
             } => shell(p, center, axis, *radius, *open),
         }
     }
+}
+
+/// The box of a few points.
+fn corners(points: &[Vec3]) -> (Vec3, Vec3) {
+    points
+        .iter()
+        .skip(1)
+        .fold((points[0], points[0]), |(lo, hi), q| (lo.inf(q), hi.sup(q)))
+}
+
+/// The box of the circle of `radius` around `center` perpendicular to `normal`: on
+/// axis i it reaches radius·√(1 − nᵢ²) each side, computed as √(n_j² + n_k²)/|n| so
+/// that an axis nearly along the normal keeps its few digits. A zero normal (which
+/// [`Shape::nearest`] treats as every direction) gets the whole ball.
+fn rim_bounds(center: &Vec3, normal: &Vec3, radius: f64) -> (Vec3, Vec3) {
+    let len2 = normal.norm_squared();
+    let reach = if len2 > 0.0 {
+        let sq = normal.component_mul(normal);
+        Vec3::new(sq.y + sq.z, sq.z + sq.x, sq.x + sq.y)
+            .map(|s| radius * (s / len2).sqrt().min(1.0))
+    } else {
+        Vec3::repeat(radius)
+    };
+    (center - reach, center + reach)
 }
 
 /// The answer for nearest point `q` of a surface whose own normal there is `surface`.

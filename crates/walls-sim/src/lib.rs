@@ -18,6 +18,8 @@ pub mod run;
 pub mod setup;
 pub mod ssdem;
 pub mod trajectory;
+pub mod wall_index;
 
 pub use geometry::{Feature, Nearest, Shape};
 pub use kinematics::{Motion, OscillationStepping};
+pub use wall_index::WallIndex;
