@@ -70,6 +70,7 @@ fn each_part_is_needed_for_its_reason() {
             twisting: true,
             edges: false,
             particle_contacts: true,
+            wall_index: false,
         }
     );
     let reason = |name: &str| list.iter().find(|p| p.name == name).unwrap().reason.clone();
@@ -121,5 +122,81 @@ fn leaving_out_unneeded_parts_does_not_change_the_answer() {
                 "{a:?} vs {b:?}"
             );
         }
+    }
+}
+
+/// A closed box of 6 × 5 × 5 = 150 square tiles around the origin, side 2.
+fn tiled_box() -> Scene {
+    let mut text = String::new();
+    let h = 0.4;
+    for k in 0..5 {
+        for l in 0..5 {
+            let (a, b) = (-1.0 + h * k as f64, -1.0 + h * l as f64);
+            for (o, e1, e2) in [
+                ([a, b, -1.0], [h, 0.0, 0.0], [0.0, h, 0.0]),
+                ([a, b, 1.0], [h, 0.0, 0.0], [0.0, h, 0.0]),
+                ([a, -1.0, b], [h, 0.0, 0.0], [0.0, 0.0, h]),
+                ([a, 1.0, b], [h, 0.0, 0.0], [0.0, 0.0, h]),
+                ([-1.0, a, b], [0.0, h, 0.0], [0.0, 0.0, h]),
+                ([1.0, a, b], [0.0, h, 0.0], [0.0, 0.0, h]),
+            ] {
+                text += &format!(
+                    "wall type rectangle\n  origin {} {} {}\n  vertex1 {} {} {}\n  vertex2 {} {} {}\n  epsn 0.8\n  epst 1\n",
+                    o[0], o[1], o[2], e1[0], e1[1], e1[2], e2[0], e2[1], e2[2]
+                );
+            }
+        }
+    }
+    scene(&text)
+}
+
+#[test]
+fn the_wall_index_finds_the_same_contacts_as_looking_at_every_wall() {
+    // Particles rattling in a box of 150 tiles, in both models: with the index and
+    // without it, the same events, positions and velocities to the last bit.
+    let tiles = tiled_box();
+    let ps: Vec<Particle> = (0..40)
+        .map(|i| {
+            let f = |a: f64| ((i as f64 * a).fract() - 0.5) * 1.6;
+            Particle {
+                mass: 1e-3,
+                radius: 0.05,
+                pos: Vec3::new(f(0.754_877_666), f(0.569_840_291), f(0.430_159_709)),
+                vel: Vec3::new(f(0.31), f(0.57), f(0.77)) * 3.0,
+                spin: Vec3::zeros(),
+                color: 3,
+                index: i,
+            }
+        })
+        .filter(|p| p.pos.amax() < 0.9)
+        .collect();
+    for method in [Method::Soft, Method::Hard] {
+        let base = Settings {
+            method,
+            dt: if method == Method::Soft { 2e-5 } else { 1e-3 },
+            ..settings(1e4, 0.3)
+        };
+        let with = parts(&tiles, &ps, &base).0;
+        assert!(with.wall_index, "150 tiles call for the index");
+        let runs: Vec<_> = [true, false]
+            .into_iter()
+            .map(|on| {
+                let s = Settings {
+                    planning: Planning::Exactly(Plan {
+                        wall_index: on,
+                        ..with
+                    }),
+                    ..base.clone()
+                };
+                run(&tiles, ps.clone(), &s)
+            })
+            .collect();
+        assert!(
+            runs[0].events.len() > 10,
+            "{method:?}: {}",
+            runs[0].events.len()
+        );
+        assert_eq!(runs[0].events, runs[1].events, "{method:?}");
+        assert_eq!(runs[0].particles, runs[1].particles, "{method:?}");
     }
 }

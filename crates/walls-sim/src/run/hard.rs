@@ -29,6 +29,7 @@ use crate::grid::CellGrid;
 use crate::hsdem::{Body, bounce, first_hit, pair_bounce, sphere_entry, supported};
 use crate::plan::Plan;
 use crate::ssdem::Material;
+use crate::wall_index::WallIndex;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -101,6 +102,10 @@ impl Ord for Queued {
 struct Drift<'a> {
     states: &'a mut [State],
     walls: &'a [WallStep],
+    /// The wall index, when the plan uses one, and the walls' origins at the start of
+    /// the step it is queried with.
+    index: Option<&'a WallIndex>,
+    start_origins: &'a [Vec3],
     usable: &'a [bool],
     materials: &'a [Material],
     between: Material,
@@ -222,9 +227,10 @@ impl Drift<'_> {
                 best = Some((t, partner));
             }
         };
-        for (w, wall) in self.walls.iter().enumerate() {
+        let mut wall_check = |w: usize| {
+            let wall = &self.walls[w];
             if !self.usable[w] {
-                continue;
+                return;
             }
             // In the wall's frame at the start of the step.
             let here = p.pos - wall.chord * tau;
@@ -235,17 +241,30 @@ impl Drift<'_> {
                 let v = wall.point_velocity(&(near.point + wall.chord * tau), tau);
                 if near.normal.dot(&(p.vel - v)) < 0.0 {
                     consider(0.0, Partner::Wall(w));
-                    continue;
+                    return;
                 }
             }
             // Too far to reach the wall within the step: its distance falls at most at
             // the relative speed.
             if near.distance > p.radius + d.norm() * left {
-                continue;
+                return;
             }
             if let Some(hit) = first_hit(&wall.start.shape, &here, &d, p.radius, left, self.edges) {
                 consider(hit.t, Partner::Wall(w));
             }
+        };
+        match self.index {
+            // Walls moving alike share a chord: one query per group, with its point and
+            // reach in that frame (the same test as the skip above, so the same walls).
+            Some(index) => index.for_each_candidate_by_group(
+                self.start_origins,
+                |g| {
+                    let c = self.walls[g].chord;
+                    (p.pos - c * tau, p.radius + (p.vel - c).norm() * left)
+                },
+                &mut wall_check,
+            ),
+            None => (0..self.walls.len()).for_each(&mut wall_check),
         }
         for &j in &self.candidates.neighbours[i] {
             if !self.states[j].alive {
@@ -434,6 +453,7 @@ pub(super) fn run(
     } = Materials::new(scene, &settings.material);
     let mut warnings = Vec::new();
     let mut origins = Origins::new(scene, settings.stepping);
+    let index = plan.wall_index.then(|| WallIndex::new(scene));
     let usable: Vec<bool> = origins
         .walls(scene, 0.0)
         .iter()
@@ -492,9 +512,12 @@ pub(super) fn run(
             })
             .collect();
         let candidates = Candidates::new(&states, dt, plan.particle_contacts && n > 1);
+        let start_origins: Vec<Vec3> = walls.iter().map(|w| w.start.origin).collect();
         let mut d = Drift {
             states: &mut states,
             walls: &walls,
+            index: index.as_ref(),
+            start_origins: &start_origins,
             usable: &usable,
             materials: &materials,
             between,

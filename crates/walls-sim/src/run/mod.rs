@@ -93,6 +93,8 @@ pub enum Planning {
     Needed,
     /// Every part, whatever the scene: for comparison.
     Everything,
+    /// These parts (for tests and benchmarks that compare one part on and off).
+    Exactly(Plan),
 }
 
 impl Settings {
@@ -234,6 +236,7 @@ pub fn run_observed(
     let plan = match settings.planning {
         Planning::Needed => Plan::for_run(scene, &particles, settings),
         Planning::Everything => Plan::everything(),
+        Planning::Exactly(plan) => plan,
     };
     match settings.method {
         Method::Soft => soft::run(scene, states, settings, &plan, observe),

@@ -19,6 +19,7 @@ use crate::ssdem::{
     Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
     resistance,
 };
+use crate::wall_index::WallIndex;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use walls_model::Scene;
@@ -72,6 +73,10 @@ fn inertia(m: f64, r: f64) -> f64 {
 /// The walls as they stand in a step, with their materials.
 struct Walls<'a> {
     now: &'a [WallNow],
+    /// Each wall's origin now, for the wall index.
+    origins: &'a [Vec3],
+    /// The wall index, when the plan uses one.
+    index: Option<&'a WallIndex>,
     plan: &'a Plan,
     /// Each wall's normal damping over √m, worked out once.
     damping: &'a [f64],
@@ -90,6 +95,8 @@ struct Load {
     force: Vec3,
     torque: Vec3,
     walls: Vec<(usize, Open)>,
+    /// The walls to look at this step, kept to save allocating.
+    visit: Vec<usize>,
 }
 
 /// What one particle's wall contacts did in a step.
@@ -115,7 +122,6 @@ fn wall_step(
     step: u64,
 ) -> ParticleStep {
     let mut out = ParticleStep::default();
-    let open = &mut load.walls;
     if !s.alive {
         return out;
     }
@@ -129,7 +135,25 @@ fn wall_step(
         out.too_fast = Some(travel);
     }
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
-    for (w, wall) in walls.now.iter().enumerate() {
+    // The walls within reach (from the wall index, when the plan uses one), and those
+    // the particle touched last step, whose contacts may end; in wall order either way.
+    let mut visit = std::mem::take(&mut load.visit);
+    visit.clear();
+    match walls.index {
+        Some(index) => {
+            index.for_each_candidate(&s.particle.pos, r, walls.origins, |w| visit.push(w));
+            for (w, _) in &load.walls {
+                if visit.binary_search(w).is_err() {
+                    visit.push(*w);
+                }
+            }
+            visit.sort_unstable();
+        }
+        None => visit.extend(0..walls.now.len()),
+    }
+    let open = &mut load.walls;
+    for &w in &visit {
+        let wall = &walls.now[w];
         let near = wall.shape.nearest(&s.particle.pos);
         let overlap = r - near.distance;
         let n = near.normal;
@@ -224,6 +248,7 @@ fn wall_step(
     s.alpha = load.torque / inertia(m, r);
     s.particle.vel += s.acc * (dt * walls.closing_kick);
     s.particle.spin += s.alpha * (dt * walls.closing_kick);
+    load.visit = visit;
     out
 }
 
@@ -271,6 +296,7 @@ pub(super) fn run(
     let mut origins = Origins::new(scene, settings.stepping);
     // Placed once when no wall moves (the plan), else every step.
     let mut now = origins.walls(scene, 0.0);
+    let index = plan.wall_index.then(|| WallIndex::new(scene));
     let damping: Vec<f64> = materials
         .iter()
         .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
@@ -302,6 +328,8 @@ pub(super) fn run(
         }
         let walls = Walls {
             now: &now,
+            origins: &origins.now,
+            index: index.as_ref(),
             plan,
             damping: &damping,
             materials: &materials,
