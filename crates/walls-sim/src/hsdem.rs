@@ -341,8 +341,14 @@ fn ring_entry(
     let beta = 2.0 * rel.dot(d);
     let gamma = rel.norm_squared() - r * r - radius * radius;
     let rr4 = 4.0 * radius * radius;
+    // The constant term γ² + 4R²(z² − r²) is (G·H) with G = (ρ − R)² + z² − r² and
+    // H = (ρ + R)² + z² − r²: formed that way it does not cancel when the sphere starts
+    // just outside the tube (an imminent contact), where the sum loses up to 8e−7.
+    let rho = pxy.norm();
+    let near_side = (rho - radius).powi(2) + pz * pz - r * r;
+    let far_side = (rho + radius).powi(2) + pz * pz - r * r;
     let coefficients = [
-        gamma * gamma + rr4 * (pz * pz - r * r),
+        near_side * far_side,
         2.0 * beta * gamma + 2.0 * rr4 * pz * dz,
         beta * beta + 2.0 * alpha * gamma + rr4 * dz * dz,
         2.0 * alpha * beta,
