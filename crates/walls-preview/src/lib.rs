@@ -1,0 +1,8 @@
+//! Pictures of walls files (SPEC §2 `walls-sim preview`, §3 "Drawing"): every wall of a
+//! scene placed where it is at a time and tessellated into triangles in ssdraw's
+//! colours, for the writers of each picture format to draw.
+
+pub mod mesh;
+pub mod palette;
+
+pub use mesh::{Mesh, WallMesh, wall_meshes};

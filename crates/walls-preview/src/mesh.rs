@@ -1,0 +1,251 @@
+//! Each wall, placed where it is at a time (SPEC §1 "Motion"), as a mesh of triangles:
+//!
+//! - a plane as a square twice the scene's size, centred where the scene's centre
+//!   projects onto it (ssdraw draws planes as large thin squares);
+//! - a triangle and a rectangle as themselves;
+//! - a disk as a ring of `segments` quads between its hole and its rim (a fan without
+//!   a hole);
+//! - a finite cylinder as the open cone from radius R at −length/2 to R(1 − taper) at
+//!   +length/2; an infinite one as a tube twice the scene's size long, centred where the
+//!   scene's centre projects onto its axis;
+//! - a shell as a sphere without the cap within `open-angle` of its axis.
+//!
+//! Shapes of no area (zero radius, zero length, opening 180°) give empty meshes. Each
+//! triangle's vertices run counter-clockwise seen from the side its `orient` (or
+//! vertex1 × vertex2) points to, and outwards for cylinders and shells.
+
+use crate::palette;
+use nalgebra::Vector3;
+use walls_keywords::{Keyword, WallType};
+use walls_model::{Scene, Wall, direction, motion::position};
+
+type Vec3 = Vector3<f64>;
+
+/// Triangles over shared vertices.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mesh {
+    /// The vertices.
+    pub positions: Vec<Vec3>,
+    /// Each triangle as three indices into `positions`.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl Mesh {
+    fn vertex(&mut self, p: Vec3) -> u32 {
+        self.positions.push(p);
+        (self.positions.len() - 1) as u32
+    }
+
+    fn quad(&mut self, a: u32, b: u32, c: u32, d: u32) {
+        self.triangles.push([a, b, c]);
+        self.triangles.push([a, c, d]);
+    }
+}
+
+/// One wall's mesh with how ssdraw draws it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WallMesh {
+    /// The wall's index in the scene.
+    pub wall: usize,
+    /// Its type.
+    pub wall_type: WallType,
+    /// Its colour index (SPEC §3: 0 is not drawn).
+    pub color: i64,
+    /// Red, green, blue from 0 to 1, or `None` when not drawn.
+    pub rgb: Option<[f64; 3]>,
+    /// 1 − transparency.
+    pub opacity: f64,
+    /// Where its origin is at the time asked.
+    pub origin: Vec3,
+    /// Its triangles.
+    pub mesh: Mesh,
+}
+
+/// Every wall of `scene` at time `t`, with `segments` segments around round shapes.
+pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
+    let (lo, hi) = walls_sim::setup::bounds(scene);
+    let centre = (lo + hi) / 2.0;
+    let size = (hi - lo).max();
+    let segments = segments.max(3);
+    scene
+        .walls
+        .iter()
+        .enumerate()
+        .map(|(w, wall)| {
+            let origin = position(wall, t).unwrap_or_else(|| wall.vector(Keyword::Origin));
+            let color = wall.integer(Keyword::Color);
+            WallMesh {
+                wall: w,
+                wall_type: wall.wall_type(),
+                color,
+                rgb: palette::rgb(color),
+                opacity: (1.0 - wall.number(Keyword::Transparency)).clamp(0.0, 1.0),
+                origin,
+                mesh: tessellate(wall, origin, &centre, size, segments),
+            }
+        })
+        .collect()
+}
+
+/// Two unit vectors perpendicular to unit `n` and to each other, with u × v = n.
+fn basis(n: &Vec3) -> (Vec3, Vec3) {
+    let helper = if n.x.abs() < 0.9 {
+        Vec3::x()
+    } else {
+        Vec3::y()
+    };
+    let u = direction(&n.cross(&helper)).unwrap_or_else(Vec3::x);
+    (u, n.cross(&u))
+}
+
+fn tessellate(wall: &Wall, o: Vec3, centre: &Vec3, size: f64, segments: usize) -> Mesh {
+    let mut m = Mesh::default();
+    let axis = wall.vector(Keyword::Orient);
+    let (u, v) = basis(&axis);
+    let number = |k| wall.number(k);
+    match wall.wall_type() {
+        WallType::Plane => {
+            let c = centre - axis * axis.dot(&(centre - o));
+            let h = size;
+            let corners =
+                [(-h, -h), (h, -h), (h, h), (-h, h)].map(|(a, b)| m.vertex(c + u * a + v * b));
+            m.quad(corners[0], corners[1], corners[2], corners[3]);
+        }
+        WallType::Triangle => {
+            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
+            let ids = [o, o + a, o + b].map(|p| m.vertex(p));
+            m.triangles.push(ids);
+        }
+        WallType::Rectangle => {
+            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
+            let ids = [o, o + a, o + a + b, o + b].map(|p| m.vertex(p));
+            m.quad(ids[0], ids[1], ids[2], ids[3]);
+        }
+        WallType::Disk => {
+            let (radius, hole) = (number(Keyword::Radius), number(Keyword::HoleRadius));
+            if radius > 0.0 {
+                ring(&mut m, &o, &u, &v, hole.min(radius), radius, segments);
+            }
+        }
+        WallType::CylinderFinite => {
+            let (radius, length) = (number(Keyword::Radius), number(Keyword::Length));
+            let top = radius * (1.0 - number(Keyword::Taper));
+            if radius > 0.0 && length > 0.0 {
+                tube(&mut m, &o, &axis, &u, &v, (radius, top), length, segments);
+            }
+        }
+        WallType::CylinderInfinite => {
+            let radius = number(Keyword::Radius);
+            if radius > 0.0 {
+                let c = o + axis * axis.dot(&(centre - o));
+                tube(
+                    &mut m,
+                    &c,
+                    &axis,
+                    &u,
+                    &v,
+                    (radius, radius),
+                    2.0 * size,
+                    segments,
+                );
+            }
+        }
+        WallType::Shell => {
+            let radius = number(Keyword::Radius);
+            let open = number(Keyword::OpenAngle).to_radians();
+            if radius > 0.0 && open < std::f64::consts::PI {
+                shell(&mut m, &o, &axis, &u, &v, radius, open, segments);
+            }
+        }
+    }
+    m
+}
+
+/// The flat ring between radii `inner` and `outer` around `c` in the plane of u and v.
+fn ring(m: &mut Mesh, c: &Vec3, u: &Vec3, v: &Vec3, inner: f64, outer: f64, segments: usize) {
+    let at = |k: usize, r: f64| {
+        let a = std::f64::consts::TAU * k as f64 / segments as f64;
+        c + (u * a.cos() + v * a.sin()) * r
+    };
+    if inner <= 0.0 {
+        let centre = m.vertex(*c);
+        let rim: Vec<u32> = (0..segments).map(|k| m.vertex(at(k, outer))).collect();
+        for k in 0..segments {
+            m.triangles.push([centre, rim[k], rim[(k + 1) % segments]]);
+        }
+        return;
+    }
+    let ids: Vec<(u32, u32)> = (0..segments)
+        .map(|k| (m.vertex(at(k, inner)), m.vertex(at(k, outer))))
+        .collect();
+    for k in 0..segments {
+        let (a, b) = ids[k];
+        let (c2, d) = ids[(k + 1) % segments];
+        m.quad(a, b, d, c2);
+    }
+}
+
+/// The open cone around `c` along `axis` from radius `radii.0` at −length/2 to `radii.1`
+/// at +length/2.
+#[allow(clippy::too_many_arguments)]
+fn tube(
+    m: &mut Mesh,
+    c: &Vec3,
+    axis: &Vec3,
+    u: &Vec3,
+    v: &Vec3,
+    radii: (f64, f64),
+    length: f64,
+    segments: usize,
+) {
+    let ids: Vec<(u32, u32)> = (0..segments)
+        .map(|k| {
+            let a = std::f64::consts::TAU * k as f64 / segments as f64;
+            let out = u * a.cos() + v * a.sin();
+            (
+                m.vertex(c - axis * (length / 2.0) + out * radii.0),
+                m.vertex(c + axis * (length / 2.0) + out * radii.1),
+            )
+        })
+        .collect();
+    for k in 0..segments {
+        let (a, b) = ids[k];
+        let (c2, d) = ids[(k + 1) % segments];
+        m.quad(a, c2, d, b);
+    }
+}
+
+/// The sphere of `radius` around `c` without the cap within `open` of `axis`: latitude
+/// rings from the opening's rim down to the pole opposite it.
+#[allow(clippy::too_many_arguments)]
+fn shell(
+    m: &mut Mesh,
+    c: &Vec3,
+    axis: &Vec3,
+    u: &Vec3,
+    v: &Vec3,
+    radius: f64,
+    open: f64,
+    segments: usize,
+) {
+    let rings = (segments / 2).max(2);
+    let pi = std::f64::consts::PI;
+    let rows: Vec<Vec<u32>> = (0..=rings)
+        .map(|i| {
+            let theta = open + (pi - open) * i as f64 / rings as f64;
+            (0..segments)
+                .map(|k| {
+                    let a = std::f64::consts::TAU * k as f64 / segments as f64;
+                    let dir = axis * theta.cos() + (u * a.cos() + v * a.sin()) * theta.sin();
+                    m.vertex(c + dir * radius)
+                })
+                .collect()
+        })
+        .collect();
+    for i in 0..rings {
+        for k in 0..segments {
+            let n = (k + 1) % segments;
+            m.quad(rows[i][k], rows[i + 1][k], rows[i + 1][n], rows[i][n]);
+        }
+    }
+}

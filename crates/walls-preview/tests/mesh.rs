@@ -1,0 +1,102 @@
+//! Wall meshes: each shape's triangles lie on the wall (every vertex at distance 0 from
+//! the shape the evaluator uses), cover it (area against the analytic area) and follow
+//! the wall's motion; colours follow ssdraw.
+
+use walls_keywords::Keyword;
+use walls_model::{Options, Scene, analyze};
+use walls_preview::{palette, wall_meshes};
+use walls_sim::Shape;
+
+fn scene(text: &str) -> Scene {
+    let parsed = walls_syntax::parse(text);
+    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+    analyze(&parsed.tree, &Options::default()).scene
+}
+
+fn area(m: &walls_preview::Mesh) -> f64 {
+    m.triangles
+        .iter()
+        .map(|[a, b, c]| {
+            let (a, b, c) = (
+                m.positions[*a as usize],
+                m.positions[*b as usize],
+                m.positions[*c as usize],
+            );
+            (b - a).cross(&(c - a)).norm() / 2.0
+        })
+        .sum()
+}
+
+#[test]
+fn every_vertex_lies_on_its_wall_and_the_area_is_right() {
+    use std::f64::consts::PI;
+    let cases = [
+        (
+            "wall type triangle\n  vertex1 2 0 0\n  vertex2 0 1 0\n",
+            1.0,
+        ),
+        (
+            "wall type rectangle\n  vertex1 2 0 0\n  vertex2 0 3 0\n",
+            6.0,
+        ),
+        ("wall type disk\n  radius 1\n  hole-radius 0.5\n", PI * 0.75),
+        ("wall type disk\n  radius 1\n", PI),
+        (
+            "wall type cylinder-finite\n  radius 1\n  length 2\n",
+            2.0 * PI * 2.0,
+        ),
+        ("wall type shell\n  radius 1\n", 4.0 * PI),
+        ("wall type shell\n  radius 1\n  open-angle 90\n", 2.0 * PI),
+        (
+            "wall type cylinder-finite\n  radius 1\n  length 1\n  taper 1\n",
+            PI * 2f64.sqrt(),
+        ),
+    ];
+    for (text, expected) in cases {
+        let s = scene(text);
+        let wall = &s.walls[0];
+        let shape = Shape::of(wall, wall.vector(Keyword::Origin));
+        let meshes = wall_meshes(&s, 0.0, 256);
+        let m = &meshes[0].mesh;
+        for p in &m.positions {
+            assert!(
+                shape.nearest(p).distance < 1e-9,
+                "{text}: {p:?} is off the wall"
+            );
+        }
+        let a = area(m);
+        assert!(
+            (a / expected - 1.0).abs() < 1e-3,
+            "{text}: area {a} vs {expected}"
+        );
+    }
+    // Shapes with no area have no triangles.
+    for text in [
+        "wall type disk\n  radius 0\n",
+        "wall type shell\n  radius 1\n  open-angle 180\n",
+    ] {
+        assert!(
+            wall_meshes(&scene(text), 0.0, 32)[0]
+                .mesh
+                .triangles
+                .is_empty(),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn meshes_move_with_their_walls_and_take_ssdraw_colours() {
+    let s = scene("wall type disk\n  radius 1\n  velocity 0 0 2\n  color 2\n  transparency 25\n");
+    let at = |t| wall_meshes(&s, t, 16).remove(0);
+    let (a, b) = (at(0.0), at(1.5));
+    for (p, q) in a.mesh.positions.iter().zip(&b.mesh.positions) {
+        assert!((q - p - nalgebra::Vector3::new(0.0, 0.0, 3.0)).norm() < 1e-12);
+    }
+    assert_eq!(a.rgb, Some([1.0, 0.0, 0.0]));
+    assert!((a.opacity - 0.75).abs() < 1e-12);
+    assert_eq!(palette::rgb(0), None);
+    assert_eq!(palette::hex(16).as_deref(), Some("#000000"));
+    assert_eq!(palette::hex(255).as_deref(), Some("#ffffff"));
+    assert_eq!(palette::hex(223).as_deref(), Some("#dddddd"));
+}
