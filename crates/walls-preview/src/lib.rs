@@ -4,5 +4,6 @@
 
 pub mod mesh;
 pub mod palette;
+pub mod svg;
 
 pub use mesh::{Mesh, WallMesh, wall_meshes};

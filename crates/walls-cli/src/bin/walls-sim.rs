@@ -42,6 +42,9 @@ enum Command {
     /// Suggest the spring constants and timestep (dKn, dKt, dDelta) for the real
     /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
     Advise(Box<AdviseArgs>),
+    /// Draw the walls (and particles) at a time, or their motion over a span: SVG
+    /// (the default), more formats to come.
+    Preview(Box<PreviewArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
@@ -231,6 +234,7 @@ fn main() -> ExitCode {
         Command::Scene { file, time, mode } => scene(&file, time, mode),
         Command::Run(run) => simulate(&run),
         Command::Plan(run) => plan(&run),
+        Command::Preview(args) => preview(&args),
         Command::Advise(args) => advise(&args),
     }
 }
@@ -545,7 +549,7 @@ fn simulate(args: &RunArgs) -> ExitCode {
 /// Reads and checks everything a run needs: the walls file (checked in the run's mode),
 /// the particles, the `.par` file, and the settings from options, `.par` and defaults.
 fn prepare(args: &RunArgs) -> Result<Prepared, String> {
-    use walls_sim::input::{read_csv, read_par, read_ss};
+    use walls_sim::input::read_par;
     use walls_sim::run::{Integrator, Planning};
     use walls_sim::run::{Method, ParticleMaterial, Settings, default_dt};
     use walls_sim::setup;
@@ -583,19 +587,7 @@ fn prepare(args: &RunArgs) -> Result<Prepared, String> {
             .map(|f| par_dir.join(f).to_string_lossy().into_owned())
     });
     let (particles, embedded) = match &particle_file {
-        Some(f) => {
-            let bytes = std::fs::read(f).map_err(|e| format!("cannot read {f}: {e}"))?;
-            let csv = std::path::Path::new(f)
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-            let ps = if csv {
-                read_csv(&String::from_utf8_lossy(&bytes))
-            } else {
-                read_ss(&bytes).map(|(_, ps)| ps)
-            }
-            .map_err(|e| format!("{f}: {e}"))?;
-            (ps, false)
-        }
+        Some(f) => (read_particles(f)?, false),
         None => (setup::default_particles(scene), true),
     };
     if particles.is_empty() {
@@ -663,6 +655,172 @@ fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         particles,
         settings,
         errors,
+    })
+}
+
+/// Particles from a CSV file (by its extension, in any case) or a pkdgrav `.ss` file.
+fn read_particles(f: &str) -> Result<Vec<walls_sim::input::Particle>, String> {
+    use walls_sim::input::{read_csv, read_ss};
+    let bytes = std::fs::read(f).map_err(|e| format!("cannot read {f}: {e}"))?;
+    let csv = std::path::Path::new(f)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    if csv {
+        read_csv(&String::from_utf8_lossy(&bytes))
+    } else {
+        read_ss(&bytes).map(|(_, ps)| ps)
+    }
+    .map_err(|e| format!("{f}: {e}"))
+}
+
+/// `walls-sim preview`: pictures of the walls at a time, or over a span.
+#[derive(clap::Args)]
+struct PreviewArgs {
+    /// The walls file; `-` reads standard input.
+    #[arg(value_name = "FILE")]
+    file: String,
+    /// Where the walls are: at this time (pkdgrav units).
+    #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    time: f64,
+    /// The picture: .svg (default, on standard output without --out).
+    #[arg(long, value_name = "FILE")]
+    out: Option<std::path::PathBuf>,
+    /// Particles to draw too: CSV or .ss.
+    #[arg(long, value_name = "FILE")]
+    particles: Option<String>,
+    /// The direction to look from (towards the scene).
+    #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    view: Option<Vec<f64>>,
+    /// Which way is up in the picture.
+    #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    up: Option<Vec<f64>>,
+    /// The picture's size in pixels.
+    #[arg(long, num_args = 2, value_names = ["W", "H"], value_parser = clap::value_parser!(u32).range(16..=16384))]
+    size: Option<Vec<u32>>,
+    /// Frames from --time to --until: numbered pictures FILE-000.svg… and FILE.svg
+    /// animated.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=10000))]
+    frames: u64,
+    /// The end of the span the frames cover.
+    #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    until: Option<f64>,
+    /// Seconds the animation takes to play once.
+    #[arg(long, value_name = "S", default_value_t = 4.0, value_parser = ruled(Rule::Positive))]
+    seconds: f64,
+    /// Segments around round shapes.
+    #[arg(long, value_name = "N", default_value_t = 48, value_parser = clap::value_parser!(u64).range(3..=4096))]
+    segments: u64,
+}
+
+fn preview(args: &PreviewArgs) -> ExitCode {
+    match preview_inner(args) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("walls-sim: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
+    use nalgebra::Vector3;
+    use walls_preview::svg::{Frame, View, write};
+    let checked = check_bytes(input::read(&args.file).bytes?, &Options::default());
+    let errors = checked
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .count();
+    if errors > 0 {
+        eprintln!(
+            "walls-sim: {}: {errors} error(s); drawing what could be resolved (see walls-lint)",
+            args.file
+        );
+    }
+    let scene = &checked.scene;
+    let particles = match &args.particles {
+        Some(f) => read_particles(f)?,
+        None => Vec::new(),
+    };
+    let v3 = |v: &Option<Vec<f64>>, default: Vector3<f64>| {
+        v.as_ref()
+            .map_or(default, |v| Vector3::new(v[0], v[1], v[2]))
+    };
+    let default = View::default();
+    let view = View {
+        from: v3(&args.view, default.from),
+        up: v3(&args.up, default.up),
+        width: args.size.as_ref().map_or(default.width, |s| s[0]),
+        height: args.size.as_ref().map_or(default.height, |s| s[1]),
+    };
+    let segments = args.segments as usize;
+    let n = args.frames as usize;
+    let until = args.until.unwrap_or(args.time);
+    let times: Vec<f64> = (0..n)
+        .map(|k| {
+            if n == 1 {
+                args.time
+            } else {
+                args.time + (until - args.time) * k as f64 / (n - 1) as f64
+            }
+        })
+        .collect();
+    let meshes: Vec<_> = times
+        .iter()
+        .map(|t| walls_preview::wall_meshes(scene, *t, segments))
+        .collect();
+    let frames: Vec<Frame> = times
+        .iter()
+        .zip(&meshes)
+        .map(|(t, walls)| Frame {
+            t: *t,
+            walls,
+            particles: &particles,
+        })
+        .collect();
+    let bounds = walls_sim::setup::bounds(scene);
+    let kind = args
+        .out
+        .as_ref()
+        .and_then(|p| p.extension())
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    match kind.as_deref() {
+        None => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            write(&mut out, &frames, &view, bounds, args.seconds)
+                .and_then(|()| out.flush())
+                .map_err(|e| format!("cannot write the picture: {e}"))?;
+        }
+        Some("svg") => {
+            let path = args.out.as_ref().expect("an extension comes from a path");
+            let save = |path: &std::path::Path, frames: &[Frame]| {
+                let mut out = std::io::BufWriter::new(
+                    std::fs::File::create(path)
+                        .map_err(|e| format!("cannot write {}: {e}", path.display()))?,
+                );
+                write(&mut out, frames, &view, bounds, args.seconds)
+                    .and_then(|()| out.flush())
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))
+            };
+            save(path, &frames)?;
+            if n > 1 {
+                let stem = path.with_extension("");
+                for (k, frame) in frames.iter().enumerate() {
+                    let numbered = format!("{}-{k:03}.svg", stem.display());
+                    save(std::path::Path::new(&numbered), std::slice::from_ref(frame))?;
+                }
+            }
+        }
+        Some(other) => {
+            return Err(format!(
+                "cannot draw .{other} files: use .svg (or no --out for SVG on standard output)"
+            ));
+        }
+    }
+    Ok(if errors > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
     })
 }
 

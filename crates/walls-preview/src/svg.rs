@@ -1,0 +1,370 @@
+//! SVG pictures of the walls, drawn by an embedded renderer that needs nothing
+//! installed: an orthographic view along a chosen direction, planes first (as ground),
+//! then triangles sorted far to near (the painter's algorithm) and shaded by how
+//! squarely they face the viewer, each wall outlined where its surface ends, in
+//! ssdraw's colours with transparency as opacity; particles as discs; axes and a scale
+//! bar. Several frames make an animated SVG (SMIL: one group per frame, shown in turn),
+//! which browsers play without script.
+
+use crate::mesh::WallMesh;
+use nalgebra::Vector3;
+use std::fmt::Write as _;
+use std::io;
+use walls_sim::input::Particle;
+
+type Vec3 = Vector3<f64>;
+
+/// Where the picture is seen from, and its size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct View {
+    /// The direction from the scene towards the viewer.
+    pub from: Vec3,
+    /// Which way is up in the picture (projected).
+    pub up: Vec3,
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+}
+
+impl Default for View {
+    /// From (1, −1.5, 1) with z up, 800 × 600: the walls' tops and two sides.
+    fn default() -> Self {
+        View {
+            from: Vec3::new(1.0, -1.5, 1.0),
+            up: Vec3::z(),
+            width: 800,
+            height: 600,
+        }
+    }
+}
+
+/// One picture's content: the walls and particles at one time.
+#[derive(Debug, Clone, Copy)]
+pub struct Frame<'a> {
+    /// The time, shown in the corner.
+    pub t: f64,
+    /// The walls there.
+    pub walls: &'a [WallMesh],
+    /// The particles there.
+    pub particles: &'a [Particle],
+}
+
+/// The projection: screen axes, scale and offset.
+struct Camera {
+    right: Vec3,
+    up: Vec3,
+    towards: Vec3,
+    scale: f64,
+    centre: (f64, f64),
+    size: (f64, f64),
+}
+
+impl Camera {
+    /// Fits the box `lo`–`hi` (and the particles) into the view, with a margin.
+    fn new(view: &View, lo: &Vec3, hi: &Vec3, particles: &[Particle]) -> Camera {
+        let towards = view.from.try_normalize(0.0).unwrap_or_else(Vec3::z);
+        let right = view
+            .up
+            .cross(&towards)
+            .try_normalize(1e-12)
+            .unwrap_or_else(|| towards.cross(&Vec3::x()).normalize());
+        let up = towards.cross(&right);
+        let mut points: Vec<Vec3> = (0..8)
+            .map(|k| {
+                Vec3::new(
+                    if k & 1 == 0 { lo.x } else { hi.x },
+                    if k & 2 == 0 { lo.y } else { hi.y },
+                    if k & 4 == 0 { lo.z } else { hi.z },
+                )
+            })
+            .collect();
+        points.extend(particles.iter().map(|p| p.pos));
+        let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+        for p in &points {
+            let (x, y) = (right.dot(p), up.dot(p));
+            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+        }
+        let (w, h) = (f64::from(view.width), f64::from(view.height));
+        let scale = (0.8 * w / (x1 - x0).max(1e-300)).min(0.8 * h / (y1 - y0).max(1e-300));
+        Camera {
+            right,
+            up,
+            towards,
+            scale,
+            centre: ((x0 + x1) / 2.0, (y0 + y1) / 2.0),
+            size: (w, h),
+        }
+    }
+
+    /// Screen coordinates (y down) of `p`.
+    fn screen(&self, p: &Vec3) -> (f64, f64) {
+        (
+            self.size.0 / 2.0 + (self.right.dot(p) - self.centre.0) * self.scale,
+            self.size.1 / 2.0 - (self.up.dot(p) - self.centre.1) * self.scale,
+        )
+    }
+}
+
+/// Something to draw, at a depth (larger is nearer).
+enum Item {
+    Triangle {
+        points: [(f64, f64); 3],
+        fill: String,
+        opacity: f64,
+    },
+    Disc {
+        centre: (f64, f64),
+        radius: f64,
+        fill: String,
+    },
+    /// A wall's outline: an edge of only one of its triangles.
+    Edge {
+        from: (f64, f64),
+        to: (f64, f64),
+        opacity: f64,
+    },
+}
+
+/// The edges of `m` that belong to one triangle only: the outline of an open surface
+/// (a disk's rims, a rectangle's sides, a cylinder's ends, a shell's opening).
+fn outline(m: &crate::Mesh) -> Vec<(u32, u32)> {
+    let mut count: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
+    for [a, b, c] in &m.triangles {
+        for (u, v) in [(*a, *b), (*b, *c), (*c, *a)] {
+            *count.entry((u.min(v), u.max(v))).or_default() += 1;
+        }
+    }
+    let mut edges: Vec<(u32, u32)> = count
+        .into_iter()
+        .filter(|(_, n)| *n == 1)
+        .map(|(e, _)| e)
+        .collect();
+    edges.sort_unstable();
+    edges
+}
+
+/// The items of one frame, far to near.
+fn items(camera: &Camera, frame: &Frame) -> Vec<(f64, Item)> {
+    let mut out = Vec::new();
+    for w in frame.walls {
+        let Some(rgb) = w.rgb else { continue };
+        let m = &w.mesh;
+        for [a, b, c] in &m.triangles {
+            let (a, b, c) = (
+                m.positions[*a as usize],
+                m.positions[*b as usize],
+                m.positions[*c as usize],
+            );
+            let normal = (b - a)
+                .cross(&(c - a))
+                .try_normalize(0.0)
+                .unwrap_or_else(Vec3::z);
+            let light = 0.35 + 0.65 * normal.dot(&camera.towards).abs();
+            // Planes are drawn first, as the ground they usually are: their two huge
+            // triangles have no useful depth for the painter's sort.
+            let depth = if w.wall_type == walls_keywords::WallType::Plane {
+                f64::NEG_INFINITY
+            } else {
+                camera.towards.dot(&((a + b + c) / 3.0))
+            };
+            out.push((
+                depth,
+                Item::Triangle {
+                    points: [camera.screen(&a), camera.screen(&b), camera.screen(&c)],
+                    fill: shade(rgb, light),
+                    opacity: w.opacity,
+                },
+            ));
+        }
+    }
+    for w in frame.walls.iter().filter(|w| w.rgb.is_some()) {
+        let m = &w.mesh;
+        let plane = w.wall_type == walls_keywords::WallType::Plane;
+        for (a, b) in outline(m) {
+            let (a, b) = (m.positions[a as usize], m.positions[b as usize]);
+            // Just in front of the triangles it bounds.
+            let depth = if plane {
+                f64::NEG_INFINITY
+            } else {
+                camera.towards.dot(&((a + b) / 2.0)) + 1e-9
+            };
+            out.push((
+                depth,
+                Item::Edge {
+                    from: camera.screen(&a),
+                    to: camera.screen(&b),
+                    opacity: w.opacity,
+                },
+            ));
+        }
+    }
+    for p in frame.particles {
+        let rgb = crate::palette::rgb(i64::from(p.color)).unwrap_or([0.5; 3]);
+        out.push((
+            camera.towards.dot(&p.pos) + p.radius,
+            Item::Disc {
+                centre: camera.screen(&p.pos),
+                radius: p.radius * camera.scale,
+                fill: shade(rgb, 1.0),
+            },
+        ));
+    }
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out
+}
+
+/// A colour darkened by `light` (0–1), as CSS. (Each triangle is also stroked in its
+/// fill, a pixel wide, so that anti-aliasing leaves no light seams between triangles.)
+fn shade(rgb: [f64; 3], light: f64) -> String {
+    let byte = |x: f64| (x * light * 255.0).round().clamp(0.0, 255.0) as u8;
+    format!(
+        "#{:02x}{:02x}{:02x}",
+        byte(rgb[0]),
+        byte(rgb[1]),
+        byte(rgb[2])
+    )
+}
+
+/// The drawing of one frame's items, as SVG elements.
+fn draw(camera: &Camera, frame: &Frame) -> String {
+    let mut s = String::new();
+    for (_, item) in items(camera, frame) {
+        match item {
+            Item::Triangle {
+                points,
+                fill,
+                opacity,
+            } => {
+                let _ = write!(s, "<polygon points=\"");
+                for (x, y) in points {
+                    let _ = write!(s, "{x:.2},{y:.2} ");
+                }
+                let _ = write!(
+                    s,
+                    "\" fill=\"{fill}\" stroke=\"{fill}\" stroke-width=\"1\" stroke-linejoin=\"round\""
+                );
+                if opacity < 1.0 {
+                    let _ = write!(
+                        s,
+                        " fill-opacity=\"{opacity:.3}\" stroke-opacity=\"{opacity:.3}\""
+                    );
+                }
+                s.push_str("/>\n");
+            }
+            Item::Edge { from, to, opacity } => {
+                let _ = writeln!(
+                    s,
+                    "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"#333333\" stroke-width=\"1.2\" stroke-opacity=\"{opacity:.3}\"/>",
+                    from.0, from.1, to.0, to.1
+                );
+            }
+            Item::Disc {
+                centre,
+                radius,
+                fill,
+            } => {
+                let _ = writeln!(
+                    s,
+                    "<circle class=\"particle\" cx=\"{:.2}\" cy=\"{:.2}\" r=\"{:.2}\" fill=\"{fill}\" stroke=\"#000\" stroke-width=\"0.5\"/>",
+                    centre.0,
+                    centre.1,
+                    radius.max(0.5)
+                );
+            }
+        }
+    }
+    let _ = writeln!(
+        s,
+        "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">t = {}</text>",
+        frame.t
+    );
+    s
+}
+
+/// The axes (bottom left) and a scale bar (bottom right) of a round length near a
+/// fifth of the width.
+fn furniture(camera: &Camera) -> String {
+    let mut s = String::new();
+    let (ox, oy) = (50.0, camera.size.1 - 50.0);
+    for (axis, name, colour) in [
+        (Vec3::x(), "x", "#d62728"),
+        (Vec3::y(), "y", "#2ca02c"),
+        (Vec3::z(), "z", "#1f77b4"),
+    ] {
+        let (dx, dy) = (camera.right.dot(&axis) * 30.0, -camera.up.dot(&axis) * 30.0);
+        let _ = writeln!(
+            s,
+            "<line x1=\"{ox}\" y1=\"{oy}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"{colour}\" stroke-width=\"2\"/><text x=\"{:.1}\" y=\"{:.1}\" font-family=\"sans-serif\" font-size=\"12\" fill=\"{colour}\">{name}</text>",
+            ox + dx,
+            oy + dy,
+            ox + dx * 1.25,
+            oy + dy * 1.25
+        );
+    }
+    let target = camera.size.0 / 5.0 / camera.scale;
+    let decade = 10f64.powf(target.log10().floor());
+    let length = [5.0, 2.0, 1.0]
+        .iter()
+        .map(|m| m * decade)
+        .find(|l| *l <= target)
+        .unwrap_or(decade);
+    let pixels = length * camera.scale;
+    let (x1, y) = (camera.size.0 - 30.0, camera.size.1 - 30.0);
+    let _ = writeln!(
+        s,
+        "<g class=\"scale\"><line x1=\"{:.1}\" y1=\"{y}\" x2=\"{x1}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"3\"/><text x=\"{:.1}\" y=\"{:.1}\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\">{length}</text></g>",
+        x1 - pixels,
+        x1 - pixels / 2.0,
+        y - 8.0
+    );
+    s
+}
+
+/// Writes `frames` as one SVG: a still picture for one frame, an animation playing the
+/// frames in turn over `seconds` for several. The view fits the box `lo`–`hi`.
+pub fn write(
+    out: &mut impl io::Write,
+    frames: &[Frame],
+    view: &View,
+    bounds: (Vec3, Vec3),
+    seconds: f64,
+) -> io::Result<()> {
+    let all: Vec<Particle> = frames.iter().flat_map(|f| f.particles.to_vec()).collect();
+    let camera = Camera::new(view, &bounds.0, &bounds.1, &all);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>",
+        w = view.width,
+        h = view.height
+    );
+    if let [frame] = frames {
+        s.push_str("<g class=\"frame\">\n");
+        s.push_str(&draw(&camera, frame));
+        s.push_str("</g>\n");
+    } else {
+        let n = frames.len();
+        for (k, frame) in frames.iter().enumerate() {
+            // Shown during the k-th n-th of the cycle.
+            let values: Vec<&str> = (0..n)
+                .map(|j| if j == k { "inline" } else { "none" })
+                .collect();
+            let times: Vec<String> = (0..n)
+                .map(|j| format!("{:.6}", j as f64 / n as f64))
+                .collect();
+            let _ = writeln!(
+                s,
+                "<g class=\"frame\" display=\"{}\">\n<animate attributeName=\"display\" values=\"{}\" keyTimes=\"{}\" dur=\"{seconds}s\" calcMode=\"discrete\" repeatCount=\"indefinite\"/>",
+                if k == 0 { "inline" } else { "none" },
+                values.join(";"),
+                times.join(";")
+            );
+            s.push_str(&draw(&camera, frame));
+            s.push_str("</g>\n");
+        }
+    }
+    s.push_str(&furniture(&camera));
+    s.push_str("</svg>\n");
+    out.write_all(s.as_bytes())
+}

@@ -1,0 +1,104 @@
+//! The SVG renderer, checked by rasterising its output with an independent renderer
+//! (resvg): walls appear in their colours where they stand, colour 0 is not drawn, a
+//! moving wall moves between frames, and the animation has its frames.
+
+use nalgebra::Vector3;
+use walls_model::{Options, Scene, analyze};
+use walls_preview::svg::{Frame, View, write};
+use walls_preview::wall_meshes;
+
+fn scene(text: &str) -> Scene {
+    let parsed = walls_syntax::parse(text);
+    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+    analyze(&parsed.tree, &Options::default()).scene
+}
+
+/// The SVG of `scene` at the times `ts`, seen from above (z towards the viewer).
+fn svg(scene: &Scene, ts: &[f64]) -> String {
+    let meshes: Vec<_> = ts.iter().map(|t| wall_meshes(scene, *t, 64)).collect();
+    let frames: Vec<Frame> = ts
+        .iter()
+        .zip(&meshes)
+        .map(|(t, walls)| Frame {
+            t: *t,
+            walls,
+            particles: &[],
+        })
+        .collect();
+    let view = View {
+        from: Vector3::z(),
+        up: Vector3::y(),
+        width: 200,
+        height: 200,
+    };
+    let mut out = Vec::new();
+    let box_ = (Vector3::new(-2.0, -2.0, -1.0), Vector3::new(2.0, 2.0, 1.0));
+    write(&mut out, &frames, &view, box_, 2.0).unwrap();
+    String::from_utf8(out).unwrap()
+}
+
+/// Rasterises an SVG; returns the pixels (RGBA) and the width.
+fn raster(svg: &str) -> (Vec<u8>, u32) {
+    let tree = resvg::usvg::Tree::from_str(svg, &resvg::usvg::Options::default()).unwrap();
+    let size = tree.size().to_int_size();
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height()).unwrap();
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::default(),
+        &mut pixmap.as_mut(),
+    );
+    (pixmap.data().to_vec(), size.width())
+}
+
+/// The centre of the pure red pixels (a red wall facing the viewer; the red x axis is
+/// darker), and how many there are.
+fn red(pixels: &[u8], width: u32) -> ((f64, f64), usize) {
+    let (mut sx, mut sy, mut n) = (0.0, 0.0, 0usize);
+    for (k, p) in pixels.chunks(4).enumerate() {
+        if p[0] > 240 && p[1] < 128 && p[2] < 128 {
+            sx += (k as u32 % width) as f64;
+            sy += (k as u32 / width) as f64;
+            n += 1;
+        }
+    }
+    ((sx / n.max(1) as f64, sy / n.max(1) as f64), n)
+}
+
+#[test]
+fn walls_are_drawn_in_their_colours_where_they_stand() {
+    // A red disk of radius 1 at x = 1 and a wall of colour 0 (not drawn).
+    let s = scene(
+        "wall type disk\n  origin 1 0 0\n  radius 1\n  color 2\nwall type rectangle\n  origin -2 -2 0.5\n  vertex1 1 0 0\n  vertex2 0 1 0\n  color 0\n",
+    );
+    let (pixels, width) = raster(&svg(&s, &[0.0]));
+    let ((x, y), n) = red(&pixels, width);
+    // The box of 4 × 4 fills 80 % of 200 pixels: 40 pixels a unit, centred at 100.
+    let area = std::f64::consts::PI * 40.0 * 40.0;
+    assert!(
+        (n as f64 / area - 1.0).abs() < 0.05,
+        "{n} red pixels, {area} expected"
+    );
+    assert!(
+        (x - 140.0).abs() < 1.5 && (y - 100.0).abs() < 1.5,
+        "centre {x}, {y}"
+    );
+    // Nothing drawn for the colour-0 rectangle: around (−1.5, −1.5) it is white.
+    let at = |px: u32, py: u32| &pixels[((py * width + px) * 4) as usize..][..3];
+    assert_eq!(at(40, 160), [255, 255, 255]);
+}
+
+#[test]
+fn a_moving_wall_moves_between_frames_and_the_animation_has_them_all() {
+    let s = scene("wall type disk\n  radius 0.5\n  color 2\n  velocity 1 0 0\n");
+    let (a, w) = raster(&svg(&s, &[0.0]));
+    let (b, _) = raster(&svg(&s, &[1.0]));
+    let ((xa, _), _) = red(&a, w);
+    let ((xb, _), _) = red(&b, w);
+    assert!((xb - xa - 40.0).abs() < 1.5, "moved {} pixels", xb - xa);
+    let animated = svg(&s, &[0.0, 0.5, 1.0]);
+    assert_eq!(animated.matches("<g class=\"frame\"").count(), 3);
+    assert_eq!(animated.matches("<animate ").count(), 3);
+    // It is valid SVG that resvg renders (the first frame shows).
+    let (first, _) = raster(&animated);
+    assert!(red(&first, w).1 > 100);
+}
