@@ -4,5 +4,6 @@
 
 pub mod mesh;
 pub mod palette;
+pub mod pov;
 
 pub use mesh::{Mesh, WallMesh, wall_meshes};
