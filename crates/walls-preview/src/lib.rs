@@ -4,6 +4,7 @@
 
 pub mod mesh;
 pub mod palette;
+pub mod pov;
 pub mod svg;
 
 pub use mesh::{Mesh, WallMesh, wall_meshes};

@@ -88,7 +88,7 @@ pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
 }
 
 /// Two unit vectors perpendicular to unit `n` and to each other, with u × v = n.
-fn basis(n: &Vec3) -> (Vec3, Vec3) {
+pub(crate) fn basis(n: &Vec3) -> (Vec3, Vec3) {
     let helper = if n.x.abs() < 0.9 {
         Vec3::x()
     } else {

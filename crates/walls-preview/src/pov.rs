@@ -1,0 +1,362 @@
+//! POV-Ray scenes of walls files, after ssdraw's conventions (SPEC §3 "Drawing"):
+//!
+//! - each wall as a POV-Ray primitive where it has one: a plane as a large thin square
+//!   (a `box` twice the scene's size across, as [`crate::mesh`]'s squares), a triangle as
+//!   a `triangle`, a rectangle as a `polygon`, a disk as a `disc` with its hole, a finite
+//!   cylinder as an open `cone` from R at −length/2 to R(1 − taper) at +length/2, an
+//!   infinite cylinder as an open `cylinder` twice the scene's size long, a shell as a
+//!   `sphere` minus a slightly smaller one minus the cap within `open-angle` of its axis;
+//! - colour 0 is not drawn, 1–15 are the names of POV-Ray's `colors.inc`, 16–255 greys
+//!   `rgb <l, l, l>` with l = (c − 16)/239; a wall's transparency is its `transmit`;
+//! - particles are spheres in their colour (0 not drawn);
+//! - a camera looking at the box around the walls and particles from a [`View`]'s
+//!   direction, a light over its shoulder, a dim one at the camera, and a background.
+//!
+//! The styles are macros of an include file of our own, [`INCLUDE`] (`walls.inc`):
+//! `PlaneStyle(Colour, Transmit)`, … `ShellStyle`, all drawing `WallPlain` unless
+//! edited, and `ParticleStyle(Colour)`. [`write_file`] writes the scene and `walls.inc`
+//! beside it; `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
+
+use crate::mesh::basis;
+use crate::palette;
+use nalgebra::Vector3;
+use std::io::{self, Write};
+use std::path::Path;
+use walls_keywords::{Keyword, WallType};
+use walls_model::{Scene, Wall, direction, motion::position};
+use walls_sim::input::Particle;
+
+type Vec3 = Vector3<f64>;
+
+/// The include file every scene includes: the wall and particle styles.
+pub const INCLUDE: &str = include_str!("walls.inc");
+
+/// Its name, as the scenes include it.
+pub const INCLUDE_NAME: &str = "walls.inc";
+
+/// Where the camera looks from and what the picture is like.
+#[derive(Debug, Clone, PartialEq)]
+pub struct View {
+    /// From the centre of the scene towards the camera (any length; z is up unless this
+    /// is along z).
+    pub from: Vec3,
+    /// Horizontal field of view, degrees.
+    pub angle: f64,
+    /// Width over height of the picture to be rendered.
+    pub aspect: f64,
+    /// The background's red, green and blue from 0 to 1.
+    pub background: [f64; 3],
+}
+
+impl Default for View {
+    /// From (1, −1.5, 1), 40° across, 4:3, on a dark slate background.
+    fn default() -> Self {
+        View {
+            from: Vec3::new(1.0, -1.5, 1.0),
+            angle: 40.0,
+            aspect: 4.0 / 3.0,
+            background: [0.12, 0.14, 0.18],
+        }
+    }
+}
+
+/// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view` to
+/// `path`, and [`INCLUDE`] as `walls.inc` in the same directory.
+pub fn write_file(
+    path: &Path,
+    scene: &Scene,
+    t: f64,
+    particles: &[Particle],
+    view: &View,
+) -> io::Result<()> {
+    let mut out = io::BufWriter::new(std::fs::File::create(path)?);
+    write(&mut out, scene, t, particles, view)?;
+    out.flush()?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
+}
+
+/// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it
+/// includes `walls.inc` ([`INCLUDE`]), which must be beside it (or on POV-Ray's `+L`
+/// path) to render.
+pub fn write(
+    out: &mut impl Write,
+    scene: &Scene,
+    t: f64,
+    particles: &[Particle],
+    view: &View,
+) -> io::Result<()> {
+    let (lo, hi) = walls_sim::setup::bounds(scene);
+    let centre = (lo + hi) / 2.0;
+    let size = (hi - lo).max();
+    let (mut vlo, mut vhi) = (lo, hi);
+    for p in particles.iter().filter(|p| drawn(p.color.into())) {
+        vlo = vlo.inf(&(p.pos - Vec3::repeat(p.radius)));
+        vhi = vhi.sup(&(p.pos + Vec3::repeat(p.radius)));
+    }
+
+    writeln!(
+        out,
+        "// Walls at t = {t}, written by walls-preview (ssdraw's conventions)."
+    )?;
+    writeln!(out, "#version 3.7;")?;
+    writeln!(out, "global_settings {{ assumed_gamma 1.0 }}")?;
+    writeln!(out, "#include \"{INCLUDE_NAME}\"")?;
+    writeln!(out)?;
+    camera(out, (vlo + vhi) / 2.0, (vhi - vlo).norm() / 2.0, view)?;
+    writeln!(out)?;
+    for (i, wall) in scene.walls.iter().enumerate() {
+        let color = wall.integer(Keyword::Color);
+        let Some(colour) = colour(color) else {
+            writeln!(
+                out,
+                "// wall {i}: {}, colour {color}: not drawn",
+                wall.wall_type().name()
+            )?;
+            continue;
+        };
+        let origin = position(wall, t).unwrap_or_else(|| wall.vector(Keyword::Origin));
+        let transmit = wall.number(Keyword::Transparency).clamp(0.0, 1.0);
+        writeln!(out, "// wall {i}: {}", wall.wall_type().name())?;
+        match primitive(wall, origin, &centre, size) {
+            Some((object, style)) => {
+                writeln!(out, "{object}\n  {style}({colour}, {})\n}}", num(transmit))?
+            }
+            None => writeln!(out, "// (no area: not drawn)")?,
+        }
+    }
+    if !particles.is_empty() {
+        writeln!(out, "\n// Particles")?;
+    }
+    for p in particles {
+        if let Some(colour) = colour(p.color.into()).filter(|_| p.radius > 0.0) {
+            writeln!(
+                out,
+                "sphere {{ {}, {} ParticleStyle({colour}) }}",
+                vec(&p.pos),
+                num(p.radius)
+            )?;
+        }
+    }
+    Ok(())
+}
+
+fn drawn(color: i64) -> bool {
+    palette::rgb(color).is_some()
+}
+
+/// The POV-Ray colour of ssdraw's colour `index`: a `colors.inc` name for 1–15, a grey
+/// `rgb <l, l, l>` for 16–255; `None` for 0 (not drawn) and outside 0–255.
+pub fn colour(index: i64) -> Option<String> {
+    match index {
+        1..=15 => Some(palette::NAMES[index as usize - 1].to_string()),
+        16..=255 => {
+            let [l, _, _] = palette::rgb(index)?;
+            let l = num(l);
+            Some(format!("rgb <{l}, {l}, {l}>"))
+        }
+        _ => None,
+    }
+}
+
+/// A number as POV-Ray reads it (non-finite numbers as 0, rounded to 10 significant
+/// digits to keep the scene readable).
+fn num(x: f64) -> String {
+    if !x.is_finite() {
+        return "0".into();
+    }
+    let s = format!("{x:.9e}");
+    let value: f64 = s.parse().unwrap_or(x);
+    let plain = format!("{value}");
+    if plain.len() <= 20 { plain } else { s }
+}
+
+fn vec(v: &Vec3) -> String {
+    format!("<{}, {}, {}>", num(v.x), num(v.y), num(v.z))
+}
+
+/// The camera, looking at `centre` from `view.from` far enough for the sphere of
+/// `radius` around it to fit, and the lights.
+fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::Result<()> {
+    let dir = direction(&view.from).unwrap_or_else(|| View::default().from.normalize());
+    let sky = if dir.cross(&Vec3::z()).norm() > 1e-6 {
+        Vec3::z()
+    } else {
+        Vec3::y()
+    };
+    let aspect = if view.aspect.is_finite() && view.aspect > 0.0 {
+        view.aspect
+    } else {
+        4.0 / 3.0
+    };
+    let angle = if view.angle.is_finite() && view.angle > 0.0 && view.angle < 180.0 {
+        view.angle
+    } else {
+        40.0
+    };
+    let half_h = (angle / 2.0).to_radians();
+    let half_v = (half_h.tan() / aspect).atan();
+    let distance = 1.05 * radius.max(1e-9) / half_h.min(half_v).sin();
+    let location = centre + dir * distance;
+    let [r, g, b] = view.background.map(|c| if c.is_finite() { c } else { 0.0 });
+    // The picture's right: forward × sky, for a light over the camera's right shoulder.
+    let right = direction(&(-dir).cross(&sky)).unwrap_or_else(Vec3::x);
+    let key = centre + (dir + sky * 0.8 + right * 0.5) * distance * 1.5;
+    writeln!(
+        out,
+        "background {{ color rgb <{}, {}, {}> }}",
+        num(r),
+        num(g),
+        num(b)
+    )?;
+    // `right -x` before `look_at`: a right-handed camera, as the walls' axes are.
+    writeln!(
+        out,
+        "camera {{\n  location {}\n  up y\n  right -x * {}\n  sky {}\n  angle {}\n  look_at {}\n}}",
+        vec(&location),
+        num(aspect),
+        vec(&sky),
+        num(angle),
+        vec(&centre)
+    )?;
+    writeln!(out, "light_source {{ {} color White }}", vec(&key))?;
+    writeln!(
+        out,
+        "light_source {{ {} color rgb <0.25, 0.25, 0.25> shadowless }}",
+        vec(&location)
+    )
+}
+
+/// The wall's object, without its texture and closing brace, and its style macro; `None`
+/// for shapes of no area.
+fn primitive(wall: &Wall, o: Vec3, centre: &Vec3, size: f64) -> Option<(String, &'static str)> {
+    let axis = direction(&wall.vector(Keyword::Orient)).unwrap_or_else(Vec3::z);
+    let number = |k| wall.number(k);
+    let v = vec;
+    match wall.wall_type() {
+        WallType::Plane => {
+            // A square 2·size across centred where the scene's centre projects onto
+            // the plane, size/1000 thick: the box in the frame (u, v, axis) moved there.
+            let c = centre - axis * axis.dot(&(centre - o));
+            let (u, w) = basis(&axis);
+            let (h, e) = (num(size), num(size * 1e-3));
+            let m = [u, w, axis, c].map(|x| format!("{}, {}, {}", num(x.x), num(x.y), num(x.z)));
+            Some((
+                format!(
+                    "box {{ <-{h}, -{h}, -{e}>, <{h}, {h}, {e}>\n  matrix <{}, {}, {}, {}>",
+                    m[0], m[1], m[2], m[3]
+                ),
+                "PlaneStyle",
+            ))
+        }
+        WallType::Triangle => {
+            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
+            (a.cross(&b).norm() > 0.0).then(|| {
+                (
+                    format!("triangle {{ {}, {}, {}", v(&o), v(&(o + a)), v(&(o + b))),
+                    "TriangleStyle",
+                )
+            })
+        }
+        WallType::Rectangle => {
+            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
+            (a.cross(&b).norm() > 0.0).then(|| {
+                (
+                    format!(
+                        "polygon {{ 5, {}, {}, {}, {}, {}",
+                        v(&o),
+                        v(&(o + a)),
+                        v(&(o + a + b)),
+                        v(&(o + b)),
+                        v(&o)
+                    ),
+                    "RectangleStyle",
+                )
+            })
+        }
+        WallType::Disk => {
+            let (radius, hole) = (number(Keyword::Radius), number(Keyword::HoleRadius));
+            (radius > 0.0 && hole < radius).then(|| {
+                (
+                    format!(
+                        "disc {{ {}, {}, {}, {}",
+                        v(&o),
+                        v(&axis),
+                        num(radius),
+                        num(hole.max(0.0))
+                    ),
+                    "DiskStyle",
+                )
+            })
+        }
+        WallType::CylinderFinite => {
+            let (radius, length) = (number(Keyword::Radius), number(Keyword::Length));
+            let top = (radius * (1.0 - number(Keyword::Taper))).max(0.0);
+            (radius > 0.0 && length > 0.0).then(|| {
+                let (a, b) = (o - axis * (length / 2.0), o + axis * (length / 2.0));
+                let object = if top == radius {
+                    format!("cylinder {{ {}, {}, {} open", v(&a), v(&b), num(radius))
+                } else {
+                    format!(
+                        "cone {{ {}, {}, {}, {} open",
+                        v(&a),
+                        num(radius),
+                        v(&b),
+                        num(top)
+                    )
+                };
+                (object, "CylinderStyle")
+            })
+        }
+        WallType::CylinderInfinite => {
+            let radius = number(Keyword::Radius);
+            (radius > 0.0).then(|| {
+                let c = o + axis * axis.dot(&(centre - o));
+                let (a, b) = (c - axis * size, c + axis * size);
+                (
+                    format!("cylinder {{ {}, {}, {} open", v(&a), v(&b), num(radius)),
+                    "CylinderStyle",
+                )
+            })
+        }
+        WallType::Shell => {
+            let radius = number(Keyword::Radius);
+            let open = number(Keyword::OpenAngle).clamp(0.0, 180.0);
+            (radius > 0.0 && open < 180.0).then(|| (shell(o, axis, radius, open), "ShellStyle"))
+        }
+    }
+}
+
+/// A shell: the sphere minus one 1% smaller, minus the cap within `open` degrees of
+/// `axis` (a cone from the centre up to 90°, a half-space at 90°; beyond, what is kept
+/// is within 180° − `open` of −`axis`, an intersection with that cone).
+fn shell(o: Vec3, axis: Vec3, radius: f64, open: f64) -> String {
+    let sphere = |r: f64| format!("sphere {{ {}, {} }}", vec(&o), num(r));
+    let spheres = format!("{}\n  {}", sphere(radius), sphere(radius * 0.99));
+    // A cone from the centre along `dir`, of half-angle `half` (degrees, < 90), beyond
+    // the sphere.
+    let cone = |dir: Vec3, half: f64| {
+        let length = radius * 1.01;
+        let top = length * half.to_radians().tan();
+        format!(
+            "cone {{ {}, 0, {}, {} }}",
+            vec(&o),
+            vec(&(o + dir * length)),
+            num(top)
+        )
+    };
+    if open <= 0.0 {
+        format!("difference {{\n  {spheres}")
+    } else if (open - 90.0).abs() < 1e-9 {
+        // Inside this plane is axis · (p − o) > 0: the half with the opening.
+        let plane = format!("plane {{ {}, {} }}", vec(&-axis), num(-axis.dot(&o)));
+        format!("difference {{\n  {spheres}\n  {plane}")
+    } else if open < 90.0 {
+        format!("difference {{\n  {spheres}\n  {}", cone(axis, open))
+    } else {
+        format!(
+            "intersection {{\n  difference {{ {spheres} }}\n  {}",
+            cone(-axis, 180.0 - open)
+        )
+    }
+}
