@@ -1,10 +1,12 @@
 //! Pictures of walls files (SPEC §2 `walls-sim preview`, §3 "Drawing"): every wall of a
 //! scene placed where it is at a time and tessellated into triangles in ssdraw's
-//! colours, for the writers of each picture format to draw.
+//! colours, for the writers of each picture format to draw. [`vtk::write`] writes them,
+//! with particles, as VTK PolyData for ParaView.
 
 pub mod mesh;
 pub mod palette;
 pub mod pov;
 pub mod svg;
+pub mod vtk;
 
 pub use mesh::{Mesh, WallMesh, wall_meshes};
