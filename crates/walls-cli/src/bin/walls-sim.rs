@@ -43,7 +43,7 @@ enum Command {
     /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
     Advise(Box<AdviseArgs>),
     /// Draw the walls (and particles) at a time, or their motion over a span: SVG
-    /// (the default), more formats to come.
+    /// (the default), POV-Ray or VTK.
     Preview(Box<PreviewArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
@@ -682,7 +682,8 @@ struct PreviewArgs {
     /// Where the walls are: at this time (pkdgrav units).
     #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     time: f64,
-    /// The picture: .svg (default, on standard output without --out).
+    /// The picture, by its extension: .svg (the default, on standard output without
+    /// --out), .pov (POV-Ray, with walls.inc beside it) or .vtp (VTK, for ParaView).
     #[arg(long, value_name = "FILE")]
     out: Option<std::path::PathBuf>,
     /// Particles to draw too: CSV or .ss.
@@ -811,9 +812,29 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
                 }
             }
         }
+        Some("pov") => {
+            let path = args.out.as_ref().expect("an extension comes from a path");
+            let pov_view = walls_preview::pov::View {
+                from: view.from,
+                aspect: f64::from(view.width) / f64::from(view.height),
+                ..walls_preview::pov::View::default()
+            };
+            walls_preview::pov::write_file(path, scene, args.time, &particles, &pov_view)
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        }
+        Some("vtp") => {
+            let path = args.out.as_ref().expect("an extension comes from a path");
+            let mut out = std::io::BufWriter::new(
+                std::fs::File::create(path)
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?,
+            );
+            walls_preview::vtk::write(&mut out, &meshes[0], &particles)
+                .and_then(|()| out.flush())
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        }
         Some(other) => {
             return Err(format!(
-                "cannot draw .{other} files: use .svg (or no --out for SVG on standard output)"
+                "cannot draw .{other} files: use .svg, .pov or .vtp (or no --out for SVG on standard output)"
             ));
         }
     }
