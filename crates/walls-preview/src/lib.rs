@@ -1,7 +1,9 @@
 //! Pictures of walls files (SPEC §2 `walls-sim preview`, §3 "Drawing"): every wall of a
 //! scene placed where it is at a time and tessellated into triangles in ssdraw's
-//! colours, for the writers of each picture format to draw.
+//! colours, for the writers of each picture format to draw; [`html`] writes an
+//! interactive page of them.
 
+pub mod html;
 pub mod mesh;
 pub mod palette;
 
