@@ -10,10 +10,11 @@
 //! is one mesh at t = 0 and its origin's offset at `frames` times over [0, t_end],
 //! interpolated linearly in between.
 //!
-//! The URL's fragment sets the initial time (`page.html#t=0.25`) and can hover a pixel
-//! (`#hover=400,300`); `window.wallsPreview` offers `setTime(t)`, `time()`, `play()`,
-//! `pause()` and `hoverAt(x, y)` once `ready`, and `document.body.dataset` has `ready` and
-//! `time`, for tests and scripts.
+//! The URL's fragment sets the initial time (`page.html#t=0.25`) and can hover a point
+//! (`#hover=0.5,0.5`, as fractions of the canvas's width and height);
+//! `window.wallsPreview` offers `setTime(t)`, `time()`, `play()`, `pause()` and
+//! `hoverAt(x, y)` (client pixels) once `ready`, and `document.body.dataset` has `ready`
+//! and `time`, for tests and scripts.
 
 use crate::mesh::wall_meshes;
 use crate::palette;
@@ -205,7 +206,10 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
         s.push_str(",\"opacity\":");
         num(&mut s, wm.opacity);
         s.push_str(",\"positions\":");
-        nums(&mut s, wm.mesh.positions.iter().flat_map(|p| p.iter().copied()));
+        nums(
+            &mut s,
+            wm.mesh.positions.iter().flat_map(|p| p.iter().copied()),
+        );
         s.push_str(",\"indices\":");
         nums(
             &mut s,

@@ -15,7 +15,8 @@
 // It draws the walls (moved rigidly by their offsets, interpolated between frames), the
 // particles as instanced spheres, and axes; a slider and a play button set the time,
 // OrbitControls orbit the camera, and hovering a wall shows its parameters. The URL's
-// fragment sets the initial time (#t=0.25) and can hover a pixel (#hover=400,300), for
+// fragment sets the initial time (#t=0.25) and can hover a point (#hover=0.5,0.5, as
+// fractions of the canvas's width and height), for
 // tests; window.wallsPreview = { ready, setTime(t), time(), hoverAt(x, y), ... }.
 //
 // bundle.sh bundles this file with three.js into ../assets/viewer.bundle.js.
@@ -240,13 +241,14 @@ function main() {
     render();
   });
 
-  // The fragment: #t=TIME&hover=X,Y.
+  // The fragment: #t=TIME&hover=FX,FY, the point hovered as fractions of the canvas.
   function fromHash() {
     const params = new URLSearchParams(window.location.hash.slice(1));
     setTime(params.has('t') ? params.get('t') : time);
     if (params.has('hover')) {
-      const [x, y] = params.get('hover').split(',').map(Number);
-      hoverAt(x, y);
+      const [fx, fy] = params.get('hover').split(',').map(Number);
+      const rect = renderer.domElement.getBoundingClientRect();
+      hoverAt(rect.left + fx * rect.width, rect.top + fy * rect.height);
     }
   }
   window.addEventListener('hashchange', fromHash);
