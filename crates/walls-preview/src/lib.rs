@@ -1,8 +1,10 @@
 //! Pictures of walls files (SPEC §2 `walls-sim preview`, §3 "Drawing"): every wall of a
 //! scene placed where it is at a time and tessellated into triangles in ssdraw's
-//! colours, for the writers of each picture format to draw. [`vtk::write`] writes them,
-//! with particles, as VTK PolyData for ParaView.
+//! colours, for the writers of each picture format to draw: [`svg`] (the embedded
+//! renderer), [`pov`] (POV-Ray), [`vtk`] (VTK PolyData for ParaView) and [`html`] (an
+//! interactive page).
 
+pub mod html;
 pub mod mesh;
 pub mod palette;
 pub mod pov;

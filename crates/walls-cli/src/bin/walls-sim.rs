@@ -43,7 +43,7 @@ enum Command {
     /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
     Advise(Box<AdviseArgs>),
     /// Draw the walls (and particles) at a time, or their motion over a span: SVG
-    /// (the default), POV-Ray or VTK.
+    /// (the default), POV-Ray, VTK or an interactive HTML page.
     Preview(Box<PreviewArgs>),
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
@@ -683,12 +683,17 @@ struct PreviewArgs {
     #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     time: f64,
     /// The picture, by its extension: .svg (the default, on standard output without
-    /// --out), .pov (POV-Ray, with walls.inc beside it) or .vtp (VTK, for ParaView).
+    /// --out), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for ParaView) or
+    /// .html (an interactive page over [--time, --until]).
     #[arg(long, value_name = "FILE")]
     out: Option<std::path::PathBuf>,
     /// Particles to draw too: CSV or .ss.
     #[arg(long, value_name = "FILE")]
     particles: Option<String>,
+    /// HTML: particle trajectories to play, the particles.csv that `walls-sim run --out`
+    /// writes.
+    #[arg(long, value_name = "FILE")]
+    trajectory: Option<String>,
     /// The direction to look from (towards the scene).
     #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     view: Option<Vec<f64>>,
@@ -832,9 +837,29 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
                 .and_then(|()| out.flush())
                 .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         }
+        Some("html") => {
+            let path = args.out.as_ref().expect("an extension comes from a path");
+            let moving = match &args.trajectory {
+                Some(f) => Some(read_trajectory(f)?),
+                None if !particles.is_empty() => Some(walls_preview::html::Particles {
+                    radii: particles.iter().map(|p| p.radius).collect(),
+                    colors: particles.iter().map(|p| i64::from(p.color)).collect(),
+                    times: vec![args.time],
+                    frames: vec![particles.iter().map(|p| p.pos).collect()],
+                }),
+                None => None,
+            };
+            let mut out = std::io::BufWriter::new(
+                std::fs::File::create(path)
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?,
+            );
+            walls_preview::html::write(&mut out, scene, moving.as_ref(), until, n.max(101))
+                .and_then(|()| out.flush())
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        }
         Some(other) => {
             return Err(format!(
-                "cannot draw .{other} files: use .svg, .pov or .vtp (or no --out for SVG on standard output)"
+                "cannot draw .{other} files: use .svg, .pov, .vtp or .html (or no --out for SVG on standard output)"
             ));
         }
     }
@@ -843,6 +868,47 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// Particle trajectories from the `particles.csv` of `walls-sim run --out`
+/// (`step,t,particle,alive,mass,radius,x,y,z,…`): one frame per output step.
+fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
+    let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
+    let mut lines = text.lines().enumerate();
+    match lines.next() {
+        Some((_, header)) if header.starts_with("step,t,particle,alive,mass,radius,x,y,z") => {}
+        _ => {
+            return Err(format!(
+                "{f}: not a trajectory (the particles.csv of walls-sim run --out)"
+            ));
+        }
+    }
+    let mut out = walls_preview::html::Particles::default();
+    for (n, line) in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        let number = |k: usize| -> Result<f64, String> {
+            cells
+                .get(k)
+                .and_then(|c| c.parse::<f64>().ok())
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| format!("{f}: line {}: column {} is not a number", n + 1, k + 1))
+        };
+        let (t, i) = (number(1)?, number(2)? as usize);
+        if out.times.last() != Some(&t) {
+            out.times.push(t);
+            out.frames.push(Vec::new());
+        }
+        let frame = out.frames.last_mut().expect("pushed above");
+        if i != frame.len() {
+            return Err(format!("{f}: line {}: particles out of order", n + 1));
+        }
+        frame.push(nalgebra::Vector3::new(number(6)?, number(7)?, number(8)?));
+        if out.frames.len() == 1 {
+            out.radii.push(number(5)?);
+            out.colors.push(3);
+        }
+    }
+    Ok(out)
 }
 
 /// What a run needs, read and checked.
