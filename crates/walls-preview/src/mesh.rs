@@ -1,7 +1,8 @@
 //! Each wall, placed where it is at a time (SPEC §1 "Motion"), as a mesh of triangles:
 //!
-//! - a plane as a square twice the scene's size, centred where the scene's centre
-//!   projects onto it (ssdraw draws planes as large thin squares);
+//! - a plane as the polygon where it cuts the scene's box (the box around the finite
+//!   walls, at least a unit across); a plane clear of the box as a square twice the
+//!   scene's size;
 //! - a triangle and a rectangle as themselves;
 //! - a disk as a ring of `segments` quads between its hole and its rim (a fan without
 //!   a hole);
@@ -64,7 +65,6 @@ pub struct WallMesh {
 /// Every wall of `scene` at time `t`, with `segments` segments around round shapes.
 pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
     let (lo, hi) = walls_sim::setup::bounds(scene);
-    let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
     let segments = segments.max(3);
     scene
@@ -81,7 +81,7 @@ pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
                 rgb: palette::rgb(color),
                 opacity: (1.0 - wall.number(Keyword::Transparency)).clamp(0.0, 1.0),
                 origin,
-                mesh: tessellate(wall, origin, &centre, size, segments),
+                mesh: tessellate(wall, origin, &(lo, hi), size, segments),
             }
         })
         .collect()
@@ -98,18 +98,27 @@ pub(crate) fn basis(n: &Vec3) -> (Vec3, Vec3) {
     (u, n.cross(&u))
 }
 
-fn tessellate(wall: &Wall, o: Vec3, centre: &Vec3, size: f64, segments: usize) -> Mesh {
+fn tessellate(wall: &Wall, o: Vec3, bounds: &(Vec3, Vec3), size: f64, segments: usize) -> Mesh {
+    let centre = &((bounds.0 + bounds.1) / 2.0);
     let mut m = Mesh::default();
     let axis = wall.vector(Keyword::Orient);
     let (u, v) = basis(&axis);
     let number = |k| wall.number(k);
     match wall.wall_type() {
         WallType::Plane => {
-            let c = centre - axis * axis.dot(&(centre - o));
-            let h = size;
-            let corners =
-                [(-h, -h), (h, -h), (h, h), (-h, h)].map(|(a, b)| m.vertex(c + u * a + v * b));
-            m.quad(corners[0], corners[1], corners[2], corners[3]);
+            let polygon = clipped_plane(&o, &axis, &u, &v, bounds).unwrap_or_else(|| {
+                // Clear of the scene's box: a square of twice the scene's size.
+                let c = centre - axis * axis.dot(&(centre - o));
+                let h = size;
+                [(-h, -h), (h, -h), (h, h), (-h, h)]
+                    .iter()
+                    .map(|(a, b)| c + u * *a + v * *b)
+                    .collect()
+            });
+            let ids: Vec<u32> = polygon.into_iter().map(|p| m.vertex(p)).collect();
+            for k in 1..ids.len() - 1 {
+                m.triangles.push([ids[0], ids[k], ids[k + 1]]);
+            }
         }
         WallType::Triangle => {
             let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
@@ -248,4 +257,45 @@ fn shell(
             m.quad(rows[i][k], rows[i + 1][k], rows[i + 1][n], rows[i][n]);
         }
     }
+}
+
+/// The plane through `o` with unit normal `n` cut to the box `bounds`: the convex
+/// polygon where they meet, counter-clockwise about `n` (u × v = n); `None` when the
+/// plane misses the box or only touches it.
+fn clipped_plane(
+    o: &Vec3,
+    n: &Vec3,
+    u: &Vec3,
+    v: &Vec3,
+    bounds: &(Vec3, Vec3),
+) -> Option<Vec<Vec3>> {
+    let (lo, hi) = bounds;
+    let corner = |k: usize| {
+        Vec3::new(
+            if k & 1 == 0 { lo.x } else { hi.x },
+            if k & 2 == 0 { lo.y } else { hi.y },
+            if k & 4 == 0 { lo.z } else { hi.z },
+        )
+    };
+    let mut points: Vec<Vec3> = Vec::new();
+    for a in 0..8 {
+        for bit in [1, 2, 4] {
+            let b = a | bit;
+            if b == a {
+                continue;
+            }
+            let (p, q) = (corner(a), corner(b));
+            let (hp, hq) = (n.dot(&(p - o)), n.dot(&(q - o)));
+            if (hp <= 0.0) != (hq <= 0.0) {
+                points.push(p + (q - p) * (hp / (hp - hq)));
+            }
+        }
+    }
+    if points.len() < 3 {
+        return None;
+    }
+    let c = points.iter().sum::<Vec3>() / points.len() as f64;
+    let angle = |p: &Vec3| v.dot(&(p - c)).atan2(u.dot(&(p - c)));
+    points.sort_by(|a, b| angle(a).total_cmp(&angle(b)));
+    Some(points)
 }

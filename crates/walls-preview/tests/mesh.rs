@@ -100,3 +100,32 @@ fn meshes_move_with_their_walls_and_take_ssdraw_colours() {
     assert_eq!(palette::hex(255).as_deref(), Some("#ffffff"));
     assert_eq!(palette::hex(223).as_deref(), Some("#dddddd"));
 }
+
+#[test]
+fn a_plane_is_cut_to_the_scenes_box() {
+    // A floor under a disk of radius 1 at height 0.5: the box is x, y in [−1, 1] and z in
+    // [−0.5, 1.5]; the floor is the 2 × 2 square where it cuts it.
+    let s = scene("wall type plane\nwall type disk\n  origin 0 0 0.5\n  radius 1\n");
+    let (lo, hi) = walls_sim::setup::bounds(&s);
+    let floor = &wall_meshes(&s, 0.0, 32)[0].mesh;
+    let a = area(floor);
+    assert!((a - (hi.x - lo.x) * (hi.y - lo.y)).abs() < 1e-9, "area {a}");
+    for p in &floor.positions {
+        assert!(
+            p.z.abs() < 1e-12 && p.x >= lo.x - 1e-12 && p.x <= hi.x + 1e-12,
+            "{p:?}"
+        );
+    }
+    // A tilted plane through the box is cut to a polygon inside it, on the plane.
+    let s = scene("wall type plane\n  orient 1 1 1\nwall type disk\n  radius 1\n");
+    let (lo, hi) = walls_sim::setup::bounds(&s);
+    let tilted = &wall_meshes(&s, 0.0, 32)[0].mesh;
+    assert!(tilted.positions.len() >= 3 && !tilted.triangles.is_empty());
+    for p in &tilted.positions {
+        assert!((p.x + p.y + p.z).abs() < 1e-9, "{p:?} off the plane");
+        assert!(
+            (0..3).all(|k| p[k] >= lo[k] - 1e-9 && p[k] <= hi[k] + 1e-9),
+            "{p:?} outside"
+        );
+    }
+}
