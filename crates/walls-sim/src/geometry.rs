@@ -90,7 +90,14 @@ pub enum Shape {
 impl Shape {
     /// The shape of `wall` with its origin moved to `origin` (its position at some time).
     pub fn of(wall: &Wall, origin: Vec3) -> Shape {
-        let axis = wall.vector(Keyword::Orient);
+        Shape::turned(wall, origin, &nalgebra::Rotation3::identity())
+    }
+
+    /// The shape of `wall` with its origin at `origin` and its directions (orient,
+    /// vertex1, vertex2) turned by `turn`: a reactive wall, which its assembly has
+    /// rotated since the start.
+    pub fn turned(wall: &Wall, origin: Vec3, turn: &nalgebra::Rotation3<f64>) -> Shape {
+        let axis = turn * wall.vector(Keyword::Orient);
         let number = |k| wall.number(k);
         match wall.wall_type() {
             WallType::Plane => Shape::Plane {
@@ -99,13 +106,13 @@ impl Shape {
             },
             WallType::Triangle => Shape::Triangle {
                 origin,
-                e1: wall.vector(Keyword::Vertex1),
-                e2: wall.vector(Keyword::Vertex2),
+                e1: turn * wall.vector(Keyword::Vertex1),
+                e2: turn * wall.vector(Keyword::Vertex2),
             },
             WallType::Rectangle => Shape::Rectangle {
                 origin,
-                e1: wall.vector(Keyword::Vertex1),
-                e2: wall.vector(Keyword::Vertex2),
+                e1: turn * wall.vector(Keyword::Vertex1),
+                e2: turn * wall.vector(Keyword::Vertex2),
             },
             WallType::Disk => Shape::Disk {
                 center: origin,

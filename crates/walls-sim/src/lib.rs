@@ -14,6 +14,7 @@ pub mod input;
 pub mod kinematics;
 pub mod plan;
 pub mod poly;
+pub mod reactive;
 pub mod run;
 pub mod setup;
 pub mod ssdem;

@@ -58,6 +58,8 @@ pub struct Plan {
     pub particle_contacts: bool,
     /// A bounding-volume hierarchy over the walls ([`crate::wall_index`]).
     pub wall_index: bool,
+    /// Reactive walls: assemblies that move in response to particles (SSDEM).
+    pub reactive: bool,
 }
 
 impl Plan {
@@ -72,6 +74,7 @@ impl Plan {
             edges: true,
             particle_contacts: true,
             wall_index: true,
+            reactive: true,
         }
     }
 
@@ -215,28 +218,29 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
             "a single particle"
         },
     );
+    let heavy = which(&|w| {
+        w.number(Keyword::Mass) > 0.0
+            && w.number(Keyword::Mass).is_finite()
+            && w.integer(Keyword::Assembly) >= 0
+    });
     let bounded = walls
         .iter()
         .filter(|w| !matches!(w.wall_type(), WallType::Plane | WallType::CylinderInfinite))
         .count();
     let wall_index = part(
         "wall index (bounding-volume hierarchy)",
-        bounded > WALL_INDEX_FROM,
+        bounded > WALL_INDEX_FROM && heavy.is_empty(),
         format!("{bounded} bounded walls: a hierarchy finds each particle's few"),
         &format!("{bounded} bounded walls: looking at each is as cheap"),
     );
-    let heavy = which(&|w| w.number(Keyword::Mass) > 0.0 && w.number(Keyword::Mass).is_finite());
-    part(
+    let reactive = part(
         "reactive walls",
-        false,
-        String::new(),
-        &if heavy.is_empty() {
-            "no wall has a finite mass".to_string()
+        soft && !heavy.is_empty(),
+        format!("walls {} have a mass and an assembly", list(&heavy)),
+        if heavy.is_empty() {
+            "no wall has both a mass and an assembly"
         } else {
-            format!(
-                "walls {} have a finite mass, but the evaluator moves walls only as given (reactive walls are not built yet)",
-                list(&heavy)
-            )
+            "HSDEM: pkdgrav's reactive walls are SSDEM only; they stay where they are"
         },
     );
     let sticky = which(&|w| w.number(Keyword::Epsn) == 0.0);
@@ -269,6 +273,7 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
         edges,
         particle_contacts,
         wall_index,
+        reactive,
     };
     (plan, out)
 }

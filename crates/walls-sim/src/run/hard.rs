@@ -559,6 +559,7 @@ pub(super) fn run(
         steps,
         particles: states,
         events,
+        assemblies: Vec::new(),
         pair_contacts,
         energy: (initial, last),
         warnings,

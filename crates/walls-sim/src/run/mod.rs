@@ -203,6 +203,8 @@ pub struct Outcome {
     pub particles: Vec<State>,
     /// What happened at walls, in order.
     pub events: Vec<Event>,
+    /// The reactive walls' assemblies at the end (SSDEM).
+    pub assemblies: Vec<crate::reactive::Assembly>,
     /// Particle–particle contacts that began (SSDEM) or collisions (HSDEM).
     pub pair_contacts: u64,
     /// Kinetic (with spin) plus gravitational energy at the start and the end.

@@ -15,6 +15,7 @@ use super::{
 };
 use crate::grid::CellGrid;
 use crate::plan::Plan;
+use crate::rigid::RotationIntegrator;
 use crate::ssdem::{
     Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
     resistance,
@@ -73,6 +74,10 @@ fn inertia(m: f64, r: f64) -> f64 {
 /// The walls as they stand in a step, with their materials.
 struct Walls<'a> {
     now: &'a [WallNow],
+    /// Each wall's reactive assembly, if any.
+    assembly_of: &'a [Option<usize>],
+    /// Each assembly's centre of gravity now.
+    cogs: &'a [Vec3],
     /// Each wall's origin now, for the wall index.
     origins: &'a [Vec3],
     /// The wall index, when the plan uses one.
@@ -108,6 +113,9 @@ struct ParticleStep {
     touching: usize,
     /// Radii moved in the step, when more than one: it may skip through a wall.
     too_fast: Option<f64>,
+    /// The reactions on reactive walls' assemblies: (assembly, force, torque about its
+    /// centre of gravity).
+    reactions: Vec<(usize, Vec3, Vec3)>,
 }
 
 /// One particle's contacts with the walls at time `t`, added to its `load` (which holds
@@ -225,6 +233,11 @@ fn wall_step(
         };
         load.force += c.force;
         load.torque += c.torque;
+        if let Some(a) = walls.assembly_of[w] {
+            // The reaction, at the contact point.
+            let cog = walls.cogs[a];
+            out.reactions.push((a, -c.force, (near.point - cog).cross(&-c.force)));
+        }
         if walls.plan.rolling || walls.plan.twisting {
             let rolling = Rolling {
                 spin: s.particle.spin - wall.spin,
@@ -296,6 +309,18 @@ pub(super) fn run(
     let mut origins = Origins::new(scene, settings.stepping);
     // Placed once when no wall moves (the plan), else every step.
     let mut now = origins.walls(scene, 0.0);
+    // Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
+    let mut assemblies = if plan.reactive {
+        crate::reactive::assemblies(scene)
+    } else {
+        Vec::new()
+    };
+    let mut assembly_of = vec![None; scene.walls.len()];
+    for (a, assembly) in assemblies.iter().enumerate() {
+        for &w in &assembly.walls {
+            assembly_of[w] = Some(a);
+        }
+    }
     let index = plan.wall_index.then(|| WallIndex::new(scene));
     let damping: Vec<f64> = materials
         .iter()
@@ -326,8 +351,27 @@ pub(super) fn run(
         if plan.moving_walls {
             now = origins.walls(scene, t);
         }
+        for a in assemblies.iter_mut() {
+            // Half a kick with the last step's force, a drift, and the rotation over the
+            // step under the last step's torque.
+            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
+            a.cog += a.velocity * dt;
+            let (inertia, torque) = (a.inertia, a.torque);
+            crate::rigid::step(&mut a.rotation, &inertia, &torque, dt, RotationIntegrator::AdaptiveRk);
+            for (k, &w) in a.walls.iter().enumerate() {
+                now[w] = WallNow {
+                    origin: a.cog,
+                    shape: a.shape(&scene.walls[w], k),
+                    velocity: a.velocity,
+                    spin: a.spin(),
+                };
+            }
+        }
+        let cogs: Vec<Vec3> = assemblies.iter().map(|a| a.cog).collect();
         let walls = Walls {
             now: &now,
+            assembly_of: &assembly_of,
+            cogs: &cogs,
             origins: &origins.now,
             index: index.as_ref(),
             plan,
@@ -420,6 +464,19 @@ pub(super) fn run(
                 ));
             }
         }
+        for a in assemblies.iter_mut() {
+            a.force = Vec3::zeros();
+            a.torque = Vec3::zeros();
+        }
+        for report in &reports {
+            for (a, f, tq) in &report.reactions {
+                assemblies[*a].force += f;
+                assemblies[*a].torque += tq;
+            }
+        }
+        for a in assemblies.iter_mut() {
+            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
+        }
         if stop {
             break 'run;
         }
@@ -431,6 +488,7 @@ pub(super) fn run(
         steps,
         particles: states,
         events,
+        assemblies,
         pair_contacts,
         energy: (initial, last),
         warnings,
