@@ -3,8 +3,9 @@
 //! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
 //! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
 //! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
-//! ([`run`]), with their trajectories ([`trajectory`]); and advice on k_n and the
-//! timestep for the real pkdgrav run ([`advise`]).
+//! ([`run`]), with their trajectories ([`trajectory`]); the rotation of reactive
+//! assemblies ([`rigid`]); and advice on k_n and the timestep for the real pkdgrav run
+//! ([`advise`]).
 
 pub mod advise;
 pub mod geometry;
@@ -15,6 +16,7 @@ pub mod kinematics;
 pub mod plan;
 pub mod poly;
 pub mod reactive;
+pub mod rigid;
 pub mod run;
 pub mod setup;
 pub mod ssdem;

@@ -71,6 +71,7 @@ fn each_part_is_needed_for_its_reason() {
             edges: false,
             particle_contacts: true,
             wall_index: false,
+            reactive: false,
         }
     );
     let reason = |name: &str| list.iter().find(|p| p.name == name).unwrap().reason.clone();
