@@ -3,8 +3,9 @@
 //! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
 //! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
 //! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
-//! ([`run`]), with their trajectories ([`trajectory`]); and advice on k_n and the
-//! timestep for the real pkdgrav run ([`advise`]).
+//! ([`run`]), with their trajectories ([`trajectory`]); pkdgrav's reactive-wall output
+//! files ([`reactive_output`]); and advice on k_n and the timestep for the real pkdgrav
+//! run ([`advise`]).
 
 pub mod advise;
 pub mod geometry;
@@ -14,6 +15,7 @@ pub mod input;
 pub mod kinematics;
 pub mod plan;
 pub mod poly;
+pub mod reactive_output;
 pub mod run;
 pub mod setup;
 pub mod ssdem;
