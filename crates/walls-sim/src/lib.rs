@@ -3,8 +3,9 @@
 //! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
 //! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
 //! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
-//! ([`run`]), with their trajectories ([`trajectory`]); the rotation of reactive
-//! assemblies ([`rigid`]); and advice on k_n and the timestep for the real pkdgrav run
+//! ([`run`]), with their trajectories ([`trajectory`]); reactive walls ([`reactive`]),
+//! the rotation of their assemblies ([`rigid`]) and pkdgrav's output files for them
+//! ([`reactive_output`]); and advice on k_n and the timestep for the real pkdgrav run
 //! ([`advise`]).
 
 pub mod advise;
@@ -16,6 +17,7 @@ pub mod kinematics;
 pub mod plan;
 pub mod poly;
 pub mod reactive;
+pub mod reactive_output;
 pub mod rigid;
 pub mod run;
 pub mod setup;

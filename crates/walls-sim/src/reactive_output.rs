@@ -1,0 +1,250 @@
+//! The two text files pkdgrav writes for reactive walls (SPEC §3 "Reactive walls";
+//! walls document §7.4): `WALLSREACTdata.out`, one line per output step with each
+//! assembly's state, and `WALLSREACTviz.out`, one line per output step with the
+//! placement of every finite wall, for redrawing the assembly frame by frame.
+//!
+//! Both files are appended to, as pkdgrav does: a run that is continued adds lines after
+//! the old ones. Opening with `fresh` truncates them instead, which is what a new run
+//! wants (the document tells pkdgrav users to delete the old files by hand).
+//!
+//! # Line formats
+//!
+//! Fields are separated by one space; a line ends with `\n` and has no trailing space.
+//! The step and the integer fields (the orientation flag and the wall id) are printed
+//! as plain decimal integers; every real number is printed as C's `printf("%.16e")`
+//! does ([`c_exp`]), so the files match pkdgrav's byte for byte and every value reads
+//! back to the same `f64`.
+//!
+//! * `WALLSREACTdata.out`: `step`, then per assembly, in order, `cog(3) velocity(3)
+//!   rot-vec(3) pxj(3) pyj(3) pzj(3)`, where `rot-vec` is the angular velocity in the
+//!   body (principal) frame and `pxj`, `pyj`, `pzj` are the principal axes in the space
+//!   frame: 1 + 18·(assemblies) fields (19 for one assembly, as the document says).
+//! * `WALLSREACTviz.out`: `step`, then per finite wall (triangle, rectangle,
+//!   cylinder-finite, disk, shell), in walls-file order, `0 id origin(3) vertex1(3)
+//!   vertex2(3)` for triangles and rectangles or `1 id origin(3) orient(3)` for the
+//!   others: 1 + Σ(11 per triangle or rectangle, 8 per other wall) fields. `id` is the
+//!   wall's index in the walls file, counting from 0. (The document's "12 numbers" and
+//!   "9 numbers" per wall count one more than its own field list gives; its example line
+//!   and SPEC agree with 11 and 8.)
+
+use std::fmt::Write as _;
+use std::fs::{File, OpenOptions};
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
+
+use nalgebra::Vector3;
+
+type Vec3 = Vector3<f64>;
+
+/// The name of the per-assembly data file, as pkdgrav spells it.
+pub const DATA_FILE: &str = "WALLSREACTdata.out";
+
+/// The name of the wall-placement file, as pkdgrav spells it.
+pub const VIZ_FILE: &str = "WALLSREACTviz.out";
+
+/// One assembly's state at an output step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AssemblyState {
+    /// Centre of mass (space frame).
+    pub cog: Vec3,
+    /// Velocity of the centre of mass (space frame).
+    pub velocity: Vec3,
+    /// Angular velocity in the body (principal) frame.
+    pub rot_vec: Vec3,
+    /// The principal axes `pxj`, `pyj`, `pzj`, as unit vectors in the space frame.
+    pub axes: [Vec3; 3],
+}
+
+/// One finite wall's placement at an output step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum VizWall {
+    /// A triangle or rectangle (orientation type 0): origin and its two vertices.
+    Polygon {
+        /// The wall's index in the walls file, counting from 0.
+        id: usize,
+        /// The wall's origin (space frame).
+        origin: Vec3,
+        /// `vertex1`, as the walls file defines it (relative to the origin).
+        vertex1: Vec3,
+        /// `vertex2`, as the walls file defines it (relative to the origin).
+        vertex2: Vec3,
+    },
+    /// A finite cylinder, disk or shell (orientation type 1): origin and axis.
+    Round {
+        /// The wall's index in the walls file, counting from 0.
+        id: usize,
+        /// The wall's origin (space frame).
+        origin: Vec3,
+        /// The wall's orient vector.
+        orient: Vec3,
+    },
+}
+
+impl VizWall {
+    /// The wall's index in the walls file.
+    pub fn id(&self) -> usize {
+        match *self {
+            VizWall::Polygon { id, .. } | VizWall::Round { id, .. } => id,
+        }
+    }
+
+    /// The orientation-type flag written before the id: 0 for polygons, 1 otherwise.
+    pub fn kind(&self) -> u8 {
+        match self {
+            VizWall::Polygon { .. } => 0,
+            VizWall::Round { .. } => 1,
+        }
+    }
+
+    /// How many fields this wall adds to a viz line (11 or 8).
+    pub fn field_count(&self) -> usize {
+        match self {
+            VizWall::Polygon { .. } => 11,
+            VizWall::Round { .. } => 8,
+        }
+    }
+}
+
+/// C's `printf("%.16e")` of `x`, exactly: 17 significant digits, correctly rounded
+/// (exact ties to even, as glibc does in the default rounding mode), an exponent with
+/// its sign and at least two digits (`1.0000000000000000e+00`, `4.9406564584124654e-324`),
+/// `-0.0000000000000000e+00` for negative zero, and `inf`, `-inf`, `nan`, `-nan` as
+/// glibc prints them (the sign of a NaN is its sign bit).
+pub fn c_exp(x: f64) -> String {
+    let mut out = String::with_capacity(24);
+    push_c_exp(&mut out, x);
+    out
+}
+
+/// Appends [`c_exp`]`(x)` to `out`.
+fn push_c_exp(out: &mut String, x: f64) {
+    if !x.is_finite() {
+        if x.is_sign_negative() {
+            out.push('-');
+        }
+        out.push_str(if x.is_nan() { "nan" } else { "inf" });
+        return;
+    }
+    // Rust's `{:.16e}` gives the same correctly rounded digits (exact decimal expansion,
+    // ties to even; checked against glibc in tests/reactive_output.rs) but writes the
+    // exponent bare (`e0`, `e-5`): rewrite it as C does.
+    let rust = format!("{x:.16e}");
+    let (mantissa, exponent) = rust
+        .split_once('e')
+        .expect("Rust's {:e} formatting always has an exponent");
+    let exponent: i32 = exponent
+        .parse()
+        .expect("Rust's {:e} exponent is an integer");
+    out.push_str(mantissa);
+    out.push('e');
+    out.push(if exponent < 0 { '-' } else { '+' });
+    // Writing to a String cannot fail.
+    let _ = write!(out, "{:02}", exponent.unsigned_abs());
+}
+
+/// Appends a space and the three components of `v`.
+fn push_vec(out: &mut String, v: &Vec3) {
+    for &c in v.iter() {
+        out.push(' ');
+        push_c_exp(out, c);
+    }
+}
+
+/// The `WALLSREACTdata.out` line for one step, with its `\n`.
+pub fn data_line(step: u64, assemblies: &[AssemblyState]) -> String {
+    let mut out = String::with_capacity(20 + assemblies.len() * 18 * 25);
+    out.push_str(&step.to_string());
+    for a in assemblies {
+        push_vec(&mut out, &a.cog);
+        push_vec(&mut out, &a.velocity);
+        push_vec(&mut out, &a.rot_vec);
+        for axis in &a.axes {
+            push_vec(&mut out, axis);
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// The `WALLSREACTviz.out` line for one step, with its `\n`.
+pub fn viz_line(step: u64, walls: &[VizWall]) -> String {
+    let mut out = String::with_capacity(20 + walls.len() * 11 * 25);
+    out.push_str(&step.to_string());
+    for wall in walls {
+        // Writing to a String cannot fail.
+        let _ = write!(out, " {} {}", wall.kind(), wall.id());
+        match wall {
+            VizWall::Polygon {
+                origin,
+                vertex1,
+                vertex2,
+                ..
+            } => {
+                push_vec(&mut out, origin);
+                push_vec(&mut out, vertex1);
+                push_vec(&mut out, vertex2);
+            }
+            VizWall::Round { origin, orient, .. } => {
+                push_vec(&mut out, origin);
+                push_vec(&mut out, orient);
+            }
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// The two reactive-wall output files of a run, open for writing.
+///
+/// Each [`record`](Self::record) writes one line to each file and flushes both, so the
+/// files always end with a whole line for every step recorded so far.
+#[derive(Debug)]
+pub struct ReactiveOutput {
+    data: BufWriter<File>,
+    viz: BufWriter<File>,
+}
+
+impl ReactiveOutput {
+    /// Opens (creating if needed) `dir/WALLSREACTdata.out` and `dir/WALLSREACTviz.out`:
+    /// for appending, as pkdgrav does, or, when `fresh`, truncated to empty first.
+    pub fn open(dir: &Path, fresh: bool) -> io::Result<Self> {
+        let open = |name: &str| -> io::Result<BufWriter<File>> {
+            let mut options = OpenOptions::new();
+            options.create(true);
+            if fresh {
+                options.write(true).truncate(true);
+            } else {
+                options.append(true);
+            }
+            Ok(BufWriter::new(options.open(dir.join(name))?))
+        };
+        Ok(Self {
+            data: open(DATA_FILE)?,
+            viz: open(VIZ_FILE)?,
+        })
+    }
+
+    /// Appends the lines of output step `step`: the assemblies' states to the data file
+    /// and the finite walls' placements to the viz file.
+    pub fn record(
+        &mut self,
+        step: u64,
+        assemblies: &[AssemblyState],
+        walls: &[VizWall],
+    ) -> io::Result<()> {
+        self.data
+            .write_all(data_line(step, assemblies).as_bytes())?;
+        self.viz.write_all(viz_line(step, walls).as_bytes())?;
+        self.data.flush()?;
+        self.viz.flush()
+    }
+
+    /// Flushes and closes both files, reporting any error (dropping the value instead
+    /// would lose it).
+    pub fn finish(self) -> io::Result<()> {
+        for writer in [self.data, self.viz] {
+            writer.into_inner().map_err(|e| e.into_error())?;
+        }
+        Ok(())
+    }
+}
