@@ -106,12 +106,7 @@ fn main() -> std::io::Result<()> {
         ("ω₀=(0.3,0.2,1)", Vec3::new(0.3, 0.2, 1.0)),
         ("flip ω₀=(0.1,2,0.1)", Vec3::new(0.1, 2.0, 0.1)),
     ];
-    let methods = [
-        Method::Rk(1e-6),
-        Method::Rk(1e-9),
-        Method::Rk(1e-12),
-        Method::Lie,
-    ];
+    let methods = [Method::Rk(1e-6), Method::Rk(1e-12), Method::Lie];
     let per_period = [25, 50, 100, 200, 400, 800, 1600, 3200, 6400];
     let mut errors = Vec::new();
     let mut invariants = Vec::new();
