@@ -12,8 +12,10 @@
 //!
 //! Each particle contact pushes the assembly by the reaction to the contact force, at
 //! the contact point: a force and a torque about the centre of gravity. Translation is
-//! integrated with the particles' leapfrog (with uniform gravity), rotation by Euler's
-//! equations in the principal frame ([`crate::rigid`]). As in pkdgrav, the contact
+//! integrated with the particles' leapfrog (with uniform gravity); rotation the same way,
+//! half kicks of the angular momentum around the free rotation over the step, which
+//! Euler's equations give in the principal frame ([`crate::rigid`], pkdgrav's adaptive
+//! Runge–Kutta). As in pkdgrav, the contact
 //! itself treats the wall as infinitely massive, and reactive walls neither push nor
 //! are pushed by other walls.
 
@@ -70,7 +72,8 @@ pub fn assemblies(scene: &Scene) -> Vec<Assembly> {
             }
             None => {
                 let cog = wall.vector(Keyword::Cog);
-                let axes = [Keyword::PxjVec, Keyword::PyjVec, Keyword::PzjVec].map(|k| wall.vector(k));
+                let axes =
+                    [Keyword::PxjVec, Keyword::PyjVec, Keyword::PzjVec].map(|k| wall.vector(k));
                 let inertia = Vec3::new(
                     wall.vector(Keyword::IxjVec).x,
                     wall.vector(Keyword::IyjVec).y,
@@ -122,6 +125,16 @@ impl Assembly {
     pub fn shape(&self, wall: &Wall, k: usize) -> Shape {
         let turn = self.turn();
         Shape::turned(wall, self.cog + turn * self.offsets[k], &turn)
+    }
+
+    /// Changes the angular velocity by the torque over `dt`: each principal component
+    /// of the angular momentum by the torque's component along that axis.
+    pub fn kick(&mut self, dt: f64) {
+        let (axes, i) = (self.rotation.axes, self.inertia);
+        let w = &mut self.rotation.omega;
+        w.x += self.torque.dot(&axes[0]) * dt / i.x;
+        w.y += self.torque.dot(&axes[1]) * dt / i.y;
+        w.z += self.torque.dot(&axes[2]) * dt / i.z;
     }
 
     /// The velocity of the assembly's material at `q`.

@@ -50,14 +50,25 @@ fn the_documents_tetrahedron_spins_torque_free_at_its_rot_vec() {
         wall type triangle\n origin 1 1 1\n vertex1 -2 0 -2\n vertex2 -2 -2 0\n\
         wall type triangle\n origin 1 -1 -1\n vertex1 -2 2 0\n vertex2 -2 0 2\n";
     let s = scene(tetra);
-    let out = run(&s, vec![particle([50.0, 0.0, 0.0], [0.0; 3])], &settings(1.0));
+    let out = run(
+        &s,
+        vec![particle([50.0, 0.0, 0.0], [0.0; 3])],
+        &settings(1.0),
+    );
     let a = &out.assemblies[0];
     assert_eq!(a.walls, vec![0, 1, 2, 3]);
     assert!((a.mass - 4.0).abs() < 1e-12);
-    assert!((a.rotation.omega - Vec3::z()).norm() < 1e-9, "{:?}", a.rotation.omega);
+    assert!(
+        (a.rotation.omega - Vec3::z()).norm() < 1e-9,
+        "{:?}",
+        a.rotation.omega
+    );
     let turned = Rotation3::from_axis_angle(&Vector3::z_axis(), out.t);
     let origin = a.origin(0);
-    assert!((origin - turned * Vec3::new(1.0, 1.0, 1.0)).norm() < 1e-6, "{origin:?}");
+    assert!(
+        (origin - turned * Vec3::new(1.0, 1.0, 1.0)).norm() < 1e-6,
+        "{origin:?}"
+    );
     assert!(a.cog.norm() < 1e-12 && a.velocity.norm() < 1e-12);
 }
 
@@ -66,10 +77,17 @@ fn a_particle_hitting_a_free_plate_keeps_the_total_momentum() {
     // A plate of mass 10 hit from above at speed 1: the particle rebounds, the plate moves
     // down, and the total momentum stays what it was to 1e−12.
     let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 10\n assembly 0\n cog 0 0 0\n";
-    let out = run(&scene(plate), vec![particle([0.0, 0.0, 0.15], [0.0, 0.0, -1.0])], &settings(0.2));
+    let out = run(
+        &scene(plate),
+        vec![particle([0.0, 0.0, 0.15], [0.0, 0.0, -1.0])],
+        &settings(0.2),
+    );
     let a = &out.assemblies[0];
     let total = out.particles[0].particle.vel + a.velocity * a.mass;
-    assert!((total - Vec3::new(0.0, 0.0, -1.0)).norm() < 1e-12, "{total:?}");
+    assert!(
+        (total - Vec3::new(0.0, 0.0, -1.0)).norm() < 1e-12,
+        "{total:?}"
+    );
     assert!(out.particles[0].particle.vel.z > 0.0 && a.velocity.z < 0.0);
     // Walls follow their assembly: the plate is where its centre of gravity went.
     assert!((a.origin(0) - (a.cog + Vec3::new(-1.0, -1.0, 0.0))).norm() < 1e-12);
@@ -82,14 +100,44 @@ fn a_lid_hit_off_its_centre_of_gravity_turns_about_it_like_a_hinge() {
     // J/M and it turns about y at 0.9·J/I, J being the impulse the particle gave.
     let lid = "wall type rectangle\n origin 0 -0.5 0\n vertex1 1 0 0\n vertex2 0 1 0\n mass 1\n assembly 0\n cog 0 0 0\n\
         ixj-vec 0.0833333333333 0 0\n iyj-vec 0 0.333333333333 0\n izj-vec 0 0 0.416666666667\n";
-    let out = run(&scene(lid), vec![particle([0.9, 0.0, 0.15], [0.0, 0.0, -1.0])], &settings(0.1));
+    let out = run(
+        &scene(lid),
+        vec![particle([0.9, 0.0, 0.15], [0.0, 0.0, -1.0])],
+        &settings(0.1),
+    );
     let p = &out.particles[0].particle;
     // The impulse the particle took (upwards); the lid took as much downwards.
     let j = 1.0 * (p.vel.z + 1.0);
     let a = &out.assemblies[0];
-    assert!((a.velocity.z + j).abs() < 1e-9 * j, "{} vs {}", a.velocity.z, -j);
+    assert!(
+        (a.velocity.z + j).abs() < 1e-9 * j,
+        "{} vs {}",
+        a.velocity.z,
+        -j
+    );
     let omega = a.spin();
     let expected = 0.9 * j / 0.333333333333;
-    assert!((omega.y / expected - 1.0).abs() < 0.02, "ω_y {} vs {expected}", omega.y);
+    assert!(
+        (omega.y / expected - 1.0).abs() < 0.02,
+        "ω_y {} vs {expected}",
+        omega.y
+    );
     assert!(omega.x.abs() < 1e-9 * expected && omega.z.abs() < 1e-9 * expected);
+}
+
+#[test]
+fn an_elastic_strike_keeps_the_energy_of_particle_and_plate() {
+    // Off-centre, elastic: the particle's energy goes into the plate's translation and
+    // rotation, and the total is kept to the spring's integration error.
+    let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 10\n assembly 0\n cog 0 0 0\n epsn 1\n";
+    let mut s = settings(0.2);
+    s.material.eps_n = 1.0;
+    let out = run(
+        &scene(plate),
+        vec![particle([0.5, 0.0, 0.15], [0.0, 0.0, -1.0])],
+        &s,
+    );
+    let (before, after) = out.energy;
+    assert!((after / before - 1.0).abs() < 1e-3, "{before} → {after}");
+    assert!(out.assemblies[0].spin().y.abs() > 0.01, "it turns");
 }

@@ -124,7 +124,7 @@ fn main() -> std::io::Result<()> {
             &plane(),
             vec![ball(RADIUS, v)],
             &settings(Method::Soft, k_n, dt, 3.0 * t_c),
-            &mut |_, _, states| deepest = deepest.max(RADIUS - states[0].particle.pos.z),
+            &mut |_, _, states, _| deepest = deepest.max(RADIUS - states[0].particle.pos.z),
         );
         let stop = out.warnings.iter().any(|w| w.contains("the run stops"));
         println!("{v:6.3} {:14.4} {stop}", deepest / RADIUS);

@@ -130,6 +130,10 @@ struct RunArgs {
     /// `walls-sim plan`).
     #[arg(long)]
     all_parts: bool,
+    /// Empty pkdgrav's WALLSREACTdata.out and WALLSREACTviz.out in --out first, rather
+    /// than appending to them as pkdgrav does.
+    #[arg(long)]
+    fresh: bool,
     /// Steps between trajectory rows.
     #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..))]
     every: u64,
@@ -911,6 +915,54 @@ fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
     Ok(out)
 }
 
+/// One output step of pkdgrav's reactive-wall files: each assembly's state, and every
+/// finite wall of an assembly where it now is.
+fn record_reactive(
+    out: &mut walls_sim::reactive_output::ReactiveOutput,
+    step: u64,
+    scene: &walls_model::Scene,
+    assemblies: &[walls_sim::reactive::Assembly],
+) -> std::io::Result<()> {
+    use walls_keywords::{Keyword, WallType};
+    use walls_sim::reactive_output::{AssemblyState, VizWall};
+    let states: Vec<AssemblyState> = assemblies
+        .iter()
+        .map(|a| AssemblyState {
+            cog: a.cog,
+            velocity: a.velocity,
+            rot_vec: a.rotation.omega,
+            axes: a.rotation.axes,
+        })
+        .collect();
+    let mut walls: Vec<(usize, VizWall)> = Vec::new();
+    for a in assemblies {
+        let turn = a.turn();
+        for (k, &w) in a.walls.iter().enumerate() {
+            let wall = &scene.walls[w];
+            let origin = a.origin(k);
+            walls.push((
+                w,
+                match wall.wall_type() {
+                    WallType::Triangle | WallType::Rectangle => VizWall::Polygon {
+                        id: w,
+                        origin,
+                        vertex1: turn * wall.vector(Keyword::Vertex1),
+                        vertex2: turn * wall.vector(Keyword::Vertex2),
+                    },
+                    _ => VizWall::Round {
+                        id: w,
+                        origin,
+                        orient: turn * wall.vector(Keyword::Orient),
+                    },
+                },
+            ));
+        }
+    }
+    walls.sort_by_key(|(w, _)| *w);
+    let walls: Vec<VizWall> = walls.into_iter().map(|(_, v)| v).collect();
+    out.record(step, &states, &walls)
+}
+
 /// What a run needs, read and checked.
 struct Prepared {
     checked: walls_cli::Checked,
@@ -942,13 +994,30 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
         written = out.record(0, 0.0, &start, scene);
     }
+    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
+    // appended to as pkdgrav does, unless --fresh.
+    let reactive = settings.method == walls_sim::run::Method::Soft
+        && !walls_sim::reactive::assemblies(scene).is_empty();
+    let mut reactive_files = match (&args.out, reactive) {
+        (Some(dir), true) => Some(
+            walls_sim::reactive_output::ReactiveOutput::open(dir, args.fresh)
+                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
+        ),
+        _ => None,
+    };
     let outcome = run_observed(
         scene,
         particles.clone(),
         &settings,
-        &mut |step, t, states| {
+        &mut |step, t, states, assemblies| {
             if let Some(bar) = &progress {
                 bar.set_position(step);
+            }
+            if let Some(out) = &mut reactive_files
+                && step % args.every == 0
+                && written.is_ok()
+            {
+                written = record_reactive(out, step, scene, assemblies);
             }
             if let Some(out) = &mut trajectory
                 && step % args.every == 0
@@ -962,6 +1031,9 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
         bar.finish_and_clear();
     }
     if let Some(out) = trajectory {
+        written = written.and_then(|()| out.finish());
+    }
+    if let Some(out) = reactive_files {
         written = written.and_then(|()| out.finish());
     }
     if let (Err(e), Some(dir)) = (written, &args.out) {

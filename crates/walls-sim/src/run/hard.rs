@@ -21,8 +21,8 @@
 //! the rest of the step, and the run says so.
 
 use super::{
-    Event, EventKind, Materials, Origins, Outcome, PARALLEL_FROM, Settings, State, WallNow, carry,
-    energy, turned,
+    Event, EventKind, Materials, Observer, Origins, Outcome, PARALLEL_FROM, Settings, State,
+    WallNow, carry, energy, turned,
 };
 use crate::geometry::Feature;
 use crate::grid::CellGrid;
@@ -443,7 +443,7 @@ pub(super) fn run(
     mut states: Vec<State>,
     settings: &Settings,
     plan: &Plan,
-    observe: &mut dyn FnMut(u64, f64, &[State]),
+    observe: Observer,
 ) -> Outcome {
     let g = settings.gravity;
     let dt = settings.dt;
@@ -551,7 +551,7 @@ pub(super) fn run(
                 carry(s, &WallNow::new(&scene.walls[w], origins.now[w], t), dt);
             }
         }
-        observe(steps, t, &states);
+        observe(steps, t, &states, &[]);
     }
     let last = energy(&states, &g);
     Outcome {

@@ -213,6 +213,10 @@ pub struct Outcome {
     pub warnings: Vec<String>,
 }
 
+/// What watches a run: called after every step with the step number, the time, the
+/// particles and the reactive walls' assemblies.
+pub type Observer<'a> = &'a mut dyn FnMut(u64, f64, &[State], &[crate::reactive::Assembly]);
+
 /// Runs `particles` against the walls of `scene` (and each other), calling `observe`
 /// after every step with the step number, the time and the particles.
 ///
@@ -224,7 +228,7 @@ pub fn run_observed(
     scene: &Scene,
     particles: Vec<Particle>,
     settings: &Settings,
-    observe: &mut dyn FnMut(u64, f64, &[State]),
+    observe: Observer,
 ) -> Outcome {
     let dt = settings.dt;
     assert!(dt > 0.0 && dt.is_finite(), "timestep {dt}");
@@ -248,7 +252,7 @@ pub fn run_observed(
 
 /// Runs `particles` against the walls of `scene` ([`run_observed`] without watching).
 pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outcome {
-    run_observed(scene, particles, settings, &mut |_, _, _| {})
+    run_observed(scene, particles, settings, &mut |_, _, _, _| {})
 }
 
 /// The materials of a run: each wall's, with the particles' values where the wall says

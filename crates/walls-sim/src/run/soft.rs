@@ -10,8 +10,8 @@
 //! ([`crate::grid`]) rebuilt every step.
 
 use super::{
-    Event, EventKind, Integrator, Materials, Origins, Outcome, OverlapWarnings, PARALLEL_FROM,
-    Settings, State, WallNow, carry, energy,
+    Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
+    PARALLEL_FROM, Settings, State, WallNow, carry, energy,
 };
 use crate::grid::CellGrid;
 use crate::plan::Plan;
@@ -236,7 +236,8 @@ fn wall_step(
         if let Some(a) = walls.assembly_of[w] {
             // The reaction, at the contact point.
             let cog = walls.cogs[a];
-            out.reactions.push((a, -c.force, (near.point - cog).cross(&-c.force)));
+            out.reactions
+                .push((a, -c.force, (near.point - cog).cross(&-c.force)));
         }
         if walls.plan.rolling || walls.plan.twisting {
             let rolling = Rolling {
@@ -270,7 +271,7 @@ pub(super) fn run(
     mut states: Vec<State>,
     settings: &Settings,
     plan: &Plan,
-    observe: &mut dyn FnMut(u64, f64, &[State]),
+    observe: Observer,
 ) -> Outcome {
     let g = settings.gravity;
     let dt = settings.dt;
@@ -278,7 +279,12 @@ pub(super) fn run(
         walls: materials,
         between,
     } = Materials::new(scene, &settings.material);
-    let initial = energy(&states, &g);
+    let initial = energy(&states, &g)
+        + if plan.reactive {
+            assembly_energy(&crate::reactive::assemblies(scene), &g)
+        } else {
+            0.0
+        };
     let n = states.len();
     let mut loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
     let mut pairs_open = OpenContacts::new(n);
@@ -354,10 +360,20 @@ pub(super) fn run(
         for a in assemblies.iter_mut() {
             // Half a kick with the last step's force, a drift, and the rotation over the
             // step under the last step's torque.
+            // Half kicks of momentum and angular momentum with the last step's force and
+            // torque, a drift, and the free rotation over the step (kick-drift-kick for
+            // the assembly as for the particles).
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
             a.cog += a.velocity * dt;
-            let (inertia, torque) = (a.inertia, a.torque);
-            crate::rigid::step(&mut a.rotation, &inertia, &torque, dt, RotationIntegrator::AdaptiveRk);
+            a.kick(dt / 2.0);
+            let inertia = a.inertia;
+            crate::rigid::step(
+                &mut a.rotation,
+                &inertia,
+                &Vec3::zeros(),
+                dt,
+                RotationIntegrator::AdaptiveRk,
+            );
             for (k, &w) in a.walls.iter().enumerate() {
                 now[w] = WallNow {
                     origin: a.cog,
@@ -476,13 +492,14 @@ pub(super) fn run(
         }
         for a in assemblies.iter_mut() {
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
+            a.kick(dt / 2.0);
         }
         if stop {
             break 'run;
         }
-        observe(steps, t, &states);
+        observe(steps, t, &states, &assemblies);
     }
-    let last = energy(&states, &g);
+    let last = energy(&states, &g) + assembly_energy(&assemblies, &g);
     Outcome {
         t,
         steps,
@@ -651,4 +668,17 @@ fn pair_forces(
 fn lens_radius(a: f64, b: f64, d: f64) -> f64 {
     let h = (d * d + a * a - b * b) / (2.0 * d);
     (a * a - h * h).max(0.0).sqrt()
+}
+
+/// The reactive assemblies' kinetic energy (translation and rotation) and gravitational
+/// energy.
+fn assembly_energy(assemblies: &[crate::reactive::Assembly], g: &Vec3) -> f64 {
+    assemblies
+        .iter()
+        .map(|a| {
+            let w = &a.rotation.omega;
+            let spin = a.inertia.x * w.x * w.x + a.inertia.y * w.y * w.y + a.inertia.z * w.z * w.z;
+            0.5 * a.mass * a.velocity.norm_squared() + 0.5 * spin - a.mass * g.dot(&a.cog)
+        })
+        .sum()
 }
