@@ -299,3 +299,82 @@ fn clipped_plane(
     points.sort_by(|a, b| angle(a).total_cmp(&angle(b)));
     Some(points)
 }
+
+/// Where a run has moved a reactive wall (a line of `WALLSREACTviz.out`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Placement {
+    /// A triangle or rectangle: its origin and edge vectors now.
+    Polygon {
+        /// The wall's index.
+        wall: usize,
+        /// Its origin now.
+        origin: Vec3,
+        /// vertex1 now.
+        vertex1: Vec3,
+        /// vertex2 now.
+        vertex2: Vec3,
+    },
+    /// A disk, finite cylinder or shell: its origin and orient now.
+    Round {
+        /// The wall's index.
+        wall: usize,
+        /// Its origin now.
+        origin: Vec3,
+        /// orient now.
+        orient: Vec3,
+    },
+}
+
+/// Moves each placed wall's mesh in `meshes` (made from `scene`) to its placement: the
+/// rigid turn that takes the wall's own vectors to the placed ones, about its origin,
+/// then to the placed origin. A round wall turns by the shortest rotation from its
+/// orient to the placed one (its shape is the same about the axis).
+pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
+    use nalgebra::{Matrix3, Rotation3};
+    for p in placed {
+        let (w, origin, turn) = match *p {
+            Placement::Polygon {
+                wall,
+                origin,
+                vertex1,
+                vertex2,
+            } => {
+                let Some(wl) = scene.walls.get(wall) else {
+                    continue;
+                };
+                let frame = |a: Vec3, b: Vec3| {
+                    let x = direction(&a).unwrap_or_else(Vec3::x);
+                    let z = direction(&a.cross(&b)).unwrap_or_else(Vec3::z);
+                    Matrix3::from_columns(&[x, z.cross(&x), z])
+                };
+                let then = frame(wl.vector(Keyword::Vertex1), wl.vector(Keyword::Vertex2));
+                let now = frame(vertex1, vertex2);
+                (
+                    wall,
+                    origin,
+                    Rotation3::from_matrix_unchecked(now * then.transpose()),
+                )
+            }
+            Placement::Round {
+                wall,
+                origin,
+                orient,
+            } => {
+                let Some(wl) = scene.walls.get(wall) else {
+                    continue;
+                };
+                let turn = Rotation3::rotation_between(&wl.vector(Keyword::Orient), &orient)
+                    .unwrap_or_else(Rotation3::identity);
+                (wall, origin, turn)
+            }
+        };
+        let Some(m) = meshes.iter_mut().find(|m| m.wall == w) else {
+            continue;
+        };
+        let from = m.origin;
+        for q in &mut m.mesh.positions {
+            *q = origin + turn * (*q - from);
+        }
+        m.origin = origin;
+    }
+}

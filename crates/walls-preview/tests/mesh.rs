@@ -129,3 +129,45 @@ fn a_plane_is_cut_to_the_scenes_box() {
         );
     }
 }
+
+#[test]
+fn reactive_walls_are_drawn_where_a_run_left_them() {
+    use nalgebra::Vector3;
+    use walls_preview::mesh::{Placement, place};
+    // A 2 × 1 rectangle placed turned a quarter about z and moved to (5, 0, 1); a disk
+    // turned to face x.
+    let s = scene(
+        "wall type rectangle\n  vertex1 2 0 0\n  vertex2 0 1 0\nwall type disk\n  radius 1\n",
+    );
+    let mut meshes = wall_meshes(&s, 0.0, 16);
+    let placed = [
+        Placement::Polygon {
+            wall: 0,
+            origin: Vector3::new(5.0, 0.0, 1.0),
+            vertex1: Vector3::new(0.0, 2.0, 0.0),
+            vertex2: Vector3::new(-1.0, 0.0, 0.0),
+        },
+        Placement::Round {
+            wall: 1,
+            origin: Vector3::new(0.0, 0.0, 3.0),
+            orient: Vector3::x(),
+        },
+    ];
+    place(&mut meshes, &s, &placed);
+    let corners: Vec<_> = meshes[0].mesh.positions.clone();
+    let expect = [
+        Vector3::new(5.0, 0.0, 1.0),
+        Vector3::new(5.0, 2.0, 1.0),
+        Vector3::new(4.0, 2.0, 1.0),
+        Vector3::new(4.0, 0.0, 1.0),
+    ];
+    for (c, e) in corners.iter().zip(&expect) {
+        assert!((c - e).norm() < 1e-12, "{c:?} vs {e:?}");
+    }
+    for p in &meshes[1].mesh.positions {
+        assert!(
+            p.x.abs() < 1e-12 && (p - Vector3::new(0.0, 0.0, 3.0)).norm() <= 1.0 + 1e-12,
+            "{p:?}"
+        );
+    }
+}

@@ -694,6 +694,10 @@ struct PreviewArgs {
     /// Particles to draw too: CSV or .ss.
     #[arg(long, value_name = "FILE")]
     particles: Option<String>,
+    /// Draw reactive walls where a run left them: the WALLSREACTviz.out that
+    /// `walls-sim run --out` (or pkdgrav) wrote; its last step.
+    #[arg(long, value_name = "FILE")]
+    reactive: Option<String>,
     /// HTML: particle trajectories to play, the particles.csv that `walls-sim run --out`
     /// writes.
     #[arg(long, value_name = "FILE")]
@@ -775,10 +779,17 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
             }
         })
         .collect();
-    let meshes: Vec<_> = times
+    let mut meshes: Vec<_> = times
         .iter()
         .map(|t| walls_preview::wall_meshes(scene, *t, segments))
         .collect();
+    if let Some(f) = &args.reactive {
+        // Reactive walls where a run moved them: the last step of WALLSREACTviz.out.
+        let placed = read_reactive_viz(f)?;
+        for frame in &mut meshes {
+            walls_preview::mesh::place(frame, scene, &placed);
+        }
+    }
     let frames: Vec<Frame> = times
         .iter()
         .zip(&meshes)
@@ -872,6 +883,52 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// The walls' placements on the last line of a `WALLSREACTviz.out`: for each wall id,
+/// its origin and either (vertex1, vertex2) or orient.
+fn read_reactive_viz(f: &str) -> Result<Vec<walls_preview::mesh::Placement>, String> {
+    use walls_preview::mesh::Placement;
+    let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
+    let (n, line) = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+        .last()
+        .ok_or_else(|| format!("{f}: no steps"))?;
+    let bad = || format!("{f}: line {}: not a WALLSREACTviz.out line", n + 1);
+    let fields: Vec<f64> = line
+        .split_whitespace()
+        .map(|x| x.parse::<f64>().map_err(|_| bad()))
+        .collect::<Result<_, _>>()?;
+    let mut out = Vec::new();
+    let mut k = 1; // after the step
+    let v3 = |k: usize| -> Result<nalgebra::Vector3<f64>, String> {
+        (k + 3 <= fields.len())
+            .then(|| nalgebra::Vector3::new(fields[k], fields[k + 1], fields[k + 2]))
+            .ok_or_else(bad)
+    };
+    while k < fields.len() {
+        let (kind, id) = (fields[k], fields.get(k + 1).copied().ok_or_else(bad)?);
+        let origin = v3(k + 2)?;
+        if kind == 0.0 {
+            out.push(Placement::Polygon {
+                wall: id as usize,
+                origin,
+                vertex1: v3(k + 5)?,
+                vertex2: v3(k + 8)?,
+            });
+            k += 11;
+        } else {
+            out.push(Placement::Round {
+                wall: id as usize,
+                origin,
+                orient: v3(k + 5)?,
+            });
+            k += 8;
+        }
+    }
+    Ok(out)
 }
 
 /// Particle trajectories from the `particles.csv` of `walls-sim run --out`
