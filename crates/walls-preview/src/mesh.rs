@@ -328,7 +328,8 @@ pub enum Placement {
 /// Moves each placed wall's mesh in `meshes` (made from `scene`) to its placement: the
 /// rigid turn that takes the wall's own vectors to the placed ones, about its origin,
 /// then to the placed origin. A round wall turns by the shortest rotation from its
-/// orient to the placed one (its shape is the same about the axis).
+/// orient to the placed one (its shape is the same about the axis; half a turn about a
+/// perpendicular when the two are opposite).
 pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
     use nalgebra::{Matrix3, Rotation3};
     for p in placed {
@@ -363,8 +364,20 @@ pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
                 let Some(wl) = scene.walls.get(wall) else {
                     continue;
                 };
-                let turn = Rotation3::rotation_between(&wl.vector(Keyword::Orient), &orient)
-                    .unwrap_or_else(Rotation3::identity);
+                let from = wl.vector(Keyword::Orient);
+                // Antiparallel axes have no shortest turn: half a turn about any
+                // perpendicular does.
+                let turn = Rotation3::rotation_between(&from, &orient).unwrap_or_else(|| {
+                    if from.dot(&orient) < 0.0 {
+                        let (u, _) = basis(&from);
+                        Rotation3::from_axis_angle(
+                            &nalgebra::Unit::new_normalize(u),
+                            std::f64::consts::PI,
+                        )
+                    } else {
+                        Rotation3::identity()
+                    }
+                });
                 (wall, origin, turn)
             }
         };

@@ -171,3 +171,33 @@ fn reactive_walls_are_drawn_where_a_run_left_them() {
         );
     }
 }
+
+#[test]
+fn a_round_wall_turned_upside_down_is_drawn_so() {
+    use nalgebra::Vector3;
+    use walls_preview::mesh::{Placement, place};
+    // A cone from radius 1 at z = −1 to a point at z = +1, placed with its axis down: the
+    // wide end is then at z = +1.
+    let cone = scene("wall type cylinder-finite\n  radius 1\n  length 2\n  taper 1\n");
+    let wide = |m: &walls_preview::WallMesh| {
+        let p = m
+            .mesh
+            .positions
+            .iter()
+            .find(|p| (p.x * p.x + p.y * p.y - 1.0).abs() < 1e-9)
+            .expect("a rim vertex");
+        p.z
+    };
+    let mut meshes = wall_meshes(&cone, 0.0, 16);
+    assert!((wide(&meshes[0]) + 1.0).abs() < 1e-12);
+    place(
+        &mut meshes,
+        &cone,
+        &[Placement::Round {
+            wall: 0,
+            origin: Vector3::zeros(),
+            orient: -Vector3::z(),
+        }],
+    );
+    assert!((wide(&meshes[0]) - 1.0).abs() < 1e-12);
+}

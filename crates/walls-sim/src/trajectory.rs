@@ -3,7 +3,8 @@
 //!
 //! * `particles.csv`: `step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz`, one
 //!   row per particle per output step;
-//! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (SPEC §1 "Motion").
+//! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (SPEC §1 "Motion"; a
+//!   reactive wall's where its assembly has moved it).
 //!
 //! One long table per kind loads in one call into pandas, ParaView's CSV reader or a
 //! spreadsheet, and a particle's path is a filter on its index. Numbers are written with
@@ -42,8 +43,16 @@ impl Trajectory {
         })
     }
 
-    /// Writes the particles and the walls at `step`, time `t`.
-    pub fn record(&mut self, step: u64, t: f64, states: &[State], scene: &Scene) -> io::Result<()> {
+    /// Writes the particles and the walls at `step`, time `t`: each wall where its
+    /// motion puts it, or where its reactive `assemblies` have moved it.
+    pub fn record(
+        &mut self,
+        step: u64,
+        t: f64,
+        states: &[State],
+        scene: &Scene,
+        assemblies: &[crate::reactive::Assembly],
+    ) -> io::Result<()> {
         let (step, time) = (step.to_string(), t.to_string());
         for (i, s) in states.iter().enumerate() {
             let p = &s.particle;
@@ -61,8 +70,14 @@ impl Trajectory {
             self.particles.write_record(&row)?;
         }
         for (w, wall) in scene.walls.iter().enumerate() {
-            let o = walls_model::motion::position(wall, t)
-                .unwrap_or_else(|| wall.vector(walls_keywords::Keyword::Origin));
+            let moved = assemblies.iter().find_map(|a| {
+                let k = a.walls.iter().position(|x| *x == w)?;
+                Some(a.origin(k))
+            });
+            let o = moved.unwrap_or_else(|| {
+                walls_model::motion::position(wall, t)
+                    .unwrap_or_else(|| wall.vector(walls_keywords::Keyword::Origin))
+            });
             let mut row = vec![step.clone(), time.clone(), w.to_string()];
             row.extend(o.iter().map(f64::to_string));
             self.walls.write_record(&row)?;

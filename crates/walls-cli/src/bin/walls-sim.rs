@@ -1049,7 +1049,7 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
     let mut written: std::io::Result<()> = Ok(());
     if let Some(out) = &mut trajectory {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
-        written = out.record(0, 0.0, &start, scene);
+        written = out.record(0, 0.0, &start, scene, &[]);
     }
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
     // appended to as pkdgrav does, unless --fresh.
@@ -1080,7 +1080,7 @@ fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
                 && step % args.every == 0
                 && written.is_ok()
             {
-                written = out.record(step, t, states, scene);
+                written = out.record(step, t, states, scene, assemblies);
             }
         },
     );
