@@ -17,7 +17,9 @@ pub mod scene;
 
 pub use check::{AXES_COS_TOLERANCE, RECTANGLE_COS_TOLERANCE, STEP_TRAVEL_FRACTION};
 pub use resolve::{AXIS_LENGTH_TOLERANCE, resolve};
-pub use scene::{Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, direction};
+pub use scene::{
+    Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings, direction,
+};
 use walls_diagnostics::Diagnostic;
 use walls_syntax::SyntaxTree;
 

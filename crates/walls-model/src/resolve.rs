@@ -9,8 +9,9 @@
 use crate::Mode;
 use crate::codes;
 use crate::fix;
-use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall};
+use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
 use std::ops::Range;
+use std::sync::Arc;
 use walls_diagnostics::{Applicability, Diagnostic, Edit, Severity};
 use walls_keywords::{Dimension, Keyword, Role, ValueShape};
 use walls_syntax::{Statement, SyntaxTree, TokenKind};
@@ -30,6 +31,7 @@ pub fn resolve(tree: &SyntaxTree, mode: Mode) -> (Scene, Vec<Diagnostic>) {
             time: 1.0,
         },
         defaults: Settings::default(),
+        shared: None,
         scene: Scene::default(),
         target: Target::None,
         out: Vec::new(),
@@ -118,6 +120,9 @@ struct Resolver<'t> {
     mode: Mode,
     units: Units,
     defaults: Settings,
+    /// The defaults as the walls share them, made when the first wall after a change
+    /// needs them.
+    shared: Option<Arc<Settings>>,
     scene: Scene,
     target: Target,
     out: Vec<Diagnostic>,
@@ -126,6 +131,15 @@ struct Resolver<'t> {
     block_osc_freq: Option<(Range<usize>, f64)>,
     /// Where the open block's keyword starts.
     block_start: usize,
+}
+
+impl Resolver<'_> {
+    /// The defaults in force, shared by the walls created under them.
+    fn shared_defaults(&mut self) -> Arc<Settings> {
+        self.shared
+            .get_or_insert_with(|| Arc::new(self.defaults.clone()))
+            .clone()
+    }
 }
 
 impl<'t> Resolver<'t> {
@@ -138,10 +152,11 @@ impl<'t> Resolver<'t> {
                 self.close_block();
                 self.block_start = self.tree.span(self.tree.head(stmt)).start;
                 let index = self.scene.walls.len();
+                let inherited = self.shared_defaults();
                 self.scene.walls.push(Wall {
                     index,
                     span: self.tree.span(self.tree.head(stmt)),
-                    settings: self.defaults.clone(),
+                    settings: WallSettings::new(inherited),
                 });
                 self.target = Target::Wall(index);
                 return;
@@ -316,13 +331,22 @@ impl<'t> Resolver<'t> {
         if place == Place::Defaults {
             self.scene.defaults.push((keyword, keyword_span));
         }
-        let target = match self.target {
-            Target::Wall(i) => &mut self.scene.walls[i].settings,
-            _ => &mut self.defaults,
-        };
-        target.set(keyword, setting);
-        if let Some((kt, s)) = derived {
-            target.set(kt, s);
+        match self.target {
+            Target::Wall(i) => {
+                let target = &mut self.scene.walls[i].settings;
+                target.set(keyword, setting);
+                if let Some((kt, s)) = derived {
+                    target.set(kt, s);
+                }
+            }
+            _ => {
+                // The defaults change: walls created from now on share a new copy.
+                self.shared = None;
+                self.defaults.set(keyword, setting);
+                if let Some((kt, s)) = derived {
+                    self.defaults.set(kt, s);
+                }
+            }
         }
     }
 
@@ -537,12 +561,12 @@ impl<'t> Resolver<'t> {
         let Some((values, length_unit)) = self.block_osc_freq.take() else {
             return;
         };
-        let settings = match self.target {
-            Target::Wall(i) => &self.scene.walls[i].settings,
-            _ => &self.defaults,
+        let get = |k: Keyword| match self.target {
+            Target::Wall(i) => self.scene.walls[i].settings.get(k),
+            _ => self.defaults.get(k),
         };
         let lookup = |k: Keyword| {
-            settings.get(k).cloned().unwrap_or_else(|| Setting {
+            get(k).cloned().unwrap_or_else(|| Setting {
                 value: match k.builtin() {
                     walls_keywords::Builtin::Number(x) => Value::Number(x),
                     _ => Value::Number(0.0),

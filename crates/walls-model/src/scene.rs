@@ -8,6 +8,7 @@
 use nalgebra::Vector3;
 use smallvec::SmallVec;
 use std::ops::Range;
+use std::sync::Arc;
 use walls_keywords::{Builtin, Keyword, WallType};
 
 /// A 3-vector of reals.
@@ -154,6 +155,52 @@ impl Settings {
     }
 }
 
+/// What was set for a wall: the `defaults` in force when it was created, shared with
+/// the other walls created under them (a file of 100,000 walls with a `defaults` block
+/// keeps that block once, not 100,000 times), then its own tokens.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct WallSettings {
+    inherited: Arc<Settings>,
+    own: Settings,
+}
+
+impl WallSettings {
+    /// A wall's settings starting from `inherited`.
+    pub fn new(inherited: Arc<Settings>) -> Self {
+        WallSettings {
+            inherited,
+            own: Settings::default(),
+        }
+    }
+
+    /// The setting for `k`: the wall's own, else the inherited default's.
+    pub fn get(&self, k: Keyword) -> Option<&Setting> {
+        self.own.get(k).or_else(|| self.inherited.get(k))
+    }
+
+    /// Sets `k` for this wall, over what it inherited.
+    pub fn set(&mut self, k: Keyword, setting: Setting) {
+        self.own.set(k, setting);
+    }
+
+    /// Every setting: the inherited ones in their order (each as the wall overrides it),
+    /// then the wall's own new ones in the order they were set, as if the defaults had
+    /// been copied into the wall and then overwritten.
+    pub fn iter(&self) -> impl Iterator<Item = &(Keyword, Setting)> {
+        let inherited = self.inherited.iter().map(|entry| {
+            self.own
+                .iter()
+                .find(|(k, _)| *k == entry.0)
+                .unwrap_or(entry)
+        });
+        let new = self
+            .own
+            .iter()
+            .filter(|(k, _)| self.inherited.get(*k).is_none());
+        inherited.chain(new)
+    }
+}
+
 /// One wall, as pkdgrav builds it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Wall {
@@ -162,7 +209,7 @@ pub struct Wall {
     /// The `wall` keyword.
     pub span: Range<usize>,
     /// What was set for it: the defaults in force at `wall`, then its own tokens.
-    pub settings: Settings,
+    pub settings: WallSettings,
 }
 
 impl Wall {
