@@ -120,6 +120,14 @@ function main() {
     });
     const mesh = new THREE.Mesh(geometry, material);
     mesh.userData.wall = w;
+    // The wall's outline (edges of one triangle only, and creases over 10°), moving with
+    // it, so that a wall the colour of the floor under it still shows.
+    const outline = new THREE.LineSegments(
+      new THREE.EdgesGeometry(geometry, 10),
+      new THREE.LineBasicMaterial({ color: 0x333333, transparent: w.opacity < 1, opacity: w.opacity }),
+    );
+    outline.raycast = () => {};
+    mesh.add(outline);
     scene.add(mesh);
     return mesh;
   });
