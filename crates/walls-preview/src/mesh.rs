@@ -297,7 +297,15 @@ fn clipped_plane(
     let c = points.iter().sum::<Vec3>() / points.len() as f64;
     let angle = |p: &Vec3| v.dot(&(p - c)).atan2(u.dot(&(p - c)));
     points.sort_by(|a, b| angle(a).total_cmp(&angle(b)));
-    Some(points)
+    // A plane touching the box at a corner or along an edge cuts no area.
+    let area: f64 = (1..points.len() - 1)
+        .map(|k| {
+            (points[k] - points[0])
+                .cross(&(points[k + 1] - points[0]))
+                .norm()
+        })
+        .sum();
+    (area > 1e-12 * (hi - lo).norm_squared()).then_some(points)
 }
 
 /// Where a run has moved a reactive wall (a line of `WALLSREACTviz.out`).

@@ -102,6 +102,17 @@ pub fn assemblies(scene: &Scene) -> Vec<Assembly> {
     out
 }
 
+/// The assemblies that cannot move: a principal moment that is not a positive finite
+/// number (a rod's moment about its own axis is 0, but Euler's equations divide by it).
+/// They stay where they are, and the run says so.
+pub fn immovable(assemblies: &[Assembly]) -> Vec<i64> {
+    assemblies
+        .iter()
+        .filter(|a| !a.inertia.iter().all(|i| *i > 0.0 && i.is_finite()))
+        .map(|a| a.number)
+        .collect()
+}
+
 impl Assembly {
     /// The rotation from the start to now: the principal axes then to now.
     pub fn turn(&self) -> Rotation3<f64> {

@@ -165,7 +165,11 @@ pub fn step_rk(
             e_omega / (tolerance * scale_omega)
         };
         let ratio = ratio_omega.max(e_axes / tolerance);
-        let at_minimum = h.abs() <= h_min * (1.0 + 1e-12) || h.abs() < remaining.abs() * 1e-12;
+        // A state that is not finite has no error to control: take the step as it is
+        // rather than shrink h to NaN and never advance.
+        let at_minimum = h.abs() <= h_min * (1.0 + 1e-12)
+            || h.abs() < remaining.abs() * 1e-12
+            || !ratio.is_finite();
         if ratio <= 1.0 || at_minimum {
             t += h;
             y = y_new;

@@ -141,3 +141,27 @@ fn an_elastic_strike_keeps_the_energy_of_particle_and_plate() {
     assert!((after / before - 1.0).abs() < 1e-3, "{before} → {after}");
     assert!(out.assemblies[0].spin().y.abs() > 0.01, "it turns");
 }
+
+#[test]
+fn an_assembly_without_a_positive_moment_of_inertia_stays_and_is_reported() {
+    // izj-vec 0 (a rod's moment about its own axis): Euler's equations cannot turn it. It
+    // stays where it is, the run says so, and the run ends.
+    let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 10\n assembly 0\n cog 0 0 0\n izj-vec 0 0 0\n";
+    let out = run(
+        &scene(plate),
+        vec![particle([0.5, 0.0, 0.15], [0.3, 0.0, -1.0])],
+        &settings(0.3),
+    );
+    assert!(out.assemblies.is_empty());
+    assert!(
+        out.warnings
+            .iter()
+            .any(|w| w.contains("principal moment of inertia")),
+        "{:?}",
+        out.warnings
+    );
+    assert!(
+        out.particles[0].particle.vel.z > 0.0,
+        "it bounced off the plate"
+    );
+}

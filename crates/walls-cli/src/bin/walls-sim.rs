@@ -805,6 +805,9 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
         .as_ref()
         .and_then(|p| p.extension())
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    if args.reactive.is_some() && !matches!(kind.as_deref(), None | Some("svg") | Some("vtp")) {
+        return Err("--reactive is drawn in .svg and .vtp pictures only".into());
+    }
     match kind.as_deref() {
         None => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -996,6 +999,13 @@ fn record_reactive(
         let turn = a.turn();
         for (k, &w) in a.walls.iter().enumerate() {
             let wall = &scene.walls[w];
+            // pkdgrav's viz file holds finite walls only.
+            if matches!(
+                wall.wall_type(),
+                WallType::Plane | WallType::CylinderInfinite
+            ) {
+                continue;
+            }
             let origin = a.origin(k);
             walls.push((
                 w,

@@ -234,10 +234,12 @@ fn wall_step(
         load.force += c.force;
         load.torque += c.torque;
         if let Some(a) = walls.assembly_of[w] {
-            // The reaction, at the contact point.
+            // The reaction, at the contact point on the particle's surface (where its
+            // own torque acts, so that angular momentum is kept exactly).
             let cog = walls.cogs[a];
+            let at = s.particle.pos - n * r;
             out.reactions
-                .push((a, -c.force, (near.point - cog).cross(&-c.force)));
+                .push((a, -c.force, (at - cog).cross(&-c.force)));
         }
         if walls.plan.rolling || walls.plan.twisting {
             let rolling = Rolling {
@@ -321,6 +323,13 @@ pub(super) fn run(
     } else {
         Vec::new()
     };
+    let stuck = crate::reactive::immovable(&assemblies);
+    if !stuck.is_empty() {
+        warnings.push(format!(
+            "assemblies {stuck:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
+        ));
+        assemblies.retain(|a| !stuck.contains(&a.number));
+    }
     let mut assembly_of = vec![None; scene.walls.len()];
     for (a, assembly) in assemblies.iter().enumerate() {
         for &w in &assembly.walls {
