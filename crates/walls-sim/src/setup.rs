@@ -185,3 +185,42 @@ fn at_rest(r: f64, pos: Vec3, index: usize) -> Particle {
         index: index as i32,
     }
 }
+
+/// A closed sphere of radius 1 in 4m² triangles: m + 1 rings of 2m quads (the polar
+/// ones triangles), as walls-file text: a deterministic many-walled scene, like a
+/// spacecraft hull, for benchmarks and tests of the wall index.
+pub fn sphere_hull(m: usize) -> String {
+    let (rings, around) = (m + 1, 2 * m);
+    let vertex = |i: usize, j: usize| {
+        let theta = std::f64::consts::PI * i as f64 / rings as f64;
+        let phi = std::f64::consts::TAU * j as f64 / around as f64;
+        Vec3::new(
+            theta.sin() * phi.cos(),
+            theta.sin() * phi.sin(),
+            theta.cos(),
+        )
+    };
+    let v = |p: &Vec3| format!("{} {} {}", p.x, p.y, p.z);
+    let mut text = String::new();
+    let mut triangle = |a: Vec3, b: Vec3, c: Vec3| {
+        text.push_str(&format!(
+            "wall\n type triangle\n origin {}\n vertex1 {}\n vertex2 {}\n",
+            v(&a),
+            v(&(b - a)),
+            v(&(c - a))
+        ));
+    };
+    for i in 0..rings {
+        for j in 0..around {
+            let (a, b) = (vertex(i, j), vertex(i, j + 1));
+            let (c, d) = (vertex(i + 1, j), vertex(i + 1, j + 1));
+            if i > 0 {
+                triangle(a, c, b);
+            }
+            if i + 1 < rings {
+                triangle(b, c, d);
+            }
+        }
+    }
+    text
+}

@@ -414,48 +414,9 @@ fn a_group_is_found_where_it_has_moved() {
     assert!(candidates(&none, &p, 1.0, &[]).is_empty());
 }
 
-/// A closed sphere of radius 1 in 4m² triangles: m rings of 2m quads (the polar ones
-/// triangles), as walls-file text.
-fn sphere_hull(m: usize) -> String {
-    let (rings, around) = (m + 1, 2 * m);
-    let vertex = |i: usize, j: usize| {
-        let (theta, phi) = (
-            PI * i as f64 / rings as f64,
-            2.0 * PI * j as f64 / around as f64,
-        );
-        Vec3::new(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            theta.cos(),
-        )
-    };
-    let mut text = String::new();
-    let mut triangle = |a: Vec3, b: Vec3, c: Vec3| {
-        text.push_str(&format!(
-            "wall\n type triangle\n origin {}\n vertex1 {}\n vertex2 {}\n",
-            v(&a),
-            v(&(b - a)),
-            v(&(c - a))
-        ));
-    };
-    for i in 0..rings {
-        for j in 0..around {
-            let (a, b) = (vertex(i, j), vertex(i, j + 1));
-            let (c, d) = (vertex(i + 1, j), vertex(i + 1, j + 1));
-            if i > 0 {
-                triangle(a, c, b);
-            }
-            if i + 1 < rings {
-                triangle(b, c, d);
-            }
-        }
-    }
-    text
-}
-
 #[test]
 fn near_a_hull_of_10k_triangles_few_walls_are_candidates() {
-    let scene = scene(&sphere_hull(50));
+    let scene = scene(&walls_sim::setup::sphere_hull(50));
     assert_eq!(scene.walls.len(), 10_000);
     let index = WallIndex::new(&scene);
     assert_eq!(index.group_count(), 1);

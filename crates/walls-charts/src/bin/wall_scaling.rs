@@ -12,7 +12,6 @@
 //! index's build time.
 
 use nalgebra::Vector3;
-use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use walls_charts::{Chart, Mark, Series};
@@ -42,7 +41,7 @@ fn main() -> std::io::Result<()> {
     );
     for target in [100, 300, 1_000, 3_000, 10_000, 30_000, 100_000] {
         let m = (target as f64 / 4.0).sqrt().round() as usize;
-        let scene = scene(&sphere_hull(m));
+        let scene = scene(&walls_sim::setup::sphere_hull(m));
         let n = scene.walls.len();
         let origins: Vec<Vec3> = scene
             .walls
@@ -166,47 +165,6 @@ fn scene(text: &str) -> Scene {
         ..Options::default()
     };
     walls_model::analyze(&parsed.tree, &options).scene
-}
-
-fn v(p: &Vec3) -> String {
-    format!("{} {} {}", p.x, p.y, p.z)
-}
-
-/// A closed sphere of radius 1 in 4m² triangles: m + 1 rings of 2m quads (the polar
-/// ones triangles), as walls-file text.
-fn sphere_hull(m: usize) -> String {
-    let (rings, around) = (m + 1, 2 * m);
-    let vertex = |i: usize, j: usize| {
-        let theta = PI * i as f64 / rings as f64;
-        let phi = 2.0 * PI * j as f64 / around as f64;
-        Vec3::new(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            theta.cos(),
-        )
-    };
-    let mut text = String::new();
-    let mut triangle = |a: Vec3, b: Vec3, c: Vec3| {
-        text.push_str(&format!(
-            "wall\n type triangle\n origin {}\n vertex1 {}\n vertex2 {}\n",
-            v(&a),
-            v(&(b - a)),
-            v(&(c - a))
-        ));
-    };
-    for i in 0..rings {
-        for j in 0..around {
-            let (a, b) = (vertex(i, j), vertex(i, j + 1));
-            let (c, d) = (vertex(i + 1, j), vertex(i + 1, j + 1));
-            if i > 0 {
-                triangle(a, c, b);
-            }
-            if i + 1 < rings {
-                triangle(b, c, d);
-            }
-        }
-    }
-    text
 }
 
 /// The particles: each under a random point of a random triangle, 0.5 to 1.5 radii
