@@ -2,32 +2,16 @@
 //! answers: exact to 1e−12 relative where the answer is exact.
 
 use nalgebra::Vector3;
-use walls_model::{Mode, Options, Scene, analyze};
-use walls_sim::input::Particle;
+use walls_model::{Mode, Scene};
 use walls_sim::run::{EventKind, Method, Outcome, ParticleMaterial, Settings, run};
+
+mod common;
+use common::particle;
 
 type Vec3 = Vector3<f64>;
 
 fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    let options = Options {
-        mode: Mode::Hsdem,
-        ..Options::default()
-    };
-    analyze(&parsed.tree, &options).scene
-}
-
-fn particle(pos: [f64; 3], vel: [f64; 3]) -> Particle {
-    Particle {
-        mass: 1.0,
-        radius: 0.1,
-        pos: Vec3::from(pos),
-        vel: Vec3::from(vel),
-        spin: Vec3::zeros(),
-        color: 3,
-        index: 0,
-    }
+    common::scene_in(text, Mode::Hsdem)
 }
 
 fn settings(eps_n: f64, dt: f64, t_end: f64, gravity: [f64; 3]) -> Settings {

@@ -2,19 +2,16 @@
 //! out does not change the answer.
 
 use nalgebra::Vector3;
-use walls_model::{Options, Scene, analyze};
+use walls_model::Scene;
 use walls_sim::input::Particle;
 use walls_sim::plan::{Plan, parts};
 use walls_sim::run::{Method, Planning, Settings, run};
 use walls_sim::setup;
 
-type Vec3 = Vector3<f64>;
+mod common;
+use common::scene;
 
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
+type Vec3 = Vector3<f64>;
 
 fn settings(k_n: f64, t_end: f64) -> Settings {
     Settings {

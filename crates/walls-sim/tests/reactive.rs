@@ -3,29 +3,12 @@
 //! impulse off the centre of gravity turns a lid about it.
 
 use nalgebra::{Rotation3, Vector3};
-use walls_model::{Options, Scene, analyze};
-use walls_sim::input::Particle;
 use walls_sim::run::{Settings, run};
 
+mod common;
+use common::{particle, scene};
+
 type Vec3 = Vector3<f64>;
-
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
-
-fn particle(pos: [f64; 3], vel: [f64; 3]) -> Particle {
-    Particle {
-        mass: 1.0,
-        radius: 0.1,
-        pos: Vec3::from(pos),
-        vel: Vec3::from(vel),
-        spin: Vec3::zeros(),
-        color: 3,
-        index: 0,
-    }
-}
 
 fn settings(t_end: f64) -> Settings {
     let k_n: f64 = 1e5;

@@ -2,30 +2,13 @@
 //! returning a wrong answer quietly (docs/stability.md lists them all).
 
 use nalgebra::Vector3;
-use walls_model::{Options, Scene, analyze};
-use walls_sim::input::Particle;
 use walls_sim::run::{EventKind, Method, ParticleMaterial, Settings, run};
 use walls_sim::ssdem::damping;
 
+mod common;
+use common::{particle, scene};
+
 type Vec3 = Vector3<f64>;
-
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
-
-fn particle(pos: [f64; 3], vel: [f64; 3]) -> Particle {
-    Particle {
-        mass: 1.0,
-        radius: 0.1,
-        pos: Vec3::from(pos),
-        vel: Vec3::from(vel),
-        spin: Vec3::zeros(),
-        color: 3,
-        index: 0,
-    }
-}
 
 const K_N: f64 = 1e4;
 

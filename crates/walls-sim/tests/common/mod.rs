@@ -1,0 +1,36 @@
+//! What the run tests share: a scene from walls-file text that must parse cleanly, and
+//! the ball most tests throw (mass 1, radius 0.1). Each test file uses what it needs.
+#![allow(dead_code)]
+
+use nalgebra::Vector3;
+use walls_model::{Mode, Options, Scene, analyze};
+use walls_sim::input::Particle;
+
+/// The scene of `text` in the soft-sphere mode.
+pub fn scene(text: &str) -> Scene {
+    scene_in(text, Mode::Ssdem)
+}
+
+/// The scene of `text` checked in `mode`; the text must parse without diagnostics.
+pub fn scene_in(text: &str, mode: Mode) -> Scene {
+    let parsed = walls_syntax::parse(text);
+    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+    let options = Options {
+        mode,
+        ..Options::default()
+    };
+    analyze(&parsed.tree, &options).scene
+}
+
+/// A ball of mass 1 and radius 0.1 at `pos` moving at `vel`, not spinning.
+pub fn particle(pos: [f64; 3], vel: [f64; 3]) -> Particle {
+    Particle {
+        mass: 1.0,
+        radius: 0.1,
+        pos: Vector3::from(pos),
+        vel: Vector3::from(vel),
+        spin: Vector3::zeros(),
+        color: 3,
+        index: 0,
+    }
+}
