@@ -3,15 +3,12 @@
 //! [`analyze`] reads the syntax tree front to back as pkdgrav does ([`resolve`]) into a
 //! [`Scene`] of walls with effective values in pkdgrav units, each remembering where it
 //! came from, and checks every rule of SPEC §1: single values as they are read, then
-//! blocks, walls and the file as a whole ([`codes`] documents each diagnostic).
-//! [`motion`] gives a wall's position at a time; [`json`] the scene as
-//! `walls-sim scene` prints it.
+//! blocks, walls and the file as a whole ([`codes`] documents each diagnostic). The
+//! back end decodes each wall into typed parts once (the walls-geometry crate).
 
 mod check;
 pub mod codes;
 mod fix;
-pub mod json;
-pub mod motion;
 mod resolve;
 pub mod scene;
 

@@ -1,9 +1,9 @@
 //! Tests as data. Under `tests/data/check`, each `.walls` file is checked (syntax and
 //! model) and its diagnostics, with exact spans, the text after its safe fixes and what
-//! that text still reports are compared with the `.snap` file beside it. Under
-//! `tests/data/scene`, each file's resolved scene JSON is. A first-line comment
-//! `# options: …` sets the checker's options (`--mode hsdem`, `--max-walls N`,
-//! `--min-radius R`, `--dt DT`); `# time: T` adds positions to the scene.
+//! that text still reports are compared with the `.snap` file beside it. A first-line
+//! comment `# options: …` sets the checker's options (`--mode hsdem`, `--max-walls N`,
+//! `--min-radius R`, `--dt DT`). (The resolved scene as JSON is tested in
+//! walls-geometry.)
 //! Update with `INSTA_UPDATE=always cargo test -p walls-model` and review the diff.
 
 use std::fmt::Write as _;
@@ -64,26 +64,6 @@ fn check_cases() {
             writeln!(out, "--- after safe fixes ---\n{fixed}--- leaves ---").unwrap();
             out.push_str(&render(&fixed, &lint(&fixed, &options)));
         }
-        snapshot_beside(path, &out);
-    });
-}
-
-#[test]
-fn scene_cases() {
-    insta::glob!("data/scene/*.walls", |path| {
-        let text = std::fs::read_to_string(path).unwrap();
-        let time = text
-            .lines()
-            .next()
-            .and_then(|l| l.strip_prefix("# time:"))
-            .map(|t| t.trim().parse::<f64>().unwrap());
-        let parsed = walls_syntax::parse(text.as_str());
-        let analysis = analyze(&parsed.tree, &Options::default());
-        let mut json = Vec::new();
-        walls_model::json::write_scene(&mut json, &analysis.scene, &text, time).unwrap();
-        let mut out = String::from_utf8(json).unwrap();
-        writeln!(out, "--- diagnostics ---").unwrap();
-        out.push_str(&render(&text, &analysis.diagnostics));
         snapshot_beside(path, &out);
     });
 }

@@ -8,7 +8,9 @@
 //! locked in `web/package-lock.json` and committed) and the scene is JSON in the page.
 //! Walls move rigidly (SPEC §1 "Motion"; spin never moves the drawn shape), so each wall
 //! is one mesh at t = 0 and its origin's offset at `frames` times over [0, t_end],
-//! interpolated linearly in between.
+//! interpolated linearly in between. Geometry and motion come from the typed walls
+//! (walls-geometry); the hover lists the tokens as the file set them, so it alone reads
+//! the resolved wall's settings.
 //!
 //! The URL's fragment sets the initial time (`page.html#t=0.25`) and can hover a point
 //! (`#hover=0.5,0.5`, as fractions of the canvas's width and height);
@@ -21,8 +23,9 @@ use crate::palette;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
 use std::io;
+use walls_geometry::{decode, scene_bounds};
 use walls_keywords::Keyword;
-use walls_model::{Scene, Value, Wall, motion::position};
+use walls_model::{Scene, Value, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -176,7 +179,8 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
             }
         })
         .collect();
-    let (lo, hi) = walls_sim::setup::bounds(scene);
+    let decoded = decode(scene);
+    let (lo, hi) = scene_bounds(&decoded);
     let centre = (lo + hi) / 2.0;
 
     let mut s = String::new();
@@ -199,6 +203,7 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
         }
         first = false;
         let wall = &scene.walls[wm.wall];
+        let motion = &decoded[wm.wall].motion;
         let _ = write!(s, "{{\"index\":{},\"type\":", wm.wall);
         string(&mut s, wm.wall_type.name());
         s.push_str(",\"color\":");
@@ -219,7 +224,7 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
         nums(
             &mut s,
             times.iter().flat_map(|&t| {
-                let o = position(wall, t).unwrap_or(wm.origin);
+                let o = motion.position(t).unwrap_or(wm.origin);
                 (o - wm.origin).iter().copied().collect::<Vec<_>>()
             }),
         );

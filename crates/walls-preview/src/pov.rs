@@ -17,13 +17,13 @@
 //! edited, and `ParticleStyle(Colour)`. [`write_file`] writes the scene and `walls.inc`
 //! beside it; `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
 
-use crate::mesh::basis;
 use crate::palette;
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use std::path::Path;
-use walls_keywords::{Keyword, WallType};
-use walls_model::{Scene, Wall, direction, motion::position};
+use walls_geometry::mesh::basis;
+use walls_geometry::{Shape, decode, scene_bounds};
+use walls_model::{Scene, direction};
 use walls_sim::input::Particle;
 
 type Vec3 = Vector3<f64>;
@@ -86,7 +86,8 @@ pub fn write(
     particles: &[Particle],
     view: &View,
 ) -> io::Result<()> {
-    let (lo, hi) = walls_sim::setup::bounds(scene);
+    let walls = decode(scene);
+    let (lo, hi) = scene_bounds(&walls);
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
     let (mut vlo, mut vhi) = (lo, hi);
@@ -105,20 +106,17 @@ pub fn write(
     writeln!(out)?;
     camera(out, (vlo + vhi) / 2.0, (vhi - vlo).norm() / 2.0, view)?;
     writeln!(out)?;
-    for (i, wall) in scene.walls.iter().enumerate() {
-        let color = wall.integer(Keyword::Color);
+    for (i, wall) in walls.iter().enumerate() {
+        let color = wall.appearance.color;
+        let kind = wall.shape.wall_type().name();
         let Some(colour) = colour(color) else {
-            writeln!(
-                out,
-                "// wall {i}: {}, colour {color}: not drawn",
-                wall.wall_type().name()
-            )?;
+            writeln!(out, "// wall {i}: {kind}, colour {color}: not drawn")?;
             continue;
         };
-        let origin = position(wall, t).unwrap_or_else(|| wall.vector(Keyword::Origin));
-        let transmit = wall.number(Keyword::Transparency).clamp(0.0, 1.0);
-        writeln!(out, "// wall {i}: {}", wall.wall_type().name())?;
-        match primitive(wall, origin, &centre, size) {
+        let origin = wall.motion.position_or_origin(t);
+        let transmit = wall.appearance.transparency.clamp(0.0, 1.0);
+        writeln!(out, "// wall {i}: {kind}")?;
+        match primitive(&wall.shape.at(origin), &centre, size) {
             Some((object, style)) => {
                 writeln!(out, "{object}\n  {style}({colour}, {})\n}}", num(transmit))?
             }
@@ -229,12 +227,15 @@ fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::R
 
 /// The wall's object, without its texture and closing brace, and its style macro; `None`
 /// for shapes of no area.
-fn primitive(wall: &Wall, o: Vec3, centre: &Vec3, size: f64) -> Option<(String, &'static str)> {
-    let axis = direction(&wall.vector(Keyword::Orient)).unwrap_or_else(Vec3::z);
-    let number = |k| wall.number(k);
+fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'static str)> {
+    let axis = shape
+        .axis()
+        .and_then(|a| direction(&a))
+        .unwrap_or_else(Vec3::z);
+    let o = shape.origin();
     let v = vec;
-    match wall.wall_type() {
-        WallType::Plane => {
+    match *shape {
+        Shape::Plane { .. } => {
             // A square 2·size across centred where the scene's centre projects onto
             // the plane, size/1000 thick: the box in the frame (u, v, axis) moved there.
             let c = centre - axis * axis.dot(&(centre - o));
@@ -249,49 +250,44 @@ fn primitive(wall: &Wall, o: Vec3, centre: &Vec3, size: f64) -> Option<(String, 
                 "PlaneStyle",
             ))
         }
-        WallType::Triangle => {
-            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
-            (a.cross(&b).norm() > 0.0).then(|| {
-                (
-                    format!("triangle {{ {}, {}, {}", v(&o), v(&(o + a)), v(&(o + b))),
-                    "TriangleStyle",
-                )
-            })
-        }
-        WallType::Rectangle => {
-            let (a, b) = (wall.vector(Keyword::Vertex1), wall.vector(Keyword::Vertex2));
-            (a.cross(&b).norm() > 0.0).then(|| {
-                (
-                    format!(
-                        "polygon {{ 5, {}, {}, {}, {}, {}",
-                        v(&o),
-                        v(&(o + a)),
-                        v(&(o + a + b)),
-                        v(&(o + b)),
-                        v(&o)
-                    ),
-                    "RectangleStyle",
-                )
-            })
-        }
-        WallType::Disk => {
-            let (radius, hole) = (number(Keyword::Radius), number(Keyword::HoleRadius));
-            (radius > 0.0 && hole < radius).then(|| {
-                (
-                    format!(
-                        "disc {{ {}, {}, {}, {}",
-                        v(&o),
-                        v(&axis),
-                        num(radius),
-                        num(hole.max(0.0))
-                    ),
-                    "DiskStyle",
-                )
-            })
-        }
-        WallType::CylinderFinite => {
-            let (radius, length) = (number(Keyword::Radius), number(Keyword::Length));
-            let top = (radius * (1.0 - number(Keyword::Taper))).max(0.0);
+        Shape::Triangle { e1: a, e2: b, .. } => (a.cross(&b).norm() > 0.0).then(|| {
+            (
+                format!("triangle {{ {}, {}, {}", v(&o), v(&(o + a)), v(&(o + b))),
+                "TriangleStyle",
+            )
+        }),
+        Shape::Rectangle { e1: a, e2: b, .. } => (a.cross(&b).norm() > 0.0).then(|| {
+            (
+                format!(
+                    "polygon {{ 5, {}, {}, {}, {}, {}",
+                    v(&o),
+                    v(&(o + a)),
+                    v(&(o + a + b)),
+                    v(&(o + b)),
+                    v(&o)
+                ),
+                "RectangleStyle",
+            )
+        }),
+        Shape::Disk { radius, hole, .. } => (radius > 0.0 && hole < radius).then(|| {
+            (
+                format!(
+                    "disc {{ {}, {}, {}, {}",
+                    v(&o),
+                    v(&axis),
+                    num(radius),
+                    num(hole.max(0.0))
+                ),
+                "DiskStyle",
+            )
+        }),
+        Shape::FiniteCylinder {
+            radius,
+            length,
+            taper,
+            ..
+        } => {
+            let top = (radius * (1.0 - taper)).max(0.0);
             (radius > 0.0 && length > 0.0).then(|| {
                 let (a, b) = (o - axis * (length / 2.0), o + axis * (length / 2.0));
                 let object = if top == radius {
@@ -308,20 +304,16 @@ fn primitive(wall: &Wall, o: Vec3, centre: &Vec3, size: f64) -> Option<(String, 
                 (object, "CylinderStyle")
             })
         }
-        WallType::CylinderInfinite => {
-            let radius = number(Keyword::Radius);
-            (radius > 0.0).then(|| {
-                let c = o + axis * axis.dot(&(centre - o));
-                let (a, b) = (c - axis * size, c + axis * size);
-                (
-                    format!("cylinder {{ {}, {}, {} open", v(&a), v(&b), num(radius)),
-                    "CylinderStyle",
-                )
-            })
-        }
-        WallType::Shell => {
-            let radius = number(Keyword::Radius);
-            let open = number(Keyword::OpenAngle).clamp(0.0, 180.0);
+        Shape::InfiniteCylinder { radius, .. } => (radius > 0.0).then(|| {
+            let c = o + axis * axis.dot(&(centre - o));
+            let (a, b) = (c - axis * size, c + axis * size);
+            (
+                format!("cylinder {{ {}, {}, {} open", v(&a), v(&b), num(radius)),
+                "CylinderStyle",
+            )
+        }),
+        Shape::Shell { radius, open, .. } => {
+            let open = open.to_degrees().clamp(0.0, 180.0);
             (radius > 0.0 && open < 180.0).then(|| (shell(o, axis, radius, open), "ShellStyle"))
         }
     }

@@ -2,10 +2,9 @@
 //! the shape the evaluator uses), cover it (area against the analytic area) and follow
 //! the wall's motion; colours follow ssdraw.
 
-use walls_keywords::Keyword;
+use walls_geometry::{Wall, decode, scene_bounds};
 use walls_model::{Options, Scene, analyze};
 use walls_preview::{palette, wall_meshes};
-use walls_sim::Shape;
 
 fn scene(text: &str) -> Scene {
     let parsed = walls_syntax::parse(text);
@@ -55,7 +54,7 @@ fn every_vertex_lies_on_its_wall_and_the_area_is_right() {
     for (text, expected) in cases {
         let s = scene(text);
         let wall = &s.walls[0];
-        let shape = Shape::of(wall, wall.vector(Keyword::Origin));
+        let shape = Wall::decode(wall).shape;
         let meshes = wall_meshes(&s, 0.0, 256);
         let m = &meshes[0].mesh;
         for p in &m.positions {
@@ -106,7 +105,7 @@ fn a_plane_is_cut_to_the_scenes_box() {
     // A floor under a disk of radius 1 at height 0.5: the box is x, y in [−1, 1] and z in
     // [−0.5, 1.5]; the floor is the 2 × 2 square where it cuts it.
     let s = scene("wall type plane\nwall type disk\n  origin 0 0 0.5\n  radius 1\n");
-    let (lo, hi) = walls_sim::setup::bounds(&s);
+    let (lo, hi) = scene_bounds(&decode(&s));
     let floor = &wall_meshes(&s, 0.0, 32)[0].mesh;
     let a = area(floor);
     assert!((a - (hi.x - lo.x) * (hi.y - lo.y)).abs() < 1e-9, "area {a}");
@@ -118,7 +117,7 @@ fn a_plane_is_cut_to_the_scenes_box() {
     }
     // A tilted plane through the box is cut to a polygon inside it, on the plane.
     let s = scene("wall type plane\n  orient 1 1 1\nwall type disk\n  radius 1\n");
-    let (lo, hi) = walls_sim::setup::bounds(&s);
+    let (lo, hi) = scene_bounds(&decode(&s));
     let tilted = &wall_meshes(&s, 0.0, 32)[0].mesh;
     assert!(tilted.positions.len() >= 3 && !tilted.triangles.is_empty());
     for p in &tilted.positions {

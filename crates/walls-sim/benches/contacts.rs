@@ -15,26 +15,22 @@
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nalgebra::Vector3;
 use std::hint::black_box;
-use walls_model::{Options, Scene, analyze};
-use walls_sim::geometry::Shape;
+use walls_geometry::{Shape, Wall, decode};
+use walls_model::{Options, analyze};
 use walls_sim::grid::CellGrid;
 use walls_sim::run::{Planning, Settings, default_dt, run};
 use walls_sim::setup;
 
 type Vec3 = Vector3<f64>;
 
-fn scene() -> Scene {
+fn scene() -> Vec<Wall> {
     let text = include_str!("../../../examples/sample.walls");
-    analyze(&walls_syntax::parse(text).tree, &Options::default()).scene
+    decode(&analyze(&walls_syntax::parse(text).tree, &Options::default()).scene)
 }
 
 fn contacts(c: &mut Criterion) {
     let scene = scene();
-    let shapes: Vec<Shape> = scene
-        .walls
-        .iter()
-        .map(|w| Shape::of(w, w.vector(walls_keywords::Keyword::Origin)))
-        .collect();
+    let shapes: Vec<Shape> = scene.iter().map(|w| w.shape.clone()).collect();
     let points: Vec<Vec3> = setup::packed(&scene, 10_000, 0.01)
         .iter()
         .map(|p| p.pos)
@@ -133,11 +129,13 @@ fn resting_layer(n: usize, r: f64, k_n: f64) -> Vec<walls_sim::input::Particle> 
 /// The plan's saving: 2,000 particles resting on a static plane, run with the parts the
 /// scene needs and with every part forced on (issue 8: at least 2×).
 fn plan(c: &mut Criterion) {
-    let scene = analyze(
-        &walls_syntax::parse("wall type plane\n").tree,
-        &Options::default(),
-    )
-    .scene;
+    let scene = decode(
+        &analyze(
+            &walls_syntax::parse("wall type plane\n").tree,
+            &Options::default(),
+        )
+        .scene,
+    );
     let k_n = 1e3;
     let ps = resting_layer(2_000, 0.01, k_n);
     let dt = default_dt(&ps, k_n);

@@ -26,7 +26,9 @@ fn main() {
     let n = args.first().copied().unwrap_or(100_000);
     let steps = args.get(1).copied().unwrap_or(1_000);
     let text = include_str!("../../../examples/sample.walls");
-    let scene = analyze(&walls_syntax::parse(text).tree, &Options::default()).scene;
+    let scene = walls_geometry::decode(
+        &analyze(&walls_syntax::parse(text).tree, &Options::default()).scene,
+    );
     let r = 0.005;
     let mut particles = setup::packed(&scene, n, r);
     assert_eq!(particles.len(), n, "room for the particles");

@@ -1,6 +1,5 @@
-//! The reference evaluator of walls files (SPEC §3): where each wall is and how fast its
-//! surface moves, and which point of it a particle is nearest, with the feature it
-//! touches (face, edge, vertex, rim, hole rim); the particles and parameters of a
+//! The reference evaluator of walls files (SPEC §3), on the typed walls of
+//! walls-geometry (shapes, motion, material): the particles and parameters of a
 //! pkdgrav run (CSV, `.ss`, `.par`); contacts in the soft-sphere ([`ssdem`]) and
 //! hard-sphere ([`hsdem`]) models; and runs of particles against walls and each other
 //! ([`run`]), with their trajectories ([`trajectory`]); reactive walls ([`reactive`]),
@@ -9,13 +8,10 @@
 //! ([`advise`]).
 
 pub mod advise;
-pub mod geometry;
 pub mod grid;
 pub mod hsdem;
 pub mod input;
-pub mod kinematics;
 pub mod plan;
-pub mod poly;
 pub mod reactive;
 pub mod reactive_output;
 pub mod rigid;
@@ -25,6 +21,5 @@ pub mod ssdem;
 pub mod trajectory;
 pub mod wall_index;
 
-pub use geometry::{Feature, Nearest, Shape};
-pub use kinematics::{Motion, OscillationStepping};
 pub use wall_index::WallIndex;
+pub use walls_geometry::OscillationStepping;

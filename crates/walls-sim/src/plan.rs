@@ -25,8 +25,7 @@ use crate::input::Particle;
 /// `wall_scaling`); over a handful of walls a hierarchy saves little.
 const WALL_INDEX_FROM: usize = 16;
 use crate::run::{Method, ParticleMaterial, Settings};
-use walls_keywords::{Keyword, WallType};
-use walls_model::Scene;
+use walls_geometry::{Shape, Wall};
 
 /// One part of the model: whether the run uses it, and why.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -78,16 +77,15 @@ impl Plan {
         }
     }
 
-    /// The parts a run of `particles` against `scene` with `settings` needs.
-    pub fn for_run(scene: &Scene, particles: &[Particle], settings: &Settings) -> Plan {
-        parts(scene, particles, settings).0
+    /// The parts a run of `particles` against `walls` with `settings` needs.
+    pub fn for_run(walls: &[Wall], particles: &[Particle], settings: &Settings) -> Plan {
+        parts(walls, particles, settings).0
     }
 }
 
 /// The plan for a run, with every part's reason, in a fixed order.
-pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Plan, Vec<Part>) {
-    let walls = &scene.walls;
-    let which = |test: &dyn Fn(&walls_model::Wall) -> bool| -> Vec<usize> {
+pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Plan, Vec<Part>) {
+    let which = |test: &dyn Fn(&Wall) -> bool| -> Vec<usize> {
         walls
             .iter()
             .enumerate()
@@ -115,23 +113,21 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
     };
     let hard = settings.method == Method::Hard;
     let m: &ParticleMaterial = &settings.material;
-    let moving =
-        which(&|w| w.vector(Keyword::Velocity).norm() > 0.0 || w.number(Keyword::OscAmpl) != 0.0);
+    let moving = which(&|w| w.motion.translates());
     let moving_walls = part(
         "moving walls",
         !moving.is_empty(),
         format!("walls {} move", list(&moving)),
         "no wall moves: the walls are placed once",
     );
-    let spinning = which(&|w| w.number(Keyword::AngSpeed) != 0.0);
+    let spinning = which(&|w| w.motion.ang_speed != 0.0);
     let spin = part(
         "wall spin",
         !spinning.is_empty(),
         format!("walls {} spin", list(&spinning)),
         "no wall spins",
     );
-    let rubbing =
-        which(&|w| w.number(Keyword::MuS) > 0.0 || (hard && w.number(Keyword::Epst) < 1.0));
+    let rubbing = which(&|w| w.material.mu_s > 0.0 || (hard && w.material.eps_t < 1.0));
     let sliding = if hard {
         m.eps_t < 1.0 || !rubbing.is_empty()
     } else {
@@ -164,7 +160,7 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
         },
     );
     let soft = !hard;
-    let rolling_walls = which(&|w| w.number(Keyword::MuR) > 0.0);
+    let rolling_walls = which(&|w| w.material.mu_r > 0.0);
     let rolling = part(
         "rolling resistance",
         soft && (m.mu_r > 0.0 || !rolling_walls.is_empty()),
@@ -175,7 +171,7 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
         ),
         "μ_r = 0 everywhere (or HSDEM)",
     );
-    let twisting_walls = which(&|w| w.number(Keyword::MuT) > 0.0);
+    let twisting_walls = which(&|w| w.material.mu_t > 0.0);
     let twisting = part(
         "twisting resistance",
         soft && (m.mu_t > 0.0 || !twisting_walls.is_empty()),
@@ -188,8 +184,11 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
     );
     let edged = which(&|w| {
         matches!(
-            w.wall_type(),
-            WallType::Rectangle | WallType::Disk | WallType::CylinderFinite | WallType::Triangle
+            w.shape,
+            Shape::Rectangle { .. }
+                | Shape::Disk { .. }
+                | Shape::FiniteCylinder { .. }
+                | Shape::Triangle { .. }
         )
     });
     let edges = part(
@@ -204,7 +203,7 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
     );
     let apart = settings.particle_contacts && particles.len() > 1 && {
         let frictionless = !sliding;
-        never_meet(scene, particles, frictionless)
+        never_meet(walls, particles, frictionless)
     };
     let particle_contacts = part(
         "particle-particle contacts (cell grid)",
@@ -218,14 +217,15 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
             "a single particle"
         },
     );
-    let heavy = which(&|w| {
-        w.number(Keyword::Mass) > 0.0
-            && w.number(Keyword::Mass).is_finite()
-            && w.integer(Keyword::Assembly) >= 0
-    });
+    let heavy = which(&|w| w.reactive.is_heavy());
     let bounded = walls
         .iter()
-        .filter(|w| !matches!(w.wall_type(), WallType::Plane | WallType::CylinderInfinite))
+        .filter(|w| {
+            !matches!(
+                w.shape,
+                Shape::Plane { .. } | Shape::InfiniteCylinder { .. }
+            )
+        })
         .count();
     let wall_index = part(
         "wall index (bounding-volume hierarchy)",
@@ -243,14 +243,14 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
             "HSDEM: pkdgrav's reactive walls are SSDEM only; they stay where they are"
         },
     );
-    let sticky = which(&|w| w.number(Keyword::Epsn) == 0.0);
+    let sticky = which(&|w| w.material.eps_n == 0.0);
     part(
         "sticky walls",
         !sticky.is_empty(),
         format!("walls {} have epsn 0", list(&sticky)),
         "no wall has epsn 0",
     );
-    let death = which(&|w| w.number(Keyword::Epsn) < 0.0);
+    let death = which(&|w| w.material.eps_n < 0.0);
     part(
         "death walls",
         !death.is_empty(),
@@ -283,15 +283,13 @@ pub fn parts(scene: &Scene, particles: &[Particle], settings: &Settings) -> (Pla
 /// only along n̂; gravity is uniform; so if all particles move at the same velocity
 /// across n̂, their positions across n̂ keep their separations, and if no two are within
 /// the sum of their radii there, they never touch.
-fn never_meet(scene: &Scene, particles: &[Particle], frictionless: bool) -> bool {
-    let Some(first) = scene.walls.first() else {
+fn never_meet(walls: &[Wall], particles: &[Particle], frictionless: bool) -> bool {
+    let Some(Shape::Plane { normal: n, .. }) = walls.first().map(|w| &w.shape) else {
         return false;
     };
-    let n = first.vector(Keyword::Orient);
-    let planes = scene.walls.iter().all(|w| {
-        w.wall_type() == WallType::Plane
-            && w.vector(Keyword::Orient).cross(&n).norm() == 0.0
-            && w.number(Keyword::Epsn) != 0.0
+    let planes = walls.iter().all(|w| {
+        matches!(&w.shape, Shape::Plane { normal, .. } if normal.cross(n).norm() == 0.0)
+            && w.material.eps_n != 0.0
     });
     let across = |v: &nalgebra::Vector3<f64>| v - n * n.dot(v);
     let v0 = across(&particles[0].vel);

@@ -19,11 +19,9 @@
 //! itself treats the wall as infinitely massive, and reactive walls neither push nor
 //! are pushed by other walls.
 
-use crate::geometry::Shape;
 use crate::rigid::Rotation;
 use nalgebra::{Matrix3, Rotation3, Vector3};
-use walls_keywords::Keyword;
-use walls_model::{Scene, Wall};
+use walls_geometry::{Shape, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -54,48 +52,37 @@ pub struct Assembly {
     pub torque: Vec3,
 }
 
-/// The assemblies of `scene`, by number.
-pub fn assemblies(scene: &Scene) -> Vec<Assembly> {
+/// The assemblies of `walls`, by number.
+pub fn assemblies(walls: &[Wall]) -> Vec<Assembly> {
     let mut out: Vec<Assembly> = Vec::new();
-    for (w, wall) in scene.walls.iter().enumerate() {
-        let number = wall.integer(Keyword::Assembly);
-        let mass = wall.number(Keyword::Mass);
-        if number < 0 || !(mass > 0.0 && mass.is_finite()) {
+    for (w, wall) in walls.iter().enumerate() {
+        let r = &wall.reactive;
+        if !r.is_heavy() {
             continue;
         }
-        let origin = wall.vector(Keyword::Origin);
-        match out.iter_mut().find(|a| a.number == number) {
+        let origin = wall.motion.origin;
+        match out.iter_mut().find(|a| a.number == r.assembly) {
             Some(a) => {
                 a.walls.push(w);
-                a.mass += mass;
+                a.mass += r.mass;
                 a.offsets.push(origin - a.cog);
             }
-            None => {
-                let cog = wall.vector(Keyword::Cog);
-                let axes =
-                    [Keyword::PxjVec, Keyword::PyjVec, Keyword::PzjVec].map(|k| wall.vector(k));
-                let inertia = Vec3::new(
-                    wall.vector(Keyword::IxjVec).x,
-                    wall.vector(Keyword::IyjVec).y,
-                    wall.vector(Keyword::IzjVec).z,
-                );
-                out.push(Assembly {
-                    number,
-                    walls: vec![w],
-                    mass,
-                    inertia,
-                    cog,
-                    velocity: wall.vector(Keyword::Velocity),
-                    rotation: Rotation {
-                        omega: wall.vector(Keyword::RotVec),
-                        axes,
-                    },
-                    axes0: axes,
-                    offsets: vec![origin - cog],
-                    force: Vec3::zeros(),
-                    torque: Vec3::zeros(),
-                });
-            }
+            None => out.push(Assembly {
+                number: r.assembly,
+                walls: vec![w],
+                mass: r.mass,
+                inertia: r.inertia,
+                cog: r.cog,
+                velocity: wall.motion.velocity,
+                rotation: Rotation {
+                    omega: r.rot_vec,
+                    axes: r.axes,
+                },
+                axes0: r.axes,
+                offsets: vec![origin - r.cog],
+                force: Vec3::zeros(),
+                torque: Vec3::zeros(),
+            }),
         }
     }
     out.sort_by_key(|a| a.number);
@@ -132,10 +119,10 @@ impl Assembly {
         self.cog + self.turn() * self.offsets[k]
     }
 
-    /// The `k`-th wall's shape now.
-    pub fn shape(&self, wall: &Wall, k: usize) -> Shape {
+    /// The `k`-th wall's shape now, from its shape at the start.
+    pub fn shape(&self, start: &Shape, k: usize) -> Shape {
         let turn = self.turn();
-        Shape::turned(wall, self.cog + turn * self.offsets[k], &turn)
+        start.turned(self.cog + turn * self.offsets[k], &turn)
     }
 
     /// Changes the angular velocity by the torque over `dt`: each principal component

@@ -18,49 +18,13 @@
 use crate::input::Particle;
 use crate::run::ParticleMaterial;
 use nalgebra::Vector3;
-use walls_keywords::{Keyword, WallType};
-use walls_model::Scene;
+use walls_geometry::{Wall, scene_bounds as bounds};
 
 type Vec3 = Vector3<f64>;
 
-/// The box around the walls' finite parts (planes and infinite cylinders by their
-/// origin), at least a unit across.
-pub fn bounds(scene: &Scene) -> (Vec3, Vec3) {
-    let mut lo = Vec3::repeat(f64::INFINITY);
-    let mut hi = Vec3::repeat(f64::NEG_INFINITY);
-    for w in &scene.walls {
-        let o = w.vector(Keyword::Origin);
-        let reach = match w.wall_type() {
-            WallType::Triangle | WallType::Rectangle => {
-                let (a, b) = (w.vector(Keyword::Vertex1), w.vector(Keyword::Vertex2));
-                for corner in [o + a, o + b, o + a + b] {
-                    lo = lo.inf(&corner);
-                    hi = hi.sup(&corner);
-                }
-                0.0
-            }
-            WallType::Disk | WallType::Shell | WallType::CylinderInfinite => {
-                w.number(Keyword::Radius)
-            }
-            WallType::CylinderFinite => w
-                .number(Keyword::Radius)
-                .max(w.number(Keyword::Length) / 2.0),
-            WallType::Plane => 0.0,
-        };
-        lo = lo.inf(&(o - Vec3::repeat(reach)));
-        hi = hi.sup(&(o + Vec3::repeat(reach)));
-    }
-    if !lo.iter().all(|x| x.is_finite()) {
-        return (Vec3::repeat(-0.5), Vec3::repeat(0.5));
-    }
-    let centre = (lo + hi) / 2.0;
-    let half = ((hi - lo) / 2.0).sup(&Vec3::repeat(0.5));
-    (centre - half, centre + half)
-}
-
-/// The embedded particles for `scene`.
-pub fn default_particles(scene: &Scene) -> Vec<Particle> {
-    let (lo, hi) = bounds(scene);
+/// The embedded particles for the scene of `walls`.
+pub fn default_particles(walls: &[Wall]) -> Vec<Particle> {
+    let (lo, hi) = bounds(walls);
     let size = (hi - lo).max();
     let r = 0.02 * size;
     let centre = (lo + hi) / 2.0;
@@ -94,8 +58,8 @@ pub fn default_material(k_n: f64) -> ParticleMaterial {
 
 /// A normal spring constant for which the fastest expected impact overlaps by 1 % of the
 /// smallest radius: k_n = m·(v/(0.01·r))².
-pub fn default_k_n(scene: &Scene, particles: &[Particle], gravity: &Vec3) -> f64 {
-    let (lo, hi) = bounds(scene);
+pub fn default_k_n(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+    let (lo, hi) = bounds(walls);
     let span = particles
         .iter()
         .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()));
@@ -111,8 +75,8 @@ pub fn default_k_n(scene: &Scene, particles: &[Particle], gravity: &Vec3) -> f64
 }
 
 /// How long to run when not told: three free falls (or crossings) over the scene.
-pub fn default_duration(scene: &Scene, particles: &[Particle], gravity: &Vec3) -> f64 {
-    let (lo, hi) = bounds(scene);
+pub fn default_duration(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+    let (lo, hi) = bounds(walls);
     let span = particles
         .iter()
         .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()))
@@ -151,13 +115,8 @@ pub fn default_hard_dt(particles: &[Particle], gravity: &Vec3, t_end: f64) -> f6
 /// clear of every wall by its diameter, layer by layer. None overlaps another, and the
 /// same scene gives the same pack: a deterministic crowd for benchmarks and stress runs.
 /// Fewer than `n` when the box has no room.
-pub fn packed(scene: &Scene, n: usize, r: f64) -> Vec<Particle> {
-    let (lo, hi) = bounds(scene);
-    let shapes: Vec<crate::Shape> = scene
-        .walls
-        .iter()
-        .map(|w| crate::Shape::of(w, w.vector(Keyword::Origin)))
-        .collect();
+pub fn packed(walls: &[Wall], n: usize, r: f64) -> Vec<Particle> {
+    let (lo, hi) = bounds(walls);
     let spacing = 2.2 * r;
     let count = |axis: usize| ((hi[axis] - lo[axis]) / spacing).floor().max(0.0) as usize;
     let (nx, ny, nz) = (count(0), count(1), count(2));
@@ -166,7 +125,7 @@ pub fn packed(scene: &Scene, n: usize, r: f64) -> Vec<Particle> {
             let (i, j, l) = (k % nx, (k / nx) % ny, k / (nx * ny));
             lo + Vec3::new(i as f64 + 0.5, j as f64 + 0.5, l as f64 + 0.5) * spacing
         })
-        .filter(|p| shapes.iter().all(|s| s.nearest(p).distance > 2.0 * r))
+        .filter(|p| walls.iter().all(|w| w.shape.nearest(p).distance > 2.0 * r))
         .take(n)
         .enumerate()
         .map(|(i, pos)| at_rest(r, pos, i))

@@ -18,24 +18,8 @@ use nalgebra::Vector3;
 type Vec3 = Vector3<f64>;
 
 /// Material values of one contact, with the walls' 99 and −1 already replaced by the
-/// particles' values.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Material {
-    /// Normal coefficient of restitution.
-    pub eps_n: f64,
-    /// Tangential coefficient of restitution.
-    pub eps_t: f64,
-    /// Normal spring constant.
-    pub k_n: f64,
-    /// Tangential spring constant.
-    pub k_t: f64,
-    /// Static friction coefficient (0: frictionless).
-    pub mu_s: f64,
-    /// Rolling friction coefficient (0: none).
-    pub mu_r: f64,
-    /// Twisting friction coefficient (0: none).
-    pub mu_t: f64,
-}
+/// particles' values ([`Material::against`]).
+pub use walls_geometry::Material;
 
 /// The damping coefficient for restitution `eps` of a spring `k` on mass `m`.
 pub fn damping(eps: f64, k: f64, m: f64) -> f64 {

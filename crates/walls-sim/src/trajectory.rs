@@ -14,7 +14,7 @@ use crate::run::State;
 use std::fs::File;
 use std::io::{self, BufWriter};
 use std::path::Path;
-use walls_model::Scene;
+use walls_geometry::Wall;
 
 /// The open trajectory files.
 pub struct Trajectory {
@@ -50,7 +50,7 @@ impl Trajectory {
         step: u64,
         t: f64,
         states: &[State],
-        scene: &Scene,
+        scene: &[Wall],
         assemblies: &[crate::reactive::Assembly],
     ) -> io::Result<()> {
         let (step, time) = (step.to_string(), t.to_string());
@@ -69,15 +69,12 @@ impl Trajectory {
             }
             self.particles.write_record(&row)?;
         }
-        for (w, wall) in scene.walls.iter().enumerate() {
+        for (w, wall) in scene.iter().enumerate() {
             let moved = assemblies.iter().find_map(|a| {
                 let k = a.walls.iter().position(|x| *x == w)?;
                 Some(a.origin(k))
             });
-            let o = moved.unwrap_or_else(|| {
-                walls_model::motion::position(wall, t)
-                    .unwrap_or_else(|| wall.vector(walls_keywords::Keyword::Origin))
-            });
+            let o = moved.unwrap_or_else(|| wall.motion.position_or_origin(t));
             let mut row = vec![step.clone(), time.clone(), w.to_string()];
             row.extend(o.iter().map(f64::to_string));
             self.walls.write_record(&row)?;

@@ -1,5 +1,5 @@
 //! Which walls a particle could touch, without asking every wall: a bounding-volume
-//! hierarchy (BVH) over the walls' axis-aligned boxes ([`Shape::bounds`]).
+//! hierarchy (BVH) over the walls' axis-aligned boxes ([`walls_geometry::Shape::bounds`]).
 //!
 //! A query — every wall that could be within `reach` of a point — costs about the
 //! logarithm of the wall count plus the walls returned, instead of one nearest-point
@@ -40,11 +40,9 @@
 //! of rounding at one unit in the last place each): candidates are a superset of the
 //! walls within reach, never fewer.
 
-use crate::geometry::Shape;
 use nalgebra::Vector3;
 use std::collections::HashMap;
-use walls_keywords::Keyword;
-use walls_model::{Scene, Wall, motion::position};
+use walls_geometry::{Motion, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -104,17 +102,19 @@ pub struct WallIndex {
 const MAX_DEPTH: usize = 64;
 
 impl WallIndex {
-    /// Groups the walls of `scene` by motion and builds each group's hierarchy over
-    /// the shapes at t = 0 (each wall's origin as [`position`] places it then).
-    pub fn new(scene: &Scene) -> WallIndex {
-        let origins: Vec<Vec3> = scene.walls.iter().map(origin_at_start).collect();
+    /// Groups `walls` by motion and builds each group's hierarchy over the shapes at
+    /// t = 0 (each wall's origin as [`Wall::origin_at_start`] places it).
+    pub fn new(walls: &[Wall]) -> WallIndex {
+        let origins: Vec<Vec3> = walls.iter().map(Wall::origin_at_start).collect();
         let mut always = Vec::new();
         let mut members: Vec<Vec<Item>> = Vec::new();
         let mut group_of: HashMap<MotionKey, usize> = HashMap::new();
         let mut scale = 0.0f64;
-        for (w, (wall, origin)) in scene.walls.iter().zip(&origins).enumerate() {
+        for (w, (wall, origin)) in walls.iter().zip(&origins).enumerate() {
             scale = scale.max(finite_amax(origin));
-            let bounds = Shape::of(wall, *origin)
+            let bounds = wall
+                .shape
+                .at(*origin)
                 .bounds()
                 .filter(|(lo, hi)| lo.iter().chain(hi.iter()).all(|x| x.is_finite()));
             let Some((lo, hi)) = bounds else {
@@ -122,10 +122,12 @@ impl WallIndex {
                 continue;
             };
             scale = scale.max(lo.amax()).max(hi.amax());
-            let g = *group_of.entry(MotionKey::of(wall)).or_insert_with(|| {
-                members.push(Vec::new());
-                members.len() - 1
-            });
+            let g = *group_of
+                .entry(MotionKey::of(&wall.motion))
+                .or_insert_with(|| {
+                    members.push(Vec::new());
+                    members.len() - 1
+                });
             members[g].push(Item {
                 wall: w as u32,
                 lo,
@@ -150,7 +152,7 @@ impl WallIndex {
         WallIndex {
             always,
             groups,
-            len: scene.walls.len(),
+            len: walls.len(),
             scale,
         }
     }
@@ -348,12 +350,6 @@ impl Found {
     }
 }
 
-/// A wall's origin at t = 0 as the runs place it: where [`position`] puts it, or its
-/// `origin` if that overflows.
-fn origin_at_start(wall: &Wall) -> Vec3 {
-    position(wall, 0.0).unwrap_or_else(|| wall.vector(Keyword::Origin))
-}
-
 /// The largest finite |coordinate| of `v` (0 if none is finite).
 fn finite_amax(v: &Vec3) -> f64 {
     v.iter()
@@ -369,20 +365,17 @@ fn finite_amax(v: &Vec3) -> f64 {
 struct MotionKey([u64; 10]);
 
 impl MotionKey {
-    fn of(wall: &Wall) -> MotionKey {
-        let velocity = wall.vector(Keyword::Velocity);
-        let amplitude = wall.number(Keyword::OscAmpl);
+    fn of(motion: &Motion) -> MotionKey {
+        let velocity = motion.velocity;
+        let o = &motion.oscillation;
+        let amplitude = o.amplitude;
         let (freq, phase, vector) = if amplitude != 0.0 {
-            (
-                wall.number(Keyword::OscFreq),
-                wall.number(Keyword::OscPhase).rem_euclid(1.0),
-                wall.vector(Keyword::OscVec),
-            )
+            (o.frequency, o.cycle(), o.direction)
         } else {
             (0.0, 0.0, Vec3::zeros())
         };
         let moves = amplitude != 0.0 || velocity != Vec3::zeros();
-        let step = match wall.number(Keyword::Step) {
+        let step = match motion.step {
             s if moves && s > 0.0 => s,
             _ => 0.0,
         };

@@ -2,7 +2,8 @@
 //! answers: exact to 1e−12 relative where the answer is exact.
 
 use nalgebra::Vector3;
-use walls_model::{Mode, Scene};
+use walls_geometry::Wall;
+use walls_model::Mode;
 use walls_sim::run::{EventKind, Method, Outcome, ParticleMaterial, Settings, run};
 
 mod common;
@@ -10,7 +11,7 @@ use common::particle;
 
 type Vec3 = Vector3<f64>;
 
-fn scene(text: &str) -> Scene {
+fn scene(text: &str) -> Vec<Wall> {
     common::scene_in(text, Mode::Hsdem)
 }
 

@@ -2,8 +2,8 @@
 //! 1e−12 relative.
 
 use nalgebra::Vector3;
-use walls_sim::hsdem::{Hit, bounce, first_hit, supported};
-use walls_sim::{Feature, Shape};
+use walls_geometry::{Feature, Hit, Shape, Wall};
+use walls_sim::hsdem::bounce;
 
 type Vec3 = Vector3<f64>;
 
@@ -73,8 +73,7 @@ fn shape(text: &str) -> Shape {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
     let scene = walls_model::analyze(&parsed.tree, &walls_model::Options::default()).scene;
-    let wall = &scene.walls[0];
-    Shape::of(wall, wall.vector(walls_keywords::Keyword::Origin))
+    Wall::decode(&scene.walls[0]).shape
 }
 
 fn exact(t: Option<Hit>, expected: f64, feature: Feature) {
@@ -93,15 +92,11 @@ fn predicting_a_hit_on_a_moving_plane() {
     // frame it falls at 2.5, so contact after (1 − 0.1)/2.5 = 0.36.
     let plane = shape("wall type plane\n");
     let (p, d) = (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, -2.5));
-    exact(
-        first_hit(&plane, &p, &d, 0.1, 1.0, true),
-        0.36,
-        Feature::Face,
-    );
+    exact(plane.first_hit(&p, &d, 0.1, 1.0, true), 0.36, Feature::Face);
     // Not within a shorter step, nor when moving away; from below as well.
-    assert_eq!(first_hit(&plane, &p, &d, 0.1, 0.3, true), None);
-    assert_eq!(first_hit(&plane, &p, &-d, 0.1, 1.0, true), None);
-    let below = first_hit(&plane, &-p, &Vec3::new(0.0, 0.0, 3.0), 0.1, 1.0, true);
+    assert_eq!(plane.first_hit(&p, &d, 0.1, 0.3, true), None);
+    assert_eq!(plane.first_hit(&p, &-d, 0.1, 1.0, true), None);
+    let below = plane.first_hit(&-p, &Vec3::new(0.0, 0.0, 3.0), 0.1, 1.0, true);
     exact(below, 0.3, Feature::Face);
 }
 
@@ -112,7 +107,7 @@ fn predicting_hits_on_every_feature_hsdem_supports() {
     let down = Vec3::new(0.0, 0.0, -1.0);
     // The face: from height 1 at speed 1, 0.9.
     exact(
-        first_hit(&rect, &Vec3::new(1.0, 0.5, 1.0), &down, r, 2.0, true),
+        rect.first_hit(&Vec3::new(1.0, 0.5, 1.0), &down, r, 2.0, true),
         0.9,
         Feature::Face,
     );
@@ -120,30 +115,30 @@ fn predicting_hits_on_every_feature_hsdem_supports() {
     let p = Vec3::new(3.0, 0.5, 0.0);
     let left = Vec3::new(-1.0, 0.0, 0.0);
     exact(
-        first_hit(&rect, &p, &left, r, 2.0, true),
+        rect.first_hit(&p, &left, r, 2.0, true),
         1.0 - r,
         Feature::Edge(1),
     );
     // With edge detection off, the edge is not seen.
-    assert_eq!(first_hit(&rect, &p, &left, r, 2.0, false), None);
+    assert_eq!(rect.first_hit(&p, &left, r, 2.0, false), None);
     // Vertex 3 (origin + e1 + e2 = (2, 1, 0)) along the diagonal: |(1,1,1)|·(1 − r/√3)/√3.
     let dir = Vec3::new(1.0, 1.0, 1.0).normalize();
     let corner = Vec3::new(2.0, 1.0, 0.0);
     exact(
-        first_hit(&rect, &(corner + dir * 2.0), &-dir, r, 5.0, true),
+        rect.first_hit(&(corner + dir * 2.0), &-dir, r, 5.0, true),
         2.0 - r,
         Feature::Vertex(3),
     );
     // A disk's face, its rim (a quartic) and its hole's rim.
     let disk = shape("wall type disk\n  radius 1\n  hole-radius 0.3\n");
     exact(
-        first_hit(&disk, &Vec3::new(0.6, 0.0, 1.0), &down, r, 2.0, true),
+        disk.first_hit(&Vec3::new(0.6, 0.0, 1.0), &down, r, 2.0, true),
         0.9,
         Feature::Face,
     );
     // In the disk's plane towards the rim from outside: it meets the rim at distance r.
     exact(
-        first_hit(&disk, &Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
+        disk.first_hit(&Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
         2.0 - r,
         Feature::Rim(0),
     );
@@ -152,37 +147,39 @@ fn predicting_hits_on_every_feature_hsdem_supports() {
     let big = 0.5;
     let touch_height = (big * big - 0.09f64).sqrt();
     exact(
-        first_hit(&disk, &Vec3::new(0.0, 0.0, 1.0), &down, big, 2.0, true),
+        disk.first_hit(&Vec3::new(0.0, 0.0, 1.0), &down, big, 2.0, true),
         1.0 - touch_height,
         Feature::HoleRim,
     );
     // Cylinders: from outside by the earlier root, from inside by the later.
     let tube = shape("wall type cylinder-infinite\n  radius 1\n");
     exact(
-        first_hit(&tube, &Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
+        tube.first_hit(&Vec3::new(3.0, 0.0, 0.0), &left, r, 5.0, true),
         2.0 - r,
         Feature::Side,
     );
     exact(
-        first_hit(&tube, &Vec3::zeros(), &left, r, 5.0, true),
+        tube.first_hit(&Vec3::zeros(), &left, r, 5.0, true),
         1.0 - r,
         Feature::Side,
     );
     let can = shape("wall type cylinder-finite\n  radius 1\n  length 2\n");
     exact(
-        first_hit(&can, &Vec3::new(0.5, 0.0, 0.0), &-left, r, 5.0, true),
+        can.first_hit(&Vec3::new(0.5, 0.0, 0.0), &-left, r, 5.0, true),
         0.5 - r,
         Feature::Side,
     );
     // Its upper end's rim, met from above just outside the radius.
-    let rim = first_hit(&can, &Vec3::new(1.05, 0.0, 3.0), &down, r, 5.0, true).expect("rim");
+    let rim = can
+        .first_hit(&Vec3::new(1.05, 0.0, 3.0), &down, r, 5.0, true)
+        .expect("rim");
     let height = (r * r - 0.05f64 * 0.05).sqrt();
     assert!((rim.t - (2.0 - height)).abs() < 1e-12, "{rim:?}");
     assert_eq!(rim.feature, Feature::Rim(1));
     // A zero-radius disk is a point.
     let point = shape("wall type disk\n  radius 0\n");
     exact(
-        first_hit(&point, &Vec3::new(0.0, 0.0, 1.0), &down, r, 2.0, true),
+        point.first_hit(&Vec3::new(0.0, 0.0, 1.0), &down, r, 2.0, true),
         0.9,
         Feature::Point,
     );
@@ -192,7 +189,7 @@ fn predicting_hits_on_every_feature_hsdem_supports() {
         "wall type shell\n",
         "wall type cylinder-finite\n  taper 0.5\n",
     ] {
-        assert!(!supported(&shape(text)), "{text}");
+        assert!(!shape(text).hard_sphere_supported(), "{text}");
     }
 }
 
@@ -201,8 +198,7 @@ fn a_near_miss_is_missed_and_a_clip_is_a_corner() {
     // Passing the rectangle's corner (0, 1, 0) in its plane just beyond r, then just within.
     let rect = shape("wall type rectangle\n  vertex1 1 0 0\n  vertex2 0 1 0\n");
     let r = 0.1;
-    let miss = first_hit(
-        &rect,
+    let miss = rect.first_hit(
         &Vec3::new(-1.0, 1.0 + 1.01 * r, 0.0),
         &Vec3::x(),
         r,
@@ -211,14 +207,7 @@ fn a_near_miss_is_missed_and_a_clip_is_a_corner() {
     );
     assert_eq!(miss, None);
     let y = 0.99 * r;
-    let clip = first_hit(
-        &rect,
-        &Vec3::new(-1.0, 1.0 + y, 0.0),
-        &Vec3::x(),
-        r,
-        5.0,
-        true,
-    );
+    let clip = rect.first_hit(&Vec3::new(-1.0, 1.0 + y, 0.0), &Vec3::x(), r, 5.0, true);
     let expected = 1.0 - (r * r - y * y).sqrt();
     let clip = clip.expect("it clips the corner");
     assert_eq!(clip.feature, Feature::Vertex(2));
@@ -239,8 +228,7 @@ fn a_hole_smaller_than_the_particle_stops_it_on_and_near_the_axis() {
     for offset in [0.0, 1e-13, 1e-11, 1e-9, 1e-7] {
         // The nearest rim point is on the particle's side, 0.05 − offset across.
         let expected = 0.5 - (r * r - (0.05 - offset) * (0.05 - offset)).sqrt();
-        let hit = first_hit(
-            &disk,
+        let hit = disk.first_hit(
             &Vec3::new(offset, 0.0, 0.5),
             &Vec3::new(0.0, 0.0, -1.0),
             r,
@@ -259,7 +247,7 @@ fn a_hole_smaller_than_the_particle_stops_it_on_and_near_the_axis() {
     let can = shape("wall type cylinder-finite\n  radius 0.05\n  length 2\n");
     for tilt in [0.0, 1e-11, 1e-9] {
         let d = Vec3::new(tilt, 0.0, -1.0).normalize();
-        let hit = first_hit(&can, &Vec3::new(0.0, 0.0, 3.0), &d, r, 5.0, true);
+        let hit = can.first_hit(&Vec3::new(0.0, 0.0, 3.0), &d, r, 5.0, true);
         let hit = hit.unwrap_or_else(|| panic!("tilt {tilt}: missed the end"));
         assert_eq!(hit.feature, Feature::Rim(1));
         assert!(

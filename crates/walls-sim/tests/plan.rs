@@ -2,7 +2,7 @@
 //! out does not change the answer.
 
 use nalgebra::Vector3;
-use walls_model::Scene;
+use walls_geometry::Wall;
 use walls_sim::input::Particle;
 use walls_sim::plan::{Plan, parts};
 use walls_sim::run::{Method, Planning, Settings, run};
@@ -20,7 +20,7 @@ fn settings(k_n: f64, t_end: f64) -> Settings {
     }
 }
 
-fn used(scene: &Scene, ps: &[Particle], s: &Settings) -> Vec<&'static str> {
+fn used(scene: &[Wall], ps: &[Particle], s: &Settings) -> Vec<&'static str> {
     parts(scene, ps, s)
         .1
         .into_iter()
@@ -124,7 +124,7 @@ fn leaving_out_unneeded_parts_does_not_change_the_answer() {
 }
 
 /// A closed box of 6 × 5 × 5 = 150 square tiles around the origin, side 2.
-fn tiled_box() -> Scene {
+fn tiled_box() -> Vec<Wall> {
     let mut text = String::new();
     let h = 0.4;
     for k in 0..5 {

@@ -3,20 +3,21 @@
 //! under pkdgrav's 3 % warning.
 
 use nalgebra::Vector3;
-use walls_model::{Options, Scene, analyze};
+use walls_geometry::{Wall, decode, scene_bounds};
+use walls_model::{Options, analyze};
 use walls_sim::run::{Settings, default_dt, run};
 use walls_sim::setup;
 
-fn scene(text: &str) -> Scene {
+fn scene(text: &str) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
+    decode(&analyze(&parsed.tree, &Options::default()).scene)
 }
 
 #[test]
 fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {
     let scene = scene("wall type plane\nwall type disk origin 0 0 0.5 radius 2\n");
-    let (lo, hi) = setup::bounds(&scene);
+    let (lo, hi) = scene_bounds(&scene);
     let particles = setup::default_particles(&scene);
     assert_eq!(particles.len(), 9);
     assert_eq!(particles, setup::default_particles(&scene), "deterministic");

@@ -7,19 +7,20 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::f64::consts::PI;
-use walls_model::{Options, Scene, motion::position};
-use walls_sim::{Motion, OscillationStepping, Shape, WallIndex};
+use walls_geometry::{OscillationStepping, Shape, Wall, decode};
+use walls_model::Options;
+use walls_sim::WallIndex;
 
 type Vec3 = Vector3<f64>;
 
-fn scene(text: &str) -> Scene {
+fn scene(text: &str) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
     let options = Options {
         max_walls: usize::MAX,
         ..Options::default()
     };
-    walls_model::analyze(&parsed.tree, &options).scene
+    decode(&walls_model::analyze(&parsed.tree, &options).scene)
 }
 
 fn v(p: &Vec3) -> String {
@@ -45,17 +46,14 @@ fn candidates(index: &WallIndex, p: &Vec3, reach: f64, origins: &[Vec3]) -> Vec<
 }
 
 /// Every wall's origin at time `t`, exactly or moved step by step from t = 0.
-fn origins_at(scene: &Scene, t: f64, steps: u32, stepping: OscillationStepping) -> Vec<Vec3> {
+fn origins_at(scene: &[Wall], t: f64, steps: u32, stepping: OscillationStepping) -> Vec<Vec3> {
     let dt = t / f64::from(steps);
     scene
-        .walls
         .iter()
         .map(|w| {
-            let mut o = position(w, 0.0).unwrap();
+            let mut o = w.motion.position(0.0).unwrap();
             for k in 0..steps {
-                o = Motion::new(w)
-                    .step(&o, f64::from(k) * dt, dt, stepping)
-                    .unwrap();
+                o = w.motion.step(&o, f64::from(k) * dt, dt, stepping).unwrap();
             }
             o
         })
@@ -184,9 +182,9 @@ proptest! {
     ) {
         let scene = scene(&text);
         let index = WallIndex::new(&scene);
-        prop_assert_eq!(index.len(), scene.walls.len());
+        prop_assert_eq!(index.len(), scene.len());
         let origins = origins_at(&scene, t, steps, how);
-        let shapes: Vec<Shape> = scene.walls.iter().zip(&origins).map(|(w, o)| Shape::of(w, *o)).collect();
+        let shapes: Vec<Shape> = scene.iter().zip(&origins).map(|(w, o)| w.shape.at(*o)).collect();
         for (p, reach) in queries {
             let found = candidates(&index, &p, reach, &origins);
             for (w, shape) in shapes.iter().enumerate() {
@@ -217,14 +215,13 @@ proptest! {
     ) {
         let scene = scene(&text);
         let index = WallIndex::new(&scene);
-        let start: Vec<Vec3> = scene.walls.iter().map(|w| position(w, t).unwrap()).collect();
+        let start: Vec<Vec3> = scene.iter().map(|w| w.motion.position(t).unwrap()).collect();
         let chord: Vec<Vec3> = scene
-            .walls
             .iter()
             .zip(&start)
-            .map(|(w, s)| (position(w, t + dt).unwrap() - s) / dt)
+            .map(|(w, s)| (w.motion.position(t + dt).unwrap() - s) / dt)
             .collect();
-        let shapes: Vec<Shape> = scene.walls.iter().zip(&start).map(|(w, o)| Shape::of(w, *o)).collect();
+        let shapes: Vec<Shape> = scene.iter().zip(&start).map(|(w, o)| w.shape.at(*o)).collect();
         let tau = frac * dt;
         let left = dt - tau;
         for (pos, vel, radius) in particles {
@@ -247,7 +244,7 @@ proptest! {
     #[test]
     fn nearest_points_lie_in_the_bounds(text in geometry(), p in vec3(10.0)) {
         let scene = scene(&format!("wall\n{text}"));
-        let shape = Shape::of(&scene.walls[0], position(&scene.walls[0], 0.0).unwrap());
+        let shape = scene[0].shape.at(scene[0].motion.position(0.0).unwrap());
         if let Some((lo, hi)) = shape.bounds() {
             let q = shape.nearest(&p).point;
             let tolerance = 1e-12 * (1.0 + q.amax());
@@ -381,9 +378,8 @@ fn a_group_is_found_where_it_has_moved() {
     assert_eq!(index.group_count(), 2);
     let at = |t: f64| -> Vec<Vec3> {
         scene
-            .walls
             .iter()
-            .map(|w| position(w, t).unwrap())
+            .map(|w| w.motion.position(t).unwrap())
             .collect()
     };
     // A leaf holds up to four walls: both triangles' box is one.
@@ -409,7 +405,7 @@ fn a_group_is_found_where_it_has_moved() {
         [0, 1, 2, 3]
     );
     // No walls, no candidates.
-    let none = WallIndex::new(&Scene::default());
+    let none = WallIndex::new(&[]);
     assert!(none.is_empty());
     assert!(candidates(&none, &p, 1.0, &[]).is_empty());
 }
@@ -417,19 +413,17 @@ fn a_group_is_found_where_it_has_moved() {
 #[test]
 fn near_a_hull_of_10k_triangles_few_walls_are_candidates() {
     let scene = scene(&walls_sim::setup::sphere_hull(50));
-    assert_eq!(scene.walls.len(), 10_000);
+    assert_eq!(scene.len(), 10_000);
     let index = WallIndex::new(&scene);
     assert_eq!(index.group_count(), 1);
     let origins: Vec<Vec3> = scene
-        .walls
         .iter()
-        .map(|w| position(w, 0.0).unwrap())
+        .map(|w| w.motion.position(0.0).unwrap())
         .collect();
     let shapes: Vec<Shape> = scene
-        .walls
         .iter()
         .zip(&origins)
-        .map(|(w, o)| Shape::of(w, *o))
+        .map(|(w, o)| w.shape.at(*o))
         .collect();
     let (mut total, mut most, mut touching) = (0, 0, 0);
     let queries = 500;

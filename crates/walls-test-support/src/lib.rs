@@ -3,7 +3,9 @@
 //! [`render`] writes diagnostics as plain text that shows exactly what a test must pin
 //! down: code, severity, 1-based line:column span with the text it covers, labels, help
 //! and every fix edit. [`snapshot_beside`] compares such text with a `.snap` file next
-//! to the input it came from.
+//! to the input it came from. [`arbitrary`] makes random walls files for property tests.
+
+pub mod arbitrary;
 
 use std::fmt::Write as _;
 use std::ops::Range;

@@ -20,7 +20,8 @@
 use nalgebra::Vector3;
 use std::time::Instant;
 use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
-use walls_model::{Options, Scene, analyze};
+use walls_geometry::{Wall, decode};
+use walls_model::{Options, analyze};
 use walls_sim::input::Particle;
 use walls_sim::run::{Integrator, Method, ParticleMaterial, Settings, run, run_observed};
 use walls_sim::ssdem::damping;
@@ -52,9 +53,9 @@ struct Point {
     ns_per_contact: f64,
 }
 
-fn scene() -> Scene {
+fn scene() -> Vec<Wall> {
     let parsed = walls_syntax::parse("wall type plane\n");
-    analyze(&parsed.tree, &Options::default()).scene
+    decode(&analyze(&parsed.tree, &Options::default()).scene)
 }
 
 /// `count` particles touching the plane z = 0 and moving into it at speed 1, spaced

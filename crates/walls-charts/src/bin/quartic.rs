@@ -4,7 +4,7 @@
 //! (ray against torus).
 //!
 //! Solvers:
-//! - `ours`: `walls_sim::poly::first_entry` (root isolation by recursive derivatives,
+//! - `ours`: `walls_geometry::poly::first_entry` (root isolation by recursive derivatives,
 //!   safeguarded Newton, compensated Horner near roots);
 //! - `ferrari`: the textbook closed form — depressed quartic, largest root of the
 //!   resolvent cubic by Cardano or the trigonometric form, two quadratics (each by the
@@ -79,7 +79,7 @@ use std::hint::black_box;
 use std::ops::{Add, Mul, Neg, Sub};
 use std::time::Instant;
 use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
-use walls_sim::poly::first_entry;
+use walls_geometry::poly::first_entry;
 
 /// Coefficients, lowest degree first.
 type Coeffs = [f64; 5];

@@ -12,7 +12,8 @@
 
 use nalgebra::Vector3;
 use walls_charts::{Chart, Mark, Series, out_dir, write};
-use walls_model::{Options, Scene, analyze};
+use walls_geometry::{Wall, decode};
+use walls_model::{Options, analyze};
 use walls_sim::input::Particle;
 use walls_sim::run::{Method, ParticleMaterial, Settings, run, run_observed};
 use walls_sim::ssdem::damping;
@@ -21,12 +22,14 @@ type Vec3 = Vector3<f64>;
 
 const RADIUS: f64 = 0.1;
 
-fn plane() -> Scene {
-    analyze(
-        &walls_syntax::parse("wall type plane\n").tree,
-        &Options::default(),
+fn plane() -> Vec<Wall> {
+    decode(
+        &analyze(
+            &walls_syntax::parse("wall type plane\n").tree,
+            &Options::default(),
+        )
+        .scene,
     )
-    .scene
 }
 
 fn ball(z: f64, v: f64) -> Particle {

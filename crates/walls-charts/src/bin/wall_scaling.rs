@@ -15,8 +15,9 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use walls_charts::{Chart, Mark, Series};
-use walls_model::{Options, Scene, motion::position};
-use walls_sim::{Shape, WallIndex};
+use walls_geometry::{Shape, Wall, decode};
+use walls_model::Options;
+use walls_sim::WallIndex;
 
 type Vec3 = Vector3<f64>;
 
@@ -42,17 +43,15 @@ fn main() -> std::io::Result<()> {
     for target in [100, 300, 1_000, 3_000, 10_000, 30_000, 100_000] {
         let m = (target as f64 / 4.0).sqrt().round() as usize;
         let scene = scene(&walls_sim::setup::sphere_hull(m));
-        let n = scene.walls.len();
+        let n = scene.len();
         let origins: Vec<Vec3> = scene
-            .walls
             .iter()
-            .map(|w| position(w, 0.0).expect("a finite origin"))
+            .map(|w| w.motion.position(0.0).expect("a finite origin"))
             .collect();
         let shapes: Vec<Shape> = scene
-            .walls
             .iter()
             .zip(&origins)
-            .map(|(w, o)| Shape::of(w, *o))
+            .map(|(w, o)| w.shape.at(*o))
             .collect();
         let particles = particles(&shapes);
 
@@ -157,14 +156,14 @@ fn ns_per_query(particles: &[Vec3], query: impl Fn(&Vec3) -> usize) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-fn scene(text: &str) -> Scene {
+fn scene(text: &str) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
     let options = Options {
         max_walls: usize::MAX,
         ..Options::default()
     };
-    walls_model::analyze(&parsed.tree, &options).scene
+    decode(&walls_model::analyze(&parsed.tree, &options).scene)
 }
 
 /// The particles: each under a random point of a random triangle, 0.5 to 1.5 radii

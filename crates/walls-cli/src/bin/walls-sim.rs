@@ -251,11 +251,8 @@ fn plan(args: &RunArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let (_, parts) = walls_sim::plan::parts(
-        &prepared.checked.scene,
-        &prepared.particles,
-        &prepared.settings,
-    );
+    let (_, parts) =
+        walls_sim::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
     if args.json {
         let list: Vec<_> = parts
             .iter()
@@ -573,7 +570,8 @@ fn prepare(args: &RunArgs) -> Result<Prepared, String> {
             args.file
         );
     }
-    let scene = &checked.scene;
+    let walls = walls_geometry::decode(&checked.scene);
+    let scene = &walls[..];
     let par = match &args.par {
         Some(p) => Some(
             read_par(&std::fs::read_to_string(p).map_err(|e| format!("cannot read {p}: {e}"))?)
@@ -655,7 +653,7 @@ fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         ..Settings::new(dt, t_end, material)
     };
     Ok(Prepared {
-        checked,
+        walls,
         particles,
         settings,
         errors,
@@ -799,7 +797,7 @@ fn preview_inner(args: &PreviewArgs) -> Result<ExitCode, String> {
             particles: &particles,
         })
         .collect();
-    let bounds = walls_sim::setup::bounds(scene);
+    let bounds = walls_geometry::scene_bounds(&walls_geometry::decode(scene));
     let kind = args
         .out
         .as_ref()
@@ -980,10 +978,10 @@ fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
 fn record_reactive(
     out: &mut walls_sim::reactive_output::ReactiveOutput,
     step: u64,
-    scene: &walls_model::Scene,
+    scene: &[walls_geometry::Wall],
     assemblies: &[walls_sim::reactive::Assembly],
 ) -> std::io::Result<()> {
-    use walls_keywords::{Keyword, WallType};
+    use walls_geometry::Shape;
     use walls_sim::reactive_output::{AssemblyState, VizWall};
     let states: Vec<AssemblyState> = assemblies
         .iter()
@@ -998,28 +996,25 @@ fn record_reactive(
     for a in assemblies {
         let turn = a.turn();
         for (k, &w) in a.walls.iter().enumerate() {
-            let wall = &scene.walls[w];
+            let shape = &scene[w].shape;
             // pkdgrav's viz file holds finite walls only.
-            if matches!(
-                wall.wall_type(),
-                WallType::Plane | WallType::CylinderInfinite
-            ) {
+            if matches!(shape, Shape::Plane { .. } | Shape::InfiniteCylinder { .. }) {
                 continue;
             }
             let origin = a.origin(k);
             walls.push((
                 w,
-                match wall.wall_type() {
-                    WallType::Triangle | WallType::Rectangle => VizWall::Polygon {
+                match (shape.edges(), shape.axis()) {
+                    (Some((e1, e2)), _) => VizWall::Polygon {
                         id: w,
                         origin,
-                        vertex1: turn * wall.vector(Keyword::Vertex1),
-                        vertex2: turn * wall.vector(Keyword::Vertex2),
+                        vertex1: turn * e1,
+                        vertex2: turn * e2,
                     },
-                    _ => VizWall::Round {
+                    (None, axis) => VizWall::Round {
                         id: w,
                         origin,
-                        orient: turn * wall.vector(Keyword::Orient),
+                        orient: turn * axis.unwrap_or_default(),
                     },
                 },
             ));
@@ -1032,7 +1027,7 @@ fn record_reactive(
 
 /// What a run needs, read and checked.
 struct Prepared {
-    checked: walls_cli::Checked,
+    walls: Vec<walls_geometry::Wall>,
     particles: Vec<walls_sim::input::Particle>,
     settings: walls_sim::run::Settings,
     errors: usize,
@@ -1041,12 +1036,12 @@ struct Prepared {
 fn simulate_inner(args: &RunArgs) -> Result<ExitCode, String> {
     use walls_sim::run::run_observed;
     let Prepared {
-        checked,
+        walls,
         particles,
         settings,
         errors,
     } = prepare(args)?;
-    let scene = &checked.scene;
+    let scene = &walls[..];
     let (t_end, dt) = (settings.t_end, settings.dt);
     let mut trajectory = match &args.out {
         Some(dir) => Some(
@@ -1134,7 +1129,7 @@ fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
 /// The parts of the model a run used, for the JSON `model` field: the plan's (as the
 /// run saw it), plus sticky and death walls when a particle met one.
 fn model(
-    scene: &walls_model::Scene,
+    scene: &[walls_geometry::Wall],
     particles: &[walls_sim::input::Particle],
     settings: &walls_sim::run::Settings,
 ) -> Vec<&'static str> {
@@ -1156,7 +1151,7 @@ fn model(
 /// Prints the outcome: JSON on standard output, or a summary on standard error.
 fn report(
     args: &RunArgs,
-    scene: &walls_model::Scene,
+    scene: &[walls_geometry::Wall],
     particles: &[walls_sim::input::Particle],
     settings: &walls_sim::run::Settings,
     out: &walls_sim::run::Outcome,
@@ -1237,7 +1232,7 @@ fn scene(path: &str, time: Option<f64>, mode: ModeArg) -> ExitCode {
     };
     let checked = check_bytes(bytes, &options);
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    let written = walls_model::json::write_scene(&mut out, &checked.scene, &checked.text, time)
+    let written = walls_geometry::json::write_scene(&mut out, &checked.scene, &checked.text, time)
         .and_then(|()| out.flush());
     if let Err(e) = written {
         if e.kind() != std::io::ErrorKind::BrokenPipe {

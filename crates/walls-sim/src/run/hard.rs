@@ -24,9 +24,8 @@ use super::{
     Event, EventKind, Materials, Observer, Origins, Outcome, PARALLEL_FROM, Settings, State,
     WallNow, carry, energy, turned,
 };
-use crate::geometry::Feature;
 use crate::grid::CellGrid;
-use crate::hsdem::{Body, bounce, first_hit, pair_bounce, sphere_entry, supported};
+use crate::hsdem::{Body, bounce, pair_bounce};
 use crate::plan::Plan;
 use crate::ssdem::Material;
 use crate::wall_index::WallIndex;
@@ -34,8 +33,9 @@ use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
-use walls_keywords::Keyword;
-use walls_model::Scene;
+use walls_geometry::Feature;
+use walls_geometry::impact::sphere_entry;
+use walls_geometry::{Shape, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -249,7 +249,11 @@ impl Drift<'_> {
             if near.distance > p.radius + d.norm() * left {
                 return;
             }
-            if let Some(hit) = first_hit(&wall.start.shape, &here, &d, p.radius, left, self.edges) {
+            if let Some(hit) = wall
+                .start
+                .shape
+                .first_hit(&here, &d, p.radius, left, self.edges)
+            {
                 consider(hit.t, Partner::Wall(w));
             }
         };
@@ -439,7 +443,7 @@ fn pair_collision(d: &mut Drift, i: usize, j: usize) {
 }
 
 pub(super) fn run(
-    scene: &Scene,
+    scene: &[Wall],
     mut states: Vec<State>,
     settings: &Settings,
     plan: &Plan,
@@ -457,22 +461,25 @@ pub(super) fn run(
     let usable: Vec<bool> = origins
         .walls(scene, 0.0)
         .iter()
-        .map(|w| supported(&w.shape))
+        .map(|w| w.shape.hard_sphere_supported())
         .collect();
-    for (w, wall) in scene.walls.iter().enumerate() {
+    for (w, wall) in scene.iter().enumerate() {
         if !usable[w] {
             warnings.push(format!(
                 "wall {w} ({}{}) is not supported by pkdgrav's hard-sphere code; particles pass through it",
-                wall.wall_type().name(),
-                if wall.number(Keyword::Taper) != 0.0 { " with taper" } else { "" }
+                wall.shape.wall_type().name(),
+                if matches!(wall.shape, Shape::FiniteCylinder { taper, .. } if taper != 0.0) {
+                    " with taper"
+                } else {
+                    ""
+                }
             ));
         }
     }
     let literal: Vec<String> = scene
-        .walls
         .iter()
         .enumerate()
-        .filter(|(_, w)| w.number(Keyword::Epsn) == 99.0 || w.number(Keyword::Epst) == 99.0)
+        .filter(|(_, w)| w.material.restitution_falls_back())
         .map(|(i, _)| i.to_string())
         .collect();
     if !literal.is_empty() {
@@ -548,7 +555,7 @@ pub(super) fn run(
             } else if s.alive
                 && let Some((w, _)) = s.stuck_to
             {
-                carry(s, &WallNow::new(&scene.walls[w], origins.now[w], t), dt);
+                carry(s, &WallNow::new(&scene[w], origins.now[w], t), dt);
             }
         }
         observe(steps, t, &states, &[]);

@@ -18,14 +18,11 @@ mod stability;
 
 pub use hard::COLLISION_CAP;
 
-use crate::geometry::Shape;
 use crate::input::Particle;
-use crate::kinematics::{Motion, OscillationStepping};
 use crate::plan::Plan;
 use crate::ssdem::Material;
 use nalgebra::Vector3;
-use walls_keywords::Keyword;
-use walls_model::{Scene, Wall, motion::position};
+use walls_geometry::{OscillationStepping, Shape, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -217,15 +214,15 @@ pub struct Outcome {
 /// particles and the reactive walls' assemblies.
 pub type Observer<'a> = &'a mut dyn FnMut(u64, f64, &[State], &[crate::reactive::Assembly]);
 
-/// Runs `particles` against the walls of `scene` (and each other), calling `observe`
-/// after every step with the step number, the time and the particles.
+/// Runs `particles` against `walls` (and each other), calling `observe` after every
+/// step with the step number, the time and the particles.
 ///
 /// # Panics
 ///
 /// If the timestep is not a positive finite number: the run would never end. Callers
 /// check it first ([`crate::input::Rule::Positive`]).
 pub fn run_observed(
-    scene: &Scene,
+    walls: &[Wall],
     particles: Vec<Particle>,
     settings: &Settings,
     observe: Observer,
@@ -240,19 +237,19 @@ pub fn run_observed(
         })
         .collect();
     let plan = match settings.planning {
-        Planning::Needed => Plan::for_run(scene, &particles, settings),
+        Planning::Needed => Plan::for_run(walls, &particles, settings),
         Planning::Everything => Plan::everything(),
         Planning::Exactly(plan) => plan,
     };
     match settings.method {
-        Method::Soft => soft::run(scene, states, settings, &plan, observe),
-        Method::Hard => hard::run(scene, states, settings, &plan, observe),
+        Method::Soft => soft::run(walls, states, settings, &plan, observe),
+        Method::Hard => hard::run(walls, states, settings, &plan, observe),
     }
 }
 
-/// Runs `particles` against the walls of `scene` ([`run_observed`] without watching).
-pub fn run(scene: &Scene, particles: Vec<Particle>, settings: &Settings) -> Outcome {
-    run_observed(scene, particles, settings, &mut |_, _, _, _| {})
+/// Runs `particles` against `walls` ([`run_observed`] without watching).
+pub fn run(walls: &[Wall], particles: Vec<Particle>, settings: &Settings) -> Outcome {
+    run_observed(walls, particles, settings, &mut |_, _, _, _| {})
 }
 
 /// The materials of a run: each wall's, with the particles' values where the wall says
@@ -263,30 +260,8 @@ struct Materials {
 }
 
 impl Materials {
-    fn new(scene: &Scene, p: &ParticleMaterial) -> Materials {
-        let walls = scene
-            .walls
-            .iter()
-            .map(|wall| {
-                let own = |k, fallback: f64| match wall.number(k) {
-                    -1.0 => fallback,
-                    x => x,
-                };
-                let eps = |k, fallback: f64| match wall.number(k) {
-                    99.0 => fallback,
-                    x => x,
-                };
-                Material {
-                    eps_n: eps(Keyword::Epsn, p.eps_n),
-                    eps_t: eps(Keyword::Epst, p.eps_t),
-                    k_n: own(Keyword::KN, p.k_n),
-                    k_t: own(Keyword::KT, p.k_t),
-                    mu_s: own(Keyword::MuS, p.mu_s),
-                    mu_r: own(Keyword::MuR, p.mu_r),
-                    mu_t: own(Keyword::MuT, p.mu_t),
-                }
-            })
-            .collect();
+    fn new(walls: &[Wall], p: &ParticleMaterial) -> Materials {
+        let walls = walls.iter().map(|wall| wall.material.against(p)).collect();
         Materials { walls, between: *p }
     }
 }
@@ -320,9 +295,9 @@ impl WallNow {
     fn new(wall: &Wall, origin: Vec3, t: f64) -> WallNow {
         WallNow {
             origin,
-            shape: Shape::of(wall, origin),
-            velocity: Motion::new(wall).origin_velocity(t),
-            spin: wall.vector(Keyword::Orient) * wall.number(Keyword::AngSpeed),
+            shape: wall.shape.at(origin),
+            velocity: wall.motion.origin_velocity(t),
+            spin: wall.motion.spin(),
         }
     }
 
@@ -341,28 +316,23 @@ struct Origins {
 }
 
 impl Origins {
-    fn new(scene: &Scene, stepping: OscillationStepping) -> Origins {
-        let now = scene
-            .walls
-            .iter()
-            .map(|w| position(w, 0.0).unwrap_or_else(|| w.vector(Keyword::Origin)))
-            .collect();
+    fn new(walls: &[Wall], stepping: OscillationStepping) -> Origins {
+        let now = walls.iter().map(Wall::origin_at_start).collect();
         Origins { now, stepping }
     }
 
     /// Moves every origin over the step from `t` to `t + dt`.
-    fn advance(&mut self, scene: &Scene, t: f64, dt: f64) {
-        for (o, w) in self.now.iter_mut().zip(&scene.walls) {
-            if let Some(next) = Motion::new(w).step(o, t, dt, self.stepping) {
+    fn advance(&mut self, walls: &[Wall], t: f64, dt: f64) {
+        for (o, w) in self.now.iter_mut().zip(walls) {
+            if let Some(next) = w.motion.step(o, t, dt, self.stepping) {
                 *o = next;
             }
         }
     }
 
     /// The walls as they stand at time `t`.
-    fn walls(&self, scene: &Scene, t: f64) -> Vec<WallNow> {
-        scene
-            .walls
+    fn walls(&self, walls: &[Wall], t: f64) -> Vec<WallNow> {
+        walls
             .iter()
             .zip(&self.now)
             .map(|(w, o)| WallNow::new(w, *o, t))

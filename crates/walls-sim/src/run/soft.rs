@@ -23,7 +23,7 @@ use crate::ssdem::{
 use crate::wall_index::WallIndex;
 use nalgebra::Vector3;
 use rayon::prelude::*;
-use walls_model::Scene;
+use walls_geometry::Wall;
 
 type Vec3 = Vector3<f64>;
 
@@ -269,7 +269,7 @@ fn wall_step(
 }
 
 pub(super) fn run(
-    scene: &Scene,
+    scene: &[Wall],
     mut states: Vec<State>,
     settings: &Settings,
     plan: &Plan,
@@ -299,9 +299,8 @@ pub(super) fn run(
     let mut warned_crowd = false;
     let (mut warned_fast, mut warned_gain) = (false, false);
     let oscillating: Vec<bool> = scene
-        .walls
         .iter()
-        .map(|w| w.number(walls_keywords::Keyword::OscAmpl) != 0.0)
+        .map(|w| w.motion.oscillation.amplitude != 0.0)
         .collect();
     warnings.extend(super::stability::soft_warnings(scene, &states, settings));
     let mut t = 0.0;
@@ -330,7 +329,7 @@ pub(super) fn run(
         ));
         assemblies.retain(|a| !stuck.contains(&a.number));
     }
-    let mut assembly_of = vec![None; scene.walls.len()];
+    let mut assembly_of = vec![None; scene.len()];
     for (a, assembly) in assemblies.iter().enumerate() {
         for &w in &assembly.walls {
             assembly_of[w] = Some(a);
@@ -386,7 +385,7 @@ pub(super) fn run(
             for (k, &w) in a.walls.iter().enumerate() {
                 now[w] = WallNow {
                     origin: a.cog,
-                    shape: a.shape(&scene.walls[w], k),
+                    shape: a.shape(&scene[w].shape, k),
                     velocity: a.velocity,
                     spin: a.spin(),
                 };

@@ -5,8 +5,7 @@
 //! energy, a particle that moves more than its radius in a step.
 
 use super::{Materials, Settings, State};
-use walls_keywords::Keyword;
-use walls_model::Scene;
+use walls_geometry::Wall;
 
 /// The worst relative rebound error per step of coarseness: measured worst cases over
 /// the phases of a step are about 1.2/N at N steps per contact for the leapfrog
@@ -14,7 +13,7 @@ use walls_model::Scene;
 const REBOUND_ERROR_TIMES_STEPS: f64 = 1.2;
 
 /// Warnings about a soft-sphere run of `states` against `scene` before it starts.
-pub(super) fn soft_warnings(scene: &Scene, states: &[State], settings: &Settings) -> Vec<String> {
+pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Settings) -> Vec<String> {
     let mut out = Vec::new();
     let dt = settings.dt;
     let lightest = states
@@ -69,15 +68,14 @@ pub(super) fn soft_warnings(scene: &Scene, states: &[State], settings: &Settings
 /// How far each wall's surface can move in one step (or in one jump of its `step`),
 /// against the smallest particle: more than a tenth of its radius and a contact can
 /// start deep or be skipped (the document: speed × step ≪ particle size).
-fn wall_speed_warning(scene: &Scene, states: &[State], dt: f64) -> Option<String> {
+fn wall_speed_warning(scene: &[Wall], states: &[State], dt: f64) -> Option<String> {
     let smallest = states
         .iter()
         .map(|s| s.particle.radius)
         .fold(f64::INFINITY, f64::min);
-    scene.walls.iter().enumerate().find_map(|(w, wall)| {
-        let speed = wall.vector(Keyword::Velocity).norm()
-            + (wall.number(Keyword::OscAmpl) * wall.number(Keyword::OscFreq)).abs();
-        let interval = wall.number(Keyword::Step).max(dt);
+    scene.iter().enumerate().find_map(|(w, wall)| {
+        let speed = wall.motion.top_speed();
+        let interval = wall.motion.step.max(dt);
         let travel = speed * interval;
         (travel > 0.1 * smallest).then(|| {
             format!(

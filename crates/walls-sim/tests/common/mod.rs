@@ -1,25 +1,26 @@
-//! What the run tests share: a scene from walls-file text that must parse cleanly, and
+//! What the run tests share: the walls of walls-file text that must parse cleanly, and
 //! the ball most tests throw (mass 1, radius 0.1). Each test file uses what it needs.
 #![allow(dead_code)]
 
 use nalgebra::Vector3;
-use walls_model::{Mode, Options, Scene, analyze};
+use walls_geometry::{Wall, decode};
+use walls_model::{Mode, Options, analyze};
 use walls_sim::input::Particle;
 
-/// The scene of `text` in the soft-sphere mode.
-pub fn scene(text: &str) -> Scene {
+/// The walls of `text` in the soft-sphere mode.
+pub fn scene(text: &str) -> Vec<Wall> {
     scene_in(text, Mode::Ssdem)
 }
 
-/// The scene of `text` checked in `mode`; the text must parse without diagnostics.
-pub fn scene_in(text: &str, mode: Mode) -> Scene {
+/// The walls of `text` checked in `mode`; the text must parse without diagnostics.
+pub fn scene_in(text: &str, mode: Mode) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
     let options = Options {
         mode,
         ..Options::default()
     };
-    analyze(&parsed.tree, &options).scene
+    decode(&analyze(&parsed.tree, &options).scene)
 }
 
 /// A ball of mass 1 and radius 0.1 at `pos` moving at `vel`, not spinning.

@@ -2,7 +2,7 @@
 //! against exact roots, grazes, edge cases, random real roots and ray–torus hits.
 
 use proptest::prelude::*;
-use walls_sim::poly::first_entry;
+use walls_geometry::poly::first_entry;
 
 /// Coefficients (lowest degree first) of `scale`·∏(t − rᵢ).
 fn from_roots(scale: f64, roots: &[f64]) -> Vec<f64> {

@@ -5,7 +5,7 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
-use walls_sim::Shape;
+use walls_geometry::Shape;
 
 type Vec3 = Vector3<f64>;
 

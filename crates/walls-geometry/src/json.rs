@@ -6,14 +6,17 @@
 //! wall uses: for triangles and rectangles, vertex1 × vertex2 normalised. `transparency`
 //! is a fraction; `mass` is null when infinite (0). With a time, each wall also has
 //! `position`, its origin displaced by its motion then (null if that overflows).
+//!
+//! It lists every token's effective value, so it reads the resolved wall's settings (the
+//! one place outside [`crate::Wall::decode`] that does); the position is the typed
+//! [`crate::Motion`]'s.
 
-use crate::motion;
-use crate::scene::{Scene, Value, Wall};
 use serde::Serialize;
 use serde::ser::{SerializeMap, SerializeSeq, Serializer};
 use std::io::{self, Write};
 use walls_diagnostics::LineIndex;
 use walls_keywords::{Keyword, Role};
+use walls_model::{Scene, Value, Wall};
 
 /// Writes the scene of `text` as pretty JSON followed by a newline; `time` adds each
 /// wall's `position` at that time.
@@ -88,7 +91,7 @@ impl Serialize for WallJson<'_> {
             }
         }
         if let Some(t) = self.walls.time {
-            let position = motion::position(wall, t);
+            let position = crate::Wall::decode(wall).motion.position(t);
             map.serialize_entry("position", &position.as_ref().map(|p| p.as_slice()))?;
         }
         map.end()

@@ -2,8 +2,8 @@
 //! whose answers are known by construction.
 
 use nalgebra::Vector3;
+use walls_geometry::{Feature, Nearest, OscillationStepping, Shape, Wall};
 use walls_model::{Options, analyze};
-use walls_sim::{Feature, Motion, Nearest, OscillationStepping, Shape};
 
 type Vec3 = Vector3<f64>;
 
@@ -11,7 +11,7 @@ fn shape(text: &str) -> Shape {
     let tree = walls_syntax::parse(text).tree;
     let scene = analyze(&tree, &Options::default()).scene;
     let wall = &scene.walls[0];
-    Shape::of(wall, wall.vector(walls_keywords::Keyword::Origin))
+    Wall::decode(wall).shape
 }
 
 fn near(s: &Shape, p: [f64; 3]) -> Nearest {
@@ -147,7 +147,7 @@ fn point_velocity_adds_translation_oscillation_and_spin() {
     )
     .tree;
     let scene = analyze(&tree, &Options::default()).scene;
-    let motion = Motion::new(&scene.walls[0]);
+    let motion = Wall::decode(&scene.walls[0]).motion;
     // At t = 0: cos(2π·0.25) = 0, so no oscillation velocity; spin 3 about z at (1, 0, 0)
     // relative to the origin gives (0, 3, 0).
     let origin = Vec3::new(0.0, 0.0, 0.5);
@@ -164,7 +164,7 @@ fn pkdgrav_stepping_lags_half_a_step_and_does_not_drift() {
         walls_syntax::parse("wall type plane\n  osc-ampl 1 osc-freq 6.283185307179586\n").tree;
     let scene = analyze(&tree, &Options::default()).scene;
     let wall = &scene.walls[0];
-    let motion = Motion::new(wall);
+    let motion = Wall::decode(wall).motion;
     for n in [20usize, 100] {
         let dt = 1.0 / n as f64;
         let mut origin = Vec3::zeros();
@@ -173,7 +173,7 @@ fn pkdgrav_stepping_lags_half_a_step_and_does_not_drift() {
             origin = motion
                 .step(&origin, k as f64 * dt, dt, OscillationStepping::Pkdgrav)
                 .unwrap();
-            let exact = walls_model::motion::position(wall, (k + 1) as f64 * dt).unwrap();
+            let exact = motion.position((k + 1) as f64 * dt).unwrap();
             worst = worst.max((origin - exact).norm());
         }
         // The gap is half a step of lag plus an offset of half a step's travel: A·ω·dt.
