@@ -123,3 +123,59 @@ pub(crate) fn check_property(at: &Read, value: Value, out: &mut Vec<Diagnostic>)
     }
     value
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Vec3;
+    use walls_keywords::Role;
+
+    /// Every keyword with a range reports a value outside it, under the code its range
+    /// names, in the place the resolver asks (general tokens or properties).
+    #[test]
+    fn every_range_reaches_its_rule() {
+        for &k in Keyword::ALL {
+            let (bad, id) = match k.value_range() {
+                // `osc-freq` is reported when its block ends.
+                ValueRange::Any | ValueRange::NonNegativeFrequency => continue,
+                ValueRange::Positive => (Value::Number(0.0), "C101"),
+                ValueRange::NonNegative if k.role() == Role::General => {
+                    (Value::Number(-1.0), "C102")
+                }
+                ValueRange::NonNegative => (Value::Number(-1.0), "C107"),
+                ValueRange::Direction | ValueRange::NonZero => {
+                    (Value::Vector(Vec3::zeros()), "C104")
+                }
+                ValueRange::Fraction => (Value::Number(1.5), "C109"),
+                ValueRange::HalfTurn => (Value::Number(270.0), "C111"),
+                ValueRange::Phase => (Value::Number(1.25), "C112"),
+                ValueRange::NormalRestitution => (Value::Number(1.2), "C114"),
+                ValueRange::TangentialRestitution => (Value::Number(-0.5), "C115"),
+                ValueRange::Palette => (Value::Integer(300), "C116"),
+                ValueRange::Transparency => (Value::Number(150.0), "C117"),
+                ValueRange::ParticleOrNonNegative => (Value::Number(-0.5), "C118"),
+                ValueRange::CohesionModel => (Value::Integer(2), "C119"),
+                ValueRange::Assembly => (Value::Integer(2), "C305"),
+                ValueRange::UnitVector => (Value::Vector(Vec3::new(2.0, 0.0, 0.0)), "C306"),
+                ValueRange::InertiaRow(_) => (Value::Vector(Vec3::new(1.0, 1.0, 1.0)), "C308"),
+            };
+            let at = Read {
+                keyword: k,
+                span: 0..1,
+                written: "x",
+                mode: Mode::Ssdem,
+            };
+            let mut out = Vec::new();
+            match (k.role(), bad) {
+                (Role::General, Value::Number(x)) => {
+                    check_general(&at, x, &mut out);
+                }
+                _ => {
+                    check_property(&at, bad, &mut out);
+                }
+            }
+            let ids: Vec<_> = out.iter().map(|d| d.code.id).collect();
+            assert_eq!(ids, [id], "{k:?}");
+        }
+    }
+}
