@@ -3,17 +3,22 @@
 //! [`analyze`] reads the syntax tree front to back as pkdgrav does ([`resolve`]) into a
 //! [`Scene`] of walls with effective values in pkdgrav units, each remembering where it
 //! came from, and checks every rule of SPEC §1: single values as they are read, then
-//! blocks, walls and the file as a whole ([`codes`] documents each diagnostic). The
-//! back end decodes each wall into typed parts once (the walls-geometry crate).
+//! blocks, walls and the file as a whole. Each rule, with its diagnostic code and the
+//! code's documentation, is one file of the private `rules` module; [`codes`] lists them.
+//! The back end decodes each wall into typed parts once (the walls-geometry crate).
 
 mod check;
 pub mod codes;
 mod fix;
 mod resolve;
+mod rules;
 pub mod scene;
 
-pub use check::{AXES_COS_TOLERANCE, RECTANGLE_COS_TOLERANCE, STEP_TRAVEL_FRACTION};
-pub use resolve::{AXIS_LENGTH_TOLERANCE, resolve};
+pub use resolve::resolve;
+pub use rules::axes_not_orthogonal::AXES_COS_TOLERANCE;
+pub use rules::axis_not_unit::AXIS_LENGTH_TOLERANCE;
+pub use rules::rectangle_not_rectangular::RECTANGLE_COS_TOLERANCE;
+pub use rules::wall_too_fast::STEP_TRAVEL_FRACTION;
 pub use scene::{
     Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings, direction,
 };
@@ -69,7 +74,7 @@ pub fn analyze(tree: &SyntaxTree, options: &Options) -> Analysis {
     let (scene, mut diagnostics) = resolve(tree, options.mode);
     diagnostics.extend(check::check(tree, &scene, options));
     if options.mode == Mode::Hsdem {
-        diagnostics.extend(check::ignored_in_hsdem(tree));
+        diagnostics.extend(rules::ignored_in_hsdem::check(tree));
     }
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
     Analysis { scene, diagnostics }

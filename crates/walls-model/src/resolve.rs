@@ -3,21 +3,19 @@
 //! Units scale the values read after them; `defaults` edits the default wall; `wall`
 //! appends a copy of the defaults; units and `time` close a wall block. Each value is
 //! checked as it is read (ranges, zero vectors, numbers too large for a double), since
-//! pkdgrav refuses such a file at that token. Statements whose values the syntax check
-//! already rejected are skipped, so a broken file still resolves to what parsed.
+//! pkdgrav refuses such a file at that token: the resolver hands it to the value rules
+//! (`rules`, by the keyword's range) and stores what they return. Statements whose values
+//! the syntax check already rejected are skipped, so a broken file still resolves to what
+//! parsed.
 
 use crate::Mode;
-use crate::codes;
-use crate::fix;
+use crate::rules::{self, Read, negative_osc_freq, number_too_large};
 use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
 use std::ops::Range;
 use std::sync::Arc;
-use walls_diagnostics::{Applicability, Diagnostic, Edit, Severity};
-use walls_keywords::{Dimension, Keyword, Role, ValueShape};
+use walls_diagnostics::Diagnostic;
+use walls_keywords::{Keyword, Role, ValueRange, ValueShape};
 use walls_syntax::{Statement, SyntaxTree, TokenKind};
-
-/// A principal axis may differ from unit length by this much.
-pub const AXIS_LENGTH_TOLERANCE: f64 = 0.001;
 
 /// Resolves `tree` into the scene pkdgrav would build, with the diagnostics about single
 /// values found on the way.
@@ -239,34 +237,25 @@ impl<'t> Resolver<'t> {
         }
     }
 
+    /// The value rules' view of a statement's values.
+    fn read_at(&self, keyword: Keyword, values: Range<usize>) -> Read<'t> {
+        let tree = self.tree;
+        Read {
+            keyword,
+            // Messages quote the value as written, not as scaled.
+            written: &tree.text()[values.clone()],
+            span: values,
+            mode: self.mode,
+        }
+    }
+
     fn general(&mut self, keyword: Keyword, raw: Raw, values: Range<usize>) {
         let Raw::Number(x) = raw else { return };
-        let name = keyword.name();
+        let at = self.read_at(keyword, values);
+        if !rules::check_general(&at, x, &mut self.out) {
+            return;
+        }
         match keyword {
-            Keyword::Time => {
-                if x < 0.0 {
-                    self.push(Diagnostic::error(
-                        &codes::NEGATIVE_TIME,
-                        values,
-                        format!("`time` is {x}; it must not be negative"),
-                    ));
-                } else if x != 0.0 {
-                    self.push(
-                        Diagnostic::new(
-                            &codes::TIME_IGNORED,
-                            Severity::Info,
-                            values,
-                            "pkdgrav ignores `time`",
-                        )
-                        .with_help("to place moving walls at a time, set the time in the particle (ss) file"),
-                    );
-                }
-            }
-            _ if !x.is_finite() || x <= 0.0 => self.push(Diagnostic::error(
-                &codes::UNIT_NOT_POSITIVE,
-                values,
-                format!("`{name}` must be positive, not {x}; the unit in force is kept"),
-            )),
             Keyword::LengthUnit => self.units.length = x,
             Keyword::MassUnit => self.units.mass = x,
             Keyword::TimeUnit => self.units.time = x,
@@ -283,10 +272,11 @@ impl<'t> Resolver<'t> {
             Raw::Vector(v) => Value::Vector(Vec3::from(v) * scale),
             Raw::Type(t) => Value::Type(t),
         };
-        if !self.finite(keyword, value, &values, dim) {
+        let at = self.read_at(keyword, values.clone());
+        if !number_too_large::check(&at, value, &mut self.out) {
             return;
         }
-        let value = self.check_value(keyword, value, &values);
+        let value = rules::check_property(&at, value, &mut self.out);
         let place = match self.target {
             Target::Defaults => Place::Defaults,
             _ => Place::Wall,
@@ -300,9 +290,9 @@ impl<'t> Resolver<'t> {
                 derived_from: None,
             },
         };
-        if keyword == Keyword::OscFreq {
-            self.block_osc_freq = matches!(value, Value::Number(w) if w < 0.0)
-                .then(|| (values.clone(), self.units.length));
+        if keyword.value_range() == ValueRange::NonNegativeFrequency {
+            self.block_osc_freq =
+                negative_osc_freq::is_negative(value).then(|| (values.clone(), self.units.length));
         }
         // Setting a normal spring constant sets the tangential one to 2/7 of it.
         let derived = match keyword {
@@ -350,211 +340,6 @@ impl<'t> Resolver<'t> {
         }
     }
 
-    /// Scaled values must stay finite doubles: `1e999`, or a huge value times a unit.
-    fn finite(
-        &mut self,
-        keyword: Keyword,
-        value: Value,
-        values: &Range<usize>,
-        dim: Dimension,
-    ) -> bool {
-        let finite = match value {
-            Value::Number(x) => x.is_finite(),
-            Value::Vector(v) => v.iter().all(|x| x.is_finite()),
-            _ => true,
-        };
-        if !finite {
-            self.push(
-                Diagnostic::error(
-                    &codes::NUMBER_TOO_LARGE,
-                    values.clone(),
-                    format!(
-                        "`{}` is too large for a double once scaled ({})",
-                        keyword.name(),
-                        dim.describe()
-                    ),
-                )
-                .with_help(
-                    "the value is ignored; write it in units that keep it below about 1.8e308",
-                ),
-            );
-        }
-        finite
-    }
-
-    /// Range rules of single values (SPEC §1 table); returns the value to store
-    /// (normalised vectors, transparency as a fraction).
-    fn check_value(&mut self, keyword: Keyword, value: Value, values: &Range<usize>) -> Value {
-        let span = values.clone();
-        let name = keyword.name();
-        // Messages quote the value as written, not as scaled.
-        let tree = self.tree;
-        let written = &tree.text()[values.clone()];
-        match (keyword, value) {
-            (Keyword::Orient | Keyword::OscVec, Value::Vector(v)) => {
-                match crate::scene::direction(&v) {
-                    Some(n) => return Value::Vector(n),
-                    None => self.zero_vector(keyword, span),
-                }
-            }
-            (Keyword::Vertex1 | Keyword::Vertex2, Value::Vector(v)) if v.norm() == 0.0 => {
-                self.zero_vector(keyword, span)
-            }
-            (
-                Keyword::Step | Keyword::Radius | Keyword::HoleRadius | Keyword::Length | Keyword::Mass,
-                Value::Number(x),
-            ) if x < 0.0 => self.push(Diagnostic::error(
-                &codes::NEGATIVE_VALUE,
-                span,
-                format!("`{name}` is {written}; it must not be negative"),
-            )),
-            (Keyword::Taper, Value::Number(x)) if !(0.0..=1.0).contains(&x) => self.push(
-                Diagnostic::error(&codes::TAPER_RANGE, span, format!("`taper` is {written}; it must be between 0 and 1"))
-                    .with_help("0 is a plain cylinder, 1 narrows it to a point at the +orient end"),
-            ),
-            (Keyword::OpenAngle, Value::Number(x)) if !(0.0..=180.0).contains(&x) => self.push(
-                Diagnostic::error(
-                    &codes::OPEN_ANGLE_RANGE,
-                    span,
-                    format!("`open-angle` is {written}; it must be between 0 and 180 degrees"),
-                ),
-            ),
-            (Keyword::OscPhase, Value::Number(x)) if !(0.0..=1.0).contains(&x) => self.push(
-                Diagnostic::error(
-                    &codes::OSC_PHASE_RANGE,
-                    span,
-                    format!("`osc-phase` is {written}; it is a fraction of a cycle, between 0 and 1"),
-                )
-                .with_help(format!("the same phase within one cycle is {}", fix::number(x.rem_euclid(1.0)))),
-            ),
-            (Keyword::Epsn, Value::Number(x)) if x != 99.0 && x > 1.0 => self.push(
-                Diagnostic::error(&codes::EPSN_RANGE, span, format!("`epsn` is {written}; it must be at most 1, or 99"))
-                    .with_help("99 means the particle's value; 1 is elastic, 0 sticks, negative removes the particle"),
-            ),
-            (Keyword::Epst, Value::Number(x)) => {
-                let (lo, model) = match self.mode {
-                    Mode::Hsdem => (-1.0, "HSDEM"),
-                    Mode::Ssdem => (0.0, "SSDEM"),
-                };
-                if x != 99.0 && !(lo..=1.0).contains(&x) {
-                    self.push(
-                        Diagnostic::error(
-                            &codes::EPST_RANGE,
-                            span,
-                            format!("`epst` is {written}; in {model} it must be between {lo} and 1, or 99"),
-                        )
-                        .with_help("99 means the particle's value"),
-                    );
-                }
-            }
-            (Keyword::Color, Value::Integer(c)) if !(0..=255).contains(&c) => self.push(Diagnostic::error(
-                &codes::COLOR_RANGE,
-                span,
-                format!("`color` is {written}; it must be between 0 and 255"),
-            )),
-            (Keyword::Transparency, Value::Number(x)) => {
-                if !(0.0..=100.0).contains(&x) {
-                    self.push(Diagnostic::error(
-                        &codes::TRANSPARENCY_RANGE,
-                        span,
-                        format!("`transparency` is {written}; it must be between 0 and 1, or a percentage up to 100"),
-                    ));
-                } else if x > 1.0 {
-                    return Value::Number(x / 100.0);
-                }
-            }
-            (
-                Keyword::KN
-                | Keyword::KT
-                | Keyword::MuS
-                | Keyword::MuR
-                | Keyword::MuT
-                | Keyword::BetaS
-                | Keyword::CohesiveCoeff
-                | Keyword::InnerOverlapBoundary
-                | Keyword::KNOuter
-                | Keyword::KTOuter
-                | Keyword::KNInner
-                | Keyword::KTInner,
-                Value::Number(x),
-            ) if x != -1.0 && x < 0.0 => self.push(
-                Diagnostic::error(
-                    &codes::MATERIAL_RANGE,
-                    span,
-                    format!("`{name}` is {written}; it must be −1 (the particle's value) or at least 0"),
-                ),
-            ),
-            (Keyword::CohesionModel, Value::Integer(m)) if !(-1..=1).contains(&m) => self.push(
-                Diagnostic::error(
-                    &codes::COHESION_MODEL,
-                    span,
-                    format!("`cohesion_model` is {written}; it must be −1 (particle's), 0 (contact) or 1 (bridge)"),
-                ),
-            ),
-            (Keyword::Assembly, Value::Integer(a)) if !(0..=1).contains(&a) => {
-                let message = if a == -1 {
-                    "`assembly -1` cannot be written: pkdgrav reads only 0 or 1".to_string()
-                } else {
-                    format!("`assembly` is {written}; pkdgrav allows 2 assemblies, numbered 0 and 1")
-                };
-                self.push(
-                    Diagnostic::error(&codes::INVALID_ASSEMBLY, span, message)
-                        .with_help("a wall that is in no assembly simply leaves `assembly` out"),
-                );
-            }
-            (Keyword::PxjVec | Keyword::PyjVec | Keyword::PzjVec, Value::Vector(v))
-                if (v.norm() - 1.0).abs() > AXIS_LENGTH_TOLERANCE =>
-            {
-                let mut d = Diagnostic::error(
-                    &codes::AXIS_NOT_UNIT,
-                    span.clone(),
-                    format!("principal axis `{name}` has length {:.6}; it must be 1 ± {AXIS_LENGTH_TOLERANCE}", v.norm()),
-                );
-                if let Some(n) = crate::scene::direction(&v) {
-                    d = d.with_fix(
-                        Applicability::Unsafe,
-                        "normalise the axis",
-                        vec![Edit {
-                            span,
-                            replacement: fix::vector(&n),
-                        }],
-                    );
-                }
-                self.push(d);
-            }
-            (Keyword::IxjVec | Keyword::IyjVec | Keyword::IzjVec, Value::Vector(v)) => {
-                let row = match keyword {
-                    Keyword::IxjVec => 0,
-                    Keyword::IyjVec => 1,
-                    _ => 2,
-                };
-                if (0..3).any(|j| j != row && v[j] != 0.0) {
-                    self.push(
-                        Diagnostic::warning(
-                            &codes::INERTIA_OFF_DIAGONAL,
-                            span,
-                            format!("`{name}` has off-diagonal terms; pkdgrav uses only the diagonal"),
-                        )
-                        .with_help("give the inertia in the principal frame (pxj-vec, pyj-vec, pzj-vec) so it is diagonal"),
-                    );
-                }
-            }
-            _ => {}
-        }
-        value
-    }
-
-    fn zero_vector(&mut self, keyword: Keyword, span: Range<usize>) {
-        self.push(Diagnostic::error(
-            &codes::ZERO_VECTOR,
-            span,
-            format!(
-                "`{}` is the zero vector; it must have a direction",
-                keyword.name()
-            ),
-        ));
-    }
-
     /// Ends the open block: reports a negative `osc-freq` set in it, with a fix from the
     /// block's final amplitude and phase.
     fn close_block(&mut self) {
@@ -574,13 +359,12 @@ impl<'t> Resolver<'t> {
                 source: Source::Builtin,
             })
         };
-        let d = fix::negative_osc_freq(
+        let d = negative_osc_freq::at_block_end(
             self.tree.text(),
             self.block_start,
             length_unit,
             &values,
-            &lookup(Keyword::OscAmpl),
-            &lookup(Keyword::OscPhase),
+            lookup,
         );
         self.push(d);
     }
