@@ -5,7 +5,7 @@
 use std::fs;
 
 use nalgebra::Vector3;
-use walls_sim::reactive_output::{
+use walls_sim::io::wallsreact::{
     AssemblyState, DATA_FILE, ReactiveOutput, VIZ_FILE, VizWall, c_exp, data_line, viz_line,
 };
 
