@@ -18,6 +18,10 @@ pub struct RunArgs {
     pub file: String,
     /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
     /// .ss file. Without it, nine particles are dropped onto the scene.
+    #[allow(
+        rustdoc::broken_intra_doc_links,
+        reason = "the brackets are --help's optional columns"
+    )]
     #[arg(long, value_name = "FILE")]
     pub particles: Option<String>,
     /// A pkdgrav parameter file: timestep, steps, material, gravity, and the particle
