@@ -7,7 +7,11 @@ use super::{error, exit_status, read_walls, ruled};
 use crate::ModeArg;
 use std::io::Write;
 use std::process::ExitCode;
+use walls_preview::html::Particles;
+use walls_preview::mesh::Placement;
 use walls_sim::input::Rule;
+use walls_sim::io::trajectory::{ParticleRow, read_particles};
+use walls_sim::io::wallsreact::{VizWall, last_viz_step};
 
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
@@ -175,7 +179,7 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
             let path = args.out.as_ref().expect("an extension comes from a path");
             let moving = match &args.trajectory {
                 Some(f) => Some(read_trajectory(f)?),
-                None if !particles.is_empty() => Some(walls_preview::html::Particles {
+                None if !particles.is_empty() => Some(Particles {
                     radii: particles.iter().map(|p| p.radius).collect(),
                     colors: particles.iter().map(|p| i64::from(p.color)).collect(),
                     times: vec![args.time],
@@ -202,40 +206,46 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
 
 /// The walls' placements on the last line of a `WALLSREACTviz.out`: for each wall id,
 /// its origin and either (vertex1, vertex2) or orient.
-fn read_reactive_viz(f: &str) -> Result<Vec<walls_preview::mesh::Placement>, String> {
-    use walls_preview::mesh::Placement;
-    use walls_sim::io::wallsreact::{VizWall, last_viz_step};
+fn read_reactive_viz(f: &str) -> Result<Vec<Placement>, String> {
     let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
     let (_, walls) = last_viz_step(&text).map_err(|e| format!("{f}: {e}"))?;
-    Ok(walls
-        .into_iter()
-        .map(|w| match w {
-            VizWall::Polygon {
-                id,
-                origin,
-                vertex1,
-                vertex2,
-            } => Placement::Polygon {
-                wall: id,
-                origin,
-                vertex1,
-                vertex2,
-            },
-            VizWall::Round { id, origin, orient } => Placement::Round {
-                wall: id,
-                origin,
-                orient,
-            },
-        })
-        .collect())
+    Ok(walls.into_iter().map(placement).collect())
 }
 
-/// Particle trajectories from the `particles.csv` of `walls-sim run --out`: one frame
-/// per output step, each particle's radius and colour from the first.
-fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
+/// walls-preview's placement of a wall as the viz file gives it.
+fn placement(wall: VizWall) -> Placement {
+    match wall {
+        VizWall::Polygon {
+            id,
+            origin,
+            vertex1,
+            vertex2,
+        } => Placement::Polygon {
+            wall: id,
+            origin,
+            vertex1,
+            vertex2,
+        },
+        VizWall::Round { id, origin, orient } => Placement::Round {
+            wall: id,
+            origin,
+            orient,
+        },
+    }
+}
+
+/// Particle trajectories from the `particles.csv` of `walls-sim run --out`.
+fn read_trajectory(f: &str) -> Result<Particles, String> {
     let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
-    let rows = walls_sim::io::trajectory::read_particles(&text).map_err(|e| format!("{f}: {e}"))?;
-    let mut out = walls_preview::html::Particles::default();
+    let rows = read_particles(&text).map_err(|e| format!("{f}: {e}"))?;
+    frames(&rows).map_err(|line| format!("{f}: line {line}: particles out of order"))
+}
+
+/// The rows of a `particles.csv` as the frames the HTML page plays: one per output
+/// step, each particle's radius from the first (and the default colour); or the line of
+/// the first row whose particle is not the next of its step.
+fn frames(rows: &[ParticleRow]) -> Result<Particles, usize> {
+    let mut out = Particles::default();
     for (k, row) in rows.iter().enumerate() {
         if out.times.last() != Some(&row.t) {
             out.times.push(row.t);
@@ -244,7 +254,7 @@ fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
         let frame = out.frames.last_mut().expect("pushed above");
         if row.particle != frame.len() {
             // Row k is on line k + 2, after the header.
-            return Err(format!("{f}: line {}: particles out of order", k + 2));
+            return Err(k + 2);
         }
         frame.push(row.pos);
         if out.frames.len() == 1 {
@@ -253,4 +263,86 @@ fn read_trajectory(f: &str) -> Result<walls_preview::html::Particles, String> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    fn row(t: f64, particle: usize, x: f64, radius: f64) -> ParticleRow {
+        ParticleRow {
+            step: 0,
+            t,
+            particle,
+            alive: true,
+            mass: 1.0,
+            radius,
+            pos: Vector3::new(x, 0.0, 0.0),
+            vel: Vector3::zeros(),
+            spin: Vector3::zeros(),
+        }
+    }
+
+    #[test]
+    fn rows_become_frames() {
+        let rows = [
+            row(0.0, 0, 1.0, 0.1),
+            row(0.0, 1, 2.0, 0.2),
+            row(0.5, 0, 3.0, 9.0),
+            row(0.5, 1, 4.0, 9.0),
+        ];
+        let x = |x: f64| Vector3::new(x, 0.0, 0.0);
+        assert_eq!(
+            frames(&rows),
+            Ok(Particles {
+                radii: vec![0.1, 0.2],
+                colors: vec![3, 3],
+                times: vec![0.0, 0.5],
+                frames: vec![vec![x(1.0), x(2.0)], vec![x(3.0), x(4.0)]],
+            })
+        );
+        // The third row (line 4) skips particle 1.
+        let rows = [
+            row(0.0, 0, 1.0, 0.1),
+            row(0.0, 1, 2.0, 0.1),
+            row(0.5, 1, 0.0, 0.1),
+        ];
+        assert_eq!(frames(&rows), Err(4));
+    }
+
+    #[test]
+    fn viz_walls_become_placements() {
+        let v = |x: f64| Vector3::new(x, -x, 2.0 * x);
+        let walls = [
+            VizWall::Polygon {
+                id: 3,
+                origin: v(1.0),
+                vertex1: v(2.0),
+                vertex2: v(3.0),
+            },
+            VizWall::Round {
+                id: 0,
+                origin: v(4.0),
+                orient: v(5.0),
+            },
+        ];
+        let placed: Vec<Placement> = walls.into_iter().map(placement).collect();
+        assert_eq!(
+            placed,
+            [
+                Placement::Polygon {
+                    wall: 3,
+                    origin: v(1.0),
+                    vertex1: v(2.0),
+                    vertex2: v(3.0),
+                },
+                Placement::Round {
+                    wall: 0,
+                    origin: v(4.0),
+                    orient: v(5.0),
+                },
+            ]
+        );
+    }
 }
