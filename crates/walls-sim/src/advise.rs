@@ -29,6 +29,8 @@
 //! Inputs are SI or pkdgrav units ([`UnitSystem`]); every result is given in both
 //! ([`Quantity`]). pkdgrav's units are the AU, the solar mass and the time that makes
 //! G = 1, √(AU³/(G·M☉)) ≈ 5.0226 × 10⁶ s, a year over 2π ([`Units::pkdgrav`]).
+//!
+//! [`text`] and [`json`] render the advice as `walls-sim advise` prints it.
 
 use std::fmt;
 
