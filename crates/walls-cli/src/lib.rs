@@ -2,6 +2,7 @@
 //! input), the whole check of one file, the `--mode` argument, and the registry of
 //! diagnostic codes that `--explain` and SARIF read.
 
+pub mod commands;
 pub mod input;
 
 /// `--mode`: the contact model a file is for.

@@ -29,6 +29,8 @@
 //! Inputs are SI or pkdgrav units ([`UnitSystem`]); every result is given in both
 //! ([`Quantity`]). pkdgrav's units are the AU, the solar mass and the time that makes
 //! G = 1, √(AU³/(G·M☉)) ≈ 5.0226 × 10⁶ s, a year over 2π ([`Units::pkdgrav`]).
+//!
+//! [`text`] and [`json`] render the advice as `walls-sim advise` prints it.
 
 use std::fmt;
 
@@ -596,6 +598,209 @@ pub fn significant(x: f64, digits: usize) -> String {
         trim(&format!("{x:.decimals$}"))
     } else {
         format!("{}e{exponent}", trim(mantissa))
+    }
+}
+
+/// The advice for people, as `walls-sim advise` prints it: the `inputs`, the derivation,
+/// the units, then the .par lines (with an `achWallsFile` line for `walls_file`).
+pub fn text(a: &Advice, inputs: &Inputs, walls_file: Option<&str>) -> String {
+    use std::fmt::Write as _;
+    let g = significant;
+    let si = |q: &Quantity| format!("{} {}", g(q.si, 6), q.dimension.si_unit());
+    let pkd = |q: &Quantity| format!("{} {}", g(q.pkdgrav, 6), q.dimension.pkdgrav_unit());
+    let mut o = String::new();
+    let row = |o: &mut String, name: &str, q: &Quantity, note: &str| {
+        let line = format!("  {name:<22}{:<24}{:<30}{note}", si(q), pkd(q));
+        let _ = writeln!(o, "{}", line.trim_end());
+    };
+    let given = match inputs.units {
+        UnitSystem::Si => "given in SI",
+        UnitSystem::Pkdgrav => "given in pkdgrav units",
+    };
+    let _ = writeln!(o, "Inputs ({given})\n  {:<22}{:<24}pkdgrav units", "", "SI");
+    let (mass_note, density_note) = if matches!(inputs.amount, Amount::Mass(_)) {
+        ("", "derived: m/(4/3·π·s³)")
+    } else {
+        ("derived: 4/3·π·s³·ρ", "")
+    };
+    row(&mut o, "mass m", &a.mass, mass_note);
+    row(&mut o, "radius s", &a.radius, "");
+    row(&mut o, "density ρ", &a.density, density_note);
+    row(&mut o, "maximum speed v", &a.speed, "");
+    row(
+        &mut o,
+        "allowed overlap x",
+        &a.max_overlap,
+        &format!("{} % of s", g(100.0 * a.overlap_fraction, 6)),
+    );
+    if let Some(c) = &a.column {
+        row(&mut o, "gravity g", &c.gravity, "");
+        row(&mut o, "pile height H", &c.height, "");
+        let _ = writeln!(o, "  {:<22}{}", "packing φ", g(c.packing, 6));
+    }
+    let _ = writeln!(
+        o,
+        "  {:<22}{}",
+        "steps per contact N",
+        g(a.steps_per_contact, 6)
+    );
+    let _ = writeln!(o, "\nDerivation");
+    let eq = |o: &mut String, what: &str, formula: &str, q: &Quantity| {
+        let _ = writeln!(o, "  {what:<24}{formula:<18}= {}", si(q));
+    };
+    eq(&mut o, "kinetic k_n", "m·(v/x)²", &a.k_n_kinetic);
+    match &a.column {
+        Some(c) => eq(&mut o, "static k_n", "φ·ρ·g·H·s²/x", &c.k_n),
+        None => {
+            let _ = writeln!(
+                o,
+                "  {:<24}(no --gravity and --height: not estimated)",
+                "static k_n"
+            );
+        }
+    }
+    let _ = writeln!(
+        o,
+        "  → k_n = {}: the {} criterion governs (the larger)",
+        si(&a.k_n),
+        match a.governs {
+            Criterion::Kinetic => "kinetic",
+            Criterion::Static => "static",
+        }
+    );
+    eq(&mut o, "k_t", "2/7·k_n", &a.k_t);
+    eq(
+        &mut o,
+        "contact, pair (μ = m/2)",
+        "π·√(m/(2k_n))",
+        &a.contact_time_pair,
+    );
+    eq(
+        &mut o,
+        "contact, wall (μ = m)",
+        "π·√(m/k_n)",
+        &a.contact_time_wall,
+    );
+    let resolved = match a.contact {
+        Contact::Pair => "pair",
+        Contact::Wall => "wall",
+    };
+    let _ = writeln!(
+        o,
+        "  {:<24}{:<18}= {} ({} steps per wall contact)",
+        "dt",
+        format!("{resolved} contact/{}", g(a.steps_per_contact, 6)),
+        si(&a.dt),
+        g(a.steps_per_wall_contact, 4)
+    );
+    let percent = |q: &Quantity| g(100.0 * q.si / a.radius.si, 4);
+    let _ = writeln!(
+        o,
+        "  peak overlap at v: {} against a wall ({} % of s), {} between two particles ({} %)",
+        si(&a.peak_overlap_wall),
+        percent(&a.peak_overlap_wall),
+        si(&a.peak_overlap_pair),
+        percent(&a.peak_overlap_pair),
+    );
+    if let Some(c) = &a.column {
+        let _ = writeln!(
+            o,
+            "  at rest at the pile's bottom: {} ({} % of s); a fall over H reaches √(2gH) = {}",
+            si(&c.overlap),
+            percent(&c.overlap),
+            si(&c.free_fall_speed),
+        );
+    }
+    let u = &a.units;
+    let _ = writeln!(
+        o,
+        "\nUnits: pkdgrav's are the AU, the solar mass and the time in which G = 1\n  1 AU = {} m (IAU 2012); 1 M_sun = {} kg (IAU 2015 GM_sun / G)\n  1 yr/2pi = √(AU³/(G·M_sun)) = {} s, with G = {} m^3/(kg s^2) (CODATA 2014)\n  k_n: 1 M_sun/(yr/2pi)^2 = {} kg/s^2; dt: 1 yr/2pi = {} s\n  a walls file in SI units: lengthunit {}  massunit {}  timeunit {}",
+        g(u.length, 10),
+        g(u.mass, 6),
+        g(u.time, 6),
+        g(G_SI, 6),
+        g(u.factor(Dimension::Stiffness), 6),
+        g(u.time, 6),
+        g(1.0 / u.length, 6),
+        g(1.0 / u.mass, 6),
+        g(1.0 / u.time, 6),
+    );
+    let _ = writeln!(o, "\n# pkdgrav parameters: paste into the .par file");
+    for line in a.par_lines(walls_file) {
+        let _ = writeln!(o, "{line}");
+    }
+    o
+}
+
+/// The advice as JSON (`walls-sim advise --json`), with its newline: every quantity as
+/// {si, pkdgrav, si_unit, pkdgrav_unit}.
+pub fn json(a: &Advice, inputs: &Inputs, walls_file: Option<&str>) -> String {
+    use serde_json::{Value, json};
+    let q = |q: &Quantity| {
+        json!({
+            "si": q.si,
+            "pkdgrav": q.pkdgrav,
+            "si_unit": q.dimension.si_unit(),
+            "pkdgrav_unit": q.dimension.pkdgrav_unit(),
+        })
+    };
+    let column = a.column.as_ref();
+    let u = &a.units;
+    let mut par = json!({
+        "dKn": a.k_n.pkdgrav,
+        "dKt": a.k_t.pkdgrav,
+        "dDelta": a.dt.pkdgrav,
+    });
+    if let (Some(file), Value::Object(map)) = (walls_file, &mut par) {
+        map.insert("achWallsFile".into(), json!(file));
+    }
+    let value = json!({
+        "inputs": {
+            "units": match inputs.units { UnitSystem::Si => "si", UnitSystem::Pkdgrav => "pkdgrav" },
+            "mass": q(&a.mass),
+            "radius": q(&a.radius),
+            "density": q(&a.density),
+            "speed": q(&a.speed),
+            "overlap": a.overlap_fraction,
+            "max_overlap": q(&a.max_overlap),
+            "gravity": column.map(|c| q(&c.gravity)),
+            "height": column.map(|c| q(&c.height)),
+            "packing": column.map(|c| c.packing),
+            "steps_per_contact": a.steps_per_contact,
+            "contact": match a.contact { Contact::Pair => "pair", Contact::Wall => "wall" },
+        },
+        "k_n_kinetic": q(&a.k_n_kinetic),
+        "k_n_static": column.map(|c| q(&c.k_n)),
+        "governs": match a.governs { Criterion::Kinetic => "kinetic", Criterion::Static => "static" },
+        "k_n": q(&a.k_n),
+        "k_t": q(&a.k_t),
+        "contact_time": {"pair": q(&a.contact_time_pair), "wall": q(&a.contact_time_wall)},
+        "dt": q(&a.dt),
+        "steps_per_wall_contact": a.steps_per_wall_contact,
+        "peak_overlap": {
+            "wall": q(&a.peak_overlap_wall),
+            "pair": q(&a.peak_overlap_pair),
+            "pile": column.map(|c| q(&c.overlap)),
+        },
+        "free_fall_speed": column.map(|c| q(&c.free_fall_speed)),
+        "units": {
+            "length_m": u.length,
+            "mass_kg": u.mass,
+            "time_s": u.time,
+            "g_si": G_SI,
+            "walls_file_in_si": {
+                "lengthunit": 1.0 / u.length,
+                "massunit": 1.0 / u.mass,
+                "timeunit": 1.0 / u.time,
+            },
+        },
+        "par": par,
+        "par_lines": a.par_lines(walls_file),
+        "warnings": a.warnings,
+    });
+    match serde_json::to_string_pretty(&value) {
+        Ok(text) => text + "\n",
+        Err(e) => unreachable!("JSON of numbers and strings: {e}"),
     }
 }
 

@@ -1,12 +1,13 @@
 //! `reactive_output`: C's `%.16e` reproduced exactly (against outputs of glibc's printf
 //! in `tests/data/c_exp.txt`), the two files' line formats read back field by field, and
-//! appending versus starting fresh.
+//! appending versus starting fresh; the viz file read back as the walls written.
 
 use std::fs;
 
 use nalgebra::Vector3;
-use walls_sim::reactive_output::{
-    AssemblyState, DATA_FILE, ReactiveOutput, VIZ_FILE, VizWall, c_exp, data_line, viz_line,
+use walls_sim::io::wallsreact::{
+    AssemblyState, DATA_FILE, ReactiveOutput, VIZ_FILE, VizError, VizWall, c_exp, data_line,
+    last_viz_step, parse_viz_line, viz_line,
 };
 
 type Vec3 = Vector3<f64>;
@@ -274,4 +275,40 @@ fn open_fails_in_a_missing_directory() {
     let missing = dir.path().join("no-such-dir");
     assert!(ReactiveOutput::open(&missing, true).is_err());
     assert!(ReactiveOutput::open(&missing, false).is_err());
+}
+
+#[test]
+fn viz_lines_read_back_as_the_walls_written() {
+    for seed in [0.5, -2.25, 1e-300, 3.0e12] {
+        let w = walls(seed);
+        assert_eq!(parse_viz_line(&viz_line(42, &w)), Some((42, w)));
+    }
+    assert_eq!(parse_viz_line(&viz_line(7, &[])), Some((7, Vec::new())));
+    // A wall cut short, or a word that is not a number, is not a viz line.
+    let line = viz_line(1, &walls(0.5));
+    let cut: Vec<&str> = line.split(' ').collect();
+    assert_eq!(parse_viz_line(&cut[..cut.len() - 1].join(" ")), None);
+    assert_eq!(parse_viz_line("1 0 x"), None);
+    assert_eq!(parse_viz_line(""), None);
+}
+
+#[test]
+fn the_last_viz_step_is_where_the_run_left_its_walls() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut out = ReactiveOutput::open(dir.path(), true).unwrap();
+    out.record(0, &[assembly(0.5)], &walls(0.5)).unwrap();
+    out.record(250, &[assembly(0.75)], &walls(0.75)).unwrap();
+    out.finish().unwrap();
+    let text = fs::read_to_string(dir.path().join(VIZ_FILE)).unwrap();
+    assert_eq!(last_viz_step(&text), Ok((250, walls(0.75))));
+    // Blank lines after the last step are skipped.
+    assert_eq!(
+        last_viz_step(&format!("{text}\n  \n")),
+        Ok((250, walls(0.75)))
+    );
+    assert_eq!(last_viz_step(" \n"), Err(VizError::NoSteps));
+    assert_eq!(VizError::NoSteps.to_string(), "no steps");
+    let e = last_viz_step(&format!("{text}1 0 2\n")).unwrap_err();
+    assert_eq!(e, VizError::BadLine { line: 3 });
+    assert_eq!(e.to_string(), "line 3: not a WALLSREACTviz.out line");
 }

@@ -26,6 +26,10 @@
 //!   wall's index in the walls file, counting from 0. (The document's "12 numbers" and
 //!   "9 numbers" per wall count one more than its own field list gives; its example line
 //!   and SPEC agree with 11 and 8.)
+//!
+//! [`viz_line`] writes a viz line and [`parse_viz_line`] reads it back as the same
+//! [`VizWall`]s; [`last_viz_step`] reads the last line of a viz file, where a run left
+//! its walls.
 
 use std::fmt::Write as _;
 use std::fs::{File, OpenOptions};
@@ -194,6 +198,79 @@ pub fn viz_line(step: u64, walls: &[VizWall]) -> String {
     out
 }
 
+/// Reads a `WALLSREACTviz.out` line back: its step and walls, or `None` if it is not a
+/// viz line. A wall whose orientation flag is 0 is a polygon, any other a round wall.
+pub fn parse_viz_line(line: &str) -> Option<(u64, Vec<VizWall>)> {
+    let fields: Vec<f64> = line
+        .split_whitespace()
+        .map(|x| x.parse::<f64>().ok())
+        .collect::<Option<_>>()?;
+    let step = *fields.first()?;
+    let v3 = |k: usize| -> Option<Vec3> {
+        (k + 3 <= fields.len()).then(|| Vec3::new(fields[k], fields[k + 1], fields[k + 2]))
+    };
+    let mut walls = Vec::new();
+    let mut k = 1; // after the step
+    while k < fields.len() {
+        let (kind, id) = (fields[k], *fields.get(k + 1)? as usize);
+        let origin = v3(k + 2)?;
+        if kind == 0.0 {
+            walls.push(VizWall::Polygon {
+                id,
+                origin,
+                vertex1: v3(k + 5)?,
+                vertex2: v3(k + 8)?,
+            });
+            k += 11;
+        } else {
+            walls.push(VizWall::Round {
+                id,
+                origin,
+                orient: v3(k + 5)?,
+            });
+            k += 8;
+        }
+    }
+    Some((step as u64, walls))
+}
+
+/// Why the last step of a `WALLSREACTviz.out` could not be read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum VizError {
+    /// The file has no line that is not blank.
+    NoSteps,
+    /// The last line that is not blank is not a viz line.
+    BadLine {
+        /// Its number, counting from 1.
+        line: usize,
+    },
+}
+
+impl std::fmt::Display for VizError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            VizError::NoSteps => write!(f, "no steps"),
+            VizError::BadLine { line } => {
+                write!(f, "line {line}: not a {VIZ_FILE} line")
+            }
+        }
+    }
+}
+
+impl std::error::Error for VizError {}
+
+/// The last step of a `WALLSREACTviz.out` (its last line that is not blank): where the
+/// run left its finite reactive walls.
+pub fn last_viz_step(text: &str) -> Result<(u64, Vec<VizWall>), VizError> {
+    let (n, line) = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+        .last()
+        .ok_or(VizError::NoSteps)?;
+    parse_viz_line(line).ok_or(VizError::BadLine { line: n + 1 })
+}
+
 /// The two reactive-wall output files of a run, open for writing.
 ///
 /// Each [`record`](Self::record) writes one line to each file and flushes both, so the
@@ -237,6 +314,57 @@ impl ReactiveOutput {
         self.viz.write_all(viz_line(step, walls).as_bytes())?;
         self.data.flush()?;
         self.viz.flush()
+    }
+
+    /// Appends the lines of output step `step` for the reactive `assemblies` of `scene`:
+    /// each assembly's state, and every finite wall of an assembly where it now is.
+    pub fn record_assemblies(
+        &mut self,
+        step: u64,
+        scene: &[walls_geometry::Wall],
+        assemblies: &[crate::reactive::Assembly],
+    ) -> io::Result<()> {
+        use walls_geometry::Shape;
+        let states: Vec<AssemblyState> = assemblies
+            .iter()
+            .map(|a| AssemblyState {
+                cog: a.cog,
+                velocity: a.velocity,
+                rot_vec: a.rotation.omega,
+                axes: a.rotation.axes,
+            })
+            .collect();
+        let mut walls: Vec<(usize, VizWall)> = Vec::new();
+        for a in assemblies {
+            let turn = a.turn();
+            for (k, &w) in a.walls.iter().enumerate() {
+                let shape = &scene[w].shape;
+                // pkdgrav's viz file holds finite walls only.
+                if matches!(shape, Shape::Plane { .. } | Shape::InfiniteCylinder { .. }) {
+                    continue;
+                }
+                let origin = a.origin(k);
+                walls.push((
+                    w,
+                    match (shape.edges(), shape.axis()) {
+                        (Some((e1, e2)), _) => VizWall::Polygon {
+                            id: w,
+                            origin,
+                            vertex1: turn * e1,
+                            vertex2: turn * e2,
+                        },
+                        (None, axis) => VizWall::Round {
+                            id: w,
+                            origin,
+                            orient: turn * axis.unwrap_or_default(),
+                        },
+                    },
+                ));
+            }
+        }
+        walls.sort_by_key(|(w, _)| *w);
+        let walls: Vec<VizWall> = walls.into_iter().map(|(_, v)| v).collect();
+        self.record(step, &states, &walls)
     }
 
     /// Flushes and closes both files, reporting any error (dropping the value instead

@@ -1,0 +1,225 @@
+//! `walls-lint`: check walls files for everything pkdgrav would reject or misread.
+//!
+//! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
+//! or I/O error. Human output goes to standard error, machine output (json, sarif,
+//! github) to standard output.
+
+use crate::{ModeArg, all_codes, check_bytes, find_code, input};
+use clap::{Parser, ValueEnum};
+use rayon::prelude::*;
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+use std::sync::Arc;
+use walls_diagnostics::Diagnostic;
+use walls_diagnostics::render::{self, FileReport, ToolInfo};
+use walls_model::Options;
+
+/// The command line of `walls-lint`.
+#[derive(Parser)]
+#[command(
+    name = "walls-lint",
+    version,
+    about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error.\nHuman output goes to standard error; json, sarif and github to standard output."
+)]
+pub struct LintArgs {
+    /// Files to check; `-` reads standard input.
+    #[arg(required_unless_present = "explain", value_name = "FILE")]
+    pub files: Vec<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Human)]
+    pub format: Format,
+    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
+    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
+    pub mode: ModeArg,
+    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls.
+    #[arg(long, value_name = "N", default_value_t = 20)]
+    pub max_walls: usize,
+    /// The smallest particle radius (pkdgrav units): enables the SSDEM wall-speed check.
+    #[arg(long, value_name = "R", value_parser = positive)]
+    pub min_radius: Option<f64>,
+    /// The simulation timestep (pkdgrav units): the update step of walls with `step 0`.
+    #[arg(long, value_name = "DT", value_parser = positive)]
+    pub dt: Option<f64>,
+    /// Exit with status 1 on warnings too.
+    #[arg(long)]
+    pub deny_warnings: bool,
+    /// When to colour human output.
+    #[arg(long, value_enum, default_value_t = Color::Auto)]
+    pub color: Color,
+    /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
+    #[arg(long, value_name = "CODE", conflicts_with = "files")]
+    pub explain: Option<String>,
+}
+
+/// `--format`: where and how diagnostics are reported.
+#[allow(missing_docs, reason = "a value's doc comment would show in --help")]
+#[derive(Clone, Copy, ValueEnum)]
+pub enum Format {
+    Human,
+    Json,
+    Sarif,
+    Github,
+}
+
+/// `--color`: when to colour human output.
+#[allow(missing_docs, reason = "a value's doc comment would show in --help")]
+#[derive(Clone, Copy, ValueEnum)]
+pub enum Color {
+    Auto,
+    Always,
+    Never,
+}
+
+/// One checked file: the text the diagnostics refer to, or the I/O error.
+struct Linted {
+    name: String,
+    outcome: Result<(Arc<str>, Vec<Diagnostic>), String>,
+}
+
+/// Checks the files `args` name and reports on them; the exit status.
+pub fn run(args: &LintArgs) -> ExitCode {
+    if let Some(query) = &args.explain {
+        return explain(query);
+    }
+    let options = Options {
+        mode: args.mode.into(),
+        max_walls: args.max_walls,
+        min_radius: args.min_radius,
+        dt: args.dt,
+    };
+    let checked: Vec<Linted> = args.files.par_iter().map(|p| lint(p, &options)).collect();
+
+    let mut io_failed = false;
+    for c in &checked {
+        if let Err(e) = &c.outcome {
+            eprintln!("walls-lint: error: {e}");
+            io_failed = true;
+        }
+    }
+    let reports: Vec<FileReport> = checked
+        .iter()
+        .filter_map(|c| {
+            let (text, diagnostics) = c.outcome.as_ref().ok()?;
+            Some(FileReport {
+                path: &c.name,
+                source: text,
+                diagnostics,
+            })
+        })
+        .collect();
+    let summary = render::summarize(&reports);
+    if let Err(e) = write_reports(args, &reports) {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            eprintln!("walls-lint: error: cannot write output: {e}");
+        }
+        return ExitCode::from(2);
+    }
+    // The process ends here: freeing every tree and diagnostic first would only cost time.
+    std::mem::forget(checked);
+    if io_failed {
+        ExitCode::from(2)
+    } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn lint(path: &str, options: &Options) -> Linted {
+    let read = input::read(path);
+    let outcome = read.bytes.map(|bytes| {
+        let checked = check_bytes(bytes, options);
+        (checked.text, checked.diagnostics)
+    });
+    Linted {
+        name: read.name,
+        outcome,
+    }
+}
+
+/// A strictly positive real, for `--min-radius` and `--dt`.
+fn positive(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
+        _ => Err(format!("`{s}` is not a positive number")),
+    }
+}
+
+fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()> {
+    match args.format {
+        Format::Human => {
+            let color = match args.color {
+                Color::Always => true,
+                Color::Never => false,
+                Color::Auto => {
+                    std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none()
+                }
+            };
+            // Standard error is unbuffered: ariadne writes a character at a time.
+            let mut err = std::io::BufWriter::new(std::io::stderr().lock());
+            for r in reports {
+                render::human(&mut err, r, color)?;
+            }
+            let s = render::summarize(reports);
+            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 {
+                writeln!(
+                    err,
+                    "{} error{}, {} warning{} in {} file{}",
+                    s.errors,
+                    plural(s.errors),
+                    s.warnings,
+                    plural(s.warnings),
+                    reports.len(),
+                    plural(reports.len())
+                )?;
+            }
+            err.flush()
+        }
+        Format::Json => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::json(&mut out, reports)?;
+            out.flush()
+        }
+        Format::Sarif => {
+            let tool = ToolInfo {
+                name: "walls-lint",
+                version: env!("CARGO_PKG_VERSION"),
+                information_uri: None,
+            };
+            let rules: Vec<_> = all_codes().collect();
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::sarif(&mut out, reports, &tool, &rules)?;
+            out.flush()
+        }
+        Format::Github => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::github(&mut out, reports)?;
+            out.flush()
+        }
+    }
+}
+
+fn explain(query: &str) -> ExitCode {
+    if let Some(code) = find_code(query) {
+        println!(
+            "{} ({}): {}\n\n{}",
+            code.id, code.name, code.summary, code.explanation
+        );
+        return ExitCode::SUCCESS;
+    }
+    if let Some(keyword) = walls_keywords::keyword(query) {
+        print!("{}", keyword.markdown());
+        return ExitCode::SUCCESS;
+    }
+    let known: Vec<&str> = all_codes().map(|c| c.id).collect();
+    eprintln!(
+        "walls-lint: error: `{query}` is neither a diagnostic code ({}) nor a keyword of the language",
+        known.join(", ")
+    );
+    ExitCode::from(2)
+}
+
+fn plural(n: usize) -> &'static str {
+    if n == 1 { "" } else { "s" }
+}

@@ -1,0 +1,294 @@
+//! `walls-sim run`: runs particles against the walls (SSDEM or HSDEM) and reports where
+//! they end up, what happened at walls, the energy and pkdgrav's warnings; with `--out`,
+//! the trajectory and pkdgrav's reactive-wall files. The settings come from
+//! [`walls_sim::config`]; the report from [`walls_sim::report`].
+
+use super::{error, exit_status, read_walls, ruled};
+use crate::ModeArg;
+use std::io::IsTerminal;
+use std::process::ExitCode;
+use walls_geometry::{Wall, decode};
+use walls_sim::input::{Particle, Rule};
+use walls_sim::run::Settings;
+
+/// `walls-sim run`: the SPEC §2 command line.
+#[derive(clap::Args)]
+pub struct RunArgs {
+    /// The walls file.
+    #[arg(value_name = "FILE")]
+    pub file: String,
+    /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
+    /// .ss file. Without it, nine particles are dropped onto the scene.
+    #[allow(
+        rustdoc::broken_intra_doc_links,
+        reason = "the brackets are --help's optional columns"
+    )]
+    #[arg(long, value_name = "FILE")]
+    pub particles: Option<String>,
+    /// A pkdgrav parameter file: timestep, steps, material, gravity, and the particle
+    /// file (achInFile) when --particles is not given.
+    #[arg(long, value_name = "FILE")]
+    pub par: Option<String>,
+    /// The contact model.
+    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
+    pub method: ModeArg,
+    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
+    #[arg(long, value_parser = ruled(Rule::Positive))]
+    pub dt: Option<f64>,
+    /// When to stop (default: three free falls over the scene).
+    #[arg(long, value_parser = ruled(Rule::Positive))]
+    pub t_end: Option<f64>,
+    /// Uniform gravity.
+    #[arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    pub gravity: Option<Vec<f64>>,
+    /// The particles' normal restitution (what walls' 99 means).
+    #[arg(long, value_parser = ruled(Rule::Restitution))]
+    pub epsn: Option<f64>,
+    /// The particles' tangential restitution.
+    #[arg(long, value_parser = ruled(Rule::Tangential))]
+    pub epst: Option<f64>,
+    /// The particles' normal spring constant.
+    #[arg(long = "k-n", value_parser = ruled(Rule::Positive))]
+    pub k_n: Option<f64>,
+    /// The particles' tangential spring constant (default 2/7 of k_n).
+    #[arg(long = "k-t", value_parser = ruled(Rule::NonNegative))]
+    pub k_t: Option<f64>,
+    /// The particles' static friction.
+    #[arg(long = "mu-s", value_parser = ruled(Rule::NonNegative))]
+    pub mu_s: Option<f64>,
+    /// The particles' rolling friction (SSDEM).
+    #[arg(long = "mu-r", value_parser = ruled(Rule::NonNegative))]
+    pub mu_r: Option<f64>,
+    /// The particles' twisting friction (SSDEM).
+    #[arg(long = "mu-t", value_parser = ruled(Rule::NonNegative))]
+    pub mu_t: Option<f64>,
+    /// Particles pass through each other (they still meet walls).
+    #[arg(long)]
+    pub no_particle_contacts: bool,
+    /// HSDEM: only faces and cylinder sides count, not edges, corners and rims
+    /// (pkdgrav's bWallsEdgeDetect = 0).
+    #[arg(long)]
+    pub no_edges: bool,
+    /// Write the trajectory to DIR: particles.csv and walls.csv, at step 0 and every
+    /// --every steps.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<std::path::PathBuf>,
+    /// How oscillating walls move: on the exact sinusoid, or step by step at the
+    /// oscillation velocity of each step's start, as pkdgrav does.
+    #[arg(long, value_enum, default_value_t = Oscillation::Exact)]
+    pub oscillation: Oscillation,
+    /// SSDEM: the integrator: kick-drift-kick leapfrog; the same with pkdgrav's dashpot
+    /// velocity predicted to the step's end; or explicit Euler (for comparison).
+    #[arg(long, value_enum, default_value_t = IntegratorArg::Leapfrog)]
+    pub integrator: IntegratorArg,
+    /// Run every part of the model, whatever the scene needs (for comparison; see
+    /// `walls-sim plan`).
+    #[arg(long)]
+    pub all_parts: bool,
+    /// Empty pkdgrav's WALLSREACTdata.out and WALLSREACTviz.out in --out first, rather
+    /// than appending to them as pkdgrav does.
+    #[arg(long)]
+    pub fresh: bool,
+    /// Steps between trajectory rows.
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Print the result as JSON on standard output.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The SSDEM integrator.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum IntegratorArg {
+    /// Kick-drift-kick leapfrog.
+    Leapfrog,
+    /// Kick-drift-kick with the dashpot at the velocity predicted to the step's end.
+    Pkdgrav,
+    /// Explicit Euler.
+    Euler,
+}
+
+/// How oscillating walls advance in a run.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Oscillation {
+    /// The exact sinusoid of SPEC §1 at every step.
+    Exact,
+    /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
+    Pkdgrav,
+}
+
+/// Runs particles as `args` say; the exit status.
+pub fn run(args: &RunArgs) -> ExitCode {
+    simulate(args).unwrap_or_else(error)
+}
+
+/// What a run needs, read and checked.
+pub struct Prepared {
+    /// The walls of the file, checked in the run's mode and decoded.
+    pub walls: Vec<Wall>,
+    /// The particles.
+    pub particles: Vec<Particle>,
+    /// The settings, from the options, the `.par` file and the defaults.
+    pub settings: Settings,
+    /// How many errors the walls file has.
+    pub errors: usize,
+}
+
+/// Reads and checks everything a run needs: the walls file (checked in the run's mode),
+/// the particles, the `.par` file, and the settings from options, `.par` and defaults.
+pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
+    let (checked, errors) = read_walls(&args.file, args.method, "running")?;
+    let walls = decode(&checked.scene);
+    let run = walls_sim::config::load(&flags(args), &walls).map_err(|e| e.to_string())?;
+    Ok(Prepared {
+        walls,
+        particles: run.particles,
+        settings: run.settings,
+        errors,
+    })
+}
+
+/// The options of `args` that settle the run's settings.
+fn flags(args: &RunArgs) -> walls_sim::config::Flags {
+    use walls_sim::run::{Integrator, Method, Planning};
+    walls_sim::config::Flags {
+        particles: args.particles.clone(),
+        par: args.par.clone(),
+        method: match args.method {
+            ModeArg::Ssdem => Method::Soft,
+            ModeArg::Hsdem => Method::Hard,
+        },
+        dt: args.dt,
+        t_end: args.t_end,
+        gravity: args
+            .gravity
+            .as_ref()
+            .map(|g| nalgebra::Vector3::new(g[0], g[1], g[2])),
+        eps_n: args.epsn,
+        eps_t: args.epst,
+        k_n: args.k_n,
+        k_t: args.k_t,
+        mu_s: args.mu_s,
+        mu_r: args.mu_r,
+        mu_t: args.mu_t,
+        no_particle_contacts: args.no_particle_contacts,
+        no_edges: args.no_edges,
+        stepping: match args.oscillation {
+            Oscillation::Exact => walls_sim::OscillationStepping::Exact,
+            Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
+        },
+        integrator: match args.integrator {
+            IntegratorArg::Leapfrog => Integrator::Leapfrog,
+            IntegratorArg::Pkdgrav => Integrator::LeapfrogPredicted,
+            IntegratorArg::Euler => Integrator::ExplicitEuler,
+        },
+        planning: if args.all_parts {
+            Planning::Everything
+        } else {
+            Planning::Needed
+        },
+    }
+}
+
+fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
+    use walls_sim::run::run_observed;
+    let Prepared {
+        walls,
+        particles,
+        settings,
+        errors,
+    } = prepare(args)?;
+    let scene = &walls[..];
+    let (t_end, dt) = (settings.t_end, settings.dt);
+    let mut trajectory = match &args.out {
+        Some(dir) => Some(
+            walls_sim::io::trajectory::Trajectory::create(dir)
+                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
+        ),
+        None => None,
+    };
+    let progress = progress_bar((t_end / dt).ceil() as u64);
+    let mut written: std::io::Result<()> = Ok(());
+    if let Some(out) = &mut trajectory {
+        let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
+        written = out.record(0, 0.0, &start, scene, &[]);
+    }
+    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
+    // appended to as pkdgrav does, unless --fresh.
+    let reactive = settings.method == walls_sim::run::Method::Soft
+        && !walls_sim::reactive::assemblies(scene).is_empty();
+    let mut reactive_files = match (&args.out, reactive) {
+        (Some(dir), true) => Some(
+            walls_sim::io::wallsreact::ReactiveOutput::open(dir, args.fresh)
+                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
+        ),
+        _ => None,
+    };
+    let outcome = run_observed(
+        scene,
+        particles.clone(),
+        &settings,
+        &mut |step, t, states, assemblies| {
+            if let Some(bar) = &progress {
+                bar.set_position(step);
+            }
+            if let Some(out) = &mut reactive_files
+                && step % args.every == 0
+                && written.is_ok()
+            {
+                written = out.record_assemblies(step, scene, assemblies);
+            }
+            if let Some(out) = &mut trajectory
+                && step % args.every == 0
+                && written.is_ok()
+            {
+                written = out.record(step, t, states, scene, assemblies);
+            }
+        },
+    );
+    if let Some(bar) = progress {
+        bar.finish_and_clear();
+    }
+    if let Some(out) = trajectory {
+        written = written.and_then(|()| out.finish());
+    }
+    if let Some(out) = reactive_files {
+        written = written.and_then(|()| out.finish());
+    }
+    if let (Err(e), Some(dir)) = (written, &args.out) {
+        return Err(format!(
+            "cannot write the trajectory to {}: {e}",
+            dir.display()
+        ));
+    }
+    if args.json {
+        let report = walls_sim::report::json(scene, &particles, &settings, &outcome);
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+    } else {
+        eprintln!(
+            "walls-sim: {}",
+            walls_sim::report::summary(&settings, &outcome)
+        );
+        for w in &outcome.warnings {
+            eprintln!("walls-sim: warning: {w}");
+        }
+    }
+    Ok(exit_status(errors))
+}
+
+/// A progress bar over `steps` steps, when standard error is a terminal.
+fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(steps);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("walls-sim {bar:40} {pos}/{len} steps, {eta} left")
+    {
+        bar.set_style(style);
+    }
+    Some(bar)
+}

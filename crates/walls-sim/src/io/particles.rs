@@ -1,0 +1,243 @@
+//! Particles from the files a pkdgrav user has.
+//!
+//! * CSV (SPEC §2): header `mass,radius,x,y,z,vx,vy,vz`, optionally followed by
+//!   `wx,wy,wz,color`; one particle a row, in pkdgrav units.
+//! * pkdgrav `.ss` files: big-endian XDR. A 16-byte header (double time, int32 count,
+//!   int32 magic: −1 standard, −10101 reduced), then per particle either 96 bytes (double
+//!   mass, radius, pos[3], vel[3], spin[3]; int32 color, original index) or 28 bytes
+//!   (float mass, radius, pos[3]; int32 color, index).
+//!
+//! Every error says where: the CSV line or the `.ss` byte offset.
+
+use super::{FileError, InputError, error};
+use nalgebra::Vector3;
+
+type Vec3 = Vector3<f64>;
+
+/// One particle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Particle {
+    /// Mass.
+    pub mass: f64,
+    /// Radius.
+    pub radius: f64,
+    /// Position.
+    pub pos: Vec3,
+    /// Velocity.
+    pub vel: Vec3,
+    /// Spin (angular velocity).
+    pub spin: Vec3,
+    /// ssdraw colour.
+    pub color: i32,
+    /// Index in the original file.
+    pub index: i32,
+}
+
+/// Reads particles from CSV text.
+pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
+    let mut reader = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_reader(text.as_bytes());
+    let header: Vec<String> = reader
+        .headers()
+        .map_err(|e| error("line 1", e.to_string()))?
+        .iter()
+        .map(str::to_string)
+        .collect();
+    const REQUIRED: [&str; 8] = ["mass", "radius", "x", "y", "z", "vx", "vy", "vz"];
+    const OPTIONAL: [&str; 4] = ["wx", "wy", "wz", "color"];
+    let column = |name: &str| header.iter().position(|h| h == name);
+    for name in REQUIRED {
+        if column(name).is_none() {
+            return Err(error(
+                "line 1",
+                format!("the header has no `{name}` column (it needs mass,radius,x,y,z,vx,vy,vz)"),
+            ));
+        }
+    }
+    if let Some(extra) = header
+        .iter()
+        .find(|h| !REQUIRED.contains(&h.as_str()) && !OPTIONAL.contains(&h.as_str()))
+    {
+        return Err(error("line 1", format!("unknown column `{extra}`")));
+    }
+    let mut out = Vec::new();
+    for (n, record) in reader.records().enumerate() {
+        let line = format!("line {}", n + 2);
+        let record = record.map_err(|e| error(line.clone(), e.to_string()))?;
+        let number = |name: &str| -> Result<f64, InputError> {
+            let Some(i) = column(name) else {
+                return Ok(0.0);
+            };
+            let field = record.get(i).unwrap_or("");
+            field
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    error(
+                        line.clone(),
+                        format!("`{name}` is `{field}`, not a finite number"),
+                    )
+                })
+        };
+        let particle = Particle {
+            mass: number("mass")?,
+            radius: number("radius")?,
+            pos: Vec3::new(number("x")?, number("y")?, number("z")?),
+            vel: Vec3::new(number("vx")?, number("vy")?, number("vz")?),
+            spin: Vec3::new(number("wx")?, number("wy")?, number("wz")?),
+            color: match column("color") {
+                Some(i) => {
+                    let field = record.get(i).unwrap_or("");
+                    field.parse::<i32>().map_err(|_| {
+                        error(
+                            line.clone(),
+                            format!("`color` is `{field}`, not an integer"),
+                        )
+                    })?
+                }
+                None => 3,
+            },
+            index: n as i32,
+        };
+        particle.check().map_err(|says| error(line, says))?;
+        out.push(particle);
+    }
+    Ok(out)
+}
+
+impl Particle {
+    /// Whether a run can use it: a positive mass and radius, finite values.
+    fn check(&self) -> Result<(), &'static str> {
+        if !(self.mass > 0.0 && self.radius > 0.0) {
+            return Err("mass and radius must be positive");
+        }
+        let values = [self.mass, self.radius];
+        let vectors = [self.pos, self.vel, self.spin];
+        if values
+            .iter()
+            .chain(vectors.iter().flatten())
+            .all(|x| x.is_finite())
+        {
+            Ok(())
+        } else {
+            Err("its values must be finite numbers")
+        }
+    }
+}
+
+/// A cursor over big-endian XDR data that reports the byte offset of a short read.
+struct Xdr<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl Xdr<'_> {
+    fn take<const N: usize>(&mut self) -> Result<[u8; N], InputError> {
+        let slice = self.bytes.get(self.at..self.at + N).ok_or_else(|| {
+            error(
+                format!("byte {}", self.at),
+                format!(
+                    "the file ends inside a record ({} bytes in all)",
+                    self.bytes.len()
+                ),
+            )
+        })?;
+        self.at += N;
+        Ok(slice.try_into().expect("the slice has N bytes"))
+    }
+    fn f64(&mut self) -> Result<f64, InputError> {
+        self.take::<8>().map(f64::from_be_bytes)
+    }
+    fn f32(&mut self) -> Result<f64, InputError> {
+        self.take::<4>().map(|b| f32::from_be_bytes(b) as f64)
+    }
+    fn i32(&mut self) -> Result<i32, InputError> {
+        self.take::<4>().map(i32::from_be_bytes)
+    }
+}
+
+/// The `.ss` magic numbers.
+const STANDARD: i32 = -1;
+const REDUCED: i32 = -10101;
+
+/// Reads a pkdgrav `.ss` file: its time and particles.
+pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
+    let mut x = Xdr { bytes, at: 0 };
+    let time = x.f64()?;
+    let count = x.i32()?;
+    let magic = x.i32()?;
+    let record = match magic {
+        STANDARD => 96,
+        REDUCED => 28,
+        m => {
+            return Err(error(
+                "byte 12",
+                format!("magic number {m}: a .ss file has −1 (standard) or −10101 (reduced)"),
+            ));
+        }
+    };
+    if count < 0 || bytes.len() != 16 + count as usize * record {
+        return Err(error(
+            "byte 8",
+            format!(
+                "{count} particles of {record} bytes need {} bytes, the file has {}",
+                16 + count.max(0) as usize * record,
+                bytes.len()
+            ),
+        ));
+    }
+    let mut out = Vec::with_capacity(count as usize);
+    for k in 0..count {
+        let start = x.at;
+        let p = if magic == STANDARD {
+            let mass = x.f64()?;
+            let radius = x.f64()?;
+            let pos = Vec3::new(x.f64()?, x.f64()?, x.f64()?);
+            let vel = Vec3::new(x.f64()?, x.f64()?, x.f64()?);
+            let spin = Vec3::new(x.f64()?, x.f64()?, x.f64()?);
+            Particle {
+                mass,
+                radius,
+                pos,
+                vel,
+                spin,
+                color: x.i32()?,
+                index: x.i32()?,
+            }
+        } else {
+            let mass = x.f32()?;
+            let radius = x.f32()?;
+            let pos = Vec3::new(x.f32()?, x.f32()?, x.f32()?);
+            Particle {
+                mass,
+                radius,
+                pos,
+                vel: Vec3::zeros(),
+                spin: Vec3::zeros(),
+                color: x.i32()?,
+                index: x.i32()?,
+            }
+        };
+        p.check()
+            .map_err(|says| error(format!("byte {start}"), format!("particle {k}: {says}")))?;
+        out.push(p);
+    }
+    Ok((time, out))
+}
+
+/// Particles from the file at `path`: CSV (by its extension, in any case) or a pkdgrav
+/// `.ss` file.
+pub fn read_file(path: &str) -> Result<Vec<Particle>, FileError> {
+    let bytes = std::fs::read(path).map_err(|e| FileError::read(path, e))?;
+    let csv = std::path::Path::new(path)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    if csv {
+        read_csv(&String::from_utf8_lossy(&bytes))
+    } else {
+        read_ss(&bytes).map(|(_, ps)| ps)
+    }
+    .map_err(|e| FileError::input(path, e))
+}

@@ -1,0 +1,280 @@
+//! Trajectory output (`walls-sim run --out DIR --every N`): the particles and the walls'
+//! origins at step 0 and every N steps after, as two CSV files in DIR.
+//!
+//! * `particles.csv`: `step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz`, one
+//!   row per particle per output step;
+//! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (SPEC §1 "Motion"; a
+//!   reactive wall's where its assembly has moved it).
+//!
+//! One long table per kind loads in one call into pandas, ParaView's CSV reader or a
+//! spreadsheet, and a particle's path is a filter on its index. Numbers are written with
+//! Rust's shortest round-trip formatting, so nothing is lost.
+//!
+//! A row of each file is one record, [`ParticleRow`] or [`WallRow`]: [`Trajectory`]
+//! writes them and [`read_particles`] and [`read_walls`] read them back.
+
+use crate::run::State;
+use nalgebra::Vector3;
+use std::fs::File;
+use std::io::{self, BufWriter};
+use std::path::Path;
+use walls_geometry::Wall;
+
+type Vec3 = Vector3<f64>;
+
+/// The columns of `particles.csv`.
+pub const PARTICLE_COLUMNS: [&str; 15] = [
+    "step", "t", "particle", "alive", "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx",
+    "wy", "wz",
+];
+
+/// The columns of `walls.csv`.
+pub const WALL_COLUMNS: [&str; 6] = ["step", "t", "wall", "x", "y", "z"];
+
+/// One row of `particles.csv`: a particle at an output step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParticleRow {
+    /// The step.
+    pub step: u64,
+    /// The time.
+    pub t: f64,
+    /// The particle's index in the run's input.
+    pub particle: usize,
+    /// Whether it is still in the run (written as 1 or 0).
+    pub alive: bool,
+    /// Its mass.
+    pub mass: f64,
+    /// Its radius.
+    pub radius: f64,
+    /// Its position.
+    pub pos: Vec3,
+    /// Its velocity.
+    pub vel: Vec3,
+    /// Its spin.
+    pub spin: Vec3,
+}
+
+impl ParticleRow {
+    /// The row for particle `particle` in `state` at `step`, time `t`.
+    pub fn new(step: u64, t: f64, particle: usize, state: &State) -> Self {
+        let p = &state.particle;
+        ParticleRow {
+            step,
+            t,
+            particle,
+            alive: state.alive,
+            mass: p.mass,
+            radius: p.radius,
+            pos: p.pos,
+            vel: p.vel,
+            spin: p.spin,
+        }
+    }
+
+    fn cells(&self) -> Vec<String> {
+        let mut row = vec![
+            self.step.to_string(),
+            self.t.to_string(),
+            self.particle.to_string(),
+            u8::from(self.alive).to_string(),
+            self.mass.to_string(),
+            self.radius.to_string(),
+        ];
+        for v in [&self.pos, &self.vel, &self.spin] {
+            row.extend(v.iter().map(f64::to_string));
+        }
+        row
+    }
+}
+
+/// One row of `walls.csv`: a wall's origin at an output step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WallRow {
+    /// The step.
+    pub step: u64,
+    /// The time.
+    pub t: f64,
+    /// The wall's index in the walls file, counting from 0.
+    pub wall: usize,
+    /// Its origin.
+    pub origin: Vec3,
+}
+
+impl WallRow {
+    fn cells(&self) -> Vec<String> {
+        let mut row = vec![
+            self.step.to_string(),
+            self.t.to_string(),
+            self.wall.to_string(),
+        ];
+        row.extend(self.origin.iter().map(f64::to_string));
+        row
+    }
+}
+
+/// The open trajectory files.
+pub struct Trajectory {
+    particles: csv::Writer<BufWriter<File>>,
+    walls: csv::Writer<BufWriter<File>>,
+}
+
+impl Trajectory {
+    /// Creates `dir` if needed, and the two files in it (replacing earlier ones).
+    pub fn create(dir: &Path) -> io::Result<Trajectory> {
+        std::fs::create_dir_all(dir)?;
+        let open = |name: &str, header: &[&str]| -> io::Result<csv::Writer<BufWriter<File>>> {
+            let mut w = csv::Writer::from_writer(BufWriter::new(File::create(dir.join(name))?));
+            w.write_record(header)?;
+            Ok(w)
+        };
+        Ok(Trajectory {
+            particles: open("particles.csv", &PARTICLE_COLUMNS)?,
+            walls: open("walls.csv", &WALL_COLUMNS)?,
+        })
+    }
+
+    /// Writes the particles and the walls at `step`, time `t`: each wall where its
+    /// motion puts it, or where its reactive `assemblies` have moved it.
+    pub fn record(
+        &mut self,
+        step: u64,
+        t: f64,
+        states: &[State],
+        scene: &[Wall],
+        assemblies: &[crate::reactive::Assembly],
+    ) -> io::Result<()> {
+        for (i, s) in states.iter().enumerate() {
+            self.write_particle(&ParticleRow::new(step, t, i, s))?;
+        }
+        for (w, wall) in scene.iter().enumerate() {
+            let moved = assemblies.iter().find_map(|a| {
+                let k = a.walls.iter().position(|x| *x == w)?;
+                Some(a.origin(k))
+            });
+            let origin = moved.unwrap_or_else(|| wall.motion.position_or_origin(t));
+            self.write_wall(&WallRow {
+                step,
+                t,
+                wall: w,
+                origin,
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Writes one row of `particles.csv`.
+    pub fn write_particle(&mut self, row: &ParticleRow) -> io::Result<()> {
+        Ok(self.particles.write_record(row.cells())?)
+    }
+
+    /// Writes one row of `walls.csv`.
+    pub fn write_wall(&mut self, row: &WallRow) -> io::Result<()> {
+        Ok(self.walls.write_record(row.cells())?)
+    }
+
+    /// Writes out what is buffered.
+    pub fn finish(mut self) -> io::Result<()> {
+        self.particles.flush()?;
+        self.walls.flush()
+    }
+}
+
+/// Why a trajectory file could not be read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ReadError {
+    /// The header is not the one [`Trajectory`] writes (`what` names the file).
+    NotATrajectory {
+        /// `particles.csv` or `walls.csv`.
+        what: &'static str,
+    },
+    /// A cell is not a finite number.
+    NotANumber {
+        /// The line, counting from 1 (the header is line 1).
+        line: usize,
+        /// The column, counting from 1.
+        column: usize,
+    },
+}
+
+impl std::fmt::Display for ReadError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ReadError::NotATrajectory { what } => {
+                write!(f, "not a trajectory (the {what} of walls-sim run --out)")
+            }
+            ReadError::NotANumber { line, column } => {
+                write!(f, "line {line}: column {column} is not a number")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ReadError {}
+
+/// The rows of a CSV trajectory file whose header starts with `header`, each as its
+/// first `width` numbers (every one finite).
+fn numbers<'a>(
+    text: &'a str,
+    header: &[&str],
+    width: usize,
+    what: &'static str,
+) -> Result<impl Iterator<Item = Result<Vec<f64>, ReadError>> + 'a, ReadError> {
+    let mut lines = text.lines().enumerate();
+    match lines.next() {
+        Some((_, first)) if first.starts_with(&header.join(",")) => {}
+        _ => return Err(ReadError::NotATrajectory { what }),
+    }
+    Ok(lines.map(move |(n, line)| {
+        let cells: Vec<&str> = line.split(',').collect();
+        (0..width)
+            .map(|k| {
+                cells
+                    .get(k)
+                    .and_then(|c| c.parse::<f64>().ok())
+                    .filter(|x| x.is_finite())
+                    .ok_or(ReadError::NotANumber {
+                        line: n + 1,
+                        column: k + 1,
+                    })
+            })
+            .collect()
+    }))
+}
+
+/// Reads the rows of a `particles.csv`, in file order: row k is on line k + 2. The
+/// header must start with the columns up to `z`.
+pub fn read_particles(text: &str) -> Result<Vec<ParticleRow>, ReadError> {
+    let width = PARTICLE_COLUMNS.len();
+    numbers(text, &PARTICLE_COLUMNS[..9], width, "particles.csv")?
+        .map(|row| {
+            let x = row?;
+            let v = |k: usize| Vec3::new(x[k], x[k + 1], x[k + 2]);
+            Ok(ParticleRow {
+                step: x[0] as u64,
+                t: x[1],
+                particle: x[2] as usize,
+                alive: x[3] != 0.0,
+                mass: x[4],
+                radius: x[5],
+                pos: v(6),
+                vel: v(9),
+                spin: v(12),
+            })
+        })
+        .collect()
+}
+
+/// Reads the rows of a `walls.csv`, in file order: row k is on line k + 2.
+pub fn read_walls(text: &str) -> Result<Vec<WallRow>, ReadError> {
+    numbers(text, &WALL_COLUMNS, WALL_COLUMNS.len(), "walls.csv")?
+        .map(|row| {
+            let x = row?;
+            Ok(WallRow {
+                step: x[0] as u64,
+                t: x[1],
+                wall: x[2] as usize,
+                origin: Vec3::new(x[3], x[4], x[5]),
+            })
+        })
+        .collect()
+}

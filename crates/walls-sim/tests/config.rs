@@ -1,0 +1,171 @@
+//! `config`: a run's settings come from the command line's flag if given, else the
+//! `.par` file, else the default; and the particles from `--particles`, else the `.par`
+//! file's `achInFile` (beside the `.par` file), else the dropped default particles.
+
+mod common;
+
+use common::{particle, scene};
+use nalgebra::Vector3;
+use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
+use walls_sim::input::Params;
+use walls_sim::run::default_dt;
+use walls_sim::setup;
+
+const FLOOR: &str = "wall type plane origin 0 0 0\n";
+
+fn ball() -> Vec<walls_sim::input::Particle> {
+    vec![particle([0.0, 0.0, 0.3], [0.0, 0.0, -2.0])]
+}
+
+/// A `.par` file's values for dt, k_n and gravity.
+fn par() -> Params {
+    Params {
+        dt: Some(2e-5),
+        k_n: Some(4e5),
+        gravity: Some(Vector3::new(0.0, 0.0, -9.8)),
+        ..Params::default()
+    }
+}
+
+#[test]
+fn a_flag_beats_the_par_file() {
+    let flags = Flags {
+        dt: Some(1e-5),
+        k_n: Some(1e5),
+        gravity: Some(Vector3::new(1.0, 0.0, 0.0)),
+        ..Flags::default()
+    };
+    let run = resolve(&flags, Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.dt, 1e-5);
+    assert_eq!(run.settings.material.k_n, 1e5);
+    assert_eq!(run.settings.gravity, Vector3::new(1.0, 0.0, 0.0));
+}
+
+#[test]
+fn the_par_file_beats_the_default() {
+    let run = resolve(&Flags::default(), Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.dt, 2e-5);
+    assert_eq!(run.settings.material.k_n, 4e5);
+    assert_eq!(run.settings.gravity, Vector3::new(0.0, 0.0, -9.8));
+    // k_t follows the k_n it was given, as the default material does.
+    assert_eq!(run.settings.material.k_t, setup::default_material(4e5).k_t);
+}
+
+#[test]
+fn without_flag_or_par_file_the_default() {
+    let floor = scene(FLOOR);
+    let run = resolve(&Flags::default(), None, &floor, Some(ball())).unwrap();
+    let g = Vector3::zeros();
+    let k_n = setup::default_k_n(&floor, &ball(), &g);
+    assert_eq!(
+        run.settings.gravity, g,
+        "no gravity for particles from a file"
+    );
+    assert_eq!(run.settings.material.k_n, k_n);
+    assert_eq!(run.settings.dt, default_dt(&ball(), k_n));
+    // The dropped default particles fall: gravity −z.
+    let run = resolve(&Flags::default(), None, &floor, None).unwrap();
+    assert_eq!(run.settings.gravity, Vector3::new(0.0, 0.0, -1.0));
+    assert_eq!(run.particles, setup::default_particles(&floor));
+}
+
+#[test]
+fn the_par_file_gives_the_duration_and_edge_detection() {
+    let par = Params {
+        steps: Some(300),
+        dt: Some(0.5),
+        edge_detect: Some(false),
+        ..Params::default()
+    };
+    let run = resolve(&Flags::default(), Some(&par), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.t_end, 150.0);
+    assert!(!run.settings.edges);
+    let flags = Flags {
+        t_end: Some(2.0),
+        ..Flags::default()
+    };
+    let run = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.t_end, 2.0);
+}
+
+#[test]
+fn the_particle_file_from_the_flag_else_the_par_file() {
+    let par = Params {
+        in_file: Some("in.ss".into()),
+        ..Params::default()
+    };
+    let mut flags = Flags {
+        par: Some("runs/a/run.par".into()),
+        ..Flags::default()
+    };
+    // achInFile is beside the .par file.
+    let beside = std::path::Path::new("runs/a").join("in.ss");
+    assert_eq!(
+        particle_file(&flags, Some(&par)).as_deref(),
+        beside.to_str()
+    );
+    flags.particles = Some("balls.csv".into());
+    assert_eq!(
+        particle_file(&flags, Some(&par)).as_deref(),
+        Some("balls.csv")
+    );
+    // Neither: the default particles.
+    assert_eq!(particle_file(&Flags::default(), None), None);
+}
+
+#[test]
+fn load_reads_the_par_file_and_its_particles() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| std::fs::write(dir.path().join(name), text).unwrap();
+    write(
+        "run.par",
+        "achInFile = ball.csv\ndDelta = 1e-5\ndKn = 3e5\n",
+    );
+    write(
+        "ball.csv",
+        "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0.3,0,0,-2\n",
+    );
+    write(
+        "two.csv",
+        "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0.3,0,0,-2\n2,0.1,1,0,0.3,0,0,0\n",
+    );
+    let path = |name: &str| dir.path().join(name).to_string_lossy().into_owned();
+    let mut flags = Flags {
+        par: Some(path("run.par")),
+        ..Flags::default()
+    };
+    let run = load(&flags, &scene(FLOOR)).unwrap();
+    assert_eq!(run.particles.len(), 1);
+    assert_eq!((run.settings.dt, run.settings.material.k_n), (1e-5, 3e5));
+    flags.particles = Some(path("two.csv"));
+    assert_eq!(load(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
+
+    // Errors name the file and the line.
+    write("bad.par", "dDelta = 0\n");
+    flags.par = Some(path("bad.par"));
+    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    assert!(matches!(e, ConfigError::File(_)));
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}: line 1: `dDelta` is `0`; it must be greater than 0",
+            path("bad.par")
+        )
+    );
+    write("none.csv", "mass,radius,x,y,z,vx,vy,vz\n");
+    let flags = Flags {
+        particles: Some(path("none.csv")),
+        ..Flags::default()
+    };
+    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    assert_eq!(e.to_string(), "no particles to run");
+    let flags = Flags {
+        particles: Some(path("missing.csv")),
+        ..Flags::default()
+    };
+    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with(&format!("cannot read {}: ", path("missing.csv")))
+    );
+}

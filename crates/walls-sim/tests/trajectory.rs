@@ -1,0 +1,95 @@
+//! `io::trajectory`: the rows `Trajectory` writes to `particles.csv` and `walls.csv` read
+//! back as the same rows, and what the readers refuse.
+
+mod common;
+
+use common::{particle, scene};
+use nalgebra::Vector3;
+use walls_sim::io::trajectory::{
+    ParticleRow, ReadError, Trajectory, WallRow, read_particles, read_walls,
+};
+use walls_sim::run::State;
+
+#[test]
+fn written_rows_read_back_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    let floor = scene("wall type plane origin 0 0 0\nwall type disk origin 0 0 1 radius 2\n");
+    let mut states: Vec<State> = [[0.0, 0.0, 0.3], [0.1, -0.2, 1.0 / 3.0]]
+        .iter()
+        .map(|&pos| State::new(&particle(pos, [0.25, -1e-300, 7.0])))
+        .collect();
+    states[1].particle.spin = Vector3::new(1.5, f64::MIN_POSITIVE, -0.1);
+    states[1].alive = false;
+    let mut out = Trajectory::create(dir.path()).unwrap();
+    out.record(0, 0.0, &states, &floor, &[]).unwrap();
+    out.record(100, 0.1 + 0.2, &states, &floor, &[]).unwrap();
+    let extra = ParticleRow {
+        step: 200,
+        t: 2.5e-7,
+        particle: 0,
+        alive: true,
+        mass: 3.0,
+        radius: 0.5,
+        pos: Vector3::new(-1.0, 2.0, 1e10),
+        vel: Vector3::zeros(),
+        spin: Vector3::new(0.0, -0.0, 4.0),
+    };
+    out.write_particle(&extra).unwrap();
+    out.finish().unwrap();
+
+    let text = std::fs::read_to_string(dir.path().join("particles.csv")).unwrap();
+    let rows = read_particles(&text).unwrap();
+    let mut expected = Vec::new();
+    for (step, t) in [(0, 0.0), (100, 0.1 + 0.2)] {
+        for (i, s) in states.iter().enumerate() {
+            expected.push(ParticleRow::new(step, t, i, s));
+        }
+    }
+    expected.push(extra);
+    assert_eq!(rows, expected);
+
+    let text = std::fs::read_to_string(dir.path().join("walls.csv")).unwrap();
+    let walls = read_walls(&text).unwrap();
+    let origin = |wall: usize| Vector3::new(0.0, 0.0, wall as f64);
+    let expected: Vec<WallRow> = [(0, 0.0), (100, 0.1 + 0.2)]
+        .iter()
+        .flat_map(|&(step, t)| {
+            (0..2).map(move |wall| WallRow {
+                step,
+                t,
+                wall,
+                origin: origin(wall),
+            })
+        })
+        .collect();
+    assert_eq!(walls, expected);
+}
+
+#[test]
+fn the_readers_say_what_is_wrong() {
+    assert_eq!(
+        read_particles("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0,0,0,0\n"),
+        Err(ReadError::NotATrajectory {
+            what: "particles.csv"
+        })
+    );
+    assert_eq!(
+        read_particles("").unwrap_err().to_string(),
+        "not a trajectory (the particles.csv of walls-sim run --out)"
+    );
+    let header = "step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz\n";
+    let good = "0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0\n";
+    let bad_x = "0,0,1,1,1,0.1,nan,0,0,0,0,0,0,0,0\n";
+    let e = read_particles(&format!("{header}{good}{bad_x}")).unwrap_err();
+    assert_eq!(e, ReadError::NotANumber { line: 3, column: 7 });
+    assert_eq!(e.to_string(), "line 3: column 7 is not a number");
+    assert_eq!(
+        read_particles(&format!("{header}0,0,0\n")).unwrap_err(),
+        ReadError::NotANumber { line: 2, column: 4 }
+    );
+    assert_eq!(read_particles(header), Ok(Vec::new()));
+    assert_eq!(
+        read_walls("step,t,wall,x,y\n"),
+        Err(ReadError::NotATrajectory { what: "walls.csv" })
+    );
+}
