@@ -9,12 +9,14 @@
 use crate::Mode;
 use crate::codes;
 use crate::fix;
-use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
+use crate::scene::{
+    Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings,
+};
 use std::ops::Range;
 use std::sync::Arc;
 use walls_diagnostics::{Applicability, Diagnostic, Edit, Severity};
 use walls_keywords::{Dimension, Keyword, Role, ValueShape};
-use walls_syntax::{Statement, SyntaxTree, TokenKind};
+use walls_syntax::{Block, Statement, SyntaxTree, TokenKind};
 
 /// A principal axis may differ from unit length by this much.
 pub const AXIS_LENGTH_TOLERANCE: f64 = 0.001;
@@ -44,8 +46,8 @@ pub fn resolve(tree: &SyntaxTree, mode: Mode) -> (Scene, Vec<Diagnostic>) {
         .filter(|item| matches!(item, walls_syntax::Item::Block(b) if b.kind == walls_syntax::BlockKind::Wall))
         .count();
     r.scene.walls.reserve_exact(walls);
-    for (stmt, _) in tree.statements() {
-        r.statement(stmt);
+    for (stmt, block) in tree.statements() {
+        r.statement(stmt, block);
     }
     r.close_block();
     (r.scene, r.out)
@@ -143,7 +145,7 @@ impl Resolver<'_> {
 }
 
 impl<'t> Resolver<'t> {
-    fn statement(&mut self, stmt: &Statement) {
+    fn statement(&mut self, stmt: &Statement, block: Option<&Block>) {
         let Some(keyword) = self.tree.keyword(stmt) else {
             return;
         };
@@ -153,9 +155,14 @@ impl<'t> Resolver<'t> {
                 self.block_start = self.tree.span(self.tree.head(stmt)).start;
                 let index = self.scene.walls.len();
                 let inherited = self.shared_defaults();
+                let head = self.tree.statement_span(stmt);
+                let end = block
+                    .and_then(|b| self.tree.body(b).last())
+                    .map_or(head.end, |last| self.tree.statement_span(last).end);
                 self.scene.walls.push(Wall {
                     index,
                     span: self.tree.span(self.tree.head(stmt)),
+                    block: Span::from(head.start..end),
                     settings: WallSettings::new(inherited),
                 });
                 self.target = Target::Wall(index);
