@@ -9,14 +9,12 @@
 use crate::Mode;
 use crate::codes;
 use crate::fix;
-use crate::scene::{
-    Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings,
-};
+use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
 use std::ops::Range;
 use std::sync::Arc;
 use walls_diagnostics::{Applicability, Diagnostic, Edit, Severity};
 use walls_keywords::{Dimension, Keyword, Role, ValueShape};
-use walls_syntax::{Block, Statement, SyntaxTree, TokenKind};
+use walls_syntax::{Statement, SyntaxTree, TokenKind};
 
 /// A principal axis may differ from unit length by this much.
 pub const AXIS_LENGTH_TOLERANCE: f64 = 0.001;
@@ -145,7 +143,7 @@ impl Resolver<'_> {
 }
 
 impl<'t> Resolver<'t> {
-    fn statement(&mut self, stmt: &Statement, block: Option<&Block>) {
+    fn statement(&mut self, stmt: &Statement, block: Option<&walls_syntax::Block>) {
         let Some(keyword) = self.tree.keyword(stmt) else {
             return;
         };
@@ -162,7 +160,7 @@ impl<'t> Resolver<'t> {
                 self.scene.walls.push(Wall {
                     index,
                     span: self.tree.span(self.tree.head(stmt)),
-                    block: Span::from(head.start..end),
+                    block: crate::Span::from(head.start..end),
                     settings: WallSettings::new(inherited),
                 });
                 self.target = Target::Wall(index);
