@@ -9,7 +9,7 @@ use walls_diagnostics::Severity;
 use walls_format::FormatOptions;
 use walls_ide::{ActionKind, Analysis, CompletionKind, HighlightKind, SymbolKind as Kind};
 
-/// The semantic token types, in legend order (the order of [`token_type`]).
+/// The semantic token types, in legend order (`token_type` gives the index).
 pub const TOKEN_TYPES: [SemanticTokenType; 5] = [
     SemanticTokenType::KEYWORD,
     SemanticTokenType::PROPERTY,

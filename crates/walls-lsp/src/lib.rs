@@ -5,14 +5,14 @@
 //! answers of `walls-ide`'s feature functions into LSP values:
 //! - diagnostics come from the syntax check and the checker;
 //! - hovers show the keyword's documentation and its effective value;
-//! - formatting and range formatting use `walls-format`;
+//! - formatting and range formatting use `walls-format` (options from the
+//!   `.walls-fmt.toml` above the document's file);
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
 //! - the outline shows walls and defaults blocks;
 //! - folding covers blocks;
 //! - completion knows the context (type names after `type`, the wall type's tokens
 //!   first), semantic tokens colour the file, inlay hints show inherited, scaled and
-//!   derived values, and go to definition leads from a value to the token that set it.
-//!
+//!   derived values, and go to definition leads from a value to the token that set it;
 //! - the custom request `walls/explain` (`{"query": "S101"}`, a code's id or name, or a
 //!   keyword) answers the explanation `walls-lint --explain` prints, in Markdown, or
 //!   `null`, so that editors can explain the code of a diagnostic.
