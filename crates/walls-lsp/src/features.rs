@@ -1,32 +1,61 @@
-//! The LSP features, each a function from an analysed document to LSP values.
+//! The LSP features: each converts LSP positions to byte offsets, asks `walls-ide`, and
+//! maps its plain-data answer into LSP values (UTF-16 positions).
 
 use crate::document::Document;
 use crate::position::{offset, position, range};
 use std::collections::HashMap;
 use tower_lsp_server::ls_types::{self as lsp, *};
-use walls_diagnostics::{Applicability, Severity, apply_fixes};
+use walls_diagnostics::Severity;
 use walls_format::FormatOptions;
-use walls_keywords::{Keyword, Role};
-use walls_model::{Place, Source, Value};
-use walls_syntax::{BlockKind, Item, Statement};
+use walls_ide::{ActionKind, Analysis, CompletionKind, HighlightKind, SymbolKind as Kind};
+
+/// The semantic token types, in legend order (`token_type` gives the index).
+pub const TOKEN_TYPES: [SemanticTokenType; 5] = [
+    SemanticTokenType::KEYWORD,
+    SemanticTokenType::PROPERTY,
+    SemanticTokenType::ENUM_MEMBER,
+    SemanticTokenType::NUMBER,
+    SemanticTokenType::COMMENT,
+];
+
+/// A highlight's index in [`TOKEN_TYPES`].
+fn token_type(kind: HighlightKind) -> u32 {
+    match kind {
+        HighlightKind::Keyword => 0,
+        HighlightKind::Property => 1,
+        HighlightKind::WallType => 2,
+        HighlightKind::Number => 3,
+        HighlightKind::Comment => 4,
+    }
+}
+
+/// The LSP range of a byte range of the document.
+fn lsp_range(a: &Analysis, span: &std::ops::Range<usize>) -> Range {
+    range(&a.lines, a.text(), span)
+}
+
+/// The byte range of an LSP range of the document.
+fn byte_range(a: &Analysis, r: Range) -> std::ops::Range<usize> {
+    offset(&a.lines, a.text(), r.start)..offset(&a.lines, a.text(), r.end)
+}
 
 /// The document's diagnostics, as the client shows them.
 pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
-    doc.diagnostics
+    doc.analysis
+        .diagnostics()
         .iter()
-        .map(|d| to_lsp(uri, doc, d))
+        .map(|d| to_lsp(uri, &doc.analysis, d))
         .collect()
 }
 
-fn to_lsp(uri: &Uri, doc: &Document, d: &walls_diagnostics::Diagnostic) -> lsp::Diagnostic {
-    let text = doc.text();
+fn to_lsp(uri: &Uri, a: &Analysis, d: &walls_diagnostics::Diagnostic) -> lsp::Diagnostic {
     let mut message = d.message.clone();
     if let Some(help) = &d.help {
         message.push_str("\nhelp: ");
         message.push_str(help);
     }
     lsp::Diagnostic {
-        range: range(&doc.index, text, &d.span),
+        range: lsp_range(a, &d.span),
         severity: Some(match d.severity {
             Severity::Error => DiagnosticSeverity::ERROR,
             Severity::Warning => DiagnosticSeverity::WARNING,
@@ -39,7 +68,7 @@ fn to_lsp(uri: &Uri, doc: &Document, d: &walls_diagnostics::Diagnostic) -> lsp::
             d.labels
                 .iter()
                 .map(|l| DiagnosticRelatedInformation {
-                    location: Location::new(uri.clone(), range(&doc.index, text, &l.span)),
+                    location: Location::new(uri.clone(), lsp_range(a, &l.span)),
                     message: l.message.clone(),
                 })
                 .collect()
@@ -50,119 +79,20 @@ fn to_lsp(uri: &Uri, doc: &Document, d: &walls_diagnostics::Diagnostic) -> lsp::
 
 /// The keyword's documentation, with the value it has where the cursor is.
 pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
-    let tree = &doc.parse.tree;
-    let text = doc.text();
-    let offset = offset(&doc.index, text, at);
+    let a = &doc.analysis;
+    let offset = offset(&a.lines, a.text(), at);
     // A position past the end of its line (or of the text) points at nothing.
-    if position(&doc.index, text, offset) != at {
+    if position(&a.lines, a.text(), offset) != at {
         return None;
     }
-    let stmt = tree.statement_containing(offset)?;
-    let keyword = tree.keyword(&stmt)?;
-    let span = tree.statement_span(&stmt);
-    if offset > span.end {
-        return None;
-    }
-    let mut value = keyword.markdown();
-    if let Some(note) = effective_value(doc, &stmt, keyword) {
-        value.push('\n');
-        value.push_str(&note);
-    }
+    let hover = walls_ide::hover(a, offset)?;
     Some(Hover {
         contents: HoverContents::Markup(MarkupContent {
             kind: MarkupKind::Markdown,
-            value,
+            value: hover.markdown,
         }),
-        range: Some(range(&doc.index, text, &span)),
+        range: Some(lsp_range(a, &hover.range)),
     })
-}
-
-/// For a property in a wall block: the wall's effective value and where it came from;
-/// for one in a `defaults` block, what that means. Nothing for statements outside blocks.
-fn effective_value(doc: &Document, stmt: &Statement, keyword: Keyword) -> Option<String> {
-    let tree = &doc.parse.tree;
-    let block = tree.statements().find(|(s, _)| *s == stmt)?.1?;
-    if keyword.role() != Role::Property {
-        return None;
-    }
-    if block.kind == BlockKind::Defaults {
-        return Some("Sets the default for the walls created after this block.".into());
-    }
-    let index = tree
-        .items()
-        .iter()
-        .filter_map(|i| match i {
-            Item::Block(b) if b.kind == BlockKind::Wall => Some(b),
-            _ => None,
-        })
-        .position(|b| std::ptr::eq(b, block))?;
-    let wall = doc.analysis.scene.walls.get(index)?;
-    let setting = wall.setting(keyword)?;
-    let values = tree.values(stmt);
-    let here = match (values.first(), values.last()) {
-        (Some(&a), Some(&b)) => Some(tree.span(a).start..tree.span(b).end),
-        _ => None,
-    };
-    let line = |at: usize| doc.index.line_of(at) + 1;
-    let from = match &setting.source {
-        Source::Builtin => "the built-in default".to_string(),
-        Source::Set {
-            derived_from: Some(k),
-            values,
-            ..
-        } => format!(
-            "the `{}` on line {} (2/7 of it)",
-            k.name(),
-            line(values.range().start)
-        ),
-        Source::Set { values, .. } if Some(values.range()) == here => "this token".to_string(),
-        Source::Set {
-            place: Place::Wall,
-            values,
-            ..
-        } => format!(
-            "the `{}` on line {}, which wins",
-            keyword.name(),
-            line(values.range().start)
-        ),
-        Source::Set {
-            place: Place::Defaults,
-            values,
-            ..
-        } => format!("`defaults` on line {}", line(values.range().start)),
-    };
-    let shown = match setting.value {
-        Value::Number(x) => format!("{x}"),
-        Value::Integer(i) => format!("{i}"),
-        Value::Vector(v) => format!("{} {} {}", v.x, v.y, v.z),
-        Value::Type(t) => t.name().to_string(),
-    };
-    // What happened to the number as written: unit scaling, or a percentage.
-    let written = match (&setting.source, setting.value) {
-        (
-            Source::Set {
-                values,
-                derived_from: None,
-                ..
-            },
-            Value::Number(x),
-        ) if Some(values.range()) == here => doc.text()[values.range()]
-            .parse::<f64>()
-            .ok()
-            .filter(|&raw| raw != x),
-        _ => None,
-    };
-    let note = match written {
-        Some(raw) if keyword == Keyword::Transparency => {
-            format!(" Written as {raw}, a percentage.")
-        }
-        Some(raw) => format!(" Written as {raw}, scaled by the units in force."),
-        None => String::new(),
-    };
-    Some(format!(
-        "In wall {}: **{shown}** (pkdgrav units), from {from}.{note}",
-        wall.index
-    ))
 }
 
 /// The formatting options for a document: from the `.walls-fmt.toml` above its file, as
@@ -206,71 +136,57 @@ fn percent_decode(s: &str) -> String {
 
 /// The edit that formats the whole document, if it changes anything.
 pub fn format(uri: &Uri, doc: &Document) -> Option<Vec<TextEdit>> {
-    let formatted = walls_format::format(&doc.parse, &format_options(uri)).ok()?;
-    (formatted.text != doc.text()).then(|| vec![whole(doc, formatted.text)])
+    let formatted = walls_ide::format(&doc.analysis, &format_options(uri))?;
+    Some(vec![whole(&doc.analysis, formatted)])
 }
 
 /// The edit that formats the items a range touches.
 pub fn format_range(uri: &Uri, doc: &Document, r: Range) -> Option<Vec<TextEdit>> {
-    let text = doc.text();
-    let span = offset(&doc.index, text, r.start)..offset(&doc.index, text, r.end);
-    let edit = walls_format::format_range(&doc.parse, span, &format_options(uri)).ok()??;
+    let a = &doc.analysis;
+    let edit = walls_ide::format_range(a, byte_range(a, r), &format_options(uri))?;
     Some(vec![TextEdit::new(
-        range(&doc.index, text, &edit.span),
+        lsp_range(a, &edit.span),
         edit.replacement,
     )])
 }
 
-fn whole(doc: &Document, new_text: String) -> TextEdit {
-    TextEdit::new(
-        range(&doc.index, doc.text(), &(0..doc.text().len())),
-        new_text,
-    )
+fn whole(a: &Analysis, new_text: String) -> TextEdit {
+    TextEdit::new(lsp_range(a, &(0..a.text().len())), new_text)
 }
 
 /// A quick fix for every diagnostic in `r` that has one, and "fix all safe problems".
 pub fn code_actions(uri: &Uri, doc: &Document, r: Range) -> Vec<CodeActionOrCommand> {
-    let text = doc.text();
-    let span = offset(&doc.index, text, r.start)..offset(&doc.index, text, r.end);
-    let mut actions = Vec::new();
-    for d in &doc.diagnostics {
-        let Some(fix) = &d.fix else { continue };
-        if d.span.end < span.start || span.end < d.span.start {
-            continue;
-        }
-        let edits = fix
-            .edits
-            .iter()
-            .map(|e| TextEdit::new(range(&doc.index, text, &e.span), e.replacement.clone()))
-            .collect();
-        actions.push(CodeActionOrCommand::CodeAction(CodeAction {
-            title: format!("{} ({})", fix.message, d.code.id),
-            kind: Some(CodeActionKind::QUICKFIX),
-            diagnostics: Some(vec![to_lsp(uri, doc, d)]),
-            edit: Some(workspace_edit(uri, edits)),
-            is_preferred: Some(fix.applicability == Applicability::Safe),
-            ..CodeAction::default()
-        }));
-    }
-    let safe = doc
-        .diagnostics
-        .iter()
-        .filter(|d| {
-            d.fix
-                .as_ref()
-                .is_some_and(|f| f.applicability == Applicability::Safe)
+    let a = &doc.analysis;
+    walls_ide::code_actions(a, byte_range(a, r))
+        .into_iter()
+        .map(|action| {
+            let edits = action
+                .edits
+                .into_iter()
+                .map(|e| TextEdit::new(lsp_range(a, &e.span), e.replacement))
+                .collect();
+            let edit = Some(workspace_edit(uri, edits));
+            CodeActionOrCommand::CodeAction(match action.kind {
+                ActionKind::QuickFix {
+                    diagnostic,
+                    preferred,
+                } => CodeAction {
+                    title: action.title,
+                    kind: Some(CodeActionKind::QUICKFIX),
+                    diagnostics: Some(vec![to_lsp(uri, a, &a.diagnostics()[diagnostic])]),
+                    edit,
+                    is_preferred: Some(preferred),
+                    ..CodeAction::default()
+                },
+                ActionKind::FixAll => CodeAction {
+                    title: action.title,
+                    kind: Some(CodeActionKind::SOURCE_FIX_ALL),
+                    edit,
+                    ..CodeAction::default()
+                },
+            })
         })
-        .count();
-    if safe > 0 {
-        let fixed = apply_fixes(text, &doc.diagnostics, Applicability::Safe);
-        actions.push(CodeActionOrCommand::CodeAction(CodeAction {
-            title: format!("Fix all safe problems ({safe})"),
-            kind: Some(CodeActionKind::SOURCE_FIX_ALL),
-            edit: Some(workspace_edit(uri, vec![whole(doc, fixed)])),
-            ..CodeAction::default()
-        }));
-    }
-    actions
+        .collect()
 }
 
 fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
@@ -282,95 +198,41 @@ fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
 
 /// The outline: each wall ("wall 3: disk") and defaults block with its statements, and
 /// the statements outside blocks.
-#[allow(deprecated)] // `DocumentSymbol::deprecated` must still be given.
 pub fn symbols(doc: &Document) -> Vec<DocumentSymbol> {
-    let tree = &doc.parse.tree;
-    let text = doc.text();
-    let symbol =
-        |name: String, detail: Option<String>, kind, stmt: &walls_syntax::Statement, children| {
-            let head = tree.span(tree.head(stmt));
-            DocumentSymbol {
-                name,
-                detail,
-                kind,
-                tags: None,
-                deprecated: None,
-                range: range(&doc.index, text, &tree.statement_span(stmt)),
-                selection_range: range(&doc.index, text, &head),
-                children,
-            }
-        };
-    let values = |stmt: &walls_syntax::Statement| {
-        let v: Vec<&str> = tree
-            .values(stmt)
-            .iter()
-            .map(|&t| tree.token_text(t))
-            .collect();
-        (!v.is_empty()).then(|| v.join(" "))
+    walls_ide::symbols(&doc.analysis)
+        .into_iter()
+        .map(|s| to_symbol(&doc.analysis, s))
+        .collect()
+}
+
+#[allow(deprecated)] // `DocumentSymbol::deprecated` must still be given.
+fn to_symbol(a: &Analysis, s: walls_ide::Symbol) -> DocumentSymbol {
+    let (kind, block) = match s.kind {
+        Kind::Wall => (SymbolKind::OBJECT, true),
+        Kind::Defaults => (SymbolKind::NAMESPACE, true),
+        Kind::Property => (SymbolKind::PROPERTY, false),
+        Kind::Statement => (SymbolKind::CONSTANT, false),
     };
-    let mut walls = doc.analysis.scene.walls.iter();
-    let mut out = Vec::new();
-    for item in tree.items() {
-        match item {
-            Item::Block(b) => {
-                let children: Vec<DocumentSymbol> = tree
-                    .body(b)
-                    .iter()
-                    .filter_map(|s| {
-                        let k = tree.keyword(s)?;
-                        Some(symbol(
-                            k.name().into(),
-                            values(s),
-                            SymbolKind::PROPERTY,
-                            s,
-                            None,
-                        ))
-                    })
-                    .collect();
-                let (name, kind) = match b.kind {
-                    BlockKind::Wall => {
-                        let w = walls.next();
-                        let name = w.map_or("wall".into(), |w| {
-                            format!("wall {}: {}", w.index, w.wall_type().name())
-                        });
-                        (name, SymbolKind::OBJECT)
-                    }
-                    BlockKind::Defaults => ("defaults".into(), SymbolKind::NAMESPACE),
-                };
-                let mut s = symbol(name, None, kind, &b.head, Some(children));
-                if let Some(last) = tree.body(b).last() {
-                    let end = tree.statement_span(last).end;
-                    s.range = range(&doc.index, text, &(tree.statement_span(&b.head).start..end));
-                }
-                out.push(s);
-            }
-            Item::Statement(s) => {
-                if let Some(k) = tree.keyword(s) {
-                    out.push(symbol(
-                        k.name().into(),
-                        values(s),
-                        SymbolKind::CONSTANT,
-                        s,
-                        None,
-                    ));
-                }
-            }
-            Item::Stray(_) => {}
-        }
+    DocumentSymbol {
+        name: s.name,
+        detail: s.detail,
+        kind,
+        tags: None,
+        deprecated: None,
+        range: lsp_range(a, &s.range),
+        selection_range: lsp_range(a, &s.selection_range),
+        children: block.then(|| s.children.into_iter().map(|c| to_symbol(a, c)).collect()),
     }
-    out
 }
 
 /// A folding range for every block that spans several lines.
 pub fn folding(doc: &Document) -> Vec<FoldingRange> {
-    let tree = &doc.parse.tree;
-    tree.items()
-        .iter()
-        .filter_map(|item| {
-            let Item::Block(b) = item else { return None };
-            let last = tree.body(b).last()?;
-            let start = doc.index.line_of(tree.statement_span(&b.head).start);
-            let end = doc.index.line_of(tree.statement_span(last).end);
+    let a = &doc.analysis;
+    walls_ide::folding(a)
+        .into_iter()
+        .filter_map(|span| {
+            let start = a.lines.line_of(span.start);
+            let end = a.lines.line_of(span.end);
             (end > start).then(|| FoldingRange {
                 start_line: start as u32,
                 end_line: end as u32,
@@ -378,5 +240,95 @@ pub fn folding(doc: &Document) -> Vec<FoldingRange> {
                 ..FoldingRange::default()
             })
         })
+        .collect()
+}
+
+/// Completions at a position: type names after `type`, nothing in a comment, otherwise
+/// keywords, those the wall's type reads first, each a snippet with its default values.
+pub fn completion(doc: &Document, at: Position) -> Vec<CompletionItem> {
+    let a = &doc.analysis;
+    walls_ide::completion(a, offset(&a.lines, a.text(), at))
+        .into_iter()
+        .map(|item| CompletionItem {
+            label: item.label,
+            kind: Some(match item.kind {
+                CompletionKind::WallType => CompletionItemKind::ENUM_MEMBER,
+                CompletionKind::Property => CompletionItemKind::PROPERTY,
+                CompletionKind::Keyword => CompletionItemKind::KEYWORD,
+            }),
+            detail: Some(item.detail),
+            documentation: item.documentation.map(|value| {
+                Documentation::MarkupContent(MarkupContent {
+                    kind: MarkupKind::Markdown,
+                    value,
+                })
+            }),
+            sort_text: item.sort_text,
+            insert_text_format: item.snippet.is_some().then_some(InsertTextFormat::SNIPPET),
+            insert_text: item.snippet,
+            ..CompletionItem::default()
+        })
+        .collect()
+}
+
+/// Semantic tokens of the whole document, or of the lines of `only`.
+pub fn semantic_tokens(doc: &Document, only: Option<Range>) -> Vec<SemanticToken> {
+    let a = &doc.analysis;
+    let text = a.text();
+    let (first, last) = only.map_or((0, u32::MAX), |r| (r.start.line, r.end.line));
+    let mut out = Vec::new();
+    let (mut prev_line, mut prev_start) = (0, 0);
+    for token in walls_ide::semantic_tokens(a) {
+        let start = position(&a.lines, text, token.range.start);
+        if start.line < first || start.line > last {
+            continue;
+        }
+        let length = text[token.range].encode_utf16().count() as u32;
+        let delta_start = if start.line == prev_line {
+            start.character - prev_start
+        } else {
+            start.character
+        };
+        out.push(SemanticToken {
+            delta_line: start.line - prev_line,
+            delta_start,
+            length,
+            token_type: token_type(token.kind),
+            token_modifiers_bitset: 0,
+        });
+        (prev_line, prev_start) = (start.line, start.character);
+    }
+    out
+}
+
+/// Hints: what a wall inherits from `defaults`, values the unit tokens scale, and the
+/// `k_t` a `k_n` sets; only those inside `r`.
+pub fn inlay_hints(doc: &Document, r: Range) -> Vec<InlayHint> {
+    let a = &doc.analysis;
+    walls_ide::inlay_hints(a, byte_range(a, r))
+        .into_iter()
+        .map(|h| InlayHint {
+            position: position(&a.lines, a.text(), h.offset),
+            label: InlayHintLabel::String(h.label),
+            kind: None,
+            text_edits: None,
+            tooltip: None,
+            padding_left: Some(true),
+            padding_right: None,
+            data: None,
+        })
+        // Positions past a line's end fall on its end as offsets: compare as positions.
+        .filter(|h| h.position >= r.start && h.position <= r.end)
+        .collect()
+}
+
+/// Where the value under the cursor comes from: on a property of a wall, the token that
+/// set the wall's effective value (its own, or a `defaults` line); on `wall`, every
+/// `defaults` value the wall inherits.
+pub fn definition(doc: &Document, uri: &Uri, at: Position) -> Vec<Location> {
+    let a = &doc.analysis;
+    walls_ide::definition(a, offset(&a.lines, a.text(), at))
+        .iter()
+        .map(|span| Location::new(uri.clone(), lsp_range(a, span)))
         .collect()
 }

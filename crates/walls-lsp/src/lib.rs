@@ -1,20 +1,25 @@
 //! The walls language server.
 //!
-//! It maps LSP documents, edits and requests onto the other crates:
+//! A thin adapter: it keeps the open documents (each checked by `walls-ide`), converts
+//! LSP positions (UTF-16) to byte offsets and back ([`position`]), and maps the plain
+//! answers of `walls-ide`'s feature functions into LSP values:
 //! - diagnostics come from the syntax check and the checker;
 //! - hovers show the keyword's documentation and its effective value;
-//! - formatting and range formatting use `walls-format`;
+//! - formatting and range formatting use `walls-format` (options from the
+//!   `.walls-fmt.toml` above the document's file);
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
 //! - the outline shows walls and defaults blocks;
 //! - folding covers blocks;
 //! - completion knows the context (type names after `type`, the wall type's tokens
 //!   first), semantic tokens colour the file, inlay hints show inherited, scaled and
-//!   derived values, and go to definition leads from a value to the token that set it.
+//!   derived values, and go to definition leads from a value to the token that set it;
+//! - the custom request `walls/explain` (`{"query": "S101"}`, a code's id or name, or a
+//!   keyword) answers the explanation `walls-lint --explain` prints, in Markdown, or
+//!   `null`, so that editors can explain the code of a diagnostic.
 //!
 //! Edits are applied under one lock, and a document's diagnostics are published with
 //! its version, and only if no newer version has arrived meanwhile.
 
-mod assist;
 mod document;
 mod features;
 pub mod position;
@@ -41,10 +46,19 @@ struct State {
 
 /// The service and the socket its notifications to the client go through.
 pub fn service() -> (LspService<Backend>, tower_lsp_server::ClientSocket) {
-    LspService::new(|client| Backend {
+    LspService::build(|client| Backend {
         client,
         state: Mutex::new(State::default()),
     })
+    .custom_method("walls/explain", Backend::explain)
+    .finish()
+}
+
+/// The parameters of `walls/explain`.
+#[derive(Debug, serde::Deserialize)]
+pub struct ExplainParams {
+    /// A diagnostic code's id (`S101`) or name (`unknown-word`), or a keyword.
+    pub query: String,
 }
 
 /// Serves LSP over standard input and output until the client exits.
@@ -89,6 +103,12 @@ impl Backend {
             .await;
     }
 
+    /// `walls/explain`: what a code (or keyword) means, in Markdown, as
+    /// `walls-lint --explain` prints it; `null` for anything else.
+    async fn explain(&self, params: ExplainParams) -> Result<Option<String>> {
+        Ok(walls_ide::explain(&params.query))
+    }
+
     fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {
         self.lock().documents.get(uri).map(f)
     }
@@ -118,7 +138,7 @@ impl LanguageServer for Backend {
                 semantic_tokens_provider: Some(
                     SemanticTokensOptions {
                         legend: SemanticTokensLegend {
-                            token_types: assist::TOKEN_TYPES.to_vec(),
+                            token_types: features::TOKEN_TYPES.to_vec(),
                             token_modifiers: Vec::new(),
                         },
                         full: Some(SemanticTokensFullOptions::Bool(true)),
@@ -253,7 +273,7 @@ impl LanguageServer for Backend {
         let p = params.text_document_position;
         Ok(self
             .with_document(&p.text_document.uri, |doc| {
-                assist::completion(doc, p.position)
+                features::completion(doc, p.position)
             })
             .map(CompletionResponse::Array))
     }
@@ -265,7 +285,7 @@ impl LanguageServer for Backend {
         Ok(self.with_document(&params.text_document.uri, |doc| {
             SemanticTokens {
                 result_id: None,
-                data: assist::semantic_tokens(doc, None),
+                data: features::semantic_tokens(doc, None),
             }
             .into()
         }))
@@ -278,7 +298,7 @@ impl LanguageServer for Backend {
         Ok(self.with_document(&params.text_document.uri, |doc| {
             SemanticTokens {
                 result_id: None,
-                data: assist::semantic_tokens(doc, Some(params.range)),
+                data: features::semantic_tokens(doc, Some(params.range)),
             }
             .into()
         }))
@@ -286,7 +306,7 @@ impl LanguageServer for Backend {
 
     async fn inlay_hint(&self, params: InlayHintParams) -> Result<Option<Vec<InlayHint>>> {
         Ok(self.with_document(&params.text_document.uri, |doc| {
-            assist::inlay_hints(doc, params.range)
+            features::inlay_hints(doc, params.range)
         }))
     }
 
@@ -297,7 +317,7 @@ impl LanguageServer for Backend {
         let p = params.text_document_position_params;
         let uri = p.text_document.uri;
         Ok(self
-            .with_document(&uri, |doc| assist::definition(doc, &uri, p.position))
+            .with_document(&uri, |doc| features::definition(doc, &uri, p.position))
             .filter(|l| !l.is_empty())
             .map(GotoDefinitionResponse::Array))
     }

@@ -3,39 +3,14 @@
 //! offsets.
 
 use tower_lsp_server::ls_types::{Position, Range};
-
-/// Where each line starts, by LSP's rules: a line ends at `\n`, `\r\n` or a lone `\r`.
-#[derive(Debug, Clone)]
-pub struct Lines {
-    starts: Vec<usize>,
-}
-
-impl Lines {
-    /// Indexes `text`.
-    pub fn new(text: &str) -> Self {
-        let b = text.as_bytes();
-        let mut starts = vec![0];
-        for (i, &c) in b.iter().enumerate() {
-            let ends = c == b'\n' || (c == b'\r' && b.get(i + 1) != Some(&b'\n'));
-            if ends {
-                starts.push(i + 1);
-            }
-        }
-        Lines { starts }
-    }
-
-    /// The 0-based line holding byte `offset`.
-    pub fn line_of(&self, offset: usize) -> usize {
-        self.starts.partition_point(|&s| s <= offset) - 1
-    }
-}
+pub use walls_ide::Lines;
 
 /// The LSP position of byte `offset` in `text` (an offset inside a character counts as
 /// that character's start).
 pub fn position(lines: &Lines, text: &str, offset: usize) -> Position {
     let offset = offset.min(text.len());
     let line = lines.line_of(offset);
-    let start = lines.starts[line];
+    let start = lines.line_start(line).unwrap_or_default();
     let column: usize = text[start..]
         .char_indices()
         .take_while(|&(i, _)| start + i < offset)
@@ -56,11 +31,10 @@ pub fn range(lines: &Lines, text: &str, span: &std::ops::Range<usize>) -> Range 
 /// are clamped to them.
 pub fn offset(lines: &Lines, text: &str, p: Position) -> usize {
     let line = p.line as usize;
-    if line >= lines.starts.len() {
+    let Some(start) = lines.line_start(line) else {
         return text.len();
-    }
-    let start = lines.starts[line];
-    let end = lines.starts.get(line + 1).copied().unwrap_or(text.len());
+    };
+    let end = lines.line_start(line + 1).unwrap_or(text.len());
     let mut units = 0;
     for (i, c) in text[start..end].char_indices() {
         if units >= p.character as usize || c == '\n' || c == '\r' {

@@ -411,3 +411,23 @@ async fn a_lone_carriage_return_ends_a_line() {
         json!({"start": {"line": 1, "character": 2}, "end": {"line": 1, "character": 8}})
     );
 }
+
+#[tokio::test]
+async fn explains_codes_as_walls_lint_does() {
+    let mut c = Client::start(json!({})).await;
+    let by_id = c.request("walls/explain", json!({"query": "s101"})).await;
+    let text = by_id.as_str().unwrap();
+    assert!(text.starts_with("S101 (unknown-word): "), "{text}");
+    assert_eq!(
+        c.request("walls/explain", json!({"query": "unknown-word"}))
+            .await,
+        by_id
+    );
+    let keyword = c.request("walls/explain", json!({"query": "radius"})).await;
+    assert!(keyword.as_str().unwrap().starts_with("**radius**"));
+    assert_eq!(
+        c.request("walls/explain", json!({"query": "nothing"}))
+            .await,
+        Value::Null
+    );
+}

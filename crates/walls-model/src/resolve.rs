@@ -42,8 +42,8 @@ pub fn resolve(tree: &SyntaxTree, mode: Mode) -> (Scene, Vec<Diagnostic>) {
         .filter(|item| matches!(item, walls_syntax::Item::Block(b) if b.kind == walls_syntax::BlockKind::Wall))
         .count();
     r.scene.walls.reserve_exact(walls);
-    for (stmt, _) in tree.statements() {
-        r.statement(stmt);
+    for (stmt, block) in tree.statements() {
+        r.statement(stmt, block);
     }
     r.close_block();
     (r.scene, r.out)
@@ -141,7 +141,7 @@ impl Resolver<'_> {
 }
 
 impl<'t> Resolver<'t> {
-    fn statement(&mut self, stmt: &Statement) {
+    fn statement(&mut self, stmt: &Statement, block: Option<&walls_syntax::Block>) {
         let Some(keyword) = self.tree.keyword(stmt) else {
             return;
         };
@@ -151,9 +151,14 @@ impl<'t> Resolver<'t> {
                 self.block_start = self.tree.span(self.tree.head(stmt)).start;
                 let index = self.scene.walls.len();
                 let inherited = self.shared_defaults();
+                let head = self.tree.statement_span(stmt);
+                let end = block
+                    .and_then(|b| self.tree.body(b).last())
+                    .map_or(head.end, |last| self.tree.statement_span(last).end);
                 self.scene.walls.push(Wall {
                     index,
                     span: self.tree.span(self.tree.head(stmt)),
+                    block: crate::Span::from(head.start..end),
                     settings: WallSettings::new(inherited),
                 });
                 self.target = Target::Wall(index);

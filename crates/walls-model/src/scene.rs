@@ -208,6 +208,10 @@ pub struct Wall {
     pub index: usize,
     /// The `wall` keyword.
     pub span: Range<usize>,
+    /// Its block, from the `wall` keyword to the end of the block's last statement: the
+    /// source map from the tree to the walls (walls are in file order, so the wall at an
+    /// offset is a binary search).
+    pub block: Span,
     /// What was set for it: the defaults in force at `wall`, then its own tokens.
     pub settings: WallSettings,
 }

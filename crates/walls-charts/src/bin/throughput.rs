@@ -5,7 +5,7 @@
 //! finite cylinder with a trailing comment, a comment every 100 walls and a `defaults`
 //! block every 1,000. For each file it times, in this process:
 //!
-//! - *lint*: [`walls_cli::check_bytes`], everything `walls-lint` does to one file (decode,
+//! - *lint*: [`walls_ide::check_bytes`], everything `walls-lint` does to one file (decode,
 //!   parse, resolve the scene, check, sort the diagnostics);
 //! - *format*: [`walls_format::format_text`], parse and lay out, what `walls-fmt` does;
 //! - *parse only*: [`walls_syntax::parse`], lexing, tree and syntax checks;
@@ -307,7 +307,7 @@ fn main() -> std::io::Result<()> {
             max_walls: n.max(20),
             ..Options::default()
         };
-        let checked = walls_cli::check_bytes(text.as_bytes().to_vec(), &options);
+        let checked = walls_ide::check_bytes(text.as_bytes().to_vec(), &options);
         assert!(
             checked.diagnostics.is_empty(),
             "the generated file of {n} walls should lint clean: {:?}",
@@ -319,7 +319,7 @@ fn main() -> std::io::Result<()> {
         let t_lint = median_time(
             Clock::Cpu,
             || text.as_bytes().to_vec(),
-            |b| walls_cli::check_bytes(b, &options),
+            |b| walls_ide::check_bytes(b, &options),
         );
         let t_format = median_time(
             Clock::Cpu,

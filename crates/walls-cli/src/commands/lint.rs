@@ -202,10 +202,7 @@ fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()>
 
 fn explain(query: &str) -> ExitCode {
     if let Some(code) = find_code(query) {
-        println!(
-            "{} ({}): {}\n\n{}",
-            code.id, code.name, code.summary, code.explanation
-        );
+        println!("{}", walls_ide::explain_code(code));
         return ExitCode::SUCCESS;
     }
     if let Some(keyword) = walls_keywords::keyword(query) {

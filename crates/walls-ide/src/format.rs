@@ -1,0 +1,21 @@
+//! Formatting a checked file, whole or a range of it, as edits.
+
+use crate::Analysis;
+use std::ops::Range;
+use walls_diagnostics::Edit;
+use walls_format::FormatOptions;
+
+/// The whole text formatted, if formatting changes it (and the file can be formatted).
+pub fn format(analysis: &Analysis, options: &FormatOptions) -> Option<String> {
+    let formatted = walls_format::format(&analysis.checked.parse, options).ok()?;
+    (formatted.text != analysis.text()).then_some(formatted.text)
+}
+
+/// The edit that formats the items `range` touches, if there is one.
+pub fn format_range(
+    analysis: &Analysis,
+    range: Range<usize>,
+    options: &FormatOptions,
+) -> Option<Edit> {
+    walls_format::format_range(&analysis.checked.parse, range, options).ok()?
+}

@@ -1,0 +1,54 @@
+//! Semantic tokens: which tokens are keywords, properties, wall types, numbers and
+//! comments, for colouring.
+
+use crate::Analysis;
+use std::ops::Range;
+use walls_keywords::Role;
+use walls_syntax::{TokenId, TokenKind};
+
+/// What a coloured token is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HighlightKind {
+    /// A keyword that is not a property (`wall`, `defaults`, units, `time`).
+    Keyword,
+    /// A property keyword.
+    Property,
+    /// A wall type's name.
+    WallType,
+    /// A number.
+    Number,
+    /// A comment.
+    Comment,
+}
+
+/// One coloured token.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Highlight {
+    /// The token.
+    pub range: Range<usize>,
+    /// What it is.
+    pub kind: HighlightKind,
+}
+
+/// Every token worth colouring, in order (whitespace, unknown words and punctuation are
+/// not).
+pub fn semantic_tokens(analysis: &Analysis) -> Vec<Highlight> {
+    let tree = analysis.tree();
+    (0..tree.tokens().len())
+        .filter_map(|i| {
+            let id = TokenId(i as u32);
+            let kind = match tree.kind(id) {
+                TokenKind::Keyword(k) if k.role() == Role::Property => HighlightKind::Property,
+                TokenKind::Keyword(_) => HighlightKind::Keyword,
+                TokenKind::TypeName(_) => HighlightKind::WallType,
+                TokenKind::Number => HighlightKind::Number,
+                TokenKind::Comment | TokenKind::GluedComment => HighlightKind::Comment,
+                _ => return None,
+            };
+            Some(Highlight {
+                range: tree.span(id),
+                kind,
+            })
+        })
+        .collect()
+}
