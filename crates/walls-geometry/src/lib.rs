@@ -13,6 +13,8 @@
 //! * [`Appearance`] (colour, transparency) and [`Reactive`] (mass, assembly, centre of
 //!   gravity, inertia, axes).
 //!
+//! [`Particle`] is the sphere that meets the walls, as pkdgrav's files hold it.
+//!
 //! [`json`] writes the resolved scene as `walls-sim scene` prints it, with each wall's
 //! position at a time.
 
@@ -21,6 +23,7 @@ pub mod json;
 pub mod material;
 pub mod mesh;
 pub mod motion;
+mod particle;
 pub mod poly;
 pub mod shape;
 mod wall;
@@ -28,5 +31,6 @@ mod wall;
 pub use material::Material;
 pub use mesh::Mesh;
 pub use motion::{Motion, Oscillation, OscillationStepping};
+pub use particle::Particle;
 pub use shape::{Feature, Hit, Nearest, Shape};
 pub use wall::{Appearance, Reactive, Wall, decode, scene_bounds};

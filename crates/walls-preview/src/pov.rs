@@ -21,10 +21,10 @@ use crate::palette;
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use std::path::Path;
+use walls_geometry::Particle;
 use walls_geometry::mesh::basis;
 use walls_geometry::{Shape, decode, scene_bounds};
 use walls_model::{Scene, direction};
-use walls_sim::input::Particle;
 
 type Vec3 = Vector3<f64>;
 

@@ -10,7 +10,7 @@ use crate::mesh::WallMesh;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
 use std::io;
-use walls_sim::input::Particle;
+use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
 

@@ -37,7 +37,7 @@
 
 use crate::WallMesh;
 use std::io::{self, Write};
-use walls_sim::input::Particle;
+use walls_geometry::Particle;
 
 /// Writes `walls` and `particles` to `out` as one VTK XML PolyData file (see the module
 /// documentation for the arrays and their order).

@@ -7,9 +7,9 @@
 use nalgebra::Vector3;
 use std::path::Path;
 use std::process::Command;
+use walls_geometry::Particle;
 use walls_model::{Options, Scene, analyze};
 use walls_preview::pov::{self, View};
-use walls_sim::input::Particle;
 
 const W: u32 = 160;
 const H: u32 = 120;

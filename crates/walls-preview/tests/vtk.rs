@@ -9,9 +9,9 @@ use nalgebra::Vector3;
 use serde_json::Value;
 use std::path::Path;
 use std::process::Command;
+use walls_geometry::Particle;
 use walls_model::{Options, analyze};
 use walls_preview::{vtk, wall_meshes};
-use walls_sim::input::Particle;
 
 /// Reads the file named by argv[1] with vtkXMLPolyDataReader and prints what it saw as
 /// JSON; exits 2 when VTK reports an error or a warning.

@@ -106,11 +106,11 @@ fn grid(c: &mut Criterion) {
 
 /// A layer of `n` particles of radius `r` and unit density resting on the plane z = 0
 /// (at the overlap where the spring `k_n` carries their weight under gravity 1), 3r apart.
-fn resting_layer(n: usize, r: f64, k_n: f64) -> Vec<walls_sim::input::Particle> {
+fn resting_layer(n: usize, r: f64, k_n: f64) -> Vec<walls_geometry::Particle> {
     let side = (n as f64).sqrt().ceil() as usize;
     let mass = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
     (0..n)
-        .map(|i| walls_sim::input::Particle {
+        .map(|i| walls_geometry::Particle {
             mass,
             radius: r,
             pos: Vec3::new(

@@ -7,11 +7,12 @@
 //! gravity defaults to −z only for those dropped particles. [`load`] reads the files;
 //! [`resolve`] applies the precedence to what was read.
 
-use crate::input::{Params, Particle};
+use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::{Integrator, Method, ParticleMaterial, Planning, Settings, default_dt};
 use crate::{OscillationStepping, setup};
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_geometry::Wall;
 
 type Vec3 = Vector3<f64>;

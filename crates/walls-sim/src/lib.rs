@@ -11,7 +11,6 @@ pub mod advise;
 pub mod config;
 pub mod grid;
 pub mod hsdem;
-pub mod input;
 pub mod io;
 pub mod plan;
 pub mod reactive;

@@ -18,7 +18,7 @@
 //! - the wall index: more than 16 bounded walls (planes and infinite cylinders are always
 //!   looked at).
 
-use crate::input::Particle;
+use walls_geometry::Particle;
 
 /// Above this many bounded walls the runs use the wall index. At 100 walls it finds a
 /// particle's walls 11 times faster than looking at each (docs/accuracy.md, chart

@@ -1,10 +1,10 @@
 //! What a run reports: the parts of the model it used, its outcome as JSON
 //! (`walls-sim run --json`) and its one-line summary for people.
 
-use crate::input::Particle;
 use crate::run::{EventKind, Method, Outcome, Planning, Settings};
 use nalgebra::Vector3;
 use serde_json::{Value, json};
+use walls_geometry::Particle;
 use walls_geometry::Wall;
 
 /// The parts of the model a run used, for the JSON `model` field: the plan's (as the

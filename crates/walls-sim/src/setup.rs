@@ -15,9 +15,9 @@
 //! * Duration: three free-fall times over the scene (or three crossings at the fastest
 //!   speed without gravity).
 
-use crate::input::Particle;
 use crate::run::ParticleMaterial;
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_geometry::{Wall, scene_bounds as bounds};
 
 type Vec3 = Vector3<f64>;

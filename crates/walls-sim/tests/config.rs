@@ -7,13 +7,13 @@ mod common;
 use common::{particle, scene};
 use nalgebra::Vector3;
 use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
-use walls_sim::input::Params;
+use walls_sim::io::par::Params;
 use walls_sim::run::default_dt;
 use walls_sim::setup;
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
 
-fn ball() -> Vec<walls_sim::input::Particle> {
+fn ball() -> Vec<walls_geometry::Particle> {
     vec![particle([0.0, 0.0, 0.3], [0.0, 0.0, -2.0])]
 }
 

@@ -1,7 +1,8 @@
 //! Reading particles (CSV, standard and reduced `.ss`) and pkdgrav parameter files, and
 //! the located errors for broken ones.
 
-use walls_sim::input::{read_csv, read_par, read_ss};
+use walls_sim::io::par::read_par;
+use walls_sim::io::particles::{read_csv, read_ss};
 
 #[test]
 fn csv_with_and_without_optional_columns() {

@@ -2,8 +2,8 @@
 //! out does not change the answer.
 
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_geometry::Wall;
-use walls_sim::input::Particle;
 use walls_sim::plan::{Plan, parts};
 use walls_sim::run::{Method, Planning, Settings, run};
 use walls_sim::setup;

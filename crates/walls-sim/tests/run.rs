@@ -1,7 +1,7 @@
 //! Particles against walls with the SSDEM model, against analytic answers.
 
 use nalgebra::Vector3;
-use walls_sim::input::Particle;
+use walls_geometry::Particle;
 use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
 
 mod common;

@@ -20,9 +20,9 @@
 use nalgebra::Vector3;
 use std::time::Instant;
 use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
+use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
-use walls_sim::input::Particle;
 use walls_sim::run::{Integrator, Method, ParticleMaterial, Settings, run, run_observed};
 use walls_sim::ssdem::damping;
 

@@ -12,9 +12,9 @@
 
 use nalgebra::Vector3;
 use walls_charts::{Chart, Mark, Series, out_dir, write};
+use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
-use walls_sim::input::Particle;
 use walls_sim::run::{Method, ParticleMaterial, Settings, run, run_observed};
 use walls_sim::ssdem::damping;
 

@@ -13,7 +13,7 @@ use walls_cli::commands::sim::advise::AdviseArgs;
 use walls_cli::commands::sim::preview::PreviewArgs;
 use walls_cli::commands::sim::run::RunArgs;
 use walls_cli::commands::sim::{self, ruled};
-use walls_sim::input::Rule;
+use walls_sim::io::par::Rule;
 
 /// mimalloc, as in walls-lint: large files cost a few hundred page faults, not thousands.
 #[global_allocator]

@@ -11,27 +11,9 @@
 
 use super::{FileError, InputError, error};
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
-
-/// One particle.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Particle {
-    /// Mass.
-    pub mass: f64,
-    /// Radius.
-    pub radius: f64,
-    /// Position.
-    pub pos: Vec3,
-    /// Velocity.
-    pub vel: Vec3,
-    /// Spin (angular velocity).
-    pub spin: Vec3,
-    /// ssdraw colour.
-    pub color: i32,
-    /// Index in the original file.
-    pub index: i32,
-}
 
 /// Reads particles from CSV text.
 pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
@@ -101,29 +83,27 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
             },
             index: n as i32,
         };
-        particle.check().map_err(|says| error(line, says))?;
+        check(&particle).map_err(|says| error(line, says))?;
         out.push(particle);
     }
     Ok(out)
 }
 
-impl Particle {
-    /// Whether a run can use it: a positive mass and radius, finite values.
-    fn check(&self) -> Result<(), &'static str> {
-        if !(self.mass > 0.0 && self.radius > 0.0) {
-            return Err("mass and radius must be positive");
-        }
-        let values = [self.mass, self.radius];
-        let vectors = [self.pos, self.vel, self.spin];
-        if values
-            .iter()
-            .chain(vectors.iter().flatten())
-            .all(|x| x.is_finite())
-        {
-            Ok(())
-        } else {
-            Err("its values must be finite numbers")
-        }
+/// Whether a run can use particle `p`: a positive mass and radius, finite values.
+fn check(p: &Particle) -> Result<(), &'static str> {
+    if !(p.mass > 0.0 && p.radius > 0.0) {
+        return Err("mass and radius must be positive");
+    }
+    let values = [p.mass, p.radius];
+    let vectors = [p.pos, p.vel, p.spin];
+    if values
+        .iter()
+        .chain(vectors.iter().flatten())
+        .all(|x| x.is_finite())
+    {
+        Ok(())
+    } else {
+        Err("its values must be finite numbers")
     }
 }
 
@@ -220,7 +200,7 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
                 index: x.i32()?,
             }
         };
-        p.check()
+        check(&p)
             .map_err(|says| error(format!("byte {start}"), format!("particle {k}: {says}")))?;
         out.push(p);
     }

@@ -18,10 +18,10 @@ mod stability;
 
 pub use hard::COLLISION_CAP;
 
-use crate::input::Particle;
 use crate::plan::Plan;
 use crate::ssdem::Material;
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_geometry::{OscillationStepping, Shape, Wall};
 
 type Vec3 = Vector3<f64>;
@@ -220,7 +220,7 @@ pub type Observer<'a> = &'a mut dyn FnMut(u64, f64, &[State], &[crate::reactive:
 /// # Panics
 ///
 /// If the timestep is not a positive finite number: the run would never end. Callers
-/// check it first ([`crate::input::Rule::Positive`]).
+/// check it first ([`crate::io::par::Rule::Positive`]).
 pub fn run_observed(
     walls: &[Wall],
     particles: Vec<Particle>,

@@ -3,9 +3,9 @@
 #![allow(dead_code)]
 
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Mode, Options, analyze};
-use walls_sim::input::Particle;
 
 /// The walls of `text` in the soft-sphere mode.
 pub fn scene(text: &str) -> Vec<Wall> {

@@ -5,7 +5,7 @@
 use super::ruled;
 use std::io::Write;
 use std::process::ExitCode;
-use walls_sim::input::Rule;
+use walls_sim::io::par::Rule;
 
 /// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,
 /// "Advice for the real run").

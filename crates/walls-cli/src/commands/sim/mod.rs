@@ -15,7 +15,7 @@ use crate::{Checked, ModeArg, check_bytes, input};
 use std::process::ExitCode;
 use walls_diagnostics::Severity;
 use walls_model::Options;
-use walls_sim::input::Rule;
+use walls_sim::io::par::Rule;
 
 /// A value parser for a number that must obey `rule`, as the `.par` file's values must.
 pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {

@@ -9,7 +9,7 @@ use std::io::Write;
 use std::process::ExitCode;
 use walls_preview::html::Particles;
 use walls_preview::mesh::Placement;
-use walls_sim::input::Rule;
+use walls_sim::io::par::Rule;
 use walls_sim::io::trajectory::{ParticleRow, read_particles};
 use walls_sim::io::wallsreact::{VizWall, last_viz_step};
 

@@ -7,8 +7,9 @@ use super::{error, exit_status, read_walls, ruled};
 use crate::ModeArg;
 use std::io::IsTerminal;
 use std::process::ExitCode;
+use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
-use walls_sim::input::{Particle, Rule};
+use walls_sim::io::par::Rule;
 use walls_sim::run::Settings;
 
 /// `walls-sim run`: the SPEC §2 command line.

@@ -1,0 +1,25 @@
+//! A particle as pkdgrav's files hold it: the sphere that meets the walls. The run, its
+//! inputs and outputs, and the previews share this one record.
+
+use nalgebra::Vector3;
+
+type Vec3 = Vector3<f64>;
+
+/// One particle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Particle {
+    /// Mass.
+    pub mass: f64,
+    /// Radius.
+    pub radius: f64,
+    /// Position.
+    pub pos: Vec3,
+    /// Velocity.
+    pub vel: Vec3,
+    /// Spin (angular velocity).
+    pub spin: Vec3,
+    /// ssdraw colour.
+    pub color: i32,
+    /// Index in the original file.
+    pub index: i32,
+}
