@@ -17,9 +17,9 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use walls_geometry::{Shape, Wall, decode};
 use walls_model::{Options, analyze};
-use walls_sim::grid::CellGrid;
+use walls_sim::broad::grid::CellGrid;
+use walls_sim::run::defaults;
 use walls_sim::run::{Planning, Settings, default_dt, run};
-use walls_sim::setup;
 
 type Vec3 = Vector3<f64>;
 
@@ -31,7 +31,7 @@ fn scene() -> Vec<Wall> {
 fn contacts(c: &mut Criterion) {
     let scene = scene();
     let shapes: Vec<Shape> = scene.iter().map(|w| w.shape.clone()).collect();
-    let points: Vec<Vec3> = setup::packed(&scene, 10_000, 0.01)
+    let points: Vec<Vec3> = defaults::packed(&scene, 10_000, 0.01)
         .iter()
         .map(|p| p.pos)
         .collect();
@@ -48,14 +48,14 @@ fn contacts(c: &mut Criterion) {
             touching
         })
     });
-    let ps = setup::packed(&scene, 10_000, 0.01);
+    let ps = defaults::packed(&scene, 10_000, 0.01);
     assert_eq!(ps.len(), 10_000);
     let steps = 20;
     let k_n = 1e3;
     let dt = default_dt(&ps, k_n);
     let settings = Settings {
         gravity: Vec3::new(0.0, 0.0, -1.0),
-        ..Settings::new(dt, dt * steps as f64, setup::default_material(k_n))
+        ..Settings::new(dt, dt * steps as f64, defaults::default_material(k_n))
     };
     group.throughput(Throughput::Elements((ps.len() * steps) as u64));
     group.sample_size(10);
@@ -142,7 +142,7 @@ fn plan(c: &mut Criterion) {
     let steps = 200;
     let needed = Settings {
         gravity: Vec3::new(0.0, 0.0, -1.0),
-        ..Settings::new(dt, dt * steps as f64, setup::default_material(k_n))
+        ..Settings::new(dt, dt * steps as f64, defaults::default_material(k_n))
     };
     let everything = Settings {
         planning: Planning::Everything,

@@ -15,8 +15,8 @@
 use nalgebra::Vector3;
 use std::time::Instant;
 use walls_model::{Options, analyze};
+use walls_sim::run::defaults;
 use walls_sim::run::{Method, Settings, default_dt, run};
-use walls_sim::setup;
 
 fn main() {
     let args: Vec<usize> = std::env::args()
@@ -30,7 +30,7 @@ fn main() {
         &analyze(&walls_syntax::parse(text).tree, &Options::default()).scene,
     );
     let r = 0.005;
-    let mut particles = setup::packed(&scene, n, r);
+    let mut particles = defaults::packed(&scene, n, r);
     assert_eq!(particles.len(), n, "room for the particles");
     let frac = |i: usize, a: f64| (i as f64 * a).fract() - 0.5;
     for (i, p) in particles.iter_mut().enumerate() {
@@ -48,7 +48,7 @@ fn main() {
             let settings = Settings {
                 method,
                 gravity: Vector3::new(0.0, 0.0, -1.0),
-                ..Settings::new(dt, dt * steps as f64, setup::default_material(k_n))
+                ..Settings::new(dt, dt * steps as f64, defaults::default_material(k_n))
             };
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)

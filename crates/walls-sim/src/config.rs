@@ -1,16 +1,17 @@
 //! The settings of a run (`walls-sim run` and `plan`): each value from the command
 //! line's flags if given, else from the pkdgrav parameter file (`.par`), else the
-//! evaluator's default ([`crate::setup`]).
+//! evaluator's default ([`crate::run::defaults`]).
 //!
 //! The particles come from `--particles`, else from the `.par` file's `achInFile`
 //! (relative to the `.par` file's folder), else nine particles dropped onto the scene;
 //! gravity defaults to −z only for those dropped particles. [`load`] reads the files;
 //! [`resolve`] applies the precedence to what was read.
 
+use crate::OscillationStepping;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
+use crate::run::defaults;
 use crate::run::{Integrator, Method, ParticleMaterial, Planning, Settings, default_dt};
-use crate::{OscillationStepping, setup};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -128,7 +129,7 @@ pub fn resolve(
 ) -> Result<Run, ConfigError> {
     let (particles, embedded) = match particles {
         Some(ps) => (ps, false),
-        None => (setup::default_particles(scene), true),
+        None => (defaults::default_particles(scene), true),
     };
     if particles.is_empty() {
         return Err(ConfigError::NoParticles);
@@ -144,8 +145,8 @@ pub fn resolve(
     let k_n = flags
         .k_n
         .or(from_par(|p| p.k_n))
-        .unwrap_or_else(|| setup::default_k_n(scene, &particles, &gravity));
-    let default = setup::default_material(k_n);
+        .unwrap_or_else(|| defaults::default_k_n(scene, &particles, &gravity));
+    let default = defaults::default_material(k_n);
     let material = ParticleMaterial {
         eps_n: flags
             .eps_n
@@ -164,13 +165,13 @@ pub fn resolve(
     let t_end = flags
         .t_end
         .or_else(|| par.and_then(|p| Some(p.steps? as f64 * p.dt?)))
-        .unwrap_or_else(|| setup::default_duration(scene, &particles, &gravity));
+        .unwrap_or_else(|| defaults::default_duration(scene, &particles, &gravity));
     let dt = flags
         .dt
         .or(from_par(|p| p.dt))
         .unwrap_or_else(|| match method {
             Method::Soft => default_dt(&particles, k_n),
-            Method::Hard => setup::default_hard_dt(&particles, &gravity, t_end),
+            Method::Hard => defaults::default_hard_dt(&particles, &gravity, t_end),
         });
     let settings = Settings {
         method,

@@ -1,25 +1,26 @@
 //! The reference evaluator of walls files (SPEC §3), on the typed walls of
-//! walls-geometry (shapes, motion, material): the particles and parameters of a pkdgrav
-//! run ([`io`]: CSV, `.ss`, `.par`) and the settings they give ([`config`]); contacts in
-//! the soft-sphere ([`ssdem`]) and hard-sphere ([`hsdem`]) models; and runs of particles
-//! against walls and each other ([`run`]), with their trajectories ([`io::trajectory`])
-//! and reports ([`report`]); reactive walls ([`reactive`]), the rotation of their
-//! assemblies ([`rigid`]) and pkdgrav's output files for them ([`io::wallsreact`]); and
-//! advice on k_n and the timestep for the real pkdgrav run ([`advise`]).
+//! walls-geometry (shapes, motion, material). Its layout is the pipeline:
+//!
+//! * [`io`]: the particles and parameters of a pkdgrav run (CSV, `.ss`, `.par`), the
+//!   trajectory and pkdgrav's WALLSREACT files, each reader beside its writer; and
+//!   [`config`], the run's settings from flags, then the `.par` file, then defaults;
+//! * [`contact`]: the contact laws, soft-sphere ([`contact::ssdem`]) and hard-sphere
+//!   ([`contact::hsdem`]);
+//! * [`dynamics`]: reactive walls' assemblies and rigid rotation;
+//! * [`broad`]: which particles and walls could touch (cell grid, wall index);
+//! * [`run`]: the plan, the defaults, the soft- and hard-sphere steppers, stability
+//!   checks, and the outcome with its coded warnings;
+//! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
+//!   for the real pkdgrav run.
 
 pub mod advise;
+pub mod broad;
 pub mod config;
-pub mod grid;
-pub mod hsdem;
+pub mod contact;
+pub mod dynamics;
 pub mod io;
-pub mod plan;
-pub mod reactive;
 pub mod report;
-pub mod rigid;
 pub mod run;
-pub mod setup;
-pub mod ssdem;
-pub mod wall_index;
 
-pub use wall_index::WallIndex;
+pub use broad::wall_index::WallIndex;
 pub use walls_geometry::OscillationStepping;

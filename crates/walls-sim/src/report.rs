@@ -10,7 +10,7 @@ use walls_geometry::Wall;
 /// The parts of the model a run used, for the JSON `model` field: the plan's (as the
 /// run saw it), plus sticky and death walls when a particle met one.
 pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec<&'static str> {
-    let (_, parts) = crate::plan::parts(scene, particles, settings);
+    let (_, parts) = crate::run::plan::parts(scene, particles, settings);
     let everything = settings.planning == Planning::Everything;
     let mut model = vec![match settings.method {
         Method::Soft => "ssdem: spring-dashpot",

@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
 use walls_sim::io::par::Params;
 use walls_sim::run::default_dt;
-use walls_sim::setup;
+use walls_sim::run::defaults;
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
 
@@ -48,7 +48,10 @@ fn the_par_file_beats_the_default() {
     assert_eq!(run.settings.material.k_n, 4e5);
     assert_eq!(run.settings.gravity, Vector3::new(0.0, 0.0, -9.8));
     // k_t follows the k_n it was given, as the default material does.
-    assert_eq!(run.settings.material.k_t, setup::default_material(4e5).k_t);
+    assert_eq!(
+        run.settings.material.k_t,
+        defaults::default_material(4e5).k_t
+    );
 }
 
 #[test]
@@ -56,7 +59,7 @@ fn without_flag_or_par_file_the_default() {
     let floor = scene(FLOOR);
     let run = resolve(&Flags::default(), None, &floor, Some(ball())).unwrap();
     let g = Vector3::zeros();
-    let k_n = setup::default_k_n(&floor, &ball(), &g);
+    let k_n = defaults::default_k_n(&floor, &ball(), &g);
     assert_eq!(
         run.settings.gravity, g,
         "no gravity for particles from a file"
@@ -66,7 +69,7 @@ fn without_flag_or_par_file_the_default() {
     // The dropped default particles fall: gravity −z.
     let run = resolve(&Flags::default(), None, &floor, None).unwrap();
     assert_eq!(run.settings.gravity, Vector3::new(0.0, 0.0, -1.0));
-    assert_eq!(run.particles, setup::default_particles(&floor));
+    assert_eq!(run.particles, defaults::default_particles(&floor));
 }
 
 #[test]

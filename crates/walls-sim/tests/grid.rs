@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::collections::BTreeSet;
-use walls_sim::grid::CellGrid;
+use walls_sim::broad::grid::CellGrid;
 
 type Vec3 = Vector3<f64>;
 

@@ -24,7 +24,7 @@ fn settings(eps_n: f64, dt: f64, t_end: f64, gravity: [f64; 3]) -> Settings {
             t_end,
             ParticleMaterial {
                 eps_n,
-                ..walls_sim::setup::default_material(1.0)
+                ..walls_sim::run::defaults::default_material(1.0)
             },
         )
     }
@@ -237,7 +237,7 @@ fn particles_collide_with_each_other_keeping_momentum() {
     let s = Settings {
         material: ParticleMaterial {
             eps_n: 1.0,
-            ..walls_sim::setup::default_material(1.0)
+            ..walls_sim::run::defaults::default_material(1.0)
         },
         ..settings(1.0, 0.1, 1.0, [0.0; 3])
     };
@@ -258,7 +258,7 @@ fn particles_collide_with_each_other_keeping_momentum() {
         material: ParticleMaterial {
             eps_n: 0.7,
             eps_t: 0.5,
-            ..walls_sim::setup::default_material(1.0)
+            ..walls_sim::run::defaults::default_material(1.0)
         },
         ..s
     };
@@ -452,7 +452,7 @@ fn elastic(dt: f64, t_end: f64) -> Settings {
         material: ParticleMaterial {
             eps_n: 1.0,
             eps_t: 1.0,
-            ..walls_sim::setup::default_material(1.0)
+            ..walls_sim::run::defaults::default_material(1.0)
         },
         ..settings(1.0, dt, t_end, [0.0; 3])
     }

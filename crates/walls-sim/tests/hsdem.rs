@@ -3,7 +3,7 @@
 
 use nalgebra::Vector3;
 use walls_geometry::{Feature, Hit, Shape, Wall};
-use walls_sim::hsdem::bounce;
+use walls_sim::contact::hsdem::bounce;
 
 type Vec3 = Vector3<f64>;
 

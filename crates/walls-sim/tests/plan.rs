@@ -4,9 +4,9 @@
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
-use walls_sim::plan::{Plan, parts};
+use walls_sim::run::defaults;
+use walls_sim::run::plan::{Plan, parts};
 use walls_sim::run::{Method, Planning, Settings, run};
-use walls_sim::setup;
 
 mod common;
 use common::scene;
@@ -16,7 +16,7 @@ type Vec3 = Vector3<f64>;
 fn settings(k_n: f64, t_end: f64) -> Settings {
     Settings {
         gravity: Vec3::new(0.0, 0.0, -1.0),
-        ..Settings::new(1e-4, t_end, setup::default_material(k_n))
+        ..Settings::new(1e-4, t_end, defaults::default_material(k_n))
     }
 }
 
@@ -32,7 +32,7 @@ fn used(scene: &[Wall], ps: &[Particle], s: &Settings) -> Vec<&'static str> {
 #[test]
 fn a_static_frictionless_floor_needs_only_gravity_and_springs() {
     let floor = scene("wall type plane\n");
-    let ps = setup::default_particles(&floor);
+    let ps = defaults::default_particles(&floor);
     let s = settings(1e4, 1.0);
     assert_eq!(used(&floor, &ps, &s), ["uniform gravity"]);
     // The nine particles fall side by side onto a frictionless floor: proved never to
@@ -53,7 +53,7 @@ fn each_part_is_needed_for_its_reason() {
          wall type cylinder-infinite\n  radius 1\n  ang-speed 2\n  epsn 0\n\
          wall type disk\n  origin 0 0 3\n  epsn -1\n",
     );
-    let ps = setup::default_particles(&busy);
+    let ps = defaults::default_particles(&busy);
     let mut s = settings(1e4, 1.0);
     s.material.mu_t = 0.2;
     let (plan, list) = parts(&busy, &ps, &s);
@@ -91,14 +91,14 @@ fn leaving_out_unneeded_parts_does_not_change_the_answer() {
     for (floor, ps) in [
         (
             scene("wall type plane\n"),
-            setup::default_particles(&scene("wall type plane\n")),
+            defaults::default_particles(&scene("wall type plane\n")),
         ),
         (
             scene("wall type plane\nwall type plane\n  origin 0 0 -0.2\n"),
-            setup::packed(&scene("wall type plane\n"), 200, 0.02),
+            defaults::packed(&scene("wall type plane\n"), 200, 0.02),
         ),
     ] {
-        let k_n = setup::default_k_n(&floor, &ps, &Vec3::new(0.0, 0.0, -1.0));
+        let k_n = defaults::default_k_n(&floor, &ps, &Vec3::new(0.0, 0.0, -1.0));
         let s = Settings {
             dt: walls_sim::run::default_dt(&ps, k_n),
             ..settings(k_n, 0.5)

@@ -17,7 +17,7 @@ fn settings(t_end: f64) -> Settings {
         t_end,
         walls_sim::run::ParticleMaterial {
             eps_n: 0.5,
-            ..walls_sim::setup::default_material(k_n)
+            ..walls_sim::run::defaults::default_material(k_n)
         },
     )
 }

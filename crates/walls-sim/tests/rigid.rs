@@ -1,10 +1,10 @@
-//! The rigid-body rotation of reactive assemblies (`walls_sim::rigid`): torque-free
+//! The rigid-body rotation of reactive assemblies (`walls_sim::dynamics::rigid`): torque-free
 //! periods of I = (1, 2, 3) (the notes' T = 6.3101 and the intermediate-axis flip's
 //! 13.9530), the invariants 2E and |L|, a symmetric top's precession, a constant torque's
 //! L = τ·t and the document's spinning tetrahedron, for both integrators.
 
 use nalgebra::Vector3;
-use walls_sim::rigid::{Rotation, RotationIntegrator, step, torque_free_period};
+use walls_sim::dynamics::rigid::{Rotation, RotationIntegrator, step, torque_free_period};
 
 type Vec3 = Vector3<f64>;
 

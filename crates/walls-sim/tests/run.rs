@@ -19,7 +19,7 @@ fn settings(particles: &[Particle], eps_n: f64, t_end: f64, gravity: [f64; 3]) -
             t_end,
             ParticleMaterial {
                 eps_n,
-                ..walls_sim::setup::default_material(k_n)
+                ..walls_sim::run::defaults::default_material(k_n)
             },
         )
     }
@@ -310,7 +310,7 @@ fn resting(
                 mu_s: 0.5,
                 mu_r,
                 mu_t,
-                ..walls_sim::setup::default_material(k_n)
+                ..walls_sim::run::defaults::default_material(k_n)
             },
         )
     };

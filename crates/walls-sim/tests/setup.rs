@@ -5,8 +5,8 @@
 use nalgebra::Vector3;
 use walls_geometry::{Wall, decode, scene_bounds};
 use walls_model::{Options, analyze};
+use walls_sim::run::defaults;
 use walls_sim::run::{Settings, default_dt, run};
-use walls_sim::setup;
 
 fn scene(text: &str) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
@@ -18,22 +18,26 @@ fn scene(text: &str) -> Vec<Wall> {
 fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {
     let scene = scene("wall type plane\nwall type disk origin 0 0 0.5 radius 2\n");
     let (lo, hi) = scene_bounds(&scene);
-    let particles = setup::default_particles(&scene);
+    let particles = defaults::default_particles(&scene);
     assert_eq!(particles.len(), 9);
-    assert_eq!(particles, setup::default_particles(&scene), "deterministic");
+    assert_eq!(
+        particles,
+        defaults::default_particles(&scene),
+        "deterministic"
+    );
     for p in &particles {
         assert!(p.pos.z - p.radius > hi.z, "{p:?} starts above the scene");
         assert!(p.pos.x > lo.x && p.pos.x < hi.x && p.pos.y > lo.y && p.pos.y < hi.y);
     }
     let gravity = Vector3::new(0.0, 0.0, -1.0);
-    let k_n = setup::default_k_n(&scene, &particles, &gravity);
+    let k_n = defaults::default_k_n(&scene, &particles, &gravity);
     let settings = Settings {
         gravity,
         ..Settings::new(
             default_dt(&particles, k_n),
             // Half the default duration: one and a half free falls, enough to land.
-            setup::default_duration(&scene, &particles, &gravity) / 2.0,
-            setup::default_material(k_n),
+            defaults::default_duration(&scene, &particles, &gravity) / 2.0,
+            defaults::default_material(k_n),
         )
     };
     let out = run(&scene, particles.clone(), &settings);

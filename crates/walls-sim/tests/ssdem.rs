@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 use std::f64::consts::PI;
-use walls_sim::ssdem::{Material, Touch, contact, damping};
+use walls_sim::contact::ssdem::{Material, Touch, contact, damping};
 
 type Vec3 = Vector3<f64>;
 

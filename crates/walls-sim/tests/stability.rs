@@ -2,8 +2,8 @@
 //! returning a wrong answer quietly (docs/stability.md lists them all).
 
 use nalgebra::Vector3;
+use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{EventKind, Method, ParticleMaterial, Settings, run};
-use walls_sim::ssdem::damping;
 
 mod common;
 use common::{particle, scene};
@@ -24,7 +24,7 @@ fn soft(eps: f64, dt: f64, t_end: f64) -> Settings {
         t_end,
         ParticleMaterial {
             eps_n: eps,
-            ..walls_sim::setup::default_material(K_N)
+            ..walls_sim::run::defaults::default_material(K_N)
         },
     )
 }

@@ -412,7 +412,7 @@ fn a_group_is_found_where_it_has_moved() {
 
 #[test]
 fn near_a_hull_of_10k_triangles_few_walls_are_candidates() {
-    let scene = scene(&walls_sim::setup::sphere_hull(50));
+    let scene = scene(&walls_sim::run::defaults::sphere_hull(50));
     assert_eq!(scene.len(), 10_000);
     let index = WallIndex::new(&scene);
     assert_eq!(index.group_count(), 1);

@@ -23,8 +23,8 @@ use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
+use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{Integrator, Method, ParticleMaterial, Settings, run, run_observed};
-use walls_sim::ssdem::damping;
 
 type Vec3 = Vector3<f64>;
 

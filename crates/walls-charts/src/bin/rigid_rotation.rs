@@ -1,5 +1,5 @@
 //! Rigid-body rotation integrators compared on what a reactive assembly asks of one
-//! (`walls_sim::rigid`): the torque-free asymmetric body I = (1, 2, 3) started at
+//! (`walls_sim::dynamics::rigid`): the torque-free asymmetric body I = (1, 2, 3) started at
 //! ω₀ = (0.3, 0.2, 1) (period T = 6.3101, precession about the major axis) and at
 //! ω₀ = (0.1, 2, 0.1) (T = 13.9530, the intermediate-axis flip).
 //!
@@ -21,7 +21,7 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::Instant;
 use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
-use walls_sim::rigid::{Rotation, RotationIntegrator, step, step_rk, torque_free_period};
+use walls_sim::dynamics::rigid::{Rotation, RotationIntegrator, step, step_rk, torque_free_period};
 
 type Vec3 = Vector3<f64>;
 

@@ -15,8 +15,8 @@ use walls_charts::{Chart, Mark, Series, out_dir, write};
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
+use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{Method, ParticleMaterial, Settings, run, run_observed};
-use walls_sim::ssdem::damping;
 
 type Vec3 = Vector3<f64>;
 
@@ -52,7 +52,7 @@ fn settings(method: Method, k_n: f64, dt: f64, t_end: f64) -> Settings {
             t_end,
             ParticleMaterial {
                 eps_n: 0.5,
-                ..walls_sim::setup::default_material(k_n)
+                ..walls_sim::run::defaults::default_material(k_n)
             },
         )
     }

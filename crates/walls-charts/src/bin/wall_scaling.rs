@@ -42,7 +42,7 @@ fn main() -> std::io::Result<()> {
     );
     for target in [100, 300, 1_000, 3_000, 10_000, 30_000, 100_000] {
         let m = (target as f64 / 4.0).sqrt().round() as usize;
-        let scene = scene(&walls_sim::setup::sphere_hull(m));
+        let scene = scene(&walls_sim::run::defaults::sphere_hull(m));
         let n = scene.len();
         let origins: Vec<Vec3> = scene
             .iter()

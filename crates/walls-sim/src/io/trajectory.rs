@@ -141,7 +141,7 @@ impl Trajectory {
         t: f64,
         states: &[State],
         scene: &[Wall],
-        assemblies: &[crate::reactive::Assembly],
+        assemblies: &[crate::dynamics::reactive::Assembly],
     ) -> io::Result<()> {
         for (i, s) in states.iter().enumerate() {
             self.write_particle(&ParticleRow::new(step, t, i, s))?;

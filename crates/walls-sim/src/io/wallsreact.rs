@@ -322,7 +322,7 @@ impl ReactiveOutput {
         &mut self,
         step: u64,
         scene: &[walls_geometry::Wall],
-        assemblies: &[crate::reactive::Assembly],
+        assemblies: &[crate::dynamics::reactive::Assembly],
     ) -> io::Result<()> {
         use walls_geometry::Shape;
         let states: Vec<AssemblyState> = assemblies

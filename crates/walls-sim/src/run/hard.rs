@@ -12,7 +12,7 @@
 //! Things the prediction cannot see are caught at the start of the next prediction: a
 //! particle that overlaps a wall or another particle and is moving into it collides at
 //! once. Particle pairs are candidates when their spheres, swollen by the distance each
-//! travels in the step at its speed after the first kick, overlap ([`crate::grid`]); a
+//! travels in the step at its speed after the first kick, overlap ([`crate::broad::grid`]); a
 //! collision that speeds a particle up beyond that can miss a pair within the step, and
 //! is then caught as an overlap at the next.
 //!
@@ -24,11 +24,11 @@ use super::{
     Event, EventKind, Materials, Observer, Origins, Outcome, PARALLEL_FROM, Settings, State,
     WallNow, carry, energy, turned,
 };
-use crate::grid::CellGrid;
-use crate::hsdem::{Body, bounce, pair_bounce};
-use crate::plan::Plan;
-use crate::ssdem::Material;
-use crate::wall_index::WallIndex;
+use crate::broad::grid::CellGrid;
+use crate::broad::wall_index::WallIndex;
+use crate::contact::hsdem::{Body, bounce, pair_bounce};
+use crate::contact::ssdem::Material;
+use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::cmp::Ordering;

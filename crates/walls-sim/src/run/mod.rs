@@ -3,7 +3,7 @@
 //! between them.
 //!
 //! * [`soft`]: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
-//!   spring–dashpot of [`crate::ssdem`] against every wall and particle a particle
+//!   spring–dashpot of [`crate::contact::ssdem`] against every wall and particle a particle
 //!   overlaps.
 //! * [`hard`]: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
 //!   particles in straight lines from one predicted collision to the next (SPEC §3).
@@ -12,14 +12,16 @@
 //! the wall; death walls (`epsn` < 0) remove it. Each wall contact that ends is an event
 //! with the normal speeds in and out.
 
+pub mod defaults;
 mod hard;
+pub mod plan;
 mod soft;
 mod stability;
 
 pub use hard::COLLISION_CAP;
 
-use crate::plan::Plan;
-use crate::ssdem::Material;
+use crate::contact::ssdem::Material;
+use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::{OscillationStepping, Shape, Wall};
@@ -82,7 +84,7 @@ pub struct Settings {
     pub planning: Planning,
 }
 
-/// How a run chooses the parts of the model it runs ([`crate::plan`]).
+/// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Planning {
     /// Only the parts the scene needs.
@@ -201,7 +203,7 @@ pub struct Outcome {
     /// What happened at walls, in order.
     pub events: Vec<Event>,
     /// The reactive walls' assemblies at the end (SSDEM).
-    pub assemblies: Vec<crate::reactive::Assembly>,
+    pub assemblies: Vec<crate::dynamics::reactive::Assembly>,
     /// Particle–particle contacts that began (SSDEM) or collisions (HSDEM).
     pub pair_contacts: u64,
     /// Kinetic (with spin) plus gravitational energy at the start and the end.
@@ -212,7 +214,8 @@ pub struct Outcome {
 
 /// What watches a run: called after every step with the step number, the time, the
 /// particles and the reactive walls' assemblies.
-pub type Observer<'a> = &'a mut dyn FnMut(u64, f64, &[State], &[crate::reactive::Assembly]);
+pub type Observer<'a> =
+    &'a mut dyn FnMut(u64, f64, &[State], &[crate::dynamics::reactive::Assembly]);
 
 /// Runs `particles` against `walls` (and each other), calling `observe` after every
 /// step with the step number, the time and the particles.

@@ -1,26 +1,26 @@
 //! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
 //! variant that feeds the dashpot velocities predicted to the step's end, or explicit
 //! Euler), with the
-//! spring–dashpot of [`crate::ssdem`] against every wall and every particle a particle
+//! spring–dashpot of [`crate::contact::ssdem`] against every wall and every particle a particle
 //! overlaps, and rolling and twisting resistance where the material has them.
 //!
 //! pkdgrav's overlap warnings (3 % and 15 % of the radius) are reported once each; an
 //! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
 //! on one particle is a warning. Particle pairs are found with a cell grid
-//! ([`crate::grid`]) rebuilt every step.
+//! ([`crate::broad::grid`]) rebuilt every step.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
     PARALLEL_FROM, Settings, State, WallNow, carry, energy,
 };
-use crate::grid::CellGrid;
-use crate::plan::Plan;
-use crate::rigid::RotationIntegrator;
-use crate::ssdem::{
+use crate::broad::grid::CellGrid;
+use crate::broad::wall_index::WallIndex;
+use crate::contact::ssdem::{
     Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
     resistance,
 };
-use crate::wall_index::WallIndex;
+use crate::dynamics::rigid::RotationIntegrator;
+use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use walls_geometry::Wall;
@@ -283,7 +283,7 @@ pub(super) fn run(
     } = Materials::new(scene, &settings.material);
     let initial = energy(&states, &g)
         + if plan.reactive {
-            assembly_energy(&crate::reactive::assemblies(scene), &g)
+            assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
         } else {
             0.0
         };
@@ -318,11 +318,11 @@ pub(super) fn run(
     let mut now = origins.walls(scene, 0.0);
     // Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
     let mut assemblies = if plan.reactive {
-        crate::reactive::assemblies(scene)
+        crate::dynamics::reactive::assemblies(scene)
     } else {
         Vec::new()
     };
-    let stuck = crate::reactive::immovable(&assemblies);
+    let stuck = crate::dynamics::reactive::immovable(&assemblies);
     if !stuck.is_empty() {
         warnings.push(format!(
             "assemblies {stuck:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
@@ -375,7 +375,7 @@ pub(super) fn run(
             a.cog += a.velocity * dt;
             a.kick(dt / 2.0);
             let inertia = a.inertia;
-            crate::rigid::step(
+            crate::dynamics::rigid::step(
                 &mut a.rotation,
                 &inertia,
                 &Vec3::zeros(),
@@ -680,7 +680,7 @@ fn lens_radius(a: f64, b: f64, d: f64) -> f64 {
 
 /// The reactive assemblies' kinetic energy (translation and rotation) and gravitational
 /// energy.
-fn assembly_energy(assemblies: &[crate::reactive::Assembly], g: &Vec3) -> f64 {
+fn assembly_energy(assemblies: &[crate::dynamics::reactive::Assembly], g: &Vec3) -> f64 {
     assemblies
         .iter()
         .map(|a| {

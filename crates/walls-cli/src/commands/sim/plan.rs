@@ -1,5 +1,5 @@
 //! `walls-sim plan`: lists the parts of the model a run would use, with the reason for
-//! each ([`walls_sim::plan`]); it takes the same options as `run`.
+//! each ([`walls_sim::run::plan`]); it takes the same options as `run`.
 
 use super::run::{RunArgs, prepare};
 use super::{error, exit_status};
@@ -12,7 +12,7 @@ pub fn run(args: &RunArgs) -> ExitCode {
         Err(e) => return error(e),
     };
     let (_, parts) =
-        walls_sim::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
+        walls_sim::run::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
     if args.json {
         let list: Vec<_> = parts
             .iter()

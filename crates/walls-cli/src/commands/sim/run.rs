@@ -217,7 +217,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
     // appended to as pkdgrav does, unless --fresh.
     let reactive = settings.method == walls_sim::run::Method::Soft
-        && !walls_sim::reactive::assemblies(scene).is_empty();
+        && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
     let mut reactive_files = match (&args.out, reactive) {
         (Some(dir), true) => Some(
             walls_sim::io::wallsreact::ReactiveOutput::open(dir, args.fresh)

@@ -55,7 +55,7 @@ pub struct Plan {
     pub edges: bool,
     /// Particle–particle contacts.
     pub particle_contacts: bool,
-    /// A bounding-volume hierarchy over the walls ([`crate::wall_index`]).
+    /// A bounding-volume hierarchy over the walls ([`crate::broad::wall_index`]).
     pub wall_index: bool,
     /// Reactive walls: assemblies that move in response to particles (SSDEM).
     pub reactive: bool,
@@ -296,7 +296,7 @@ fn never_meet(walls: &[Wall], particles: &[Particle], frictionless: bool) -> boo
     if !frictionless || !planes || particles.iter().any(|p| across(&p.vel) != v0) {
         return false;
     }
-    let grid = crate::grid::CellGrid::from_fn(particles.len(), |i| {
+    let grid = crate::broad::grid::CellGrid::from_fn(particles.len(), |i| {
         Some((across(&particles[i].pos), particles[i].radius))
     });
     let mut any = false;

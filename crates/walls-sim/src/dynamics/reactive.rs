@@ -14,12 +14,12 @@
 //! the contact point: a force and a torque about the centre of gravity. Translation is
 //! integrated with the particles' leapfrog (with uniform gravity); rotation the same way,
 //! half kicks of the angular momentum around the free rotation over the step, which
-//! Euler's equations give in the principal frame ([`crate::rigid`], pkdgrav's adaptive
+//! Euler's equations give in the principal frame ([`crate::dynamics::rigid`], pkdgrav's adaptive
 //! Runge–Kutta). As in pkdgrav, the contact
 //! itself treats the wall as infinitely massive, and reactive walls neither push nor
 //! are pushed by other walls.
 
-use crate::rigid::Rotation;
+use crate::dynamics::rigid::Rotation;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use walls_geometry::{Shape, Wall};
 
