@@ -5,7 +5,7 @@
 use std::collections::HashSet;
 use std::path::Path;
 use walls_cli::{all_codes, check_bytes, find_code};
-use walls_model::{Mode, Options};
+use walls_model::{ContactModel, Options};
 
 /// The ```walls block after the line starting with `label`, with the options that line
 /// names (`--mode hsdem`, `--max-walls N`, `--min-radius R`, `--dt DT`).
@@ -20,9 +20,9 @@ fn example(explanation: &str, label: &str) -> Option<(String, Options)> {
     };
     let options = Options {
         mode: if line.contains("--mode hsdem") {
-            Mode::Hsdem
+            ContactModel::Hsdem
         } else {
-            Mode::Ssdem
+            ContactModel::Ssdem
         },
         max_walls: flag("--max-walls").map_or(20, |n| n as usize),
         min_radius: flag("--min-radius"),

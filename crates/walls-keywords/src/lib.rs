@@ -8,6 +8,18 @@
 //! [`ValueRange`] column names the rule that checks the keyword's value as pkdgrav reads
 //! it; `walls-model` maps each range to the rule file that reports it.
 
+/// pkdgrav's two contact models: what a file is checked for, and how a run treats
+/// contacts. The keyword table records which keywords only the soft-sphere model reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum ContactModel {
+    /// Soft-sphere DEM (the default).
+    #[default]
+    Ssdem,
+    /// Hard-sphere DEM.
+    Hsdem,
+}
+
 /// What a keyword expects after it on its line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ValueShape {

@@ -30,7 +30,7 @@ use std::sync::Mutex;
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::*;
 use tower_lsp_server::{Client, LanguageServer, LspService, Server};
-use walls_model::{Mode, Options};
+use walls_model::{ContactModel, Options};
 
 /// The server's state: the open documents and the checker's options.
 pub struct Backend {
@@ -73,8 +73,8 @@ pub async fn serve_stdio() {
 /// section of the settings) into the checker's options.
 fn options_from(value: &serde_json::Value, mut options: Options) -> Options {
     match value.get("mode").and_then(|m| m.as_str()) {
-        Some("hsdem") => options.mode = Mode::Hsdem,
-        Some("ssdem") => options.mode = Mode::Ssdem,
+        Some("hsdem") => options.mode = ContactModel::Hsdem,
+        Some("ssdem") => options.mode = ContactModel::Ssdem,
         _ => {}
     }
     if let Some(n) = value.get("maxWalls").and_then(|n| n.as_u64()) {

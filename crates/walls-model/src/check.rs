@@ -14,7 +14,7 @@ use crate::rules::{
     taper_on_ring, too_many_walls, unused_default, wall_too_fast,
 };
 use crate::scene::{Scene, Wall};
-use crate::{Mode, Options};
+use crate::{ContactModel, Options};
 use std::collections::HashSet;
 use std::ops::Range;
 use walls_diagnostics::{Diagnostic, Edit};
@@ -116,7 +116,7 @@ impl Checker<'_> {
             lone_oscillation::check(self, wall);
             osc_vec_not_following_orient::check(self, wall);
             wall_too_fast::check(self, wall, t);
-            if self.options.mode == Mode::Ssdem {
+            if self.options.mode == ContactModel::Ssdem {
                 assembly_without_mass::check(self, wall);
                 reactive_type::check(self, wall, t);
                 reactive_spinning::check(self, wall);

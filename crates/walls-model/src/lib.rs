@@ -23,23 +23,14 @@ pub use scene::{
     Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings, direction,
 };
 use walls_diagnostics::Diagnostic;
+pub use walls_keywords::ContactModel;
 use walls_syntax::SyntaxTree;
-
-/// pkdgrav's two particle–wall contact models.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Mode {
-    /// Soft-sphere DEM: springs and dashpots (the default).
-    #[default]
-    Ssdem,
-    /// Hard-sphere DEM: instantaneous collisions.
-    Hsdem,
-}
 
 /// What the checker is told about the run the file is for.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// The contact model.
-    pub mode: Mode,
+    pub mode: ContactModel,
     /// pkdgrav's MAX_NUM_WALLS (20 unless compiled otherwise).
     pub max_walls: usize,
     /// The smallest particle radius, for the SSDEM wall-speed check.
@@ -51,7 +42,7 @@ pub struct Options {
 impl Default for Options {
     fn default() -> Self {
         Options {
-            mode: Mode::Ssdem,
+            mode: ContactModel::Ssdem,
             max_walls: 20,
             min_radius: None,
             dt: None,
@@ -73,7 +64,7 @@ pub struct Analysis {
 pub fn analyze(tree: &SyntaxTree, options: &Options) -> Analysis {
     let (scene, mut diagnostics) = resolve(tree, options.mode);
     diagnostics.extend(check::check(tree, &scene, options));
-    if options.mode == Mode::Hsdem {
+    if options.mode == ContactModel::Hsdem {
         diagnostics.extend(rules::ignored_in_hsdem::check(tree));
     }
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));

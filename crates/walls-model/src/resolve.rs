@@ -8,7 +8,7 @@
 //! the syntax check already rejected are skipped, so a broken file still resolves to what
 //! parsed.
 
-use crate::Mode;
+use crate::ContactModel;
 use crate::rules::{self, Read, negative_osc_freq, number_too_large};
 use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
 use std::ops::Range;
@@ -19,7 +19,7 @@ use walls_syntax::{Statement, SyntaxTree, TokenKind};
 
 /// Resolves `tree` into the scene pkdgrav would build, with the diagnostics about single
 /// values found on the way.
-pub fn resolve(tree: &SyntaxTree, mode: Mode) -> (Scene, Vec<Diagnostic>) {
+pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>) {
     let mut r = Resolver {
         tree,
         mode,
@@ -115,7 +115,7 @@ enum Raw {
 
 struct Resolver<'t> {
     tree: &'t SyntaxTree,
-    mode: Mode,
+    mode: ContactModel,
     units: Units,
     defaults: Settings,
     /// The defaults as the walls share them, made when the first wall after a change

@@ -8,7 +8,7 @@
 
 use std::fmt::Write as _;
 use walls_diagnostics::{Applicability, Diagnostic, apply_fixes};
-use walls_model::{Mode, Options, analyze};
+use walls_model::{ContactModel, Options, analyze};
 use walls_test_support::{render, snapshot_beside};
 
 fn options(text: &str) -> Options {
@@ -25,9 +25,9 @@ fn options(text: &str) -> Options {
         match pair[0] {
             "--mode" => {
                 options.mode = if pair[1] == "hsdem" {
-                    Mode::Hsdem
+                    ContactModel::Hsdem
                 } else {
-                    Mode::Ssdem
+                    ContactModel::Ssdem
                 }
             }
             "--max-walls" => options.max_walls = pair[1].parse().unwrap(),

@@ -4,7 +4,7 @@
 
 use proptest::prelude::*;
 use walls_keywords::Keyword;
-use walls_model::{Mode, Options, Value, analyze};
+use walls_model::{ContactModel, Options, Value, analyze};
 use walls_test_support::arbitrary::walls_file as file;
 
 proptest! {
@@ -14,7 +14,7 @@ proptest! {
     fn scenes_hold_finite_normalised_values(text in file(), hsdem in any::<bool>()) {
         let tree = walls_syntax::parse(text.as_str()).tree;
         let options = Options {
-            mode: if hsdem { Mode::Hsdem } else { Mode::Ssdem },
+            mode: if hsdem { ContactModel::Hsdem } else { ContactModel::Ssdem },
             min_radius: Some(0.01),
             dt: Some(1e-3),
             ..Options::default()

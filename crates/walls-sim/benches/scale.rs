@@ -16,7 +16,7 @@ use nalgebra::Vector3;
 use std::time::Instant;
 use walls_model::{Options, analyze};
 use walls_sim::run::defaults;
-use walls_sim::run::{Method, Settings, default_dt, run};
+use walls_sim::run::{ContactModel, Settings, default_dt, run};
 
 fn main() {
     let args: Vec<usize> = std::env::args()
@@ -43,7 +43,7 @@ fn main() {
     }
     let k_n = particles[0].mass * (1.0 / (0.01 * r)).powi(2);
     let dt = default_dt(&particles, k_n);
-    for method in [Method::Soft, Method::Hard] {
+    for method in [ContactModel::Ssdem, ContactModel::Hsdem] {
         for threads in [1, 2] {
             let settings = Settings {
                 method,

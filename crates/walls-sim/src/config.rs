@@ -11,7 +11,7 @@ use crate::OscillationStepping;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
-use crate::run::{Integrator, Method, ParticleMaterial, Planning, Settings, default_dt};
+use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings, default_dt};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -26,7 +26,7 @@ pub struct Flags {
     /// `--par`: a pkdgrav parameter file.
     pub par: Option<String>,
     /// `--method`.
-    pub method: Method,
+    pub method: ContactModel,
     /// `--dt`.
     pub dt: Option<f64>,
     /// `--t-end`.
@@ -170,8 +170,8 @@ pub fn resolve(
         .dt
         .or(from_par(|p| p.dt))
         .unwrap_or_else(|| match method {
-            Method::Soft => default_dt(&particles, k_n),
-            Method::Hard => defaults::default_hard_dt(&particles, &gravity, t_end),
+            ContactModel::Ssdem => default_dt(&particles, k_n),
+            ContactModel::Hsdem => defaults::default_hard_dt(&particles, &gravity, t_end),
         });
     let settings = Settings {
         method,

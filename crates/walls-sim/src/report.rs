@@ -1,7 +1,7 @@
 //! What a run reports: the parts of the model it used, its outcome as JSON
 //! (`walls-sim run --json`) and its one-line summary for people.
 
-use crate::run::{EventKind, Method, Outcome, Planning, Settings};
+use crate::run::{ContactModel, EventKind, Outcome, Planning, Settings};
 use nalgebra::Vector3;
 use serde_json::{Value, json};
 use walls_geometry::Particle;
@@ -13,8 +13,8 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
     let (_, parts) = crate::run::plan::parts(scene, particles, settings);
     let everything = settings.planning == Planning::Everything;
     let mut model = vec![match settings.method {
-        Method::Soft => "ssdem: spring-dashpot",
-        Method::Hard => "hsdem: exact collision prediction",
+        ContactModel::Ssdem => "ssdem: spring-dashpot",
+        ContactModel::Hsdem => "hsdem: exact collision prediction",
     }];
     model.extend(
         parts

@@ -3,8 +3,8 @@
 
 use nalgebra::Vector3;
 use walls_geometry::Wall;
-use walls_model::Mode;
-use walls_sim::run::{EventKind, Method, Outcome, ParticleMaterial, Settings, run};
+
+use walls_sim::run::{ContactModel, EventKind, Outcome, ParticleMaterial, Settings, run};
 
 mod common;
 use common::particle;
@@ -12,12 +12,12 @@ use common::particle;
 type Vec3 = Vector3<f64>;
 
 fn scene(text: &str) -> Vec<Wall> {
-    common::scene_in(text, Mode::Hsdem)
+    common::scene_in(text, ContactModel::Hsdem)
 }
 
 fn settings(eps_n: f64, dt: f64, t_end: f64, gravity: [f64; 3]) -> Settings {
     Settings {
-        method: Method::Hard,
+        method: ContactModel::Hsdem,
         gravity: Vec3::from(gravity),
         ..Settings::new(
             dt,

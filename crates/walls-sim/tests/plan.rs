@@ -6,7 +6,7 @@ use walls_geometry::Particle;
 use walls_geometry::Wall;
 use walls_sim::run::defaults;
 use walls_sim::run::plan::{Plan, parts};
-use walls_sim::run::{Method, Planning, Settings, run};
+use walls_sim::run::{ContactModel, Planning, Settings, run};
 
 mod common;
 use common::scene;
@@ -77,7 +77,7 @@ fn each_part_is_needed_for_its_reason() {
     assert_eq!(reason("death walls"), "walls 2 have a negative epsn");
     // In HSDEM the disk's rim calls for edge detection.
     let hard = Settings {
-        method: Method::Hard,
+        method: ContactModel::Hsdem,
         ..s
     };
     assert!(parts(&busy, &ps, &hard).0.edges);
@@ -168,10 +168,14 @@ fn the_wall_index_finds_the_same_contacts_as_looking_at_every_wall() {
         })
         .filter(|p| p.pos.amax() < 0.9)
         .collect();
-    for method in [Method::Soft, Method::Hard] {
+    for method in [ContactModel::Ssdem, ContactModel::Hsdem] {
         let base = Settings {
             method,
-            dt: if method == Method::Soft { 2e-5 } else { 1e-3 },
+            dt: if method == ContactModel::Ssdem {
+                2e-5
+            } else {
+                1e-3
+            },
             ..settings(1e4, 0.3)
         };
         let with = parts(&tiles, &ps, &base).0;

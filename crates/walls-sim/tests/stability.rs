@@ -3,7 +3,7 @@
 
 use nalgebra::Vector3;
 use walls_sim::contact::ssdem::damping;
-use walls_sim::run::{EventKind, Method, ParticleMaterial, Settings, run};
+use walls_sim::run::{ContactModel, EventKind, ParticleMaterial, Settings, run};
 
 mod common;
 use common::{particle, scene};
@@ -103,7 +103,7 @@ fn a_fast_particle_tunnels_through_a_thin_wall_in_ssdem_is_reported_and_hsdem_st
         out.warnings
     );
     let hard = Settings {
-        method: Method::Hard,
+        method: ContactModel::Hsdem,
         ..soft(0.5, dt, 3.0 * dt)
     };
     let out = run(
@@ -183,7 +183,7 @@ fn degenerate_shapes_still_bounce_particles_correctly() {
         if hard_too {
             let text = format!("{walls}  epsn 0.5\n  epst 1\n");
             let hard = Settings {
-                method: Method::Hard,
+                method: ContactModel::Hsdem,
                 ..soft(0.5, 0.1, 1.5)
             };
             let out = run(&scene(&text), vec![start], &hard);

@@ -24,7 +24,7 @@ use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
 use walls_sim::contact::ssdem::damping;
-use walls_sim::run::{Integrator, Method, ParticleMaterial, Settings, run, run_observed};
+use walls_sim::run::{ContactModel, Integrator, ParticleMaterial, Settings, run, run_observed};
 
 type Vec3 = Vector3<f64>;
 
@@ -84,7 +84,13 @@ fn analytic(eps: f64) -> (f64, f64) {
     (std::f64::consts::PI / omega, peak)
 }
 
-fn settings(method: Method, integrator: Integrator, eps: f64, dt: f64, t_end: f64) -> Settings {
+fn settings(
+    method: ContactModel,
+    integrator: Integrator,
+    eps: f64,
+    dt: f64,
+    t_end: f64,
+) -> Settings {
     Settings {
         method,
         integrator,
@@ -108,7 +114,7 @@ fn settings(method: Method, integrator: Integrator, eps: f64, dt: f64, t_end: f6
 /// The errors of one method at `dt`: the worst over 8 phases of the step at which the
 /// contact begins and ends (errors depend on where in a step the contact starts and
 /// ends; a single phase can flatter a method by an order of magnitude).
-fn errors(method: Method, integrator: Integrator, dt: f64) -> (f64, f64, f64) {
+fn errors(method: ContactModel, integrator: Integrator, dt: f64) -> (f64, f64, f64) {
     let scene = scene();
     let (t_c, peak) = analytic(0.5);
     let (t_c1, _) = analytic(1.0);
@@ -132,7 +138,7 @@ fn errors(method: Method, integrator: Integrator, dt: f64) -> (f64, f64, f64) {
         });
         let e = out.particles[0].particle.vel.z;
         let restitution = (e / 0.5 - 1.0).abs();
-        let overlap = if method == Method::Hard {
+        let overlap = if method == ContactModel::Hsdem {
             f64::NAN
         } else {
             (deepest / peak - 1.0).abs()
@@ -158,7 +164,7 @@ fn errors(method: Method, integrator: Integrator, dt: f64) -> (f64, f64, f64) {
 }
 
 /// The time per contact of one method at `dt`: 1,000 particles, median of 5 runs.
-fn cost(method: Method, integrator: Integrator, dt: f64) -> f64 {
+fn cost(method: ContactModel, integrator: Integrator, dt: f64) -> f64 {
     let scene = scene();
     let (t_c, _) = analytic(0.5);
     let s = settings(method, integrator, 0.5, dt, 1.5 * t_c);
@@ -182,26 +188,26 @@ fn main() -> std::io::Result<()> {
     for (name, integrator) in INTEGRATORS {
         for n in [1.4, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0] {
             let dt = t_c / n;
-            let (restitution, overlap, energy) = errors(Method::Soft, integrator, dt);
+            let (restitution, overlap, energy) = errors(ContactModel::Ssdem, integrator, dt);
             points.push(Point {
                 method: name,
                 n,
                 restitution,
                 overlap,
                 energy,
-                ns_per_contact: cost(Method::Soft, integrator, dt),
+                ns_per_contact: cost(ContactModel::Ssdem, integrator, dt),
             });
         }
     }
     // Hard spheres: exact at any step; one step longer than the flight.
-    let (restitution, _, energy) = errors(Method::Hard, Integrator::Leapfrog, t_c);
+    let (restitution, _, energy) = errors(ContactModel::Hsdem, Integrator::Leapfrog, t_c);
     points.push(Point {
         method: "HSDEM (exact)",
         n: 1.0,
         restitution,
         overlap: f64::NAN,
         energy,
-        ns_per_contact: cost(Method::Hard, Integrator::Leapfrog, t_c),
+        ns_per_contact: cost(ContactModel::Hsdem, Integrator::Leapfrog, t_c),
     });
     let dir = out_dir();
     std::fs::create_dir_all(&dir)?;

@@ -16,7 +16,7 @@ use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_model::{Options, analyze};
 use walls_sim::contact::ssdem::damping;
-use walls_sim::run::{Method, ParticleMaterial, Settings, run, run_observed};
+use walls_sim::run::{ContactModel, ParticleMaterial, Settings, run, run_observed};
 
 type Vec3 = Vector3<f64>;
 
@@ -44,7 +44,7 @@ fn ball(z: f64, v: f64) -> Particle {
     }
 }
 
-fn settings(method: Method, k_n: f64, dt: f64, t_end: f64) -> Settings {
+fn settings(method: ContactModel, k_n: f64, dt: f64, t_end: f64) -> Settings {
     Settings {
         method,
         ..Settings::new(
@@ -77,7 +77,7 @@ fn main() -> std::io::Result<()> {
         // step does not land inside the wall by construction.
         let z = RADIUS + 0.37 * dt;
         let t_end = (3.0 * t_c).max(4.0 * dt) + z;
-        let error = |method: Method| {
+        let error = |method: ContactModel| {
             let out = run(
                 &plane(),
                 vec![ball(z, 1.0)],
@@ -87,8 +87,8 @@ fn main() -> std::io::Result<()> {
             let e = if v > 0.0 { v } else { 0.0 };
             ((e / 0.5 - 1.0).abs().max(1e-16), !out.warnings.is_empty())
         };
-        let (e_soft, warned) = error(Method::Soft);
-        let (e_hard, _) = error(Method::Hard);
+        let (e_soft, warned) = error(ContactModel::Ssdem);
+        let (e_hard, _) = error(ContactModel::Hsdem);
         println!("{travel:9.2e} {per_contact:14.3e} {e_soft:12.3e} {warned:7} {e_hard:12.3e}");
         soft.push((travel, e_soft));
         if warned {
@@ -126,7 +126,7 @@ fn main() -> std::io::Result<()> {
         let out = run_observed(
             &plane(),
             vec![ball(RADIUS, v)],
-            &settings(Method::Soft, k_n, dt, 3.0 * t_c),
+            &settings(ContactModel::Ssdem, k_n, dt, 3.0 * t_c),
             &mut |_, _, states, _| deepest = deepest.max(RADIUS - states[0].particle.pos.z),
         );
         let stop = out.warnings.iter().any(|w| w.contains("the run stops"));

@@ -8,7 +8,7 @@
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
-use walls_cli::ModeArg;
+use walls_cli::ContactModel;
 use walls_cli::commands::sim::advise::AdviseArgs;
 use walls_cli::commands::sim::preview::PreviewArgs;
 use walls_cli::commands::sim::run::RunArgs;
@@ -56,8 +56,8 @@ enum Command {
         #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
         time: Option<f64>,
         /// The contact model the file is for (it decides which values are errors).
-        #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
-        mode: ModeArg,
+        #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
+        mode: ContactModel,
     },
 }
 

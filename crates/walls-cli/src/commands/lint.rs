@@ -4,7 +4,7 @@
 //! or I/O error. Human output goes to standard error, machine output (json, sarif,
 //! github) to standard output.
 
-use crate::{ModeArg, all_codes, check_bytes, find_code, input};
+use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
@@ -30,8 +30,8 @@ pub struct LintArgs {
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
     /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
-    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
-    pub mode: ModeArg,
+    #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
+    pub mode: ContactModel,
     /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls.
     #[arg(long, value_name = "N", default_value_t = 20)]
     pub max_walls: usize,
@@ -83,7 +83,7 @@ pub fn run(args: &LintArgs) -> ExitCode {
         return explain(query);
     }
     let options = Options {
-        mode: args.mode.into(),
+        mode: args.mode,
         max_walls: args.max_walls,
         min_radius: args.min_radius,
         dt: args.dt,

@@ -4,7 +4,7 @@
 //! the run.
 
 use super::Read;
-use crate::Mode;
+use crate::ContactModel;
 use walls_diagnostics::{Code, Diagnostic};
 
 /// `epst` is outside its range for the contact model.
@@ -33,8 +33,8 @@ wall type plane
 /// Reports an `epst` outside the range of the contact model, unless it is 99.
 pub(crate) fn check(at: &Read, x: f64, out: &mut Vec<Diagnostic>) {
     let (lo, model) = match at.mode {
-        Mode::Hsdem => (-1.0, "HSDEM"),
-        Mode::Ssdem => (0.0, "SSDEM"),
+        ContactModel::Hsdem => (-1.0, "HSDEM"),
+        ContactModel::Ssdem => (0.0, "SSDEM"),
     };
     if x != 99.0 && !(lo..=1.0).contains(&x) {
         out.push(

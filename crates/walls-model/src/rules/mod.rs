@@ -61,7 +61,7 @@ pub(crate) mod unused_default;
 pub(crate) mod wall_too_fast;
 pub(crate) mod zero_vector;
 
-use crate::Mode;
+use crate::ContactModel;
 use crate::scene::Value;
 use std::ops::Range;
 use walls_diagnostics::Diagnostic;
@@ -76,7 +76,7 @@ pub(crate) struct Read<'a> {
     /// The values as written: messages quote them unscaled.
     pub written: &'a str,
     /// The contact model.
-    pub mode: Mode,
+    pub mode: ContactModel,
 }
 
 /// Checks the value of a general token (`time`, a unit) by its range; returns whether the
@@ -163,7 +163,7 @@ mod tests {
                 keyword: k,
                 span: 0..1,
                 written: "x",
-                mode: Mode::Ssdem,
+                mode: ContactModel::Ssdem,
             };
             let mut out = Vec::new();
             match (k.role(), bad) {

@@ -2,7 +2,7 @@
 //!
 //! Checked per wall in SSDEM when `--min-radius` is given.
 
-use crate::Mode;
+use crate::ContactModel;
 use crate::check::Checker;
 use crate::fix;
 use crate::scene::Wall;
@@ -46,7 +46,7 @@ pub(crate) fn check(cx: &mut Checker, wall: &Wall, t: WallType) {
     let Some(min_radius) = cx.options.min_radius else {
         return;
     };
-    if cx.options.mode != Mode::Ssdem {
+    if cx.options.mode != ContactModel::Ssdem {
         return;
     }
     let step = match wall.number(Keyword::Step) {

@@ -25,22 +25,13 @@ use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::{OscillationStepping, Shape, Wall};
+pub use walls_keywords::ContactModel;
 
 type Vec3 = Vector3<f64>;
 
 /// The particles' material values, which walls' 99 and −1 fall back to, and which
 /// particles meet each other with.
 pub type ParticleMaterial = Material;
-
-/// The contact model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Method {
-    /// Soft spheres: springs and dashpots over many steps per contact.
-    #[default]
-    Soft,
-    /// Hard spheres: instantaneous collisions predicted exactly within each step.
-    Hard,
-}
 
 /// How the soft-sphere run integrates the equations of motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -62,7 +53,7 @@ pub enum Integrator {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
     /// The contact model.
-    pub method: Method,
+    pub method: ContactModel,
     /// The timestep.
     pub dt: f64,
     /// When to stop.
@@ -101,7 +92,7 @@ impl Settings {
     /// particle contacts and edge detection on.
     pub fn new(dt: f64, t_end: f64, material: ParticleMaterial) -> Self {
         Settings {
-            method: Method::Soft,
+            method: ContactModel::Ssdem,
             dt,
             t_end,
             gravity: Vec3::zeros(),
@@ -245,8 +236,8 @@ pub fn run_observed(
         Planning::Exactly(plan) => plan,
     };
     match settings.method {
-        Method::Soft => soft::run(walls, states, settings, &plan, observe),
-        Method::Hard => hard::run(walls, states, settings, &plan, observe),
+        ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
+        ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
     }
 }
 

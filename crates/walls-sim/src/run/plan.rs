@@ -24,7 +24,7 @@ use walls_geometry::Particle;
 /// particle's walls 11 times faster than looking at each (docs/accuracy.md, chart
 /// `wall_scaling`); over a handful of walls a hierarchy saves little.
 const WALL_INDEX_FROM: usize = 16;
-use crate::run::{Method, ParticleMaterial, Settings};
+use crate::run::{ContactModel, ParticleMaterial, Settings};
 use walls_geometry::{Shape, Wall};
 
 /// One part of the model: whether the run uses it, and why.
@@ -111,7 +111,7 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         });
         used
     };
-    let hard = settings.method == Method::Hard;
+    let hard = settings.method == ContactModel::Hsdem;
     let m: &ParticleMaterial = &settings.material;
     let moving = which(&|w| w.motion.translates());
     let moving_walls = part(

@@ -5,15 +5,15 @@
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
-use walls_model::{Mode, Options, analyze};
+use walls_model::{ContactModel, Options, analyze};
 
 /// The walls of `text` in the soft-sphere mode.
 pub fn scene(text: &str) -> Vec<Wall> {
-    scene_in(text, Mode::Ssdem)
+    scene_in(text, ContactModel::Ssdem)
 }
 
 /// The walls of `text` checked in `mode`; the text must parse without diagnostics.
-pub fn scene_in(text: &str, mode: Mode) -> Vec<Wall> {
+pub fn scene_in(text: &str, mode: ContactModel) -> Vec<Wall> {
     let parsed = walls_syntax::parse(text);
     assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
     let options = Options {

@@ -11,7 +11,7 @@ pub mod preview;
 pub mod run;
 pub mod scene;
 
-use crate::{Checked, ModeArg, check_bytes, input};
+use crate::{Checked, ContactModel, check_bytes, input};
 use std::process::ExitCode;
 use walls_diagnostics::Severity;
 use walls_model::Options;
@@ -45,9 +45,9 @@ fn exit_status(errors: usize) -> ExitCode {
 /// Reads and checks the walls file at `path` in `mode`, with its number of errors;
 /// when it has some, says so, and that the command goes on `doing` ("running",
 /// "drawing") what could be resolved.
-fn read_walls(path: &str, mode: ModeArg, doing: &str) -> Result<(Checked, usize), String> {
+fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, usize), String> {
     let options = Options {
-        mode: mode.into(),
+        mode,
         ..Options::default()
     };
     let checked = check_bytes(input::read(path).bytes?, &options);

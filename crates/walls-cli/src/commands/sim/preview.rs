@@ -4,7 +4,7 @@
 //! [`walls_sim::io`] and converted here to walls-preview's types.
 
 use super::{error, exit_status, read_walls, ruled};
-use crate::ModeArg;
+use crate::ContactModel;
 use std::io::Write;
 use std::process::ExitCode;
 use walls_preview::html::Particles;
@@ -70,7 +70,7 @@ pub fn run(args: &PreviewArgs) -> ExitCode {
 fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
     use nalgebra::Vector3;
     use walls_preview::svg::{Frame, View, write};
-    let (checked, errors) = read_walls(&args.file, ModeArg::Ssdem, "drawing")?;
+    let (checked, errors) = read_walls(&args.file, ContactModel::Ssdem, "drawing")?;
     let scene = &checked.scene;
     let particles = match &args.particles {
         Some(f) => walls_sim::io::particles::read_file(f).map_err(|e| e.to_string())?,

@@ -4,7 +4,7 @@
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
 use super::{error, exit_status, read_walls, ruled};
-use crate::ModeArg;
+use crate::ContactModel;
 use std::io::IsTerminal;
 use std::process::ExitCode;
 use walls_geometry::Particle;
@@ -31,8 +31,8 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub par: Option<String>,
     /// The contact model.
-    #[arg(long, value_enum, default_value_t = ModeArg::Ssdem)]
-    pub method: ModeArg,
+    #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
+    pub method: ContactModel,
     /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub dt: Option<f64>,
@@ -151,14 +151,11 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
 
 /// The options of `args` that settle the run's settings.
 fn flags(args: &RunArgs) -> walls_sim::config::Flags {
-    use walls_sim::run::{Integrator, Method, Planning};
+    use walls_sim::run::{Integrator, Planning};
     walls_sim::config::Flags {
         particles: args.particles.clone(),
         par: args.par.clone(),
-        method: match args.method {
-            ModeArg::Ssdem => Method::Soft,
-            ModeArg::Hsdem => Method::Hard,
-        },
+        method: args.method,
         dt: args.dt,
         t_end: args.t_end,
         gravity: args
@@ -216,7 +213,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     }
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
     // appended to as pkdgrav does, unless --fresh.
-    let reactive = settings.method == walls_sim::run::Method::Soft
+    let reactive = settings.method == walls_sim::run::ContactModel::Ssdem
         && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
     let mut reactive_files = match (&args.out, reactive) {
         (Some(dir), true) => Some(

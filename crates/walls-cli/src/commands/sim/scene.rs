@@ -2,7 +2,7 @@
 //! effective value of every token, in pkdgrav units; diagnostics go to standard error.
 
 use super::error;
-use crate::{ModeArg, check_bytes, input};
+use crate::{ContactModel, check_bytes, input};
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use walls_diagnostics::Severity;
@@ -11,14 +11,14 @@ use walls_model::Options;
 
 /// Prints the scene of the walls file at `path` (`-`: standard input) as JSON, with each
 /// wall's position at `time` if given, checked in `mode`; the exit status.
-pub fn run(path: &str, time: Option<f64>, mode: ModeArg) -> ExitCode {
+pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
     let read = input::read(path);
     let bytes = match read.bytes {
         Ok(bytes) => bytes,
         Err(e) => return error(e),
     };
     let options = Options {
-        mode: mode.into(),
+        mode,
         ..Options::default()
     };
     let checked = check_bytes(bytes, &options);
