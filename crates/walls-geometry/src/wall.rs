@@ -5,7 +5,9 @@
 
 use crate::material::Material;
 use crate::motion::{Motion, Oscillation};
-use crate::shape::Shape;
+use crate::shape::{
+    Disk, FiniteCylinder, InfiniteCylinder, Plane, Rectangle, Shape, Shell, Triangle,
+};
 use nalgebra::Vector3;
 use walls_keywords::{Keyword, WallType};
 use walls_model::Scene;
@@ -74,44 +76,44 @@ impl Wall {
         let origin = vector(Keyword::Origin);
         let orient = vector(Keyword::Orient);
         let shape = match wall.wall_type() {
-            WallType::Plane => Shape::Plane {
+            WallType::Plane => Shape::Plane(Plane {
                 origin,
                 normal: orient,
-            },
-            WallType::Triangle => Shape::Triangle {
+            }),
+            WallType::Triangle => Shape::Triangle(Triangle {
                 origin,
                 e1: vector(Keyword::Vertex1),
                 e2: vector(Keyword::Vertex2),
-            },
-            WallType::Rectangle => Shape::Rectangle {
+            }),
+            WallType::Rectangle => Shape::Rectangle(Rectangle {
                 origin,
                 e1: vector(Keyword::Vertex1),
                 e2: vector(Keyword::Vertex2),
-            },
-            WallType::Disk => Shape::Disk {
+            }),
+            WallType::Disk => Shape::Disk(Disk {
                 center: origin,
                 normal: orient,
                 radius: number(Keyword::Radius),
                 hole: number(Keyword::HoleRadius),
-            },
-            WallType::CylinderInfinite => Shape::InfiniteCylinder {
+            }),
+            WallType::CylinderInfinite => Shape::InfiniteCylinder(InfiniteCylinder {
                 origin,
                 axis: orient,
                 radius: number(Keyword::Radius),
-            },
-            WallType::CylinderFinite => Shape::FiniteCylinder {
+            }),
+            WallType::CylinderFinite => Shape::FiniteCylinder(FiniteCylinder {
                 center: origin,
                 axis: orient,
                 radius: number(Keyword::Radius),
                 length: number(Keyword::Length),
                 taper: number(Keyword::Taper),
-            },
-            WallType::Shell => Shape::Shell {
+            }),
+            WallType::Shell => Shape::Shell(Shell {
                 center: origin,
                 axis: orient,
                 radius: number(Keyword::Radius),
                 open: number(Keyword::OpenAngle).to_radians(),
-            },
+            }),
         };
         let motion = Motion {
             origin,

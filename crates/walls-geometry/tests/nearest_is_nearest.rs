@@ -6,6 +6,7 @@ use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use walls_geometry::Shape;
+use walls_geometry::shape::{Disk, FiniteCylinder, Rectangle, Shell, Triangle};
 
 type Vec3 = Vector3<f64>;
 
@@ -15,7 +16,7 @@ fn samples(s: &Shape) -> Vec<Vec3> {
     let mut out = Vec::new();
     match s {
         Shape::Plane { .. } | Shape::InfiniteCylinder { .. } => {}
-        Shape::Triangle { origin, e1, e2 } => {
+        Shape::Triangle(Triangle { origin, e1, e2 }) => {
             for a in grid(40) {
                 for b in grid(40) {
                     if a + b <= 1.0 {
@@ -24,19 +25,19 @@ fn samples(s: &Shape) -> Vec<Vec3> {
                 }
             }
         }
-        Shape::Rectangle { origin, e1, e2 } => {
+        Shape::Rectangle(Rectangle { origin, e1, e2 }) => {
             for a in grid(40) {
                 for b in grid(40) {
                     out.push(origin + e1 * a + e2 * b);
                 }
             }
         }
-        Shape::Disk {
+        Shape::Disk(Disk {
             center,
             normal,
             radius,
             hole,
-        } => {
+        }) => {
             let (u, v) = basis(normal);
             for r in grid(30) {
                 for a in grid(90) {
@@ -45,13 +46,13 @@ fn samples(s: &Shape) -> Vec<Vec3> {
                 }
             }
         }
-        Shape::FiniteCylinder {
+        Shape::FiniteCylinder(FiniteCylinder {
             center,
             axis,
             radius,
             length,
             taper,
-        } => {
+        }) => {
             let (u, v) = basis(axis);
             for x in grid(40) {
                 for a in grid(90) {
@@ -63,12 +64,12 @@ fn samples(s: &Shape) -> Vec<Vec3> {
                 }
             }
         }
-        Shape::Shell {
+        Shape::Shell(Shell {
             center,
             axis,
             radius,
             open,
-        } => {
+        }) => {
             let (u, v) = basis(axis);
             for t in grid(60) {
                 let theta = open + (PI - open) * t;
@@ -104,40 +105,42 @@ fn shapes() -> impl Strategy<Value = Shape> {
     prop_oneof![
         (c(), c(), c())
             .prop_filter("area", |(_, a, b)| a.cross(b).norm() > 0.1)
-            .prop_map(|(origin, e1, e2)| Shape::Triangle { origin, e1, e2 }),
+            .prop_map(|(origin, e1, e2)| Shape::Triangle(Triangle { origin, e1, e2 })),
         (c(), unit(), 0.2..2.0f64, 0.2..2.0f64).prop_map(|(origin, n, a, b)| {
             let (u, v) = basis(&n);
-            Shape::Rectangle {
+            Shape::Rectangle(Rectangle {
                 origin,
                 e1: u * a,
                 e2: v * b,
-            }
+            })
         }),
         (c(), unit(), 0.0..2.0f64, 0.0..1.0f64).prop_map(|(center, normal, radius, h)| {
-            Shape::Disk {
+            Shape::Disk(Disk {
                 center,
                 normal,
                 radius,
                 hole: radius * h * 0.9,
-            }
+            })
         }),
         (c(), unit(), 0.0..2.0f64, 0.0..3.0f64, 0.0..1.0f64).prop_map(
             |(center, axis, radius, length, taper)| {
-                Shape::FiniteCylinder {
+                Shape::FiniteCylinder(FiniteCylinder {
                     center,
                     axis,
                     radius,
                     length,
                     taper,
-                }
+                })
             }
         ),
-        (c(), unit(), 0.1..2.0f64, 0.0..PI).prop_map(|(center, axis, radius, open)| Shape::Shell {
-            center,
-            axis,
-            radius,
-            open
-        }),
+        (c(), unit(), 0.1..2.0f64, 0.0..PI).prop_map(|(center, axis, radius, open)| Shape::Shell(
+            Shell {
+                center,
+                axis,
+                radius,
+                open
+            }
+        )),
     ]
 }
 

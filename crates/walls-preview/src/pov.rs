@@ -23,6 +23,7 @@ use std::io::{self, Write};
 use std::path::Path;
 use walls_geometry::Particle;
 use walls_geometry::mesh::basis;
+use walls_geometry::shape::{Disk, FiniteCylinder, InfiniteCylinder, Rectangle, Shell, Triangle};
 use walls_geometry::{Shape, decode, scene_bounds};
 use walls_model::{Scene, direction};
 
@@ -235,7 +236,7 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
     let o = shape.origin();
     let v = vec;
     match *shape {
-        Shape::Plane { .. } => {
+        Shape::Plane(_) => {
             // A square 2·size across centred where the scene's centre projects onto
             // the plane, size/1000 thick: the box in the frame (u, v, axis) moved there.
             let c = centre - axis * axis.dot(&(centre - o));
@@ -250,13 +251,13 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
                 "PlaneStyle",
             ))
         }
-        Shape::Triangle { e1: a, e2: b, .. } => (a.cross(&b).norm() > 0.0).then(|| {
+        Shape::Triangle(Triangle { e1: a, e2: b, .. }) => (a.cross(&b).norm() > 0.0).then(|| {
             (
                 format!("triangle {{ {}, {}, {}", v(&o), v(&(o + a)), v(&(o + b))),
                 "TriangleStyle",
             )
         }),
-        Shape::Rectangle { e1: a, e2: b, .. } => (a.cross(&b).norm() > 0.0).then(|| {
+        Shape::Rectangle(Rectangle { e1: a, e2: b, .. }) => (a.cross(&b).norm() > 0.0).then(|| {
             (
                 format!(
                     "polygon {{ 5, {}, {}, {}, {}, {}",
@@ -269,7 +270,7 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
                 "RectangleStyle",
             )
         }),
-        Shape::Disk { radius, hole, .. } => (radius > 0.0 && hole < radius).then(|| {
+        Shape::Disk(Disk { radius, hole, .. }) => (radius > 0.0 && hole < radius).then(|| {
             (
                 format!(
                     "disc {{ {}, {}, {}, {}",
@@ -281,12 +282,12 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
                 "DiskStyle",
             )
         }),
-        Shape::FiniteCylinder {
+        Shape::FiniteCylinder(FiniteCylinder {
             radius,
             length,
             taper,
             ..
-        } => {
+        }) => {
             let top = (radius * (1.0 - taper)).max(0.0);
             (radius > 0.0 && length > 0.0).then(|| {
                 let (a, b) = (o - axis * (length / 2.0), o + axis * (length / 2.0));
@@ -304,7 +305,7 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
                 (object, "CylinderStyle")
             })
         }
-        Shape::InfiniteCylinder { radius, .. } => (radius > 0.0).then(|| {
+        Shape::InfiniteCylinder(InfiniteCylinder { radius, .. }) => (radius > 0.0).then(|| {
             let c = o + axis * axis.dot(&(centre - o));
             let (a, b) = (c - axis * size, c + axis * size);
             (
@@ -312,7 +313,7 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
                 "CylinderStyle",
             )
         }),
-        Shape::Shell { radius, open, .. } => {
+        Shape::Shell(Shell { radius, open, .. }) => {
             let open = open.to_degrees().clamp(0.0, 180.0);
             (radius > 0.0 && open < 180.0).then(|| (shell(o, axis, radius, open), "ShellStyle"))
         }

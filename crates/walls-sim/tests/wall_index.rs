@@ -7,6 +7,9 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::f64::consts::PI;
+use walls_geometry::shape::{
+    Disk, FiniteCylinder, InfiniteCylinder, Plane, Rectangle, Shell, Triangle,
+};
 use walls_geometry::{OscillationStepping, Shape, Wall, decode};
 use walls_model::Options;
 use walls_sim::WallIndex;
@@ -262,48 +265,50 @@ proptest! {
 #[test]
 fn bounds_of_each_shape() {
     let o = Vec3::new(1.0, 2.0, 3.0);
-    let plane = Shape::Plane {
+    let plane = Shape::Plane(Plane {
         origin: o,
         normal: Vec3::z(),
-    };
+    });
     assert_eq!(plane.bounds(), None);
-    let tube = Shape::InfiniteCylinder {
+    let tube = Shape::InfiniteCylinder(InfiniteCylinder {
         origin: o,
         axis: Vec3::z(),
         radius: 1.0,
-    };
+    });
     assert_eq!(tube.bounds(), None);
-    let flat = Shape::Triangle {
+    let flat = Shape::Triangle(Triangle {
         origin: o,
         e1: Vec3::x(),
         e2: Vec3::x() * 2.0,
-    };
+    });
     assert_eq!(
         flat.bounds(),
         None,
         "a triangle with parallel edges has no normal"
     );
-    let triangle = Shape::Triangle {
+    let triangle = Shape::Triangle(Triangle {
         origin: o,
         e1: Vec3::new(1.0, -1.0, 0.0),
         e2: Vec3::new(0.0, 2.0, 0.5),
-    };
+    });
     assert_eq!(
         triangle.bounds(),
         Some((Vec3::new(1.0, 1.0, 3.0), Vec3::new(2.0, 4.0, 3.5)))
     );
-    let rectangle = Shape::Rectangle {
+    let rectangle = Shape::Rectangle(Rectangle {
         origin: o,
         e1: Vec3::x(),
         e2: Vec3::y() * 2.0,
-    };
+    });
     assert_eq!(rectangle.bounds(), Some((o, Vec3::new(2.0, 4.0, 3.0))));
     // A disk facing z is flat in z; tilted 45° about x, it reaches r·cos 45° in y and z.
-    let disk = |normal: Vec3| Shape::Disk {
-        center: o,
-        normal,
-        radius: 2.0,
-        hole: 1.0,
+    let disk = |normal: Vec3| {
+        Shape::Disk(Disk {
+            center: o,
+            normal,
+            radius: 2.0,
+            hole: 1.0,
+        })
     };
     assert_eq!(
         disk(Vec3::z()).bounds(),
@@ -320,23 +325,23 @@ fn bounds_of_each_shape() {
         "{hi}"
     );
     // A cone along z from radius 2 at z = 2 to radius 1 at z = 4.
-    let cone = Shape::FiniteCylinder {
+    let cone = Shape::FiniteCylinder(FiniteCylinder {
         center: o,
         axis: Vec3::z(),
         radius: 2.0,
         length: 2.0,
         taper: 0.5,
-    };
+    });
     assert_eq!(
         cone.bounds(),
         Some((Vec3::new(-1.0, 0.0, 2.0), Vec3::new(3.0, 4.0, 4.0)))
     );
-    let shell = Shape::Shell {
+    let shell = Shape::Shell(Shell {
         center: o,
         axis: Vec3::z(),
         radius: 0.5,
         open: 1.0,
-    };
+    });
     assert_eq!(
         shell.bounds(),
         Some((o - Vec3::repeat(0.5), o + Vec3::repeat(0.5)))

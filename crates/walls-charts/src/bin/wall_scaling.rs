@@ -15,6 +15,7 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use walls_charts::{Chart, Mark, Series};
+use walls_geometry::shape::Triangle;
 use walls_geometry::{Shape, Wall, decode};
 use walls_model::Options;
 use walls_sim::WallIndex;
@@ -181,7 +182,7 @@ fn particles(shapes: &[Shape]) -> Vec<Vec3> {
     (0..PARTICLES)
         .map(|_| {
             let k = ((uniform() * shapes.len() as f64) as usize).min(shapes.len() - 1);
-            let Shape::Triangle { origin, e1, e2 } = &shapes[k] else {
+            let Shape::Triangle(Triangle { origin, e1, e2 }) = &shapes[k] else {
                 unreachable!("the hull is triangles")
             };
             let (mut a, mut b) = (uniform(), uniform());

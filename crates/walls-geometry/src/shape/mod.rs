@@ -1,8 +1,9 @@
 //! The seven wall shapes and their degenerate forms, with every query by kind: the
 //! nearest point (SSDEM), the time of impact (HSDEM), bounds, and tessellation. Each
-//! wall type's code lives in its own module ([`plane`], [`triangle`], [`rectangle`],
-//! [`disk`], [`cylinder`], [`cone`], [`shell`]); this module holds the enum, the
-//! answers' types, the dispatch and the helpers they share.
+//! wall type is a struct in its own module ([`plane`], [`triangle`], [`rectangle`],
+//! [`disk`], [`infinite_cylinder`], [`finite_cylinder`], [`shell`]) holding all of its
+//! geometry; [`Shape`] is the enum over them that dispatches, and this module holds the
+//! answers' types and the helpers the shapes share.
 //!
 //! Every nearest-point query answers the nearest point of the wall's material to a point
 //! p, the unit normal there pointing from the wall towards p (the surface normal when p
@@ -11,13 +12,21 @@
 //! line (or a segment), a finite cylinder of length 0 a ring, taper 1 a cone to a point,
 //! a shell of radius 0 or opening 180° a point.
 
-pub mod cone;
-pub mod cylinder;
 pub mod disk;
+pub mod finite_cylinder;
+pub mod infinite_cylinder;
 pub mod plane;
 pub mod rectangle;
 pub mod shell;
 pub mod triangle;
+
+pub use disk::Disk;
+pub use finite_cylinder::FiniteCylinder;
+pub use infinite_cylinder::InfiniteCylinder;
+pub use plane::Plane;
+pub use rectangle::Rectangle;
+pub use shell::Shell;
+pub use triangle::Triangle;
 
 use crate::mesh::Mesh;
 use nalgebra::{Rotation3, Vector3};
@@ -68,93 +77,88 @@ pub struct Hit {
     pub feature: Feature,
 }
 
-/// A wall's shape, placed in space. Field names follow the walls-file tokens.
+/// A wall's shape, placed in space: one variant per wall type.
 #[derive(Debug, Clone, PartialEq)]
-#[allow(missing_docs)]
 pub enum Shape {
-    /// An infinite plane through `origin` with unit `normal`.
-    Plane { origin: Vec3, normal: Vec3 },
-    /// The triangle origin, origin + e1, origin + e2.
-    Triangle { origin: Vec3, e1: Vec3, e2: Vec3 },
-    /// The rectangle spanned from origin by perpendicular e1 and e2.
-    Rectangle { origin: Vec3, e1: Vec3, e2: Vec3 },
-    /// A disk of `radius` with a hole of `hole` around `center`, facing `normal`.
-    Disk {
-        center: Vec3,
-        normal: Vec3,
-        radius: f64,
-        hole: f64,
-    },
-    /// An infinite tube of `radius` around the line through `origin` along `axis`.
-    InfiniteCylinder {
-        origin: Vec3,
-        axis: Vec3,
-        radius: f64,
-    },
-    /// A finite open tube centred on `center` along `axis`: radius `radius` at −length/2
-    /// narrowing to radius·(1 − taper) at +length/2.
-    FiniteCylinder {
-        center: Vec3,
-        axis: Vec3,
-        radius: f64,
-        length: f64,
-        taper: f64,
-    },
-    /// A sphere of `radius` around `center` minus the cap within `open` radians of `axis`.
-    Shell {
-        center: Vec3,
-        axis: Vec3,
-        radius: f64,
-        open: f64,
-    },
+    /// `plane`.
+    Plane(Plane),
+    /// `triangle`.
+    Triangle(Triangle),
+    /// `rectangle`.
+    Rectangle(Rectangle),
+    /// `disk`.
+    Disk(Disk),
+    /// `cylinder-infinite`.
+    InfiniteCylinder(InfiniteCylinder),
+    /// `cylinder-finite`, a cone when tapered.
+    FiniteCylinder(FiniteCylinder),
+    /// `shell`.
+    Shell(Shell),
+}
+
+/// Calls the same method on whichever shape `$shape` holds.
+macro_rules! each {
+    ($shape:expr, $s:ident => $call:expr) => {
+        match $shape {
+            Shape::Plane($s) => $call,
+            Shape::Triangle($s) => $call,
+            Shape::Rectangle($s) => $call,
+            Shape::Disk($s) => $call,
+            Shape::InfiniteCylinder($s) => $call,
+            Shape::FiniteCylinder($s) => $call,
+            Shape::Shell($s) => $call,
+        }
+    };
 }
 
 impl Shape {
     /// The wall type this shape is.
     pub fn wall_type(&self) -> WallType {
         match self {
-            Shape::Plane { .. } => WallType::Plane,
-            Shape::Triangle { .. } => WallType::Triangle,
-            Shape::Rectangle { .. } => WallType::Rectangle,
-            Shape::Disk { .. } => WallType::Disk,
-            Shape::InfiniteCylinder { .. } => WallType::CylinderInfinite,
-            Shape::FiniteCylinder { .. } => WallType::CylinderFinite,
-            Shape::Shell { .. } => WallType::Shell,
+            Shape::Plane(_) => WallType::Plane,
+            Shape::Triangle(_) => WallType::Triangle,
+            Shape::Rectangle(_) => WallType::Rectangle,
+            Shape::Disk(_) => WallType::Disk,
+            Shape::InfiniteCylinder(_) => WallType::CylinderInfinite,
+            Shape::FiniteCylinder(_) => WallType::CylinderFinite,
+            Shape::Shell(_) => WallType::Shell,
         }
     }
 
-    /// The wall's origin: the point its `origin` token places (a plane's or infinite
-    /// cylinder's point, a polygon's first vertex, a round shape's centre).
+    /// The point its `origin` token places: a plane's or infinite cylinder's point, a
+    /// polygon's first vertex, a round shape's centre.
     pub fn origin(&self) -> Vec3 {
         match self {
-            Shape::Plane { origin, .. }
-            | Shape::Triangle { origin, .. }
-            | Shape::Rectangle { origin, .. }
-            | Shape::InfiniteCylinder { origin, .. } => *origin,
-            Shape::Disk { center, .. }
-            | Shape::FiniteCylinder { center, .. }
-            | Shape::Shell { center, .. } => *center,
+            Shape::Plane(s) => s.origin,
+            Shape::Triangle(s) => s.origin,
+            Shape::Rectangle(s) => s.origin,
+            Shape::InfiniteCylinder(s) => s.origin,
+            Shape::Disk(s) => s.center,
+            Shape::FiniteCylinder(s) => s.center,
+            Shape::Shell(s) => s.center,
         }
     }
 
-    /// The unit direction the wall's `orient` gives it (a plane's or disk's normal, a
+    /// The unit direction its `orient` gives it (a plane's or disk's normal, a
     /// cylinder's, cone's or shell's axis; zero when degenerate), or `None` for the
     /// polygons, which [`Shape::edges`] describe.
     pub fn axis(&self) -> Option<Vec3> {
         match self {
-            Shape::Plane { normal, .. } | Shape::Disk { normal, .. } => Some(*normal),
-            Shape::InfiniteCylinder { axis, .. }
-            | Shape::FiniteCylinder { axis, .. }
-            | Shape::Shell { axis, .. } => Some(*axis),
-            Shape::Triangle { .. } | Shape::Rectangle { .. } => None,
+            Shape::Plane(s) => Some(s.normal),
+            Shape::Disk(s) => Some(s.normal),
+            Shape::InfiniteCylinder(s) => Some(s.axis),
+            Shape::FiniteCylinder(s) => Some(s.axis),
+            Shape::Shell(s) => Some(s.axis),
+            Shape::Triangle(_) | Shape::Rectangle(_) => None,
         }
     }
 
-    /// A triangle's or rectangle's edge vectors from its origin (`vertex1`,
-    /// `vertex2`), or `None` for the other shapes.
+    /// A triangle's or rectangle's edge vectors from its origin (`vertex1`, `vertex2`),
+    /// or `None` for the other shapes.
     pub fn edges(&self) -> Option<(Vec3, Vec3)> {
         match self {
-            Shape::Triangle { e1, e2, .. } | Shape::Rectangle { e1, e2, .. } => Some((*e1, *e2)),
+            Shape::Triangle(s) => Some((s.e1, s.e2)),
+            Shape::Rectangle(s) => Some((s.e1, s.e2)),
             _ => None,
         }
     }
@@ -163,13 +167,13 @@ impl Shape {
     pub fn at(&self, origin: Vec3) -> Shape {
         let mut moved = self.clone();
         match &mut moved {
-            Shape::Plane { origin: o, .. }
-            | Shape::Triangle { origin: o, .. }
-            | Shape::Rectangle { origin: o, .. }
-            | Shape::InfiniteCylinder { origin: o, .. }
-            | Shape::Disk { center: o, .. }
-            | Shape::FiniteCylinder { center: o, .. }
-            | Shape::Shell { center: o, .. } => *o = origin,
+            Shape::Plane(s) => s.origin = origin,
+            Shape::Triangle(s) => s.origin = origin,
+            Shape::Rectangle(s) => s.origin = origin,
+            Shape::InfiniteCylinder(s) => s.origin = origin,
+            Shape::Disk(s) => s.center = origin,
+            Shape::FiniteCylinder(s) => s.center = origin,
+            Shape::Shell(s) => s.center = origin,
         }
         moved
     }
@@ -180,15 +184,13 @@ impl Shape {
     pub fn turned(&self, origin: Vec3, turn: &Rotation3<f64>) -> Shape {
         let mut moved = self.at(origin);
         match &mut moved {
-            Shape::Plane { normal: a, .. }
-            | Shape::Disk { normal: a, .. }
-            | Shape::InfiniteCylinder { axis: a, .. }
-            | Shape::FiniteCylinder { axis: a, .. }
-            | Shape::Shell { axis: a, .. } => *a = turn * *a,
-            Shape::Triangle { e1, e2, .. } | Shape::Rectangle { e1, e2, .. } => {
-                *e1 = turn * *e1;
-                *e2 = turn * *e2;
-            }
+            Shape::Plane(s) => s.normal = turn * s.normal,
+            Shape::Disk(s) => s.normal = turn * s.normal,
+            Shape::InfiniteCylinder(s) => s.axis = turn * s.axis,
+            Shape::FiniteCylinder(s) => s.axis = turn * s.axis,
+            Shape::Shell(s) => s.axis = turn * s.axis,
+            Shape::Triangle(s) => (s.e1, s.e2) = (turn * s.e1, turn * s.e2),
+            Shape::Rectangle(s) => (s.e1, s.e2) = (turn * s.e1, turn * s.e2),
         }
         moved
     }
@@ -199,25 +201,7 @@ impl Shape {
     /// finite cylinder's ± the larger of its radius and half its length), and a plane's
     /// or infinite cylinder's origin alone (± the radius for the cylinder).
     pub fn extent(&self) -> (Vec3, Vec3) {
-        let reach = |o: &Vec3, r: f64| (o - Vec3::repeat(r), o + Vec3::repeat(r));
-        match self {
-            Shape::Plane { origin, .. } => reach(origin, 0.0),
-            Shape::Triangle { origin, e1, e2 } | Shape::Rectangle { origin, e1, e2 } => {
-                let (lo, hi) = corners(&[origin + e1, origin + e2, origin + e1 + e2]);
-                let (a, b) = reach(origin, 0.0);
-                (lo.inf(&a), hi.sup(&b))
-            }
-            Shape::Disk { center, radius, .. } | Shape::Shell { center, radius, .. } => {
-                reach(center, *radius)
-            }
-            Shape::InfiniteCylinder { origin, radius, .. } => reach(origin, *radius),
-            Shape::FiniteCylinder {
-                center,
-                radius,
-                length,
-                ..
-            } => reach(center, radius.max(length / 2.0)),
-        }
+        each!(self, s => s.extent())
     }
 
     /// An axis-aligned box `(lo, hi)` holding every point the shape's [`Shape::nearest`]
@@ -232,68 +216,26 @@ impl Shape {
     /// rims (its side lies between them); a shell's is its whole sphere.
     pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
         match self {
-            Shape::Plane { .. } | Shape::InfiniteCylinder { .. } => None,
-            Shape::Triangle { origin, e1, e2 } => triangle::bounds(origin, e1, e2),
-            Shape::Rectangle { origin, e1, e2 } => rectangle::bounds(origin, e1, e2),
-            Shape::Disk {
-                center,
-                normal,
-                radius,
-                ..
-            } => Some(rim_bounds(center, normal, radius.abs())),
-            Shape::FiniteCylinder {
-                center,
-                axis,
-                radius,
-                length,
-                taper,
-            } => Some(cone::bounds(center, axis, *radius, *length, *taper)),
-            Shape::Shell { center, radius, .. } => {
-                let r = Vec3::repeat(radius.abs());
-                Some((center - r, center + r))
-            }
+            Shape::Plane(_) | Shape::InfiniteCylinder(_) => None,
+            Shape::Triangle(s) => s.bounds(),
+            Shape::Rectangle(s) => s.bounds(),
+            Shape::Disk(s) => s.bounds(),
+            Shape::FiniteCylinder(s) => s.bounds(),
+            Shape::Shell(s) => s.bounds(),
         }
     }
 
     /// The nearest point of the shape to `p`.
     pub fn nearest(&self, p: &Vec3) -> Nearest {
-        match self {
-            Shape::Plane { origin, normal } => plane::nearest(p, origin, normal),
-            Shape::Triangle { origin, e1, e2 } => triangle::nearest(p, origin, e1, e2),
-            Shape::Rectangle { origin, e1, e2 } => rectangle::nearest(p, origin, e1, e2),
-            Shape::Disk {
-                center,
-                normal,
-                radius,
-                hole,
-            } => disk::nearest(p, center, normal, *radius, *hole),
-            Shape::InfiniteCylinder {
-                origin,
-                axis,
-                radius,
-            } => cylinder::nearest(p, origin, axis, *radius),
-            Shape::FiniteCylinder {
-                center,
-                axis,
-                radius,
-                length,
-                taper,
-            } => cone::nearest(p, center, axis, *radius, *length, *taper),
-            Shape::Shell {
-                center,
-                axis,
-                radius,
-                open,
-            } => shell::nearest(p, center, axis, *radius, *open),
-        }
+        each!(self, s => s.nearest(p))
     }
 
     /// Whether pkdgrav's hard-sphere code handles the shape: not triangles, shells or
     /// tapered cylinders (its collision code asserts on them).
     pub fn hard_sphere_supported(&self) -> bool {
         match self {
-            Shape::Triangle { .. } | Shape::Shell { .. } => false,
-            Shape::FiniteCylinder { taper, .. } => *taper == 0.0,
+            Shape::Triangle(_) | Shape::Shell(_) => false,
+            Shape::FiniteCylinder(s) => s.taper == 0.0,
             _ => true,
         }
     }
@@ -310,34 +252,12 @@ impl Shape {
         let mut best = Earliest::new(t_max);
         let ray = Ray { p, d, r, t_max };
         match self {
-            Shape::Plane { origin, normal } => plane::hit(&ray, origin, normal, &mut best),
-            Shape::Rectangle { origin, e1, e2 } => {
-                rectangle::hit(&ray, origin, e1, e2, edges, &mut best)
-            }
-            Shape::Disk {
-                center,
-                normal,
-                radius,
-                hole,
-            } => disk::hit(&ray, center, normal, *radius, *hole, edges, &mut best),
-            Shape::InfiniteCylinder {
-                origin,
-                axis,
-                radius,
-            } => cylinder::hit(&ray, origin, axis, *radius, &mut best),
-            Shape::FiniteCylinder {
-                center,
-                axis,
-                radius,
-                length,
-                taper,
-            } => {
-                if *taper != 0.0 {
-                    return None;
-                }
-                cone::hit(&ray, center, axis, *radius, *length, edges, &mut best)
-            }
-            Shape::Triangle { .. } | Shape::Shell { .. } => {}
+            Shape::Plane(s) => s.hit(&ray, &mut best),
+            Shape::Rectangle(s) => s.hit(&ray, edges, &mut best),
+            Shape::Disk(s) => s.hit(&ray, edges, &mut best),
+            Shape::InfiniteCylinder(s) => s.hit(&ray, &mut best),
+            Shape::FiniteCylinder(s) => s.hit(&ray, edges, &mut best),
+            Shape::Triangle(_) | Shape::Shell(_) => {}
         }
         best.hit
     }
@@ -352,33 +272,13 @@ impl Shape {
         let segments = segments.max(3);
         let mut m = Mesh::default();
         match self {
-            Shape::Plane { origin, normal } => plane::tessellate(&mut m, origin, normal, scene),
-            Shape::Triangle { origin, e1, e2 } => triangle::tessellate(&mut m, origin, e1, e2),
-            Shape::Rectangle { origin, e1, e2 } => rectangle::tessellate(&mut m, origin, e1, e2),
-            Shape::Disk {
-                center,
-                normal,
-                radius,
-                hole,
-            } => disk::tessellate(&mut m, center, normal, *radius, *hole, segments),
-            Shape::InfiniteCylinder {
-                origin,
-                axis,
-                radius,
-            } => cylinder::tessellate(&mut m, origin, axis, *radius, scene, segments),
-            Shape::FiniteCylinder {
-                center,
-                axis,
-                radius,
-                length,
-                taper,
-            } => cone::tessellate(&mut m, center, axis, *radius, *length, *taper, segments),
-            Shape::Shell {
-                center,
-                axis,
-                radius,
-                open,
-            } => shell::tessellate(&mut m, center, axis, *radius, *open, segments),
+            Shape::Plane(s) => s.tessellate(&mut m, scene),
+            Shape::Triangle(s) => s.tessellate(&mut m),
+            Shape::Rectangle(s) => s.tessellate(&mut m),
+            Shape::Disk(s) => s.tessellate(&mut m, segments),
+            Shape::InfiniteCylinder(s) => s.tessellate(&mut m, scene, segments),
+            Shape::FiniteCylinder(s) => s.tessellate(&mut m, segments),
+            Shape::Shell(s) => s.tessellate(&mut m, segments),
         }
         m
     }
@@ -412,6 +312,11 @@ impl Earliest {
             self.hit = Some(Hit { t, feature });
         }
     }
+}
+
+/// The box `o` ± `r` on every axis.
+pub(crate) fn around(o: &Vec3, r: f64) -> (Vec3, Vec3) {
+    (o - Vec3::repeat(r), o + Vec3::repeat(r))
 }
 
 /// The box of a few points.

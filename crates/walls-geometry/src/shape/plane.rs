@@ -1,46 +1,66 @@
 //! The plane: an infinite flat face through its origin with unit normal `orient`.
 //! Nearest point by projection, contact by the slab entry, and for previews the polygon
 //! where it cuts the scene's box (a square of twice the scene's size when it misses it).
+//! It has no box.
 
-use super::{Earliest, Feature, Nearest, Ray, answer};
+use super::{Earliest, Feature, Nearest, Ray, answer, around};
 use crate::impact::slab_entry;
 use crate::mesh::{Mesh, basis};
 use nalgebra::Vector3;
 
 type Vec3 = Vector3<f64>;
 
-/// The nearest point of the plane through `origin` with unit `normal` to `p`.
-pub(crate) fn nearest(p: &Vec3, origin: &Vec3, normal: &Vec3) -> Nearest {
-    let h = normal.dot(&(p - origin));
-    answer(p, p - normal * h, *normal, Feature::Face)
+/// An infinite plane through `origin` with unit `normal` (`orient`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plane {
+    /// A point of the plane (`origin`).
+    pub origin: Vec3,
+    /// Its unit normal (`orient`; zero when degenerate).
+    pub normal: Vec3,
 }
 
-/// A sphere reaching the plane.
-pub(crate) fn hit(ray: &Ray, origin: &Vec3, normal: &Vec3, best: &mut Earliest) {
-    best.consider(
-        slab_entry(ray.p, ray.d, ray.r, origin, normal),
-        Feature::Face,
-    );
-}
+impl Plane {
+    /// The nearest point of the plane to `p`.
+    pub fn nearest(&self, p: &Vec3) -> Nearest {
+        let (origin, normal) = (&self.origin, &self.normal);
+        let h = normal.dot(&(p - origin));
+        answer(p, p - normal * h, *normal, Feature::Face)
+    }
 
-/// The plane cut to the scene's box, or a square of twice the scene's size centred
-/// where the scene's centre projects onto it when it misses the box.
-pub(crate) fn tessellate(m: &mut Mesh, o: &Vec3, axis: &Vec3, bounds: &(Vec3, Vec3)) {
-    let centre = &((bounds.0 + bounds.1) / 2.0);
-    let size = (bounds.1 - bounds.0).max();
-    let (u, v) = basis(axis);
-    let polygon = clipped_plane(o, axis, &u, &v, bounds).unwrap_or_else(|| {
-        // Clear of the scene's box: a square of twice the scene's size.
-        let c = centre - axis * axis.dot(&(centre - o));
-        let h = size;
-        [(-h, -h), (h, -h), (h, h), (-h, h)]
-            .iter()
-            .map(|(a, b)| c + u * *a + v * *b)
-            .collect()
-    });
-    let ids: Vec<u32> = polygon.into_iter().map(|p| m.vertex(p)).collect();
-    for k in 1..ids.len() - 1 {
-        m.triangles.push([ids[0], ids[k], ids[k + 1]]);
+    /// The scene's extent: its origin alone.
+    pub fn extent(&self) -> (Vec3, Vec3) {
+        around(&self.origin, 0.0)
+    }
+
+    /// A sphere reaching the plane.
+    pub(crate) fn hit(&self, ray: &Ray, best: &mut Earliest) {
+        let (origin, normal) = (&self.origin, &self.normal);
+        best.consider(
+            slab_entry(ray.p, ray.d, ray.r, origin, normal),
+            Feature::Face,
+        );
+    }
+
+    /// The plane cut to the scene's box `bounds`, or a square of twice the scene's size
+    /// centred where the scene's centre projects onto it when it misses the box.
+    pub(crate) fn tessellate(&self, m: &mut Mesh, bounds: &(Vec3, Vec3)) {
+        let (o, axis) = (&self.origin, &self.normal);
+        let centre = &((bounds.0 + bounds.1) / 2.0);
+        let size = (bounds.1 - bounds.0).max();
+        let (u, v) = basis(axis);
+        let polygon = clipped_plane(o, axis, &u, &v, bounds).unwrap_or_else(|| {
+            // Clear of the scene's box: a square of twice the scene's size.
+            let c = centre - axis * axis.dot(&(centre - o));
+            let h = size;
+            [(-h, -h), (h, -h), (h, h), (-h, h)]
+                .iter()
+                .map(|(a, b)| c + u * *a + v * *b)
+                .collect()
+        });
+        let ids: Vec<u32> = polygon.into_iter().map(|p| m.vertex(p)).collect();
+        for k in 1..ids.len() - 1 {
+            m.triangles.push([ids[0], ids[k], ids[k + 1]]);
+        }
     }
 }
 

@@ -3,47 +3,71 @@
 //! whole sphere; mesh as latitude rings from the opening down to the opposite pole.
 //! pkdgrav's hard-sphere code does not handle shells.
 
-use super::{Feature, Nearest, answer, any_perpendicular};
+use super::{Feature, Nearest, answer, any_perpendicular, around};
 use crate::mesh::{Mesh, basis};
 use nalgebra::Vector3;
 use walls_model::direction;
 
 type Vec3 = Vector3<f64>;
 
-pub(crate) fn nearest(p: &Vec3, c: &Vec3, axis: &Vec3, radius: f64, open: f64) -> Nearest {
-    if radius == 0.0 {
-        return answer(p, *c, *axis, Feature::Point);
-    }
-    let d = p - c;
-    // At the centre every direction is as near: take the bottom, opposite the opening.
-    let u = direction(&d).unwrap_or(-*axis);
-    let theta = axis.dot(&u).clamp(-1.0, 1.0).acos();
-    if theta >= open {
-        return answer(p, c + u * radius, u, Feature::Face);
-    }
-    // Inside the opening's cone: the nearest point of the rim circle.
-    let sideways = direction(&(u - axis * axis.dot(&u))).unwrap_or_else(|| any_perpendicular(axis));
-    let q = c + (axis * open.cos() + sideways * open.sin()) * radius;
-    let feature = if open >= std::f64::consts::PI {
-        Feature::Point
-    } else {
-        Feature::Rim(0)
-    };
-    answer(p, q, u, feature)
+/// A sphere of `radius` around `center` minus the cap within `open` radians of `axis`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shell {
+    /// Its centre (`origin`).
+    pub center: Vec3,
+    /// The unit axis of its opening (`orient`).
+    pub axis: Vec3,
+    /// Its radius.
+    pub radius: f64,
+    /// The opening's half-angle in radians (`open-angle`, given in degrees).
+    pub open: f64,
 }
 
-/// The sphere without its cap (nothing for radius 0 or an opening of 180°).
-pub(crate) fn tessellate(
-    m: &mut Mesh,
-    o: &Vec3,
-    axis: &Vec3,
-    radius: f64,
-    open: f64,
-    segments: usize,
-) {
-    if radius > 0.0 && open < std::f64::consts::PI {
-        let (u, v) = basis(axis);
-        cap(m, o, axis, &u, &v, radius, open, segments);
+impl Shell {
+    /// The box of its whole sphere.
+    pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
+        let r = Vec3::repeat(self.radius.abs());
+        Some((self.center - r, self.center + r))
+    }
+
+    /// The scene's extent: its centre ± its radius.
+    pub fn extent(&self) -> (Vec3, Vec3) {
+        around(&self.center, self.radius)
+    }
+
+    /// The nearest point of the shell to `p`: on its sphere or its opening's rim (a point
+    /// when its radius is 0 or its opening 180°).
+    pub fn nearest(&self, p: &Vec3) -> Nearest {
+        let (c, axis, radius, open) = (&self.center, &self.axis, self.radius, self.open);
+        if radius == 0.0 {
+            return answer(p, *c, *axis, Feature::Point);
+        }
+        let d = p - c;
+        // At the centre every direction is as near: take the bottom, opposite the opening.
+        let u = direction(&d).unwrap_or(-*axis);
+        let theta = axis.dot(&u).clamp(-1.0, 1.0).acos();
+        if theta >= open {
+            return answer(p, c + u * radius, u, Feature::Face);
+        }
+        // Inside the opening's cone: the nearest point of the rim circle.
+        let sideways =
+            direction(&(u - axis * axis.dot(&u))).unwrap_or_else(|| any_perpendicular(axis));
+        let q = c + (axis * open.cos() + sideways * open.sin()) * radius;
+        let feature = if open >= std::f64::consts::PI {
+            Feature::Point
+        } else {
+            Feature::Rim(0)
+        };
+        answer(p, q, u, feature)
+    }
+
+    /// The sphere without its cap (nothing for radius 0 or an opening of 180°).
+    pub(crate) fn tessellate(&self, m: &mut Mesh, segments: usize) {
+        let (o, axis, radius, open) = (&self.center, &self.axis, self.radius, self.open);
+        if radius > 0.0 && open < std::f64::consts::PI {
+            let (u, v) = basis(axis);
+            cap(m, o, axis, &u, &v, radius, open, segments);
+        }
     }
 }
 

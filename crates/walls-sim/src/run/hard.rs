@@ -468,7 +468,7 @@ pub(super) fn run(
             warnings.push(format!(
                 "wall {w} ({}{}) is not supported by pkdgrav's hard-sphere code; particles pass through it",
                 wall.shape.wall_type().name(),
-                if matches!(wall.shape, Shape::FiniteCylinder { taper, .. } if taper != 0.0) {
+                if matches!(&wall.shape, Shape::FiniteCylinder(c) if c.taper != 0.0) {
                     " with taper"
                 } else {
                     ""

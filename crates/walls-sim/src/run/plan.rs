@@ -284,11 +284,12 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
 /// across n̂, their positions across n̂ keep their separations, and if no two are within
 /// the sum of their radii there, they never touch.
 fn never_meet(walls: &[Wall], particles: &[Particle], frictionless: bool) -> bool {
-    let Some(Shape::Plane { normal: n, .. }) = walls.first().map(|w| &w.shape) else {
+    let Some(Shape::Plane(first)) = walls.first().map(|w| &w.shape) else {
         return false;
     };
+    let n = &first.normal;
     let planes = walls.iter().all(|w| {
-        matches!(&w.shape, Shape::Plane { normal, .. } if normal.cross(n).norm() == 0.0)
+        matches!(&w.shape, Shape::Plane(p) if p.normal.cross(n).norm() == 0.0)
             && w.material.eps_n != 0.0
     });
     let across = |v: &nalgebra::Vector3<f64>| v - n * n.dot(v);
