@@ -314,6 +314,13 @@ impl Earliest {
     }
 }
 
+/// The box of the parallelogram on edges `e1`, `e2` from `o` (a polygon's extent).
+pub(crate) fn parallelogram(o: &Vec3, e1: &Vec3, e2: &Vec3) -> (Vec3, Vec3) {
+    let (lo, hi) = corners(&[o + e1, o + e2, o + e1 + e2]);
+    let (a, b) = around(o, 0.0);
+    (lo.inf(&a), hi.sup(&b))
+}
+
 /// The box `o` ± `r` on every axis.
 pub(crate) fn around(o: &Vec3, r: f64) -> (Vec3, Vec3) {
     (o - Vec3::repeat(r), o + Vec3::repeat(r))

@@ -2,7 +2,7 @@
 //! point on its face, edges or corners, its box, its contact in the hard-sphere model,
 //! and its two mesh triangles.
 
-use super::{Earliest, Feature, Nearest, Ray, answer, around, corners};
+use super::{Earliest, Feature, Nearest, Ray, answer, corners, parallelogram};
 use crate::impact::{point_entry, segment_entry, slab_entry};
 use crate::mesh::Mesh;
 use nalgebra::Vector3;
@@ -38,10 +38,7 @@ impl Rectangle {
 
     /// The scene's extent: its four corners.
     pub fn extent(&self) -> (Vec3, Vec3) {
-        let (o, e1, e2) = (&self.origin, &self.e1, &self.e2);
-        let (lo, hi) = corners(&[o + e1, o + e2, o + e1 + e2]);
-        let (a, b) = around(o, 0.0);
-        (lo.inf(&a), hi.sup(&b))
+        parallelogram(&self.origin, &self.e1, &self.e2)
     }
 
     /// The nearest point of the rectangle to `p`: on its face, an edge or a corner.

@@ -2,7 +2,7 @@
 //! edges or vertices, its box, and its one mesh triangle. pkdgrav's hard-sphere code
 //! does not handle triangles.
 
-use super::{Feature, Nearest, answer, around, corners, segment_t};
+use super::{Feature, Nearest, answer, corners, parallelogram, segment_t};
 use crate::mesh::Mesh;
 use nalgebra::Vector3;
 use walls_model::direction;
@@ -30,10 +30,7 @@ impl Triangle {
 
     /// The scene's extent: the corners of the parallelogram on its edges.
     pub fn extent(&self) -> (Vec3, Vec3) {
-        let (o, e1, e2) = (&self.origin, &self.e1, &self.e2);
-        let (lo, hi) = corners(&[o + e1, o + e2, o + e1 + e2]);
-        let (a, b) = around(o, 0.0);
-        (lo.inf(&a), hi.sup(&b))
+        parallelogram(&self.origin, &self.e1, &self.e2)
     }
 
     /// The nearest point of the triangle to `p`: on its face, an edge or a vertex.
