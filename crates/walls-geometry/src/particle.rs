@@ -23,3 +23,19 @@ pub struct Particle {
     /// Index in the original file.
     pub index: i32,
 }
+
+impl Particle {
+    /// A particle of radius `radius` and unit density at rest at `pos`, not spinning,
+    /// drawn in ssdraw's blue (colour 3), with `index` as its place in the file.
+    pub fn at_rest(radius: f64, pos: Vec3, index: usize) -> Particle {
+        Particle {
+            mass: 4.0 / 3.0 * std::f64::consts::PI * radius.powi(3),
+            radius,
+            pos,
+            vel: Vec3::zeros(),
+            spin: Vec3::zeros(),
+            color: 3,
+            index: index as i32,
+        }
+    }
+}

@@ -8,10 +8,7 @@ use walls_model::{Options, analyze};
 type Vec3 = Vector3<f64>;
 
 fn shape(text: &str) -> Shape {
-    let tree = walls_syntax::parse(text).tree;
-    let scene = analyze(&tree, &Options::default()).scene;
-    let wall = &scene.walls[0];
-    Wall::decode(wall).shape
+    walls_test_support::scene(text).swap_remove(0).shape
 }
 
 fn near(s: &Shape, p: [f64; 3]) -> Nearest {

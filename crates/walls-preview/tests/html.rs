@@ -6,7 +6,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use walls_model::{Options, Scene, analyze};
+use walls_model::Scene;
 use walls_preview::html::{self, Particles};
 
 /// A red disk oscillating along x (amplitude 1, period 1: at t = 0.25 it is 1 to the
@@ -30,9 +30,7 @@ wall type plane
 ";
 
 fn scene() -> Scene {
-    let parsed = walls_syntax::parse(SCENE);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
+    walls_test_support::model_scene(SCENE)
 }
 
 /// One green particle of radius 0.3 moving from x = −2 at t = 0 to x = 2 at t = 1, at

@@ -3,14 +3,8 @@
 //! the wall's motion; colours follow ssdraw.
 
 use walls_geometry::{Wall, decode, scene_bounds};
-use walls_model::{Options, Scene, analyze};
 use walls_preview::{palette, wall_meshes};
-
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
+use walls_test_support::model_scene as scene;
 
 fn area(m: &walls_preview::Mesh) -> f64 {
     m.triangles

@@ -8,17 +8,12 @@ use nalgebra::Vector3;
 use std::path::Path;
 use std::process::Command;
 use walls_geometry::Particle;
-use walls_model::{Options, Scene, analyze};
+use walls_model::Scene;
 use walls_preview::pov::{self, View};
+use walls_test_support::model_scene as scene;
 
 const W: u32 = 160;
 const H: u32 = 120;
-
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
 
 fn particle(x: f64, y: f64, z: f64, radius: f64, color: i32) -> Particle {
     Particle {

@@ -3,15 +3,10 @@
 //! moving wall moves between frames, and the animation has its frames.
 
 use nalgebra::Vector3;
-use walls_model::{Options, Scene, analyze};
+use walls_model::Scene;
 use walls_preview::svg::{Frame, View, write};
 use walls_preview::wall_meshes;
-
-fn scene(text: &str) -> Scene {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    analyze(&parsed.tree, &Options::default()).scene
-}
+use walls_test_support::model_scene as scene;
 
 /// The SVG of `scene` at the times `ts`, seen from above (z towards the viewer).
 fn svg(scene: &Scene, ts: &[f64]) -> String {

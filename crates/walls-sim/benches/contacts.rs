@@ -15,26 +15,22 @@
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nalgebra::Vector3;
 use std::hint::black_box;
-use walls_geometry::{Shape, Wall, decode};
-use walls_model::{Options, analyze};
+use walls_geometry::{Shape, Wall};
 use walls_sim::broad::grid::CellGrid;
 use walls_sim::run::defaults;
 use walls_sim::run::{Planning, Settings, default_dt, run};
+use walls_test_support::scenes::packed;
 
 type Vec3 = Vector3<f64>;
 
 fn scene() -> Vec<Wall> {
-    let text = include_str!("../../../examples/sample.walls");
-    decode(&analyze(&walls_syntax::parse(text).tree, &Options::default()).scene)
+    walls_test_support::scene(include_str!("../../../examples/sample.walls"))
 }
 
 fn contacts(c: &mut Criterion) {
     let scene = scene();
     let shapes: Vec<Shape> = scene.iter().map(|w| w.shape.clone()).collect();
-    let points: Vec<Vec3> = defaults::packed(&scene, 10_000, 0.01)
-        .iter()
-        .map(|p| p.pos)
-        .collect();
+    let points: Vec<Vec3> = packed(&scene, 10_000, 0.01).iter().map(|p| p.pos).collect();
     let mut group = c.benchmark_group("sample scene");
     group.throughput(Throughput::Elements((points.len() * shapes.len()) as u64));
     group.bench_function("contact checks", |b| {
@@ -48,7 +44,7 @@ fn contacts(c: &mut Criterion) {
             touching
         })
     });
-    let ps = defaults::packed(&scene, 10_000, 0.01);
+    let ps = packed(&scene, 10_000, 0.01);
     assert_eq!(ps.len(), 10_000);
     let steps = 20;
     let k_n = 1e3;
@@ -129,13 +125,7 @@ fn resting_layer(n: usize, r: f64, k_n: f64) -> Vec<walls_geometry::Particle> {
 /// The plan's saving: 2,000 particles resting on a static plane, run with the parts the
 /// scene needs and with every part forced on (issue 8: at least 2×).
 fn plan(c: &mut Criterion) {
-    let scene = decode(
-        &analyze(
-            &walls_syntax::parse("wall type plane\n").tree,
-            &Options::default(),
-        )
-        .scene,
-    );
+    let scene = walls_test_support::scene("wall type plane\n");
     let k_n = 1e3;
     let ps = resting_layer(2_000, 0.01, k_n);
     let dt = default_dt(&ps, k_n);

@@ -14,9 +14,9 @@
 
 use nalgebra::Vector3;
 use std::time::Instant;
-use walls_model::{Options, analyze};
 use walls_sim::run::defaults;
 use walls_sim::run::{ContactModel, Settings, default_dt, run};
+use walls_test_support::scenes::packed;
 
 fn main() {
     let args: Vec<usize> = std::env::args()
@@ -25,12 +25,9 @@ fn main() {
         .collect();
     let n = args.first().copied().unwrap_or(100_000);
     let steps = args.get(1).copied().unwrap_or(1_000);
-    let text = include_str!("../../../examples/sample.walls");
-    let scene = walls_geometry::decode(
-        &analyze(&walls_syntax::parse(text).tree, &Options::default()).scene,
-    );
+    let scene = walls_test_support::scene(include_str!("../../../examples/sample.walls"));
     let r = 0.005;
-    let mut particles = defaults::packed(&scene, n, r);
+    let mut particles = packed(&scene, n, r);
     assert_eq!(particles.len(), n, "room for the particles");
     let frac = |i: usize, a: f64| (i as f64 * a).fract() - 0.5;
     for (i, p) in particles.iter_mut().enumerate() {

@@ -2,14 +2,12 @@
 //! `.par` file, else the default; and the particles from `--particles`, else the `.par`
 //! file's `achInFile` (beside the `.par` file), else the dropped default particles.
 
-mod common;
-
-use common::{particle, scene};
 use nalgebra::Vector3;
 use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
 use walls_sim::io::par::Params;
 use walls_sim::run::default_dt;
 use walls_sim::run::defaults;
+use walls_test_support::{ball as particle, scene};
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
 

@@ -6,13 +6,12 @@ use walls_geometry::Wall;
 
 use walls_sim::run::{ContactModel, EventKind, Outcome, ParticleMaterial, Settings, run};
 
-mod common;
-use common::particle;
+use walls_test_support::ball as particle;
 
 type Vec3 = Vector3<f64>;
 
 fn scene(text: &str) -> Vec<Wall> {
-    common::scene_in(text, ContactModel::Hsdem)
+    walls_test_support::scene_in(text, ContactModel::Hsdem)
 }
 
 fn settings(eps_n: f64, dt: f64, t_end: f64, gravity: [f64; 3]) -> Settings {

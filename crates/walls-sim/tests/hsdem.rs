@@ -2,7 +2,7 @@
 //! 1e−12 relative.
 
 use nalgebra::Vector3;
-use walls_geometry::{Feature, Hit, Shape, Wall};
+use walls_geometry::{Feature, Hit, Shape};
 use walls_sim::contact::hsdem::bounce;
 
 type Vec3 = Vector3<f64>;
@@ -70,10 +70,7 @@ fn tangential_restitution_and_spin() {
 }
 
 fn shape(text: &str) -> Shape {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    let scene = walls_model::analyze(&parsed.tree, &walls_model::Options::default()).scene;
-    Wall::decode(&scene.walls[0]).shape
+    walls_test_support::scene(text).swap_remove(0).shape
 }
 
 fn exact(t: Option<Hit>, expected: f64, feature: Feature) {

@@ -8,8 +8,8 @@ use walls_sim::run::defaults;
 use walls_sim::run::plan::{Plan, parts};
 use walls_sim::run::{ContactModel, Planning, Settings, run};
 
-mod common;
-use common::scene;
+use walls_test_support::scene;
+use walls_test_support::scenes::packed;
 
 type Vec3 = Vector3<f64>;
 
@@ -95,7 +95,7 @@ fn leaving_out_unneeded_parts_does_not_change_the_answer() {
         ),
         (
             scene("wall type plane\nwall type plane\n  origin 0 0 -0.2\n"),
-            defaults::packed(&scene("wall type plane\n"), 200, 0.02),
+            packed(&scene("wall type plane\n"), 200, 0.02),
         ),
     ] {
         let k_n = defaults::default_k_n(&floor, &ps, &Vec3::new(0.0, 0.0, -1.0));

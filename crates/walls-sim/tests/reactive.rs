@@ -5,8 +5,7 @@
 use nalgebra::{Rotation3, Vector3};
 use walls_sim::run::{Settings, run};
 
-mod common;
-use common::{particle, scene};
+use walls_test_support::{ball as particle, scene};
 
 type Vec3 = Vector3<f64>;
 

@@ -4,8 +4,7 @@ use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
 
-mod common;
-use common::{particle, scene};
+use walls_test_support::{ball as particle, scene};
 
 type Vec3 = Vector3<f64>;
 

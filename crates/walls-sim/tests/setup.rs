@@ -3,16 +3,10 @@
 //! under pkdgrav's 3 % warning.
 
 use nalgebra::Vector3;
-use walls_geometry::{Wall, decode, scene_bounds};
-use walls_model::{Options, analyze};
+use walls_geometry::scene_bounds;
 use walls_sim::run::defaults;
 use walls_sim::run::{Settings, default_dt, run};
-
-fn scene(text: &str) -> Vec<Wall> {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    decode(&analyze(&parsed.tree, &Options::default()).scene)
-}
+use walls_test_support::scene;
 
 #[test]
 fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {

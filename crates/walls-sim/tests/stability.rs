@@ -5,8 +5,7 @@ use nalgebra::Vector3;
 use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{ContactModel, EventKind, ParticleMaterial, Settings, run};
 
-mod common;
-use common::{particle, scene};
+use walls_test_support::{ball as particle, scene};
 
 type Vec3 = Vector3<f64>;
 

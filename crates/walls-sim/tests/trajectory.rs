@@ -1,14 +1,12 @@
 //! `io::trajectory`: the rows `Trajectory` writes to `particles.csv` and `walls.csv` read
 //! back as the same rows, and what the readers refuse.
 
-mod common;
-
-use common::{particle, scene};
 use nalgebra::Vector3;
 use walls_sim::io::trajectory::{
     ParticleRow, ReadError, Trajectory, WallRow, read_particles, read_walls,
 };
 use walls_sim::run::State;
+use walls_test_support::{ball as particle, scene};
 
 #[test]
 fn written_rows_read_back_the_same() {

@@ -10,21 +10,12 @@ use std::f64::consts::PI;
 use walls_geometry::shape::{
     Disk, FiniteCylinder, InfiniteCylinder, Plane, Rectangle, Shell, Triangle,
 };
-use walls_geometry::{OscillationStepping, Shape, Wall, decode};
-use walls_model::Options;
+use walls_geometry::{OscillationStepping, Shape, Wall};
 use walls_sim::WallIndex;
+use walls_test_support::scene_uncapped as scene;
+use walls_test_support::scenes::sphere_hull;
 
 type Vec3 = Vector3<f64>;
-
-fn scene(text: &str) -> Vec<Wall> {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    let options = Options {
-        max_walls: usize::MAX,
-        ..Options::default()
-    };
-    decode(&walls_model::analyze(&parsed.tree, &options).scene)
-}
 
 fn v(p: &Vec3) -> String {
     format!("{} {} {}", p.x, p.y, p.z)
@@ -417,7 +408,7 @@ fn a_group_is_found_where_it_has_moved() {
 
 #[test]
 fn near_a_hull_of_10k_triangles_few_walls_are_candidates() {
-    let scene = scene(&walls_sim::run::defaults::sphere_hull(50));
+    let scene = scene(&sphere_hull(50));
     assert_eq!(scene.len(), 10_000);
     let index = WallIndex::new(&scene);
     assert_eq!(index.group_count(), 1);

@@ -1,11 +1,24 @@
-//! Helpers shared by the data-driven tests of the walls crates.
+//! Helpers and fixtures shared by the tests and benchmarks of the walls crates.
 //!
 //! [`render`] writes diagnostics as plain text that shows exactly what a test must pin
 //! down: code, severity, 1-based line:column span with the text it covers, labels, help
 //! and every fix edit. [`snapshot_beside`] compares such text with a `.snap` file next
 //! to the input it came from. [`arbitrary`] makes random walls files for property tests.
+//!
+//! [`scene`] gives the typed walls of walls-file text that must parse cleanly (also
+//! [`scene_in`] a contact model, [`scene_uncapped`] without pkdgrav's cap on the number
+//! of walls, and [`model_scene`] the model's scene, for the previews). The fixtures in
+//! [`scenes`] are deterministic: [`ball`], the particle most run tests throw;
+//! [`scenes::packed`], a crowd of particles at rest packed into a scene, for benchmarks
+//! and stress runs; and [`scenes::sphere_hull`], a closed hull of many triangles as
+//! walls-file text, for the wall index.
 
 pub mod arbitrary;
+pub mod scenes;
+mod walls;
+
+pub use scenes::ball;
+pub use walls::{model_scene, scene, scene_in, scene_uncapped};
 
 use std::fmt::Write as _;
 use std::ops::Range;

@@ -23,7 +23,6 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-diagnostics", 0),
     ("tree-sitter-walls", 0),
     ("walls-syntax", 1),
-    ("walls-test-support", 1),
     ("walls-model", 2),
     ("walls-format", 2),
     ("walls-ide", 3),
@@ -31,6 +30,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-sim", 4),
     ("walls-preview", 4),
     ("walls-lsp", 4),
+    ("walls-test-support", 4),
     ("walls-cli", 5),
     ("walls-charts", 5),
 ];

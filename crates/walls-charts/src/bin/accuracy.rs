@@ -21,8 +21,7 @@ use nalgebra::Vector3;
 use std::time::Instant;
 use walls_charts::{Chart, Mark, Series, out_dir, pareto_front, write};
 use walls_geometry::Particle;
-use walls_geometry::{Wall, decode};
-use walls_model::{Options, analyze};
+use walls_geometry::Wall;
 use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{ContactModel, Integrator, ParticleMaterial, Settings, run, run_observed};
 
@@ -54,8 +53,7 @@ struct Point {
 }
 
 fn scene() -> Vec<Wall> {
-    let parsed = walls_syntax::parse("wall type plane\n");
-    decode(&analyze(&parsed.tree, &Options::default()).scene)
+    walls_test_support::scene("wall type plane\n")
 }
 
 /// `count` particles touching the plane z = 0 and moving into it at speed 1, spaced

@@ -13,8 +13,7 @@
 use nalgebra::Vector3;
 use walls_charts::{Chart, Mark, Series, out_dir, write};
 use walls_geometry::Particle;
-use walls_geometry::{Wall, decode};
-use walls_model::{Options, analyze};
+use walls_geometry::Wall;
 use walls_sim::contact::ssdem::damping;
 use walls_sim::run::{ContactModel, ParticleMaterial, Settings, run, run_observed};
 
@@ -23,13 +22,7 @@ type Vec3 = Vector3<f64>;
 const RADIUS: f64 = 0.1;
 
 fn plane() -> Vec<Wall> {
-    decode(
-        &analyze(
-            &walls_syntax::parse("wall type plane\n").tree,
-            &Options::default(),
-        )
-        .scene,
-    )
+    walls_test_support::scene("wall type plane\n")
 }
 
 fn ball(z: f64, v: f64) -> Particle {

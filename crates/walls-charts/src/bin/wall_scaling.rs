@@ -15,10 +15,11 @@ use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use walls_charts::{Chart, Mark, Series};
+use walls_geometry::Shape;
 use walls_geometry::shape::Triangle;
-use walls_geometry::{Shape, Wall, decode};
-use walls_model::Options;
 use walls_sim::WallIndex;
+use walls_test_support::scene_uncapped as scene;
+use walls_test_support::scenes::sphere_hull;
 
 type Vec3 = Vector3<f64>;
 
@@ -43,7 +44,7 @@ fn main() -> std::io::Result<()> {
     );
     for target in [100, 300, 1_000, 3_000, 10_000, 30_000, 100_000] {
         let m = (target as f64 / 4.0).sqrt().round() as usize;
-        let scene = scene(&walls_sim::run::defaults::sphere_hull(m));
+        let scene = scene(&sphere_hull(m));
         let n = scene.len();
         let origins: Vec<Vec3> = scene
             .iter()
@@ -155,16 +156,6 @@ fn ns_per_query(particles: &[Vec3], query: impl Fn(&Vec3) -> usize) -> f64 {
             start.elapsed().as_secs_f64() * 1e9 / (f64::from(rounds) * particles.len() as f64)
         })
         .fold(f64::INFINITY, f64::min)
-}
-
-fn scene(text: &str) -> Vec<Wall> {
-    let parsed = walls_syntax::parse(text);
-    assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
-    let options = Options {
-        max_walls: usize::MAX,
-        ..Options::default()
-    };
-    decode(&walls_model::analyze(&parsed.tree, &options).scene)
 }
 
 /// The particles: each under a random point of a random triangle, 0.5 to 1.5 radii

@@ -14,6 +14,9 @@
 //!   over the run).
 //! * Duration: three free-fall times over the scene (or three crossings at the fastest
 //!   speed without gravity).
+//!
+//! Only what a run uses lives here: the fixtures of tests and benchmarks (a packed crowd
+//! of particles, a many-walled hull) are in walls-test-support's `scenes`.
 
 use crate::run::ParticleMaterial;
 use nalgebra::Vector3;
@@ -36,7 +39,7 @@ pub fn default_particles(walls: &[Wall]) -> Vec<Particle> {
                 centre.y + j as f64 * 6.0 * r,
                 hi.z + size,
             );
-            out.push(at_rest(r, pos, out.len()));
+            out.push(Particle::at_rest(r, pos, out.len()));
         }
     }
     out
@@ -108,78 +111,4 @@ pub fn default_hard_dt(particles: &[Particle], gravity: &Vec3, t_end: f64) -> f6
     } else {
         t_end / 100.0
     }
-}
-
-/// `n` particles of radius `r` and unit density at rest, packed into the bottom of the
-/// scene's box: the lowest sites of a cubic lattice of spacing 2.2r (gaps of 0.2r), each
-/// clear of every wall by its diameter, layer by layer. None overlaps another, and the
-/// same scene gives the same pack: a deterministic crowd for benchmarks and stress runs.
-/// Fewer than `n` when the box has no room.
-pub fn packed(walls: &[Wall], n: usize, r: f64) -> Vec<Particle> {
-    let (lo, hi) = bounds(walls);
-    let spacing = 2.2 * r;
-    let count = |axis: usize| ((hi[axis] - lo[axis]) / spacing).floor().max(0.0) as usize;
-    let (nx, ny, nz) = (count(0), count(1), count(2));
-    (0..nx * ny * nz)
-        .map(|k| {
-            let (i, j, l) = (k % nx, (k / nx) % ny, k / (nx * ny));
-            lo + Vec3::new(i as f64 + 0.5, j as f64 + 0.5, l as f64 + 0.5) * spacing
-        })
-        .filter(|p| walls.iter().all(|w| w.shape.nearest(p).distance > 2.0 * r))
-        .take(n)
-        .enumerate()
-        .map(|(i, pos)| at_rest(r, pos, i))
-        .collect()
-}
-
-/// A particle of radius `r` and unit density at rest at `pos`, drawn in ssdraw's blue.
-fn at_rest(r: f64, pos: Vec3, index: usize) -> Particle {
-    Particle {
-        mass: 4.0 / 3.0 * std::f64::consts::PI * r.powi(3),
-        radius: r,
-        pos,
-        vel: Vec3::zeros(),
-        spin: Vec3::zeros(),
-        color: 3,
-        index: index as i32,
-    }
-}
-
-/// A closed sphere of radius 1 in 4m² triangles: m + 1 rings of 2m quads (the polar
-/// ones triangles), as walls-file text: a deterministic many-walled scene, like a
-/// spacecraft hull, for benchmarks and tests of the wall index.
-pub fn sphere_hull(m: usize) -> String {
-    let (rings, around) = (m + 1, 2 * m);
-    let vertex = |i: usize, j: usize| {
-        let theta = std::f64::consts::PI * i as f64 / rings as f64;
-        let phi = std::f64::consts::TAU * j as f64 / around as f64;
-        Vec3::new(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            theta.cos(),
-        )
-    };
-    let v = |p: &Vec3| format!("{} {} {}", p.x, p.y, p.z);
-    let mut text = String::new();
-    let mut triangle = |a: Vec3, b: Vec3, c: Vec3| {
-        text.push_str(&format!(
-            "wall\n type triangle\n origin {}\n vertex1 {}\n vertex2 {}\n",
-            v(&a),
-            v(&(b - a)),
-            v(&(c - a))
-        ));
-    };
-    for i in 0..rings {
-        for j in 0..around {
-            let (a, b) = (vertex(i, j), vertex(i, j + 1));
-            let (c, d) = (vertex(i + 1, j), vertex(i + 1, j + 1));
-            if i > 0 {
-                triangle(a, c, b);
-            }
-            if i + 1 < rings {
-                triangle(b, c, d);
-            }
-        }
-    }
-    text
 }
