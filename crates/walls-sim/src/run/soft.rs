@@ -78,7 +78,8 @@ fn inertia(m: f64, r: f64) -> f64 {
     0.4 * m * r * r
 }
 
-/// The walls as they stand in a step, with their materials.
+/// The walls as they stand in a step, with their materials, and the step: what every
+/// particle's wall contacts share.
 struct Walls<'a> {
     now: &'a [WallNow],
     /// Each wall's reactive assembly, if any.
@@ -98,6 +99,10 @@ struct Walls<'a> {
     /// The fraction of a step by which contact velocities are predicted ahead with the
     /// last acceleration (pkdgrav's dashpot velocity: ½).
     predict: f64,
+    /// The time at the step's end, the timestep, and the step's number.
+    t: f64,
+    dt: f64,
+    step: u64,
 }
 
 /// What acts on one particle in a step: the force and torque summed so far, and its
@@ -125,17 +130,10 @@ struct ParticleStep {
     reactions: Vec<(usize, Vec3, Vec3)>,
 }
 
-/// One particle's contacts with the walls at time `t`, added to its `load` (which holds
-/// gravity and the particle contacts already), then the closing kick.
-fn wall_step(
-    i: usize,
-    s: &mut State,
-    load: &mut Load,
-    walls: &Walls,
-    t: f64,
-    dt: f64,
-    step: u64,
-) -> ParticleStep {
+/// One particle's contacts with the walls at the step's time, added to its `load` (which
+/// holds gravity and the particle contacts already), then the closing kick.
+fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
+    let (t, dt, step) = (walls.t, walls.dt, walls.step);
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
@@ -669,11 +667,11 @@ impl<'a> SoftStepper<'a> {
             materials: &self.materials,
             closing_kick: self.kicks.closing,
             predict: self.kicks.predict,
+            t: self.t,
+            dt: self.settings.dt,
+            step: self.steps,
         };
-        let (t, dt, steps) = (self.t, self.settings.dt, self.steps);
-        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
-            wall_step(i, s, load, &walls, t, dt, steps)
-        };
+        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| wall_step(i, s, load, &walls);
         if self.parallel {
             self.states
                 .par_iter_mut()

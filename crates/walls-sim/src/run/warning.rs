@@ -304,6 +304,93 @@ impl fmt::Display for Warning {
 mod tests {
     use super::*;
 
+    /// One warning of each kind.
+    fn one_of_each() -> Vec<Warning> {
+        let what = Overlapping::Wall {
+            particle: 0,
+            wall: 1,
+        };
+        let stiffest = Stiffest::Pairs { k_n: 1e5 };
+        vec![
+            Warning::OverlapAbove3 {
+                fraction: 0.04,
+                what,
+                t: 0.1,
+            },
+            Warning::OverlapAbove15 {
+                fraction: 0.2,
+                what,
+                t: 0.1,
+            },
+            Warning::OverlapStop {
+                fraction: 0.6,
+                what,
+                t: 0.1,
+            },
+            Warning::Crowded {
+                particle: 0,
+                walls: 4,
+                t: 0.1,
+            },
+            Warning::TooFast {
+                particle: 0,
+                radii: 1.5,
+                t: 0.1,
+            },
+            Warning::EnergyGain {
+                particle: 0,
+                wall: 1,
+                vn_in: 1.0,
+                vn_out: 2.0,
+                t: 0.1,
+            },
+            Warning::AboveStabilityLimit {
+                dt: 0.1,
+                limit: 0.01,
+                stiffest,
+            },
+            Warning::FewStepsPerContact {
+                steps: 5.0,
+                error_percent: 24.0,
+                stiffest,
+            },
+            Warning::WallTooFast {
+                wall: 0,
+                travel: 0.05,
+                smallest: 0.1,
+            },
+            Warning::UnsupportedWall {
+                wall: 0,
+                wall_type: WallType::Triangle,
+                taper: false,
+            },
+            Warning::RestitutionAt99 { walls: vec![0] },
+            Warning::CollisionCap {
+                particle: 0,
+                t: 0.0,
+            },
+            Warning::ImmovableAssemblies {
+                assemblies: vec![1],
+            },
+        ]
+    }
+
+    #[test]
+    fn codes_are_unique_and_documented() {
+        let doc = include_str!("../../../../docs/run-warnings.md");
+        let mut seen = std::collections::HashSet::new();
+        for w in one_of_each() {
+            let code = w.code();
+            assert!(seen.insert(code), "{code} twice");
+            assert!(
+                doc.contains(&format!("| {code} |")),
+                "{code} is not in docs/run-warnings.md"
+            );
+        }
+        let listed = doc.lines().filter(|l| l.starts_with("| W")).count();
+        assert_eq!(listed, seen.len(), "docs/run-warnings.md lists other codes");
+    }
+
     #[test]
     fn overlap_levels_print_as_before() {
         // The levels were printed as `{:.0}` of 0.03·100 and 0.15·100.
