@@ -2,10 +2,10 @@
 //! states, events, the outcome, the walls as they stand during a step) and the choice
 //! between them.
 //!
-//! * [`soft`]: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
+//! * `soft`: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
 //!   spring–dashpot of [`crate::contact::ssdem`] against every wall and particle a particle
 //!   overlaps.
-//! * [`hard`]: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
+//! * `hard`: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
 //!   particles in straight lines from one predicted collision to the next (SPEC §3).
 //!
 //! Sticky walls (`epsn 0`) hold a particle at its contact point, which then moves with

@@ -1,14 +1,15 @@
 //! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
 //! variant that feeds the dashpot velocities predicted to the step's end, or explicit
-//! Euler), with the
-//! spring–dashpot of [`crate::contact::ssdem`] against every wall and every particle a particle
-//! overlaps, and rolling and twisting resistance where the material has them.
+//! Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
+//! every particle a particle overlaps, and rolling and twisting resistance where the
+//! material has them.
 //!
 //! pkdgrav's overlap warnings (3 % and 15 % of the radius) are reported once each; an
 //! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
-//! on one particle is a warning. Candidate particle pairs are kept in a Verlet list
-//! ([`PairList`]), rebuilt on a cell grid ([`crate::broad::grid`]) when particles have
-//! moved far enough.
+//! on one particle is a warning, as are a particle too fast for the timestep and a wall
+//! contact that gains energy (the `W1xx` of [`super::Warning`]). Candidate particle
+//! pairs are kept in a Verlet list ([`PairList`]), rebuilt on a cell grid
+//! ([`crate::broad::grid`]) when particles have moved far enough.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
 //! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,

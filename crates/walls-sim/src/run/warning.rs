@@ -7,7 +7,7 @@
 //! * `W1xx`, contacts during a soft-sphere run: overlaps past pkdgrav's levels and the
 //!   50 % stop, crowded wall contacts, a particle too fast for its timestep, a contact
 //!   that gained energy;
-//! * `W2xx`, checks before a soft-sphere run ([`super::stability`]): the timestep
+//! * `W2xx`, checks before a soft-sphere run (the stability checks): the timestep
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
