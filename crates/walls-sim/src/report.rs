@@ -51,7 +51,7 @@ pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &O
         "pair_contacts": out.pair_contacts,
         "energy": {"initial": out.energy.0, "final": out.energy.1},
         "model": model(scene, particles, settings),
-        "warnings": out.warnings,
+        "warnings": out.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
     })
 }
 

@@ -2,7 +2,7 @@
 
 use nalgebra::Vector3;
 use walls_geometry::Particle;
-use walls_sim::run::{EventKind, ParticleMaterial, Settings, default_dt, run};
+use walls_sim::run::{EventKind, ParticleMaterial, Settings, Warning, default_dt, run};
 
 use walls_test_support::{ball as particle, scene};
 
@@ -212,7 +212,15 @@ fn overlaps_beyond_pkdgrav_limits_warn_and_stop() {
     s.dt = default_dt(&ps, 1e3);
     let out = run(&scene("wall type plane\n"), ps, &s);
     assert_eq!(out.warnings.len(), 3, "{:?}", out.warnings);
-    assert!(out.warnings[2].contains("pkdgrav aborts above 50%"));
+    assert!(matches!(out.warnings[0], Warning::OverlapAbove3 { .. }));
+    assert!(matches!(out.warnings[1], Warning::OverlapAbove15 { .. }));
+    assert!(matches!(out.warnings[2], Warning::OverlapStop { .. }));
+    assert!(
+        out.warnings[2]
+            .to_string()
+            .contains("pkdgrav aborts above 50%")
+    );
+    assert_eq!(out.warnings[2].code(), "W103");
     assert!(out.t < 1.0);
 }
 

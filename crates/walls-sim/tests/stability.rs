@@ -3,7 +3,7 @@
 
 use nalgebra::Vector3;
 use walls_sim::contact::ssdem::damping;
-use walls_sim::run::{ContactModel, EventKind, ParticleMaterial, Settings, run};
+use walls_sim::run::{ContactModel, EventKind, ParticleMaterial, Settings, Warning, run};
 
 use walls_test_support::{ball as particle, scene};
 
@@ -28,8 +28,8 @@ fn soft(eps: f64, dt: f64, t_end: f64) -> Settings {
     )
 }
 
-fn says(warnings: &[String], what: &str) -> bool {
-    warnings.iter().any(|w| w.contains(what))
+fn says(warnings: &[Warning], what: &str) -> bool {
+    warnings.iter().any(|w| w.to_string().contains(what))
 }
 
 #[test]

@@ -122,7 +122,10 @@ fn main() -> std::io::Result<()> {
             &settings(ContactModel::Ssdem, k_n, dt, 3.0 * t_c),
             &mut |_, _, states, _| deepest = deepest.max(RADIUS - states[0].particle.pos.z),
         );
-        let stop = out.warnings.iter().any(|w| w.contains("the run stops"));
+        let stop = out
+            .warnings
+            .iter()
+            .any(|w| matches!(w, walls_sim::run::Warning::OverlapStop { .. }));
         println!("{v:6.3} {:14.4} {stop}", deepest / RADIUS);
         peaks.push((v, deepest / RADIUS));
         if stop {

@@ -19,10 +19,13 @@
 //! A particle colliding more than [`COLLISION_CAP`] times in one step is in inelastic
 //! collapse (pkdgrav switches to other coefficients there): it is held where it is for
 //! the rest of the step, and the run says so.
+//!
+//! The run is a [`HardStepper`]: set up once (with the warnings about walls the
+//! hard-sphere code does not handle as given), then one method per stage of a step.
 
 use super::{
     Event, EventKind, Materials, Observer, Origins, Outcome, PARALLEL_FROM, Settings, State,
-    WallNow, carry, energy, turned,
+    WallNow, Warning, carry, energy, turned,
 };
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
@@ -442,70 +445,127 @@ fn pair_collision(d: &mut Drift, i: usize, j: usize) {
     }
 }
 
-pub(super) fn run(
-    scene: &[Wall],
-    mut states: Vec<State>,
-    settings: &Settings,
-    plan: &Plan,
-    observe: Observer,
-) -> Outcome {
-    let g = settings.gravity;
-    let dt = settings.dt;
-    let Materials {
-        walls: materials,
-        between,
-    } = Materials::new(scene, &settings.material);
-    let mut warnings = Vec::new();
-    let mut origins = Origins::new(scene, settings.stepping);
-    let index = plan.wall_index.then(|| WallIndex::new(scene));
-    let usable: Vec<bool> = origins
-        .walls(scene, 0.0)
-        .iter()
-        .map(|w| w.shape.hard_sphere_supported())
-        .collect();
-    for (w, wall) in scene.iter().enumerate() {
-        if !usable[w] {
-            warnings.push(format!(
-                "wall {w} ({}{}) is not supported by pkdgrav's hard-sphere code; particles pass through it",
-                wall.shape.wall_type().name(),
-                if matches!(&wall.shape, Shape::FiniteCylinder(c) if c.taper != 0.0) {
-                    " with taper"
-                } else {
-                    ""
-                }
-            ));
+/// A hard-sphere run as it goes: the particles, where the walls are, and what the run
+/// has seen so far. A step is [`HardStepper::step`]: the opening kick, the walls' chords
+/// over the step, the drift from collision to collision, the closing kick.
+struct HardStepper<'a> {
+    scene: &'a [Wall],
+    settings: &'a Settings,
+    plan: &'a Plan,
+    states: Vec<State>,
+    /// Each wall's material, with the particles' values where it says so.
+    materials: Vec<Material>,
+    /// The particles' material, for their collisions with each other.
+    between: Material,
+    origins: Origins,
+    /// The wall index, when the plan uses one.
+    index: Option<WallIndex>,
+    /// Whether pkdgrav's hard-sphere code supports each wall (particles pass through the
+    /// others).
+    usable: Vec<bool>,
+    /// The energy at the start.
+    initial: f64,
+    events: Vec<Event>,
+    pair_contacts: u64,
+    warnings: Vec<Warning>,
+    /// Whether the collision cap has been reported (once a run).
+    collapse_warned: bool,
+    t: f64,
+    steps: u64,
+}
+
+impl<'a> HardStepper<'a> {
+    /// The run at its start: the materials, the walls' origins and index, and the
+    /// warnings about walls the hard-sphere code does not handle as given.
+    fn new(
+        scene: &'a [Wall],
+        states: Vec<State>,
+        settings: &'a Settings,
+        plan: &'a Plan,
+    ) -> HardStepper<'a> {
+        let Materials {
+            walls: materials,
+            between,
+        } = Materials::new(scene, &settings.material);
+        let mut warnings = Vec::new();
+        let origins = Origins::new(scene, settings.stepping);
+        let index = plan.wall_index.then(|| WallIndex::new(scene));
+        let usable: Vec<bool> = origins
+            .walls(scene, 0.0)
+            .iter()
+            .map(|w| w.shape.hard_sphere_supported())
+            .collect();
+        for (w, wall) in scene.iter().enumerate() {
+            if !usable[w] {
+                warnings.push(Warning::UnsupportedWall {
+                    wall: w,
+                    wall_type: wall.shape.wall_type(),
+                    taper: matches!(&wall.shape, Shape::FiniteCylinder(c) if c.taper != 0.0),
+                });
+            }
+        }
+        let literal: Vec<usize> = scene
+            .iter()
+            .enumerate()
+            .filter(|(_, w)| w.material.restitution_falls_back())
+            .map(|(i, _)| i)
+            .collect();
+        if !literal.is_empty() {
+            warnings.push(Warning::RestitutionAt99 { walls: literal });
+        }
+        let initial = energy(&states, &settings.gravity);
+        HardStepper {
+            scene,
+            settings,
+            plan,
+            states,
+            materials,
+            between,
+            origins,
+            index,
+            usable,
+            initial,
+            events: Vec::new(),
+            pair_contacts: 0,
+            warnings,
+            collapse_warned: false,
+            t: 0.0,
+            steps: 0,
         }
     }
-    let literal: Vec<String> = scene
-        .iter()
-        .enumerate()
-        .filter(|(_, w)| w.material.restitution_falls_back())
-        .map(|(i, _)| i.to_string())
-        .collect();
-    if !literal.is_empty() {
-        warnings.push(format!(
-            "epsn or epst left at 99 on walls {}: pkdgrav's hard-sphere code would use 99 as the coefficient; this run uses the particles' values",
-            literal.join(", ")
-        ));
+
+    /// Whether another step is due before the end.
+    fn running(&self) -> bool {
+        self.t < self.settings.t_end - self.settings.dt * 1e-9
     }
-    let initial = energy(&states, &g);
-    let mut events = Vec::new();
-    let mut pair_contacts = 0;
-    let mut collapse_warned = false;
-    let mut t = 0.0;
-    let mut steps = 0u64;
-    let n = states.len();
-    while t < settings.t_end - dt * 1e-9 {
-        for s in states.iter_mut().filter(|s| s.free()) {
+
+    /// One step: kick, drift from collision to collision, kick.
+    fn step(&mut self) {
+        self.opening_kick();
+        let walls = self.walls_over_step();
+        self.drift(&walls);
+        self.closing_kick();
+    }
+
+    /// Half a kick of gravity for the free particles.
+    fn opening_kick(&mut self) {
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        for s in self.states.iter_mut().filter(|s| s.free()) {
             s.particle.vel += g * (dt / 2.0);
         }
-        let start = origins.walls(scene, t);
-        if plan.moving_walls {
-            origins.advance(scene, t, dt);
+    }
+
+    /// The walls over the step: as they stand at its start, each with the chord to where
+    /// it is at its end (the origins are moved on to there).
+    fn walls_over_step(&mut self) -> Vec<WallStep> {
+        let dt = self.settings.dt;
+        let start = self.origins.walls(self.scene, self.t);
+        if self.plan.moving_walls {
+            self.origins.advance(self.scene, self.t, dt);
         }
-        let walls: Vec<WallStep> = start
+        start
             .into_iter()
-            .zip(&origins.now)
+            .zip(&self.origins.now)
             .map(|(start, end)| {
                 let chord = (end - start.origin) / dt;
                 WallStep {
@@ -517,18 +577,24 @@ pub(super) fn run(
                     },
                 }
             })
-            .collect();
-        let candidates = Candidates::new(&states, dt, plan.particle_contacts && n > 1);
+            .collect()
+    }
+
+    /// Moves the particles over the step from collision to collision against `walls`,
+    /// noting the events, the pair collisions and the first collision cap.
+    fn drift(&mut self, walls: &[WallStep]) {
+        let (dt, n) = (self.settings.dt, self.states.len());
+        let candidates = Candidates::new(&self.states, dt, self.plan.particle_contacts && n > 1);
         let start_origins: Vec<Vec3> = walls.iter().map(|w| w.start.origin).collect();
         let mut d = Drift {
-            states: &mut states,
-            walls: &walls,
-            index: index.as_ref(),
+            states: &mut self.states,
+            walls,
+            index: self.index.as_ref(),
             start_origins: &start_origins,
-            usable: &usable,
-            materials: &materials,
-            between,
-            edges: plan.edges,
+            usable: &self.usable,
+            materials: &self.materials,
+            between: self.between,
+            edges: self.plan.edges,
             dt,
             clock: vec![0.0; n],
             version: vec![0; n],
@@ -536,41 +602,70 @@ pub(super) fn run(
             candidates,
             queue: BinaryHeap::new(),
         };
-        let report = drift(&mut d, t);
-        pair_contacts += report.pair_collisions;
-        events.extend(report.events);
+        let report = drift(&mut d, self.t);
+        self.pair_contacts += report.pair_collisions;
+        self.events.extend(report.events);
         if let Some(&i) = report.collapsed.first()
-            && !collapse_warned
+            && !self.collapse_warned
         {
-            collapse_warned = true;
-            warnings.push(format!(
-                "particle {i} had {COLLISION_CAP} collisions within one step (t = {t}): inelastic collapse, or jammed between walls; it was held where it was for the rest of that step"
-            ));
+            self.collapse_warned = true;
+            self.warnings.push(Warning::CollisionCap {
+                particle: i,
+                t: self.t,
+            });
         }
-        t += dt;
-        steps += 1;
-        for s in states.iter_mut() {
+    }
+
+    /// The end of the step: the clock moves on, the free particles get the second half
+    /// kick of gravity, and those held by sticky walls move with them.
+    fn closing_kick(&mut self) {
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        self.t += dt;
+        self.steps += 1;
+        for s in self.states.iter_mut() {
             if s.free() {
                 s.particle.vel += g * (dt / 2.0);
             } else if s.alive
                 && let Some((w, _)) = s.stuck_to
             {
-                carry(s, &WallNow::new(&scene[w], origins.now[w], t), dt);
+                carry(
+                    s,
+                    &WallNow::new(&self.scene[w], self.origins.now[w], self.t),
+                    dt,
+                );
             }
         }
-        observe(steps, t, &states, &[]);
     }
-    let last = energy(&states, &g);
-    Outcome {
-        t,
-        steps,
-        particles: states,
-        events,
-        assemblies: Vec::new(),
-        pair_contacts,
-        energy: (initial, last),
-        warnings,
+
+    /// What the run came to.
+    fn outcome(self) -> Outcome {
+        let last = energy(&self.states, &self.settings.gravity);
+        Outcome {
+            t: self.t,
+            steps: self.steps,
+            particles: self.states,
+            events: self.events,
+            assemblies: Vec::new(),
+            pair_contacts: self.pair_contacts,
+            energy: (self.initial, last),
+            warnings: self.warnings,
+        }
     }
+}
+
+pub(super) fn run(
+    scene: &[Wall],
+    states: Vec<State>,
+    settings: &Settings,
+    plan: &Plan,
+    observe: Observer,
+) -> Outcome {
+    let mut run = HardStepper::new(scene, states, settings, plan);
+    while run.running() {
+        run.step();
+        observe(run.steps, run.t, &run.states, &[]);
+    }
+    run.outcome()
 }
 
 /// The particles each particle could meet within a step: those whose spheres, swollen

@@ -2,23 +2,28 @@
 //! states, events, the outcome, the walls as they stand during a step) and the choice
 //! between them.
 //!
-//! * [`soft`]: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
+//! * `soft`: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
 //!   spring–dashpot of [`crate::contact::ssdem`] against every wall and particle a particle
 //!   overlaps.
-//! * [`hard`]: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
+//! * `hard`: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
 //!   particles in straight lines from one predicted collision to the next (SPEC §3).
 //!
 //! Sticky walls (`epsn 0`) hold a particle at its contact point, which then moves with
 //! the wall; death walls (`epsn` < 0) remove it. Each wall contact that ends is an event
 //! with the normal speeds in and out.
+//!
+//! What a run warns about (the stability checks before it starts, the steppers during
+//! it) is a coded [`Warning`] ([`warning`]; docs/run-warnings.md lists the codes).
 
 pub mod defaults;
 mod hard;
 pub mod plan;
 mod soft;
 mod stability;
+pub mod warning;
 
 pub use hard::COLLISION_CAP;
+pub use warning::{Overlapping, Stiffest, Warning};
 
 use crate::contact::ssdem::Material;
 use crate::run::plan::Plan;
@@ -199,8 +204,8 @@ pub struct Outcome {
     pub pair_contacts: u64,
     /// Kinetic (with spin) plus gravitational energy at the start and the end.
     pub energy: (f64, f64),
-    /// Warnings, as pkdgrav would print them.
-    pub warnings: Vec<String>,
+    /// Warnings, in the order they arose; each prints as pkdgrav users read it.
+    pub warnings: Vec<Warning>,
 }
 
 /// What watches a run: called after every step with the step number, the time, the
@@ -363,32 +368,27 @@ struct OverlapWarnings {
 }
 
 impl OverlapWarnings {
-    /// Notes an overlap of `fraction` of the radius; true when it is above 50 %, where
-    /// pkdgrav aborts.
+    /// Notes an overlap of `fraction` of the radius between `what` at time `t`; true
+    /// when it is above 50 %, where pkdgrav aborts.
     fn check(
         &mut self,
         fraction: f64,
-        what: &dyn Fn() -> String,
+        what: Overlapping,
         t: f64,
-        warnings: &mut Vec<String>,
+        warnings: &mut Vec<Warning>,
     ) -> bool {
         for (k, level) in [0.03, 0.15].iter().enumerate() {
             if fraction > *level && !self.warned[k] {
                 self.warned[k] = true;
-                warnings.push(format!(
-                    "overlap of {:.1}% of the radius ({}, t = {t}): more than {:.0}%",
-                    fraction * 100.0,
-                    what(),
-                    level * 100.0
-                ));
+                warnings.push(if k == 0 {
+                    Warning::OverlapAbove3 { fraction, what, t }
+                } else {
+                    Warning::OverlapAbove15 { fraction, what, t }
+                });
             }
         }
         if fraction > 0.5 {
-            warnings.push(format!(
-                "overlap of {:.1}% of the radius ({}, t = {t}): pkdgrav aborts above 50%; the run stops",
-                fraction * 100.0,
-                what()
-            ));
+            warnings.push(Warning::OverlapStop { fraction, what, t });
         }
         fraction > 0.5
     }

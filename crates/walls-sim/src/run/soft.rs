@@ -1,17 +1,24 @@
 //! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
 //! variant that feeds the dashpot velocities predicted to the step's end, or explicit
-//! Euler), with the
-//! spring–dashpot of [`crate::contact::ssdem`] against every wall and every particle a particle
-//! overlaps, and rolling and twisting resistance where the material has them.
+//! Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
+//! every particle a particle overlaps, and rolling and twisting resistance where the
+//! material has them.
 //!
 //! pkdgrav's overlap warnings (3 % and 15 % of the radius) are reported once each; an
 //! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
-//! on one particle is a warning. Particle pairs are found with a cell grid
-//! ([`crate::broad::grid`]) rebuilt every step.
+//! on one particle is a warning, as are a particle too fast for the timestep and a wall
+//! contact that gains energy (the `W1xx` of [`super::Warning`]). Candidate particle
+//! pairs are kept in a Verlet list ([`PairList`]), rebuilt on a cell grid
+//! ([`crate::broad::grid`]) when particles have moved far enough.
+//!
+//! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
+//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,
+//! `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing kick),
+//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
-    PARALLEL_FROM, Settings, State, WallNow, carry, energy,
+    Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy,
 };
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
@@ -19,6 +26,7 @@ use crate::contact::ssdem::{
     Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
     resistance,
 };
+use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
@@ -71,7 +79,8 @@ fn inertia(m: f64, r: f64) -> f64 {
     0.4 * m * r * r
 }
 
-/// The walls as they stand in a step, with their materials.
+/// The walls as they stand in a step, with their materials, and the step: what every
+/// particle's wall contacts share.
 struct Walls<'a> {
     now: &'a [WallNow],
     /// Each wall's reactive assembly, if any.
@@ -91,6 +100,10 @@ struct Walls<'a> {
     /// The fraction of a step by which contact velocities are predicted ahead with the
     /// last acceleration (pkdgrav's dashpot velocity: ½).
     predict: f64,
+    /// The time at the step's end, the timestep, and the step's number.
+    t: f64,
+    dt: f64,
+    step: u64,
 }
 
 /// What acts on one particle in a step: the force and torque summed so far, and its
@@ -118,17 +131,10 @@ struct ParticleStep {
     reactions: Vec<(usize, Vec3, Vec3)>,
 }
 
-/// One particle's contacts with the walls at time `t`, added to its `load` (which holds
-/// gravity and the particle contacts already), then the closing kick.
-fn wall_step(
-    i: usize,
-    s: &mut State,
-    load: &mut Load,
-    walls: &Walls,
-    t: f64,
-    dt: f64,
-    step: u64,
-) -> ParticleStep {
+/// One particle's contacts with the walls at the step's time, added to its `load` (which
+/// holds gravity and the particle contacts already), then the closing kick.
+fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
+    let (t, dt, step) = (walls.t, walls.dt, walls.step);
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
@@ -268,109 +274,250 @@ fn wall_step(
     out
 }
 
-pub(super) fn run(
-    scene: &[Wall],
-    mut states: Vec<State>,
-    settings: &Settings,
-    plan: &Plan,
-    observe: Observer,
-) -> Outcome {
-    let g = settings.gravity;
-    let dt = settings.dt;
-    let Materials {
-        walls: materials,
-        between,
-    } = Materials::new(scene, &settings.material);
-    let initial = energy(&states, &g)
-        + if plan.reactive {
-            assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
-        } else {
-            0.0
+/// The fractions of a step each kick of the integrator covers, and how far ahead the
+/// dashpot's velocities are predicted.
+#[derive(Clone, Copy)]
+struct Kicks {
+    /// The kick before the drift.
+    opening: f64,
+    /// The kick after the drift, with the last acceleration.
+    late: f64,
+    /// The kick after the forces.
+    closing: f64,
+    /// The contact-velocity prediction with the last acceleration.
+    predict: f64,
+}
+
+impl Kicks {
+    fn of(integrator: Integrator) -> Kicks {
+        let (opening, late, closing, predict) = match integrator {
+            Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0),
+            Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5),
+            Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0),
         };
-    let n = states.len();
-    let mut loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
-    let mut pairs_open = OpenContacts::new(n);
-    let mut candidates = PairList::new(&states);
-    let mut pair_contacts = 0;
-    let mut reports: Vec<ParticleStep> = Vec::with_capacity(n);
-    let mut events = Vec::new();
-    let mut warnings = Vec::new();
-    let mut overlaps = OverlapWarnings::default();
-    let mut warned_crowd = false;
-    let (mut warned_fast, mut warned_gain) = (false, false);
-    let oscillating: Vec<bool> = scene
-        .iter()
-        .map(|w| w.motion.oscillation.amplitude != 0.0)
-        .collect();
-    warnings.extend(super::stability::soft_warnings(scene, &states, settings));
-    let mut t = 0.0;
-    let mut steps = 0u64;
-    let parallel = n >= PARALLEL_FROM;
-    // (first kick before the drift, kick after it with the last acceleration, closing
-    // kick, contact-velocity prediction) as fractions of a step.
-    let (opening_kick, late_kick, closing_kick, predict) = match settings.integrator {
-        Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0),
-        Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5),
-        Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0),
-    };
-    let mut origins = Origins::new(scene, settings.stepping);
-    // Placed once when no wall moves (the plan), else every step.
-    let mut now = origins.walls(scene, 0.0);
-    // Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
-    let mut assemblies = if plan.reactive {
-        crate::dynamics::reactive::assemblies(scene)
-    } else {
-        Vec::new()
-    };
-    let stuck = crate::dynamics::reactive::immovable(&assemblies);
-    if !stuck.is_empty() {
-        warnings.push(format!(
-            "assemblies {stuck:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
-        ));
-        assemblies.retain(|a| !stuck.contains(&a.number));
-    }
-    let mut assembly_of = vec![None; scene.len()];
-    for (a, assembly) in assemblies.iter().enumerate() {
-        for &w in &assembly.walls {
-            assembly_of[w] = Some(a);
+        Kicks {
+            opening,
+            late,
+            closing,
+            predict,
         }
     }
-    let index = plan.wall_index.then(|| WallIndex::new(scene));
-    let damping: Vec<f64> = materials
-        .iter()
-        .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
-        .collect();
-    'run: while t < settings.t_end - dt * 1e-9 {
-        // Kick (leapfrog's first half; none in symplectic Euler) and drift.
+}
+
+/// The warnings pkdgrav gives once a run, and whether each has been given.
+#[derive(Default)]
+struct WarnedOnce {
+    crowd: bool,
+    fast: bool,
+    gain: bool,
+}
+
+/// Whether a run goes on after a step.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Flow {
+    Continue,
+    /// An overlap past pkdgrav's abort.
+    Stop,
+}
+
+/// A soft-sphere run as it goes: the particles and what acts on them, the walls and
+/// assemblies as they stand, the open contacts, and what the run has seen so far. A step
+/// is [`SoftStepper::step`].
+struct SoftStepper<'a> {
+    scene: &'a [Wall],
+    settings: &'a Settings,
+    plan: &'a Plan,
+    states: Vec<State>,
+    kicks: Kicks,
+    /// Each wall's material, with the particles' values where it says so.
+    materials: Vec<Material>,
+    /// Each wall's normal damping over √m, worked out once.
+    damping: Vec<f64>,
+    /// The particles' material, for their contacts with each other.
+    between: Material,
+    /// Whether each wall oscillates (a bounce off it may gain speed).
+    oscillating: Vec<bool>,
+    /// The wall index, when the plan uses one.
+    index: Option<WallIndex>,
+    origins: Origins,
+    /// The walls as they stand: placed once when no wall moves (the plan), else every
+    /// step; reactive assemblies' walls every step.
+    now: Vec<WallNow>,
+    /// Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
+    assemblies: Vec<Assembly>,
+    /// Each wall's assembly, if any.
+    assembly_of: Vec<Option<usize>>,
+    /// Each assembly's centre of gravity this step (kept to save allocating).
+    cogs: Vec<Vec3>,
+    loads: Vec<Load>,
+    pairs_open: OpenContacts,
+    candidates: PairList,
+    /// What each particle's wall contacts did this step (kept to save allocating).
+    reports: Vec<ParticleStep>,
+    /// Whether a step runs on rayon's threads.
+    parallel: bool,
+    /// The energy at the start.
+    initial: f64,
+    events: Vec<Event>,
+    pair_contacts: u64,
+    warnings: Vec<Warning>,
+    overlaps: OverlapWarnings,
+    once: WarnedOnce,
+    t: f64,
+    steps: u64,
+}
+
+impl<'a> SoftStepper<'a> {
+    /// The run at its start: the materials, the checks before it ([`super::stability`]),
+    /// the walls, the assemblies that can move, the candidate pairs.
+    fn new(
+        scene: &'a [Wall],
+        states: Vec<State>,
+        settings: &'a Settings,
+        plan: &'a Plan,
+    ) -> SoftStepper<'a> {
+        let g = settings.gravity;
+        let Materials {
+            walls: materials,
+            between,
+        } = Materials::new(scene, &settings.material);
+        let initial = energy(&states, &g)
+            + if plan.reactive {
+                assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
+            } else {
+                0.0
+            };
+        let n = states.len();
+        let loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
+        let pairs_open = OpenContacts::new(n);
+        let candidates = PairList::new(&states);
+        let mut warnings = Vec::new();
+        let oscillating: Vec<bool> = scene
+            .iter()
+            .map(|w| w.motion.oscillation.amplitude != 0.0)
+            .collect();
+        warnings.extend(super::stability::soft_warnings(scene, &states, settings));
+        let origins = Origins::new(scene, settings.stepping);
+        let now = origins.walls(scene, 0.0);
+        let mut assemblies = if plan.reactive {
+            crate::dynamics::reactive::assemblies(scene)
+        } else {
+            Vec::new()
+        };
+        let stuck = crate::dynamics::reactive::immovable(&assemblies);
+        if !stuck.is_empty() {
+            assemblies.retain(|a| !stuck.contains(&a.number));
+            warnings.push(Warning::ImmovableAssemblies { assemblies: stuck });
+        }
+        let mut assembly_of = vec![None; scene.len()];
+        for (a, assembly) in assemblies.iter().enumerate() {
+            for &w in &assembly.walls {
+                assembly_of[w] = Some(a);
+            }
+        }
+        let index = plan.wall_index.then(|| WallIndex::new(scene));
+        let damping: Vec<f64> = materials
+            .iter()
+            .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
+            .collect();
+        SoftStepper {
+            scene,
+            settings,
+            plan,
+            states,
+            kicks: Kicks::of(settings.integrator),
+            materials,
+            damping,
+            between,
+            oscillating,
+            index,
+            origins,
+            now,
+            cogs: Vec::with_capacity(assemblies.len()),
+            assemblies,
+            assembly_of,
+            loads,
+            pairs_open,
+            candidates,
+            reports: Vec::with_capacity(n),
+            parallel: n >= PARALLEL_FROM,
+            initial,
+            events: Vec::new(),
+            pair_contacts: 0,
+            warnings,
+            overlaps: OverlapWarnings::default(),
+            once: WarnedOnce::default(),
+            t: 0.0,
+            steps: 0,
+        }
+    }
+
+    /// Whether another step is due before the end.
+    fn running(&self) -> bool {
+        self.t < self.settings.t_end - self.settings.dt * 1e-9
+    }
+
+    /// One step: kick and drift, the walls and assemblies moved on, the forces of the
+    /// particle contacts and then of the wall contacts (with the closing kick), what
+    /// they did, and the assemblies' closing kick.
+    fn step(&mut self) -> Flow {
+        self.kick_drift();
+        self.move_walls();
+        self.move_assemblies();
+        self.gravity_loads();
+        if self.plan.particle_contacts
+            && self.states.len() > 1
+            && self.pair_contacts() == Flow::Stop
+        {
+            return Flow::Stop;
+        }
+        self.wall_contacts();
+        let flow = self.note_wall_contacts();
+        self.kick_assemblies();
+        flow
+    }
+
+    /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
+    /// drift, and the kick after it (explicit Euler's), for the free particles.
+    fn kick_drift(&mut self) {
+        let dt = self.settings.dt;
+        let Kicks { opening, late, .. } = self.kicks;
         let kick_drift = |s: &mut State| {
             if s.free() {
-                s.particle.vel += s.acc * (dt * opening_kick);
-                s.particle.spin += s.alpha * (dt * opening_kick);
+                s.particle.vel += s.acc * (dt * opening);
+                s.particle.spin += s.alpha * (dt * opening);
                 let v = s.particle.vel;
                 s.particle.pos += v * dt;
-                s.particle.vel += s.acc * (dt * late_kick);
-                s.particle.spin += s.alpha * (dt * late_kick);
+                s.particle.vel += s.acc * (dt * late);
+                s.particle.spin += s.alpha * (dt * late);
             }
         };
-        if parallel {
-            states.par_iter_mut().for_each(kick_drift);
+        if self.parallel {
+            self.states.par_iter_mut().for_each(kick_drift);
         } else {
-            states.iter_mut().for_each(kick_drift);
+            self.states.iter_mut().for_each(kick_drift);
         }
-        if plan.moving_walls {
-            origins.advance(scene, t, dt);
+    }
+
+    /// The clock moves on a step, and the moving walls with it.
+    fn move_walls(&mut self) {
+        let dt = self.settings.dt;
+        if self.plan.moving_walls {
+            self.origins.advance(self.scene, self.t, dt);
         }
-        t += dt;
-        steps += 1;
-        if plan.moving_walls {
-            now = origins.walls(scene, t);
+        self.t += dt;
+        self.steps += 1;
+        if self.plan.moving_walls {
+            self.now = self.origins.walls(self.scene, self.t);
         }
-        for a in assemblies.iter_mut() {
-            // Half a kick with the last step's force, a drift, and the rotation over the
-            // step under the last step's torque.
-            // Half kicks of momentum and angular momentum with the last step's force and
-            // torque, a drift, and the free rotation over the step (kick-drift-kick for
-            // the assembly as for the particles).
+    }
+
+    /// Each assembly's half kick of momentum and angular momentum with the last step's
+    /// force and torque, its drift, and its free rotation over the step (kick-drift-kick
+    /// as for the particles); its walls are placed where it has taken them.
+    fn move_assemblies(&mut self) {
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        for a in self.assemblies.iter_mut() {
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
             a.cog += a.velocity * dt;
             a.kick(dt / 2.0);
@@ -383,141 +530,277 @@ pub(super) fn run(
                 RotationIntegrator::AdaptiveRk,
             );
             for (k, &w) in a.walls.iter().enumerate() {
-                now[w] = WallNow {
+                self.now[w] = WallNow {
                     origin: a.cog,
-                    shape: a.shape(&scene[w].shape, k),
+                    shape: a.shape(&self.scene[w].shape, k),
                     velocity: a.velocity,
                     spin: a.spin(),
                 };
             }
         }
-        let cogs: Vec<Vec3> = assemblies.iter().map(|a| a.cog).collect();
-        let walls = Walls {
-            now: &now,
-            assembly_of: &assembly_of,
-            cogs: &cogs,
-            origins: &origins.now,
-            index: index.as_ref(),
-            plan,
-            damping: &damping,
-            materials: &materials,
-            closing_kick,
-            predict,
-        };
-        for (s, load) in states.iter().zip(&mut loads) {
+        self.cogs.clear();
+        self.cogs.extend(self.assemblies.iter().map(|a| a.cog));
+    }
+
+    /// Each particle's load starts the step with gravity alone.
+    fn gravity_loads(&mut self) {
+        let g = self.settings.gravity;
+        for (s, load) in self.states.iter().zip(&mut self.loads) {
             load.force = g * s.particle.mass;
             load.torque = Vec3::zeros();
         }
-        if plan.particle_contacts && n > 1 {
-            candidates.update(&states);
-            let stop = pair_forces(
-                &states,
-                &between,
-                dt,
-                steps,
-                plan,
-                &candidates,
-                &mut pairs_open,
-                &mut loads,
-                &mut pair_contacts,
-                &mut |fraction, what| overlaps.check(fraction, what, t, &mut warnings),
-            );
-            pairs_open.sweep(steps);
-            if stop {
-                break 'run;
+    }
+
+    /// Adds the forces and torques of every overlapping pair of particles (free ones,
+    /// or a free one and one held by a wall) to their loads, and closes the contacts
+    /// not seen; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
+    fn pair_contacts(&mut self) -> Flow {
+        self.candidates.update(&self.states);
+        let flow = self.pair_forces();
+        self.pairs_open.sweep(self.steps);
+        flow
+    }
+
+    /// The forces of the candidate pairs that overlap, in the list's order.
+    fn pair_forces(&mut self) -> Flow {
+        let (dt, step, t, plan) = (self.settings.dt, self.steps, self.t, self.plan);
+        let mat = &self.between;
+        let states = &self.states;
+        let loads = &mut self.loads;
+        for &(i, j) in &self.candidates.pairs {
+            let (i, j) = (i as usize, j as usize);
+            // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
+            // rule); two stuck ones, or a removed one, meet nothing.
+            let (free_i, free_j) = (states[i].free(), states[j].free());
+            if !states[i].alive || !states[j].alive || !(free_i || free_j) {
+                continue;
+            }
+            let (p, q) = (&states[i].particle, &states[j].particle);
+            let d = p.pos - q.pos;
+            let distance = d.norm();
+            let overlap = p.radius + q.radius - distance;
+            if overlap <= 0.0 {
+                continue;
+            }
+            if self.overlaps.check(
+                overlap / p.radius.min(q.radius),
+                Overlapping::Particles(i, j),
+                t,
+                &mut self.warnings,
+            ) {
+                return Flow::Stop;
+            }
+            let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
+            let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
+            let reduced = match (free_i, free_j) {
+                (true, true) => p.mass * q.mass / (p.mass + q.mass),
+                (true, false) => p.mass,
+                _ => q.mass,
+            };
+            let began = &mut self.pair_contacts;
+            let entry = self.pairs_open.entry(i, j, || {
+                *began += 1;
+                Open {
+                    spring: Vec3::zeros(),
+                    vn_in: -n.dot(&u),
+                    seen: step,
+                }
+            });
+            entry.seen = step;
+            let touch = Touch {
+                overlap,
+                normal: n,
+                velocity: u,
+            };
+            let c = if plan.sliding_friction {
+                contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat)
+            } else {
+                let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
+                normal_contact(&touch, mat.k_n, c_n)
+            };
+            // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂
+            // from j.
+            let mut torque = (c.torque, c.torque * (q.radius / p.radius));
+            if plan.rolling || plan.twisting {
+                let lever = p.radius * q.radius / (p.radius + q.radius);
+                // Equal and opposite torques change the relative spin through the
+                // reduced inertia (or the free one's, against a stuck particle).
+                let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
+                let rolling = Rolling {
+                    spin: p.spin - q.spin,
+                    normal: n,
+                    normal_force: n.dot(&c.force).abs(),
+                    lever,
+                    contact_radius: lens_radius(p.radius, q.radius, distance),
+                    inertia: match (free_i, free_j) {
+                        (true, true) => ii * ij / (ii + ij),
+                        (true, false) => ii,
+                        _ => ij,
+                    },
+                };
+                let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+                torque.0 += m;
+                torque.1 -= m;
+            }
+            if free_i {
+                loads[i].force += c.force;
+                loads[i].torque += torque.0;
+            }
+            if free_j {
+                loads[j].force -= c.force;
+                loads[j].torque += torque.1;
             }
         }
-        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
-            wall_step(i, s, load, &walls, t, dt, steps)
+        Flow::Continue
+    }
+
+    /// Each particle's contacts with the walls, added to its load, then the closing
+    /// kick (in parallel for many particles); what each did is in `reports`.
+    fn wall_contacts(&mut self) {
+        let walls = Walls {
+            now: &self.now,
+            assembly_of: &self.assembly_of,
+            cogs: &self.cogs,
+            origins: &self.origins.now,
+            index: self.index.as_ref(),
+            plan: self.plan,
+            damping: &self.damping,
+            materials: &self.materials,
+            closing_kick: self.kicks.closing,
+            predict: self.kicks.predict,
+            t: self.t,
+            dt: self.settings.dt,
+            step: self.steps,
         };
-        if parallel {
-            states
+        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| wall_step(i, s, load, &walls);
+        if self.parallel {
+            self.states
                 .par_iter_mut()
-                .zip(loads.par_iter_mut())
+                .zip(self.loads.par_iter_mut())
                 .enumerate()
                 .map(each)
-                .collect_into_vec(&mut reports);
+                .collect_into_vec(&mut self.reports);
         } else {
-            reports.clear();
-            reports.extend(
-                states
+            self.reports.clear();
+            self.reports.extend(
+                self.states
                     .iter_mut()
-                    .zip(loads.iter_mut())
+                    .zip(self.loads.iter_mut())
                     .enumerate()
                     .map(each),
             );
         }
-        // In particle order, so that the outcome does not depend on the threads.
+    }
+
+    /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
+    /// many walls at once), in particle order so that the outcome does not depend on the
+    /// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
+    fn note_wall_contacts(&mut self) -> Flow {
+        let t = self.t;
         let mut stop = false;
-        for (i, report) in reports.iter_mut().enumerate() {
+        for (i, report) in self.reports.iter_mut().enumerate() {
             if let Some((fraction, w)) = report.deepest {
-                stop |= overlaps.check(
+                stop |= self.overlaps.check(
                     fraction,
-                    &|| format!("particle {i}, wall {w}"),
+                    Overlapping::Wall {
+                        particle: i,
+                        wall: w,
+                    },
                     t,
-                    &mut warnings,
+                    &mut self.warnings,
                 );
             }
             if let Some(travel) = report.too_fast
-                && !warned_fast
+                && !self.once.fast
             {
-                warned_fast = true;
-                warnings.push(format!(
-                    "particle {i} moves {travel:.1} radii in a step (t = {t}): it can pass through a thin wall without touching it; take a smaller timestep"
-                ));
+                self.once.fast = true;
+                self.warnings.push(Warning::TooFast {
+                    particle: i,
+                    radii: travel,
+                    t,
+                });
             }
             for e in &report.events {
                 if e.kind == EventKind::Bounce
                     && e.vn_out > e.vn_in * (1.0 + 1e-9)
-                    && !oscillating[e.wall]
-                    && !warned_gain
+                    && !self.oscillating[e.wall]
+                    && !self.once.gain
                 {
-                    warned_gain = true;
-                    warnings.push(format!(
-                        "particle {i} left wall {} faster than it came ({} → {}, t = {t}): the contact gained energy; the timestep is too large for the springs",
-                        e.wall, e.vn_in, e.vn_out
-                    ));
+                    self.once.gain = true;
+                    self.warnings.push(Warning::EnergyGain {
+                        particle: i,
+                        wall: e.wall,
+                        vn_in: e.vn_in,
+                        vn_out: e.vn_out,
+                        t,
+                    });
                 }
             }
-            events.append(&mut report.events);
-            if report.touching > 3 && !warned_crowd {
-                warned_crowd = true;
-                warnings.push(format!(
-                    "particle {i} touches {} walls at once (t = {t}); pkdgrav handles at most 3",
-                    report.touching
-                ));
+            self.events.append(&mut report.events);
+            if report.touching > 3 && !self.once.crowd {
+                self.once.crowd = true;
+                self.warnings.push(Warning::Crowded {
+                    particle: i,
+                    walls: report.touching,
+                    t,
+                });
             }
         }
-        for a in assemblies.iter_mut() {
+        if stop { Flow::Stop } else { Flow::Continue }
+    }
+
+    /// The particles' reactions on the assemblies, summed in particle order, and the
+    /// assemblies' closing half kick.
+    fn kick_assemblies(&mut self) {
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        for a in self.assemblies.iter_mut() {
             a.force = Vec3::zeros();
             a.torque = Vec3::zeros();
         }
-        for report in &reports {
+        for report in &self.reports {
             for (a, f, tq) in &report.reactions {
-                assemblies[*a].force += f;
-                assemblies[*a].torque += tq;
+                self.assemblies[*a].force += f;
+                self.assemblies[*a].torque += tq;
             }
         }
-        for a in assemblies.iter_mut() {
+        for a in self.assemblies.iter_mut() {
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
             a.kick(dt / 2.0);
         }
-        if stop {
-            break 'run;
+    }
+
+    /// What the run came to.
+    fn outcome(self) -> Outcome {
+        let g = self.settings.gravity;
+        let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
+        Outcome {
+            t: self.t,
+            steps: self.steps,
+            particles: self.states,
+            events: self.events,
+            assemblies: self.assemblies,
+            pair_contacts: self.pair_contacts,
+            energy: (self.initial, last),
+            warnings: self.warnings,
         }
-        observe(steps, t, &states, &assemblies);
     }
-    let last = energy(&states, &g) + assembly_energy(&assemblies, &g);
-    Outcome {
-        t,
-        steps,
-        particles: states,
-        events,
-        assemblies,
-        pair_contacts,
-        energy: (initial, last),
-        warnings,
+}
+
+pub(super) fn run(
+    scene: &[Wall],
+    states: Vec<State>,
+    settings: &Settings,
+    plan: &Plan,
+    observe: Observer,
+) -> Outcome {
+    let mut run = SoftStepper::new(scene, states, settings, plan);
+    while run.running() {
+        if run.step() == Flow::Stop {
+            break;
+        }
+        observe(run.steps, run.t, &run.states, &run.assemblies);
     }
+    run.outcome()
 }
 
 /// The candidate particle pairs, kept from step to step (a Verlet list): the pairs whose
@@ -573,105 +856,6 @@ impl PairList {
     }
 }
 
-/// Adds the forces and torques of every overlapping pair of free particles; true when an
-/// overlap is past pkdgrav's abort.
-#[allow(clippy::too_many_arguments)]
-fn pair_forces(
-    states: &[State],
-    mat: &Material,
-    dt: f64,
-    step: u64,
-    plan: &Plan,
-    candidates: &PairList,
-    open: &mut OpenContacts,
-    loads: &mut [Load],
-    began: &mut u64,
-    overlap_too_big: &mut dyn FnMut(f64, &dyn Fn() -> String) -> bool,
-) -> bool {
-    let mut stop = false;
-    for &(i, j) in &candidates.pairs {
-        let (i, j) = (i as usize, j as usize);
-        // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's rule);
-        // two stuck ones, or a removed one, meet nothing.
-        let (free_i, free_j) = (states[i].free(), states[j].free());
-        if !states[i].alive || !states[j].alive || !(free_i || free_j) {
-            continue;
-        }
-        let (p, q) = (&states[i].particle, &states[j].particle);
-        let d = p.pos - q.pos;
-        let distance = d.norm();
-        let overlap = p.radius + q.radius - distance;
-        if overlap <= 0.0 {
-            continue;
-        }
-        if overlap_too_big(overlap / p.radius.min(q.radius), &|| {
-            format!("particles {i} and {j}")
-        }) {
-            stop = true;
-            break;
-        }
-        let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
-        let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
-        let reduced = match (free_i, free_j) {
-            (true, true) => p.mass * q.mass / (p.mass + q.mass),
-            (true, false) => p.mass,
-            _ => q.mass,
-        };
-        let entry = open.entry(i, j, || {
-            *began += 1;
-            Open {
-                spring: Vec3::zeros(),
-                vn_in: -n.dot(&u),
-                seen: step,
-            }
-        });
-        entry.seen = step;
-        let touch = Touch {
-            overlap,
-            normal: n,
-            velocity: u,
-        };
-        let c = if plan.sliding_friction {
-            contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat)
-        } else {
-            let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
-            normal_contact(&touch, mat.k_n, c_n)
-        };
-        // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂ from j.
-        let mut torque = (c.torque, c.torque * (q.radius / p.radius));
-        if plan.rolling || plan.twisting {
-            let lever = p.radius * q.radius / (p.radius + q.radius);
-            // Equal and opposite torques change the relative spin through the reduced
-            // inertia (or the free one's, against a stuck particle).
-            let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
-            let rolling = Rolling {
-                spin: p.spin - q.spin,
-                normal: n,
-                normal_force: n.dot(&c.force).abs(),
-                lever,
-                contact_radius: lens_radius(p.radius, q.radius, distance),
-                inertia: match (free_i, free_j) {
-                    (true, true) => ii * ij / (ii + ij),
-                    (true, false) => ii,
-                    _ => ij,
-                },
-            };
-            let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
-            torque.0 += m;
-            torque.1 -= m;
-        }
-        if free_i {
-            loads[i].force += c.force;
-            loads[i].torque += torque.0;
-        }
-        if free_j {
-            loads[j].force -= c.force;
-            loads[j].torque += torque.1;
-        }
-    }
-    stop
-}
-
 /// The radius of the circle where spheres of radii `a` and `b`, `d` apart, intersect.
 fn lens_radius(a: f64, b: f64, d: f64) -> f64 {
     let h = (d * d + a * a - b * b) / (2.0 * d);
@@ -680,7 +864,7 @@ fn lens_radius(a: f64, b: f64, d: f64) -> f64 {
 
 /// The reactive assemblies' kinetic energy (translation and rotation) and gravitational
 /// energy.
-fn assembly_energy(assemblies: &[crate::dynamics::reactive::Assembly], g: &Vec3) -> f64 {
+fn assembly_energy(assemblies: &[Assembly], g: &Vec3) -> f64 {
     assemblies
         .iter()
         .map(|a| {

@@ -2,9 +2,10 @@
 //! soft-sphere timestep above the stability limit of the stiffest contact, or too
 //! coarse to resolve it, and walls that move too far in a step for the particles.
 //! During the run, [`super::soft`] adds what only shows then: a contact that gains
-//! energy, a particle that moves more than its radius in a step.
+//! energy, a particle that moves more than its radius in a step. Each is a coded
+//! [`Warning`] (`W2xx` here).
 
-use super::{Materials, Settings, State};
+use super::{Materials, Settings, State, Stiffest, Warning};
 use walls_geometry::Wall;
 
 /// The worst relative rebound error per step of coarseness: measured worst cases over
@@ -13,7 +14,7 @@ use walls_geometry::Wall;
 const REBOUND_ERROR_TIMES_STEPS: f64 = 1.2;
 
 /// Warnings about a soft-sphere run of `states` against `scene` before it starts.
-pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Settings) -> Vec<String> {
+pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Settings) -> Vec<Warning> {
     let mut out = Vec::new();
     let dt = settings.dt;
     let lightest = states
@@ -26,8 +27,8 @@ pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Setting
     // The stiffest contact: against each wall the mass is the particle's; between two
     // of the lightest particles it is half.
     let materials = Materials::new(scene, &settings.material);
-    let mut stiffest: Option<(f64, String)> = None;
-    let mut consider = |omega: f64, what: String| {
+    let mut stiffest: Option<(f64, Stiffest)> = None;
+    let mut consider = |omega: f64, what: Stiffest| {
         if stiffest.as_ref().is_none_or(|(o, _)| omega > *o) {
             stiffest = Some((omega, what));
         }
@@ -35,28 +36,31 @@ pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Setting
     for (w, m) in materials.walls.iter().enumerate() {
         consider(
             (m.k_n / lightest).sqrt(),
-            format!("wall {w}, k_n = {}", m.k_n),
+            Stiffest::Wall {
+                wall: w,
+                k_n: m.k_n,
+            },
         );
     }
     if settings.particle_contacts && states.len() > 1 {
         let k = materials.between.k_n;
-        consider(
-            (2.0 * k / lightest).sqrt(),
-            format!("particle pairs, k_n = {k}"),
-        );
+        consider((2.0 * k / lightest).sqrt(), Stiffest::Pairs { k_n: k });
     }
     if let Some((omega, what)) = stiffest {
         let limit = 2.0 / omega;
         let steps = std::f64::consts::PI / omega / dt;
         if dt >= limit {
-            out.push(format!(
-                "the timestep {dt} is above the stability limit 2/ω₀ = {limit:.3e} of the stiffest contact ({what}): contacts will gain energy; pkdgrav's dDelta = π·√(m/2k_n)/N with N ≥ 10"
-            ));
+            out.push(Warning::AboveStabilityLimit {
+                dt,
+                limit,
+                stiffest: what,
+            });
         } else if steps < 10.0 {
-            out.push(format!(
-                "only {steps:.1} steps per contact for the stiffest contact ({what}): rebound speeds may be off by up to {:.0}%; take N ≥ 10 (100 for 1%)",
-                100.0 * REBOUND_ERROR_TIMES_STEPS / steps
-            ));
+            out.push(Warning::FewStepsPerContact {
+                steps,
+                error_percent: 100.0 * REBOUND_ERROR_TIMES_STEPS / steps,
+                stiffest: what,
+            });
         }
     }
     if let Some(warning) = wall_speed_warning(scene, states, dt) {
@@ -68,7 +72,7 @@ pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Setting
 /// How far each wall's surface can move in one step (or in one jump of its `step`),
 /// against the smallest particle: more than a tenth of its radius and a contact can
 /// start deep or be skipped (the document: speed × step ≪ particle size).
-fn wall_speed_warning(scene: &[Wall], states: &[State], dt: f64) -> Option<String> {
+fn wall_speed_warning(scene: &[Wall], states: &[State], dt: f64) -> Option<Warning> {
     let smallest = states
         .iter()
         .map(|s| s.particle.radius)
@@ -77,11 +81,10 @@ fn wall_speed_warning(scene: &[Wall], states: &[State], dt: f64) -> Option<Strin
         let speed = wall.motion.top_speed();
         let interval = wall.motion.step.max(dt);
         let travel = speed * interval;
-        (travel > 0.1 * smallest).then(|| {
-            format!(
-                "wall {w} moves up to {travel:.3e} in a step ({:.0}% of the smallest radius {smallest}): particles can be struck deep or passed through; take a smaller timestep (or step)",
-                100.0 * travel / smallest
-            )
+        (travel > 0.1 * smallest).then_some(Warning::WallTooFast {
+            wall: w,
+            travel,
+            smallest,
         })
     })
 }

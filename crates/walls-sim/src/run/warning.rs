@@ -1,0 +1,425 @@
+//! What a run warns about, as data: one [`Warning`] variant per kind, each with a stable
+//! code ([`Warning::code`]) and the text pkdgrav users read ([`std::fmt::Display`]).
+//!
+//! The codes come in families (docs/run-warnings.md says what each means and what to
+//! do):
+//!
+//! * `W1xx`, contacts during a soft-sphere run: overlaps past pkdgrav's levels and the
+//!   50 % stop, crowded wall contacts, a particle too fast for its timestep, a contact
+//!   that gained energy;
+//! * `W2xx`, checks before a soft-sphere run (the stability checks): the timestep
+//!   against the stiffest contact, and walls that move too far in a step;
+//! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
+//!   99, the collision cap;
+//! * `W4xx`, reactive walls: assemblies that cannot turn.
+
+use super::COLLISION_CAP;
+use std::fmt;
+use walls_keywords::WallType;
+
+/// What overlaps in an overlap warning.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Overlapping {
+    /// Two particles, by index.
+    Particles(usize, usize),
+    /// A particle and a wall.
+    Wall {
+        /// The particle's index.
+        particle: usize,
+        /// The wall's index.
+        wall: usize,
+    },
+}
+
+impl fmt::Display for Overlapping {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Overlapping::Particles(i, j) => write!(f, "particles {i} and {j}"),
+            Overlapping::Wall { particle, wall } => write!(f, "particle {particle}, wall {wall}"),
+        }
+    }
+}
+
+/// The stiffest contact of a run, which the timestep is checked against.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Stiffest {
+    /// Against a wall, with its k_n.
+    Wall {
+        /// The wall's index.
+        wall: usize,
+        /// Its normal spring constant.
+        k_n: f64,
+    },
+    /// Between particles, with their k_n.
+    Pairs {
+        /// The particles' normal spring constant.
+        k_n: f64,
+    },
+}
+
+impl fmt::Display for Stiffest {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Stiffest::Wall { wall, k_n } => write!(f, "wall {wall}, k_n = {k_n}"),
+            Stiffest::Pairs { k_n } => write!(f, "particle pairs, k_n = {k_n}"),
+        }
+    }
+}
+
+/// One warning of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Warning {
+    /// W101: the first overlap above 3 % of a radius (pkdgrav's minor level).
+    OverlapAbove3 {
+        /// The overlap as a fraction of the smaller radius.
+        fraction: f64,
+        /// What overlaps.
+        what: Overlapping,
+        /// When.
+        t: f64,
+    },
+    /// W102: the first overlap above 15 % of a radius (pkdgrav's major level).
+    OverlapAbove15 {
+        /// The overlap as a fraction of the smaller radius.
+        fraction: f64,
+        /// What overlaps.
+        what: Overlapping,
+        /// When.
+        t: f64,
+    },
+    /// W103: an overlap above 50 % of a radius: pkdgrav aborts, and the run stops.
+    OverlapStop {
+        /// The overlap as a fraction of the smaller radius.
+        fraction: f64,
+        /// What overlaps.
+        what: Overlapping,
+        /// When.
+        t: f64,
+    },
+    /// W104: a particle touching more than 3 walls at once (the first time).
+    Crowded {
+        /// The particle's index.
+        particle: usize,
+        /// How many walls it touches.
+        walls: usize,
+        /// When.
+        t: f64,
+    },
+    /// W105: a particle moving more than its radius in a step (the first time).
+    TooFast {
+        /// The particle's index.
+        particle: usize,
+        /// Radii moved in the step.
+        radii: f64,
+        /// When.
+        t: f64,
+    },
+    /// W106: a bounce off a wall that is not oscillating leaving faster than it came
+    /// (the first time).
+    EnergyGain {
+        /// The particle's index.
+        particle: usize,
+        /// The wall's index.
+        wall: usize,
+        /// Normal speed towards the wall when the contact began.
+        vn_in: f64,
+        /// Normal speed away from it when it ended.
+        vn_out: f64,
+        /// When.
+        t: f64,
+    },
+    /// W201: the timestep at or above the stability limit 2/ω₀ of the stiffest contact.
+    AboveStabilityLimit {
+        /// The timestep.
+        dt: f64,
+        /// The limit 2/ω₀.
+        limit: f64,
+        /// The stiffest contact.
+        stiffest: Stiffest,
+    },
+    /// W202: fewer than 10 steps per contact for the stiffest contact.
+    FewStepsPerContact {
+        /// Steps per contact.
+        steps: f64,
+        /// The worst rebound error to expect, in percent.
+        error_percent: f64,
+        /// The stiffest contact.
+        stiffest: Stiffest,
+    },
+    /// W203: a wall whose surface moves more than a tenth of the smallest radius in a
+    /// step (the first such wall).
+    WallTooFast {
+        /// The wall's index.
+        wall: usize,
+        /// How far it can move in a step (or in one jump of its `step`).
+        travel: f64,
+        /// The smallest particle radius.
+        smallest: f64,
+    },
+    /// W301: a wall pkdgrav's hard-sphere code does not support.
+    UnsupportedWall {
+        /// The wall's index.
+        wall: usize,
+        /// Its type.
+        wall_type: WallType,
+        /// Whether it is a cylinder with a taper.
+        taper: bool,
+    },
+    /// W302: `epsn` or `epst` left at 99 on walls in a hard-sphere run.
+    RestitutionAt99 {
+        /// The walls' indices.
+        walls: Vec<usize>,
+    },
+    /// W303: a particle reaching [`COLLISION_CAP`] collisions within one step (the first
+    /// time).
+    CollisionCap {
+        /// The particle's index.
+        particle: usize,
+        /// The time at the start of that step.
+        t: f64,
+    },
+    /// W401: reactive assemblies with a principal moment of inertia not above 0: they
+    /// stay where they are.
+    ImmovableAssemblies {
+        /// The assemblies' numbers.
+        assemblies: Vec<i64>,
+    },
+}
+
+impl Warning {
+    /// The warning's stable code.
+    pub fn code(&self) -> &'static str {
+        match self {
+            Warning::OverlapAbove3 { .. } => "W101",
+            Warning::OverlapAbove15 { .. } => "W102",
+            Warning::OverlapStop { .. } => "W103",
+            Warning::Crowded { .. } => "W104",
+            Warning::TooFast { .. } => "W105",
+            Warning::EnergyGain { .. } => "W106",
+            Warning::AboveStabilityLimit { .. } => "W201",
+            Warning::FewStepsPerContact { .. } => "W202",
+            Warning::WallTooFast { .. } => "W203",
+            Warning::UnsupportedWall { .. } => "W301",
+            Warning::RestitutionAt99 { .. } => "W302",
+            Warning::CollisionCap { .. } => "W303",
+            Warning::ImmovableAssemblies { .. } => "W401",
+        }
+    }
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Warning::OverlapAbove3 { fraction, what, t } => write!(
+                f,
+                "overlap of {:.1}% of the radius ({what}, t = {t}): more than 3%",
+                fraction * 100.0
+            ),
+            Warning::OverlapAbove15 { fraction, what, t } => write!(
+                f,
+                "overlap of {:.1}% of the radius ({what}, t = {t}): more than 15%",
+                fraction * 100.0
+            ),
+            Warning::OverlapStop { fraction, what, t } => write!(
+                f,
+                "overlap of {:.1}% of the radius ({what}, t = {t}): pkdgrav aborts above 50%; the run stops",
+                fraction * 100.0
+            ),
+            Warning::Crowded { particle, walls, t } => write!(
+                f,
+                "particle {particle} touches {walls} walls at once (t = {t}); pkdgrav handles at most 3"
+            ),
+            Warning::TooFast { particle, radii, t } => write!(
+                f,
+                "particle {particle} moves {radii:.1} radii in a step (t = {t}): it can pass through a thin wall without touching it; take a smaller timestep"
+            ),
+            Warning::EnergyGain {
+                particle,
+                wall,
+                vn_in,
+                vn_out,
+                t,
+            } => write!(
+                f,
+                "particle {particle} left wall {wall} faster than it came ({vn_in} → {vn_out}, t = {t}): the contact gained energy; the timestep is too large for the springs"
+            ),
+            Warning::AboveStabilityLimit {
+                dt,
+                limit,
+                stiffest,
+            } => write!(
+                f,
+                "the timestep {dt} is above the stability limit 2/ω₀ = {limit:.3e} of the stiffest contact ({stiffest}): contacts will gain energy; pkdgrav's dDelta = π·√(m/2k_n)/N with N ≥ 10"
+            ),
+            Warning::FewStepsPerContact {
+                steps,
+                error_percent,
+                stiffest,
+            } => write!(
+                f,
+                "only {steps:.1} steps per contact for the stiffest contact ({stiffest}): rebound speeds may be off by up to {error_percent:.0}%; take N ≥ 10 (100 for 1%)"
+            ),
+            Warning::WallTooFast {
+                wall,
+                travel,
+                smallest,
+            } => write!(
+                f,
+                "wall {wall} moves up to {travel:.3e} in a step ({:.0}% of the smallest radius {smallest}): particles can be struck deep or passed through; take a smaller timestep (or step)",
+                100.0 * travel / smallest
+            ),
+            Warning::UnsupportedWall {
+                wall,
+                wall_type,
+                taper,
+            } => write!(
+                f,
+                "wall {wall} ({}{}) is not supported by pkdgrav's hard-sphere code; particles pass through it",
+                wall_type.name(),
+                if *taper { " with taper" } else { "" }
+            ),
+            Warning::RestitutionAt99 { walls } => {
+                f.write_str("epsn or epst left at 99 on walls ")?;
+                for (k, w) in walls.iter().enumerate() {
+                    if k > 0 {
+                        f.write_str(", ")?;
+                    }
+                    write!(f, "{w}")?;
+                }
+                f.write_str(": pkdgrav's hard-sphere code would use 99 as the coefficient; this run uses the particles' values")
+            }
+            Warning::CollisionCap { particle, t } => write!(
+                f,
+                "particle {particle} had {COLLISION_CAP} collisions within one step (t = {t}): inelastic collapse, or jammed between walls; it was held where it was for the rest of that step"
+            ),
+            Warning::ImmovableAssemblies { assemblies } => write!(
+                f,
+                "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
+            ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One warning of each kind.
+    fn one_of_each() -> Vec<Warning> {
+        let what = Overlapping::Wall {
+            particle: 0,
+            wall: 1,
+        };
+        let stiffest = Stiffest::Pairs { k_n: 1e5 };
+        vec![
+            Warning::OverlapAbove3 {
+                fraction: 0.04,
+                what,
+                t: 0.1,
+            },
+            Warning::OverlapAbove15 {
+                fraction: 0.2,
+                what,
+                t: 0.1,
+            },
+            Warning::OverlapStop {
+                fraction: 0.6,
+                what,
+                t: 0.1,
+            },
+            Warning::Crowded {
+                particle: 0,
+                walls: 4,
+                t: 0.1,
+            },
+            Warning::TooFast {
+                particle: 0,
+                radii: 1.5,
+                t: 0.1,
+            },
+            Warning::EnergyGain {
+                particle: 0,
+                wall: 1,
+                vn_in: 1.0,
+                vn_out: 2.0,
+                t: 0.1,
+            },
+            Warning::AboveStabilityLimit {
+                dt: 0.1,
+                limit: 0.01,
+                stiffest,
+            },
+            Warning::FewStepsPerContact {
+                steps: 5.0,
+                error_percent: 24.0,
+                stiffest,
+            },
+            Warning::WallTooFast {
+                wall: 0,
+                travel: 0.05,
+                smallest: 0.1,
+            },
+            Warning::UnsupportedWall {
+                wall: 0,
+                wall_type: WallType::Triangle,
+                taper: false,
+            },
+            Warning::RestitutionAt99 { walls: vec![0] },
+            Warning::CollisionCap {
+                particle: 0,
+                t: 0.0,
+            },
+            Warning::ImmovableAssemblies {
+                assemblies: vec![1],
+            },
+        ]
+    }
+
+    #[test]
+    fn codes_are_unique_and_documented() {
+        let doc = include_str!("../../../../docs/run-warnings.md");
+        let mut seen = std::collections::HashSet::new();
+        for w in one_of_each() {
+            let code = w.code();
+            assert!(seen.insert(code), "{code} twice");
+            assert!(
+                doc.contains(&format!("| {code} |")),
+                "{code} is not in docs/run-warnings.md"
+            );
+        }
+        let listed = doc.lines().filter(|l| l.starts_with("| W")).count();
+        assert_eq!(listed, seen.len(), "docs/run-warnings.md lists other codes");
+    }
+
+    #[test]
+    fn overlap_levels_print_as_before() {
+        // The levels were printed as `{:.0}` of 0.03·100 and 0.15·100.
+        assert_eq!(format!("{:.0}", 0.03 * 100.0), "3");
+        assert_eq!(format!("{:.0}", 0.15 * 100.0), "15");
+        let w = Warning::OverlapAbove15 {
+            fraction: 0.2,
+            what: Overlapping::Particles(1, 2),
+            t: 0.5,
+        };
+        assert_eq!(
+            w.to_string(),
+            "overlap of 20.0% of the radius (particles 1 and 2, t = 0.5): more than 15%"
+        );
+        assert_eq!(w.code(), "W102");
+    }
+
+    #[test]
+    fn lists_print_as_before() {
+        let w = Warning::RestitutionAt99 {
+            walls: vec![0, 1, 7],
+        };
+        assert!(
+            w.to_string()
+                .starts_with("epsn or epst left at 99 on walls 0, 1, 7: ")
+        );
+        let a = Warning::ImmovableAssemblies {
+            assemblies: vec![0, 3],
+        };
+        assert!(a.to_string().starts_with("assemblies [0, 3] have"));
+    }
+}
