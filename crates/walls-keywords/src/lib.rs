@@ -82,43 +82,51 @@ macro_rules! keywords {
             pub const ALL: &'static [Keyword] = &[$(Keyword::$variant,)*];
 
             /// The keyword as written in canonical (lower-case) form.
+            #[inline]
             pub const fn name(self) -> &'static str {
                 match self { $(Keyword::$variant => $name,)* }
             }
 
             /// What follows the keyword.
+            #[inline]
             pub const fn shape(self) -> ValueShape {
                 match self { $(Keyword::$variant => ValueShape::$shape,)* }
             }
 
             /// Where the keyword may stand.
+            #[inline]
             pub const fn role(self) -> Role {
                 match self { $(Keyword::$variant => Role::$role,)* }
             }
 
             /// Whether only pkdgrav's soft-sphere (SSDEM) code reads the keyword.
+            #[inline]
             pub const fn ssdem_only(self) -> bool {
                 match self { $(Keyword::$variant => $ssdem,)* }
             }
 
             /// How the unit tokens in force scale the keyword's value.
+            #[inline]
             pub const fn dimension(self) -> Dimension {
                 match self { $(Keyword::$variant => Dimension::$dim,)* }
             }
 
             /// The value before any `defaults` or wall sets it.
+            #[inline]
             pub const fn builtin(self) -> Builtin {
                 use Builtin::*;
                 match self { $(Keyword::$variant => $default,)* }
             }
 
             /// The values the keyword accepts: the rule that checks a value as it is read.
+            #[inline]
             pub const fn value_range(self) -> ValueRange {
                 use ValueRange::*;
                 match self { $(Keyword::$variant => $range,)* }
             }
 
             /// The wall types whose geometry or motion reads the value.
+            #[inline]
             pub const fn applies_to(self) -> Types {
                 match self { $(Keyword::$variant => Types::$types,)* }
             }

@@ -117,11 +117,16 @@ impl Checker<'_> {
             osc_vec_not_following_orient::check(self, wall);
             wall_too_fast::check(self, wall, t);
             if self.options.mode == ContactModel::Ssdem {
-                assembly_without_mass::check(self, wall);
-                reactive_type::check(self, wall, t);
-                reactive_spinning::check(self, wall);
-                mass_without_assembly::check(self, wall);
-                axes_not_orthogonal::check(self, wall);
+                // The reactive rules look at reactive walls only (but the first, at the
+                // walls that are not): decide once.
+                if wall.is_reactive() {
+                    reactive_type::check(self, wall, t);
+                    reactive_spinning::check(self, wall);
+                    mass_without_assembly::check(self, wall);
+                    axes_not_orthogonal::check(self, wall);
+                } else {
+                    assembly_without_mass::check(self, wall);
+                }
             } else {
                 not_in_hsdem::check(self, wall, t);
                 at_99.note(wall);
