@@ -28,6 +28,7 @@ pub enum Value {
 }
 
 impl Value {
+    #[inline]
     fn from_builtin(b: Builtin) -> Option<Value> {
         match b {
             Builtin::None => None,
@@ -134,6 +135,7 @@ pub struct Settings {
 
 impl Settings {
     /// The setting for `k`, if something set it.
+    #[inline]
     pub fn get(&self, k: Keyword) -> Option<&Setting> {
         self.entries
             .iter()
@@ -174,6 +176,7 @@ impl WallSettings {
     }
 
     /// The setting for `k`: the wall's own, else the inherited default's.
+    #[inline]
     pub fn get(&self, k: Keyword) -> Option<&Setting> {
         self.own.get(k).or_else(|| self.inherited.get(k))
     }
@@ -219,6 +222,7 @@ pub struct Wall {
 impl Wall {
     /// The effective setting of `k` (built-in default if nothing set it). `None` only
     /// for keywords that take no value.
+    #[inline]
     pub fn setting(&self, k: Keyword) -> Option<Setting> {
         self.settings.get(k).cloned().or_else(|| {
             Value::from_builtin(k.builtin()).map(|value| Setting {
@@ -229,6 +233,7 @@ impl Wall {
     }
 
     /// The effective value of `k`.
+    #[inline]
     pub fn value(&self, k: Keyword) -> Option<Value> {
         self.settings
             .get(k)
@@ -237,6 +242,7 @@ impl Wall {
     }
 
     /// The effective real value of a number-valued keyword (0 for others).
+    #[inline]
     pub fn number(&self, k: Keyword) -> f64 {
         match self.value(k) {
             Some(Value::Number(x)) => x,
@@ -246,6 +252,7 @@ impl Wall {
     }
 
     /// The effective integer value of an integer-valued keyword (0 for others).
+    #[inline]
     pub fn integer(&self, k: Keyword) -> i64 {
         match self.value(k) {
             Some(Value::Integer(i)) => i,
@@ -254,6 +261,7 @@ impl Wall {
     }
 
     /// The effective vector value of a vector-valued keyword (zero for others).
+    #[inline]
     pub fn vector(&self, k: Keyword) -> Vec3 {
         match self.value(k) {
             Some(Value::Vector(v)) => v,
@@ -262,6 +270,7 @@ impl Wall {
     }
 
     /// The wall's type.
+    #[inline]
     pub fn wall_type(&self) -> WallType {
         match self.value(Keyword::Type) {
             Some(Value::Type(t)) => t,
@@ -285,6 +294,7 @@ impl Wall {
     }
 
     /// Whether the wall has a finite mass and so reacts to particles.
+    #[inline]
     pub fn is_reactive(&self) -> bool {
         self.number(Keyword::Mass) > 0.0
     }

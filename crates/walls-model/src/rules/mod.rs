@@ -96,6 +96,7 @@ pub(crate) fn check_general(at: &Read, x: f64, out: &mut Vec<Diagnostic>) -> boo
 
 /// Checks the value of a property by its range (after [`number_too_large`]); returns the
 /// value to store.
+#[inline]
 pub(crate) fn check_property(at: &Read, value: Value, out: &mut Vec<Diagnostic>) -> Value {
     match (at.keyword.value_range(), value) {
         (ValueRange::Direction, Value::Vector(v)) => return zero_vector::direction_of(at, v, out),

@@ -32,6 +32,7 @@ wall type disk
 
 /// Scaled values must stay finite doubles: `1e999`, or a huge value times a unit.
 /// Returns whether the value is finite.
+#[inline]
 pub(crate) fn check(at: &Read, value: Value, out: &mut Vec<Diagnostic>) -> bool {
     let finite = match value {
         Value::Number(x) => x.is_finite(),
