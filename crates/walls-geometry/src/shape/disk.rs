@@ -39,6 +39,7 @@ impl Disk {
 
     /// The nearest point of the disk to `p`: on its face, rim or hole rim (a point when
     /// its radius is 0).
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (c, n, radius, hole) = (&self.center, &self.normal, self.radius, self.hole);
         let d = p - c;

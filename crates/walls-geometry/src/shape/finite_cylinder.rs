@@ -53,6 +53,7 @@ impl FiniteCylinder {
 
     /// A finite cylinder or cone, reduced to the nearest point of a segment in the half-plane
     /// through the axis and p.
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (c, axis, radius, length, taper) = (
             &self.center,

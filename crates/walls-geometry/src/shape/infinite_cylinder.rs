@@ -29,6 +29,7 @@ impl InfiniteCylinder {
     }
 
     /// The nearest point of the tube to `p`.
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (origin, axis, radius) = (&self.origin, &self.axis, self.radius);
         let d = p - origin;

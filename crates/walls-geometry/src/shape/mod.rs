@@ -226,6 +226,7 @@ impl Shape {
     }
 
     /// The nearest point of the shape to `p`.
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         each!(self, s => s.nearest(p))
     }
@@ -351,6 +352,7 @@ pub(crate) fn rim_bounds(center: &Vec3, normal: &Vec3, radius: f64) -> (Vec3, Ve
 }
 
 /// The answer for nearest point `q` of a surface whose own normal there is `surface`.
+#[inline]
 pub(crate) fn answer(p: &Vec3, q: Vec3, surface: Vec3, feature: Feature) -> Nearest {
     let d = p - q;
     let distance = d.norm();
@@ -368,6 +370,7 @@ pub(crate) fn answer(p: &Vec3, q: Vec3, surface: Vec3, feature: Feature) -> Near
 }
 
 /// Some unit vector perpendicular to unit `a`.
+#[inline]
 pub(crate) fn any_perpendicular(a: &Vec3) -> Vec3 {
     let helper = if a.x.abs() < 0.9 {
         Vec3::x()
@@ -378,6 +381,7 @@ pub(crate) fn any_perpendicular(a: &Vec3) -> Vec3 {
 }
 
 /// Nearest point of segment a–b to p, as the parameter t in [0, 1].
+#[inline]
 pub(crate) fn segment_t(p: &Vec3, a: &Vec3, b: &Vec3) -> f64 {
     let ab = b - a;
     let len2 = ab.norm_squared();
@@ -391,6 +395,7 @@ pub(crate) fn segment_t(p: &Vec3, a: &Vec3, b: &Vec3) -> f64 {
 /// whole ring, and its net normal runs along the axis, towards the point's side
 /// (`side` > 0: along `axis`). Without this the normal would lean to an arbitrary rim
 /// point and push a particle dropped down the axis sideways.
+#[inline]
 pub(crate) fn on_axis(near: Nearest, symmetric: bool, axis: &Vec3, side: f64) -> Nearest {
     if !symmetric {
         return near;

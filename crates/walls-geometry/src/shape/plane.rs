@@ -21,6 +21,7 @@ pub struct Plane {
 
 impl Plane {
     /// The nearest point of the plane to `p`.
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (origin, normal) = (&self.origin, &self.normal);
         let h = normal.dot(&(p - origin));

@@ -37,6 +37,7 @@ impl Shell {
 
     /// The nearest point of the shell to `p`: on its sphere or its opening's rim (a point
     /// when its radius is 0 or its opening 180°).
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (c, axis, radius, open) = (&self.center, &self.axis, self.radius, self.open);
         if radius == 0.0 {

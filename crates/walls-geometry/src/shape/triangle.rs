@@ -34,6 +34,7 @@ impl Triangle {
     }
 
     /// The nearest point of the triangle to `p`: on its face, an edge or a vertex.
+    #[inline]
     pub fn nearest(&self, p: &Vec3) -> Nearest {
         let (o, e1, e2) = (&self.origin, &self.e1, &self.e2);
         let normal = direction(&e1.cross(e2)).unwrap_or_else(Vec3::z);
