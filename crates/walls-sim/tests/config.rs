@@ -3,13 +3,19 @@
 //! file's `achInFile` (beside the `.par` file), else the dropped default particles.
 
 use nalgebra::Vector3;
-use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
+use walls_sim::config::{ConfigError, Flags, Run, load, particle_file, read_par, resolve};
 use walls_sim::io::par::Params;
 use walls_sim::run::default_dt;
 use walls_sim::run::defaults;
 use walls_test_support::{ball as particle, scene};
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
+
+/// Reads the `.par` file `flags` name, then the particles, as `walls-sim run` does.
+fn load_all(flags: &Flags, walls: &[walls_geometry::Wall]) -> Result<Run, ConfigError> {
+    let par = read_par(flags)?;
+    load(flags, par.as_ref(), walls)
+}
 
 fn ball() -> Vec<walls_geometry::Particle> {
     vec![particle([0.0, 0.0, 0.3], [0.0, 0.0, -2.0])]
@@ -135,16 +141,16 @@ fn load_reads_the_par_file_and_its_particles() {
         par: Some(path("run.par")),
         ..Flags::default()
     };
-    let run = load(&flags, &scene(FLOOR)).unwrap();
+    let run = load_all(&flags, &scene(FLOOR)).unwrap();
     assert_eq!(run.particles.len(), 1);
     assert_eq!((run.settings.dt, run.settings.material.k_n), (1e-5, 3e5));
     flags.particles = Some(path("two.csv"));
-    assert_eq!(load(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
+    assert_eq!(load_all(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
 
     // Errors name the file and the line.
     write("bad.par", "dDelta = 0\n");
     flags.par = Some(path("bad.par"));
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(matches!(e, ConfigError::File(_)));
     assert_eq!(
         e.to_string(),
@@ -158,13 +164,13 @@ fn load_reads_the_par_file_and_its_particles() {
         particles: Some(path("none.csv")),
         ..Flags::default()
     };
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert_eq!(e.to_string(), "no particles to run");
     let flags = Flags {
         particles: Some(path("missing.csv")),
         ..Flags::default()
     };
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(
         e.to_string()
             .starts_with(&format!("cannot read {}: ", path("missing.csv")))
