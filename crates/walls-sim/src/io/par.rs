@@ -406,14 +406,15 @@ struct Line<'a> {
 }
 
 /// The lines of a `.par` file by key (a later line for a key replaces an earlier one, as
-/// in pkdgrav), and the warnings of the keys the evaluator does not follow.
+/// in pkdgrav), and the keys with their lines in file order.
 struct Lines<'a> {
     by_key: HashMap<&'a str, Line<'a>>,
+    order: Vec<(usize, &'a str)>,
 }
 
 impl<'a> Lines<'a> {
     /// Splits `text` into its `key = value` lines.
-    fn split(text: &'a str) -> Result<(Lines<'a>, Vec<(usize, &'a str)>), InputError> {
+    fn split(text: &'a str) -> Result<Lines<'a>, InputError> {
         let mut by_key = HashMap::new();
         let mut order = Vec::new();
         for (i, raw) in text.split('\n').enumerate() {
@@ -441,7 +442,7 @@ impl<'a> Lines<'a> {
             by_key.insert(name, Line { n, value });
             order.push((n, name));
         }
-        Ok((Lines { by_key }, order))
+        Ok(Lines { by_key, order })
     }
 
     /// The line of `key`, if given.
@@ -470,7 +471,7 @@ impl<'a> Lines<'a> {
     }
 
     /// `key`'s value if it obeys `rule`.
-    fn number(&self, key: &str, rule: Rule) -> Result<Option<f64>, InputError> {
+    fn checked(&self, key: &str, rule: Rule) -> Result<Option<f64>, InputError> {
         self.real(key)?
             .map(|(n, x)| {
                 rule.check(x).map_err(|says| {
@@ -507,7 +508,7 @@ impl<'a> Lines<'a> {
     fn spring(&self, key: &str) -> Result<Option<f64>, InputError> {
         match self.real(key)? {
             None => Ok(None),
-            Some((_, x)) if x == -1.0 => Ok(None),
+            Some((_, -1.0)) => Ok(None),
             Some((n, x)) if x < 0.0 || !x.is_finite() => Err(error(
                 format!("line {n}"),
                 format!(
@@ -523,7 +524,7 @@ impl<'a> Lines<'a> {
 /// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the
 /// others into its warnings ([`KEYS`]).
 pub fn read_par(text: &str) -> Result<Params, InputError> {
-    let (lines, order) = Lines::split(text)?;
+    let lines = Lines::split(text)?;
     let mut warnings = Vec::new();
     let mut warn = |line: Option<usize>, key: &str, message: String| {
         warnings.push(ParWarning {
@@ -532,7 +533,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             message,
         });
     };
-    for &(n, key) in &order {
+    for &(n, key) in &lines.order {
         if lines.line(key) != Some(n) {
             continue;
         }
@@ -570,14 +571,14 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             warn(None, key, format!("pkdgrav's default is {default}: {why}"));
         }
     }
-    let k_n = lines.number("dKn", Rule::NonNegative)?;
+    let k_n = lines.checked("dKn", Rule::NonNegative)?;
     match (k_n, lines.line("dKn")) {
         (None, _) => warn(
             None,
             "dKn",
             "pkdgrav's default is 0 (no normal spring); the evaluator derives k_n from the scene instead (docs/evaluator.md)".into(),
         ),
-        (Some(x), n) if x == 0.0 => warn(
+        (Some(0.0), n) => warn(
             n,
             "dKn",
             "0: pkdgrav warns and runs without a normal spring, so particles pass through walls and each other".into(),
@@ -585,7 +586,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         _ => {}
     }
     if let Some(n) = lines.line("dBetaS") {
-        lines.number("dBetaS", Rule::NonNegative)?;
+        lines.checked("dBetaS", Rule::NonNegative)?;
         warn(
             Some(n),
             "dBetaS",
@@ -606,24 +607,24 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
     }
     warnings.sort_by_key(|w| w.line.unwrap_or(usize::MAX));
     let g = [
-        lines.number("dxUnifGrav", Rule::Any)?,
-        lines.number("dyUnifGrav", Rule::Any)?,
-        lines.number("dzUnifGrav", Rule::Any)?,
+        lines.checked("dxUnifGrav", Rule::Any)?,
+        lines.checked("dyUnifGrav", Rule::Any)?,
+        lines.checked("dzUnifGrav", Rule::Any)?,
     ];
     Ok(Params {
         in_file: lines.text("achInFile"),
         walls_file: lines.text("achWallsFile"),
-        dt: lines.number("dDelta", Rule::Positive)?,
+        dt: lines.checked("dDelta", Rule::Positive)?,
         steps: lines.count("nSteps")?,
         start_step: lines.count("iStartStep")?,
         out_interval: lines.count("iOutInterval")?,
-        eps_n: lines.number("dEpsN", Rule::Restitution)?,
-        eps_t: lines.number("dEpsT", Rule::Tangential)?,
+        eps_n: lines.checked("dEpsN", Rule::Restitution)?,
+        eps_t: lines.checked("dEpsT", Rule::Tangential)?,
         k_n,
         k_t: lines.spring("dKt")?,
-        mu_s: lines.number("dMuS", Rule::NonNegative)?,
-        mu_r: lines.number("dMuR", Rule::NonNegative)?,
-        mu_t: lines.number("dMuT", Rule::NonNegative)?,
+        mu_s: lines.checked("dMuS", Rule::NonNegative)?,
+        mu_r: lines.checked("dMuR", Rule::NonNegative)?,
+        mu_t: lines.checked("dMuT", Rule::NonNegative)?,
         gravity: g.iter().any(Option::is_some).then(|| {
             Vec3::new(
                 g[0].unwrap_or(0.0),
@@ -654,7 +655,7 @@ fn two_layer(lines: &Lines, k_n: f64) -> Result<Option<TwoLayer>, InputError> {
     let k_n_inner = lines.spring("dKnInner")?.unwrap_or(k_n);
     let layers = TwoLayer {
         boundary: lines
-            .number("dInnerOverlapBndry", Rule::NonNegative)?
+            .checked("dInnerOverlapBndry", Rule::NonNegative)?
             .unwrap_or(0.0),
         k_n_outer,
         k_t_outer: lines.spring("dKtOuter")?.unwrap_or(KT_PER_KN * k_n_outer),

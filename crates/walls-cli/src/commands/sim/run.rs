@@ -311,13 +311,13 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         }
     }
     // Where pkdgrav would abort, the run stopped: say so, and exit 1.
-    if let Some(stop) = outcome
+    if outcome
         .warnings
         .iter()
-        .find(|w| matches!(w, walls_sim::run::Warning::OverlapStop { .. }))
+        .any(|w| matches!(w, walls_sim::run::Warning::OverlapStop { .. }))
     {
         eprintln!(
-            "walls-sim: the run stopped after step {} (t = {}), where pkdgrav would abort: {stop}",
+            "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: an overlap above half a radius",
             first + outcome.steps,
             outcome.t
         );
