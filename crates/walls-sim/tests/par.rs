@@ -214,3 +214,21 @@ fn the_run_directory_case_reads() {
     assert_eq!(p.walls_file.as_deref(), Some("walls.dat"));
     assert_eq!(p.k_t, None, "dKt = -1");
 }
+
+#[test]
+fn a_key_given_twice_takes_the_later_line_and_warns() {
+    let p = read_par(&format!(
+        "{QUIET}dDelta = 1e-5\ndDelta = 2e-5\nbDoGravity = 2\n"
+    ))
+    .unwrap();
+    assert_eq!(p.dt, Some(2e-5));
+    // A switch is on at any value but 0, as pkdgrav's C ints: no warning for 2.
+    assert_eq!(
+        p.warnings,
+        vec![ParWarning {
+            line: Some(5),
+            key: "dDelta".into(),
+            message: "given again on line 6, which wins (as in pkdgrav)".into(),
+        }]
+    );
+}

@@ -534,7 +534,14 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         });
     };
     for &(n, key) in &lines.order {
-        if lines.line(key) != Some(n) {
+        if let Some(last) = lines.line(key)
+            && last != n
+        {
+            warn(
+                Some(n),
+                key,
+                format!("given again on line {last}, which wins (as in pkdgrav)"),
+            );
             continue;
         }
         match use_of(key) {
@@ -550,8 +557,16 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             ),
             Some(Use::NotYet(why)) => warn(Some(n), key, why.to_string()),
             Some(Use::Only { value, why, .. }) => {
+                // pkdgrav's switches (`b…`) are C ints: any value but 0 is on.
+                let same = |x: f64| {
+                    if key.starts_with('b') {
+                        (x != 0.0) == (value != 0.0)
+                    } else {
+                        x == value
+                    }
+                };
                 if let Some((_, x)) = lines.real(key)?
-                    && x != value
+                    && !same(x)
                 {
                     warn(Some(n), key, format!("{x} is not modelled: {why}"));
                 }
