@@ -2,10 +2,17 @@
 //! line's flags if given, else from the pkdgrav parameter file (`.par`), else the
 //! evaluator's default ([`crate::run::defaults`]).
 //!
-//! The particles come from `--particles`, else from the `.par` file's `achInFile`
-//! (relative to the `.par` file's folder), else nine particles dropped onto the scene;
-//! gravity defaults to −z only for those dropped particles. [`load`] reads the files;
-//! [`resolve`] applies the precedence to what was read.
+//! The walls file is the command line's, else the `.par` file's `achWallsFile`; the
+//! particles come from `--particles`, else from the `.par` file's `achInFile`; both
+//! `.par` paths are relative to the `.par` file's folder. Without particles from a file,
+//! nine particles are dropped onto the scene; gravity defaults to −z only for those.
+//!
+//! A run from a `.par` file is pkdgrav's run (`reference/pkdgrav/physics.md` §3–4): a
+//! material key the file leaves out takes pkdgrav's default (ε 1, no friction,
+//! k_t = 2/7·k_n), except `dKn`, whose default 0 would let particles through every wall
+//! (the evaluator derives it from the scene, with a warning); `nSteps` is the number of
+//! the last step, counted exactly from `iStartStep`, which also sets the start time.
+//! [`read_par`] and [`load`] read the files; [`resolve`] applies the precedence.
 
 use crate::OscillationStepping;
 use crate::io::par::Params;
@@ -95,28 +102,43 @@ impl std::fmt::Display for ConfigError {
 
 impl std::error::Error for ConfigError {}
 
-/// Reads the `.par` file and the particle file that `flags` name, and settles the run's
-/// settings against `scene`.
-pub fn load(flags: &Flags, scene: &[Wall]) -> Result<Run, ConfigError> {
-    let par = flags.par.as_deref().map(par::read_file).transpose()?;
-    let particles = match particle_file(flags, par.as_ref()) {
+/// Reads the `.par` file that `flags` name, if any.
+pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
+    Ok(flags.par.as_deref().map(par::read_file).transpose()?)
+}
+
+/// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and
+/// settles the run's settings against `scene`.
+pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, ConfigError> {
+    let particles = match particle_file(flags, par) {
         Some(f) => Some(particles::read_file(&f)?),
         None => None,
     };
-    resolve(flags, par.as_ref(), scene, particles)
+    resolve(flags, par, scene, particles)
+}
+
+/// `name`, a path written in the `.par` file, as a path from here: relative to the
+/// `.par` file's folder.
+fn beside_par(flags: &Flags, name: &str) -> Option<String> {
+    let par_dir = std::path::Path::new(flags.par.as_deref()?).parent()?;
+    Some(par_dir.join(name).to_string_lossy().into_owned())
 }
 
 /// The particle file to read: `--particles`, else the `.par` file's `achInFile`, taken
 /// relative to the `.par` file's folder; `None` for the default particles.
 pub fn particle_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
-    flags.particles.clone().or_else(|| {
-        let par_dir = std::path::Path::new(flags.par.as_deref()?)
-            .parent()?
-            .to_path_buf();
-        par?.in_file
-            .as_ref()
-            .map(|f| par_dir.join(f).to_string_lossy().into_owned())
-    })
+    flags
+        .particles
+        .clone()
+        .or_else(|| beside_par(flags, par?.in_file.as_deref()?))
+}
+
+/// The walls file to read: `file` (the command line's), else the `.par` file's
+/// `achWallsFile`, taken relative to the `.par` file's folder; `None` when neither names
+/// one.
+pub fn walls_file(file: Option<&str>, flags: &Flags, par: Option<&Params>) -> Option<String> {
+    file.map(str::to_string)
+        .or_else(|| beside_par(flags, par?.walls_file.as_deref()?))
 }
 
 /// The run's settings from `flags`, then `par`, then the defaults for `scene` and the
@@ -142,11 +164,16 @@ pub fn resolve(
     };
     let from_par = |f: fn(&Params) -> Option<f64>| par.and_then(f);
     let method = flags.method;
+    let derived_k_n = || defaults::default_k_n(scene, &particles, &gravity);
     let k_n = flags
         .k_n
         .or(from_par(|p| p.k_n))
-        .unwrap_or_else(|| defaults::default_k_n(scene, &particles, &gravity));
-    let default = defaults::default_material(k_n);
+        .unwrap_or_else(derived_k_n);
+    // A run from a `.par` file takes pkdgrav's defaults for what the file leaves out.
+    let default = match par {
+        Some(_) => pkdgrav_material(k_n),
+        None => defaults::default_material(k_n),
+    };
     let material = ParticleMaterial {
         eps_n: flags
             .eps_n
@@ -162,17 +189,34 @@ pub fn resolve(
         mu_r: flags.mu_r.or(from_par(|p| p.mu_r)).unwrap_or(default.mu_r),
         mu_t: flags.mu_t.or(from_par(|p| p.mu_t)).unwrap_or(default.mu_t),
     };
-    let t_end = flags
-        .t_end
-        .or_else(|| par.and_then(|p| Some(p.steps? as f64 * p.dt?)))
-        .unwrap_or_else(|| defaults::default_duration(scene, &particles, &gravity));
-    let dt = flags
-        .dt
-        .or(from_par(|p| p.dt))
-        .unwrap_or_else(|| match method {
-            ContactModel::Ssdem => default_dt(&particles, k_n),
-            ContactModel::Hsdem => defaults::default_hard_dt(&particles, &gravity, t_end),
-        });
+    let start_step = par.and_then(|p| p.start_step).unwrap_or(0);
+    let last_step = match flags.t_end {
+        Some(_) => None,
+        None => par.and_then(|p| p.steps),
+    };
+    // The timestep's default needs a spring: with dKn = 0, the scene's.
+    let dt_k_n = if k_n > 0.0 { k_n } else { derived_k_n() };
+    let dt_for = |t_end: f64| {
+        flags
+            .dt
+            .or(from_par(|p| p.dt))
+            .unwrap_or_else(|| match method {
+                ContactModel::Ssdem => default_dt(&particles, dt_k_n),
+                ContactModel::Hsdem => defaults::default_hard_dt(&particles, &gravity, t_end),
+            })
+    };
+    let (dt, t_end) = match (flags.t_end, last_step) {
+        (Some(t_end), _) => (dt_for(t_end), t_end),
+        (None, Some(last)) => {
+            // pkdgrav's steps are counted; the time span follows from the timestep.
+            let dt = dt_for(defaults::default_duration(scene, &particles, &gravity));
+            (dt, last as f64 * dt)
+        }
+        (None, None) => {
+            let t_end = defaults::default_duration(scene, &particles, &gravity);
+            (dt_for(t_end), t_end)
+        }
+    };
     let settings = Settings {
         method,
         gravity,
@@ -181,10 +225,26 @@ pub fn resolve(
         stepping: flags.stepping,
         integrator: flags.integrator,
         planning: flags.planning,
+        start_step,
+        last_step,
         ..Settings::new(dt, t_end, material)
     };
     Ok(Run {
         particles,
         settings,
     })
+}
+
+/// pkdgrav's particle material (`master.c msrInitialize`) with the normal spring
+/// `k_n`: ε_n = ε_t = 1, no friction of any kind, k_t = 2/7·k_n (`dKt = -1`).
+pub fn pkdgrav_material(k_n: f64) -> ParticleMaterial {
+    ParticleMaterial {
+        eps_n: 1.0,
+        eps_t: 1.0,
+        k_n,
+        k_t: par::KT_PER_KN * k_n,
+        mu_s: 0.0,
+        mu_r: 0.0,
+        mu_t: 0.0,
+    }
 }

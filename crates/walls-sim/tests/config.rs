@@ -1,15 +1,26 @@
 //! `config`: a run's settings come from the command line's flag if given, else the
-//! `.par` file, else the default; and the particles from `--particles`, else the `.par`
-//! file's `achInFile` (beside the `.par` file), else the dropped default particles.
+//! `.par` file, else the default (pkdgrav's, for a run from a `.par` file); the walls
+//! file from the argument, else the `.par` file's `achWallsFile`; the particles from
+//! `--particles`, else the `.par` file's `achInFile` (both beside the `.par` file), else
+//! the dropped default particles. `nSteps` and `iStartStep` are pkdgrav's step numbers.
 
 use nalgebra::Vector3;
-use walls_sim::config::{ConfigError, Flags, load, particle_file, resolve};
+use walls_sim::config::{
+    ConfigError, Flags, Run, load, particle_file, read_par, resolve, walls_file,
+};
+use walls_sim::io::par::KT_PER_KN;
 use walls_sim::io::par::Params;
 use walls_sim::run::default_dt;
 use walls_sim::run::defaults;
 use walls_test_support::{ball as particle, scene};
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
+
+/// Reads the `.par` file `flags` name, then the particles, as `walls-sim run` does.
+fn load_all(flags: &Flags, walls: &[walls_geometry::Wall]) -> Result<Run, ConfigError> {
+    let par = read_par(flags)?;
+    load(flags, par.as_ref(), walls)
+}
 
 fn ball() -> Vec<walls_geometry::Particle> {
     vec![particle([0.0, 0.0, 0.3], [0.0, 0.0, -2.0])]
@@ -135,16 +146,16 @@ fn load_reads_the_par_file_and_its_particles() {
         par: Some(path("run.par")),
         ..Flags::default()
     };
-    let run = load(&flags, &scene(FLOOR)).unwrap();
+    let run = load_all(&flags, &scene(FLOOR)).unwrap();
     assert_eq!(run.particles.len(), 1);
     assert_eq!((run.settings.dt, run.settings.material.k_n), (1e-5, 3e5));
     flags.particles = Some(path("two.csv"));
-    assert_eq!(load(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
+    assert_eq!(load_all(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
 
     // Errors name the file and the line.
     write("bad.par", "dDelta = 0\n");
     flags.par = Some(path("bad.par"));
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(matches!(e, ConfigError::File(_)));
     assert_eq!(
         e.to_string(),
@@ -158,15 +169,127 @@ fn load_reads_the_par_file_and_its_particles() {
         particles: Some(path("none.csv")),
         ..Flags::default()
     };
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert_eq!(e.to_string(), "no particles to run");
     let flags = Flags {
         particles: Some(path("missing.csv")),
         ..Flags::default()
     };
-    let e = load(&flags, &scene(FLOOR)).unwrap_err();
+    let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(
         e.to_string()
             .starts_with(&format!("cannot read {}: ", path("missing.csv")))
     );
+}
+
+#[test]
+fn nsteps_is_the_last_step_counted_exactly() {
+    // 20,000 steps of 1.05309e-12 accumulate to less than 20,000·dDelta: a run that
+    // stops by time takes a 20,001st step; pkdgrav counts.
+    let (dt, n) = (1.05309e-12, 20_000u64);
+    let t = (0..n).fold(0.0, |t, _| t + dt);
+    assert!(
+        t < n as f64 * dt - dt * 1e-9,
+        "the accumulated time falls short"
+    );
+    let par = Params {
+        dt: Some(dt),
+        steps: Some(n),
+        k_n: Some(1e-13),
+        ..Params::default()
+    };
+    // A ball far from the floor: nothing but steps.
+    let far = vec![particle([0.0, 0.0, 1e3], [0.0, 0.0, 0.0])];
+    let run = resolve(&Flags::default(), Some(&par), &scene(FLOOR), Some(far)).unwrap();
+    assert_eq!(run.settings.last_step, Some(n));
+    let out = walls_sim::run::run(&scene(FLOOR), run.particles, &run.settings);
+    assert_eq!(out.steps, n);
+    assert_eq!(out.t, t, "time accumulates step by step, as in pkdgrav");
+}
+
+#[test]
+fn istartstep_sets_the_first_step_number_and_the_start_time() {
+    let par = Params {
+        dt: Some(0.01),
+        steps: Some(25),
+        start_step: Some(5),
+        k_n: Some(1e4),
+        ..Params::default()
+    };
+    let run = resolve(&Flags::default(), Some(&par), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!((run.settings.start_step, run.settings.t_start()), (5, 0.05));
+    let mut seen = Vec::new();
+    let out = walls_sim::run::run_observed(
+        &scene(FLOOR),
+        run.particles,
+        &run.settings,
+        &mut |step, _, _, _| seen.push(step),
+    );
+    assert_eq!(seen, (6..=25).collect::<Vec<u64>>());
+    assert_eq!(out.steps, 20);
+    // A --t-end flag runs by time instead.
+    let flags = Flags {
+        t_end: Some(0.1),
+        ..Flags::default()
+    };
+    let run = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.last_step, None);
+}
+
+#[test]
+fn a_par_run_takes_pkdgravs_defaults_and_sentinels() {
+    let par = Params {
+        k_n: Some(7e4),
+        ..Params::default()
+    };
+    let m = resolve(&Flags::default(), Some(&par), &scene(FLOOR), Some(ball()))
+        .unwrap()
+        .settings
+        .material;
+    // dKt = -1 (or left out) is 2/7·dKn; ε 1 and no friction are pkdgrav's defaults.
+    assert_eq!(m.k_t, KT_PER_KN * 7e4);
+    assert_eq!((m.eps_n, m.eps_t), (1.0, 1.0));
+    assert_eq!((m.mu_s, m.mu_r, m.mu_t), (0.0, 0.0, 0.0));
+    // dKt = -1 follows a k_n given on the command line.
+    let flags = Flags {
+        k_n: Some(1e5),
+        ..Flags::default()
+    };
+    let m = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball()))
+        .unwrap()
+        .settings
+        .material;
+    assert_eq!(m.k_t, KT_PER_KN * 1e5);
+    // dKn = 0: pkdgrav's spring-less run, with a timestep from the scene's spring.
+    let par = Params {
+        k_n: Some(0.0),
+        ..Params::default()
+    };
+    let run = resolve(&Flags::default(), Some(&par), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.material.k_n, 0.0);
+    assert!(run.settings.dt.is_finite() && run.settings.dt > 0.0);
+}
+
+#[test]
+fn the_walls_file_from_the_argument_else_beside_the_par_file() {
+    let par = Params {
+        walls_file: Some("walls.dat".into()),
+        ..Params::default()
+    };
+    let flags = Flags {
+        par: Some("runs/a/ss.par".into()),
+        ..Flags::default()
+    };
+    let beside = std::path::Path::new("runs/a").join("walls.dat");
+    assert_eq!(
+        walls_file(None, &flags, Some(&par)).as_deref(),
+        beside.to_str()
+    );
+    assert_eq!(
+        walls_file(Some("mine.walls"), &flags, Some(&par)).as_deref(),
+        Some("mine.walls")
+    );
+    // Neither names one.
+    assert_eq!(walls_file(None, &flags, Some(&Params::default())), None);
+    assert_eq!(walls_file(None, &Flags::default(), None), None);
 }

@@ -131,7 +131,7 @@ fn broken_ss_files_say_where() {
 fn parameter_files() {
     let p = read_par(
         "# a pkdgrav run\nachInFile = \"ic.ss\"\nachWallsFile = walls.dat  # the walls\ndDelta = 1e-6\nnSteps = 2000\n\
-         dEpsN = 0.8\ndEpsT=1\ndKn = 1e5\ndMuS = 0.5\ndzUnifGrav = -9.8\nbWallsEdgeDetect = 0\nnOther = 3\n",
+         dEpsN = 0.8\ndEpsT=1\ndKn = 1e5\ndMuS = 0.5\ndzUnifGrav = -9.8\nbWallsEdgeDetect = 0\n",
     )
     .unwrap();
     assert_eq!(p.in_file.as_deref(), Some("ic.ss"));
@@ -156,7 +156,7 @@ fn parameter_files() {
     );
     assert_eq!(
         read_par("nSteps = 2.5\n").unwrap_err().to_string(),
-        "line 1: `nSteps` is 2.5, not a whole number"
+        "line 1: `nSteps` is `2.5`; it must be a whole number, 0 or more"
     );
     assert_eq!(
         read_par("dDelta 1\n").unwrap_err().to_string(),
@@ -171,7 +171,7 @@ fn parameter_files() {
         ),
         (
             "# k\ndKn = -5\n",
-            "line 2: `dKn` is `-5`; it must be greater than 0",
+            "line 2: `dKn` is `-5`; it must be 0 or more",
         ),
         (
             "dEpsN = 2\n",

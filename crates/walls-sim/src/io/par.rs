@@ -1,9 +1,17 @@
-//! pkdgrav parameter files: `name = value  # comment` lines, of which the evaluator reads
-//! the input and walls files, the timestep and step count, the material values, uniform
-//! gravity and edge detection; and the range each run parameter must lie in ([`Rule`]),
-//! whether it comes from a `.par` file or the command line.
+//! pkdgrav parameter files (`.par`): `name = value  # comment` lines, read as pkdgrav
+//! reads them (`reference/pkdgrav/physics.md` §3–4): the input and walls files, the
+//! timestep, the first and last step numbers and the output interval, the particles'
+//! material with pkdgrav's sentinels (`dKt = -1` is 2/7·`dKn`; the two-layer constants'
+//! −1 fall back to `dKn` and 2/7 of it), uniform gravity and edge detection; and the range
+//! each run parameter must lie in ([`Rule`]), whether it comes from a `.par` file or the
+//! command line.
 //!
-//! Every error names the `.par` line.
+//! Every key pkdgrav uses in wall runs has an entry in one table ([`KEYS`]): read, of
+//! no effect on what the evaluator computes, modelled at one value only, or not modelled
+//! yet. A line the evaluator does not follow (a key it does not model, a value it does
+//! not model, a key it does not know, with a "did you mean") is a [`ParWarning`] naming
+//! the key and the line, never silently ignored; so is leaving out a key whose pkdgrav
+//! default the evaluator does not follow. Every error names the `.par` line.
 
 use super::{FileError, InputError, error};
 use nalgebra::Vector3;
@@ -11,7 +19,22 @@ use std::collections::HashMap;
 
 type Vec3 = Vector3<f64>;
 
-/// What the evaluator reads from a pkdgrav parameter file.
+/// pkdgrav's 2/7, as `master.c` writes it: `dKt = -1` means this times `dKn`, and the
+/// two-layer `dKtOuter`/`dKtInner` = −1 this times their normal constant.
+#[allow(
+    clippy::excessive_precision,
+    reason = "the digits pkdgrav's source writes"
+)]
+pub const KT_PER_KN: f64 = 0.2857142857142857143;
+
+/// The longest `.par` line pkdgrav reads whole: it reads lines in 128-byte chunks
+/// (`param.c`, `PRM_LINE_SIZE`), so a longer line's rest is parsed as a line of its own,
+/// a syntax error.
+pub const LINE_LIMIT: usize = 127;
+
+/// What the evaluator reads from a pkdgrav parameter file: `None` where the file does
+/// not give the key (the run then takes the flag, pkdgrav's default or the evaluator's,
+/// as `config` says).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Params {
     /// `achInFile`: the particle (.ss) file.
@@ -20,15 +43,21 @@ pub struct Params {
     pub walls_file: Option<String>,
     /// `dDelta`: the timestep.
     pub dt: Option<f64>,
-    /// `nSteps`: the number of steps.
+    /// `nSteps`: the number of the last step (steps run from `iStartStep` + 1 to it).
     pub steps: Option<u64>,
+    /// `iStartStep`: the number of the step the run starts after (pkdgrav's default 0);
+    /// the run starts at time `iStartStep`·`dDelta`.
+    pub start_step: Option<u64>,
+    /// `iOutInterval`: outputs at the steps that are multiples of it, and at the last.
+    pub out_interval: Option<u64>,
     /// `dEpsN`, `dEpsT`: the particles' coefficients of restitution.
     pub eps_n: Option<f64>,
     /// See `eps_n`.
     pub eps_t: Option<f64>,
-    /// `dKn`, `dKt`: the particles' spring constants.
+    /// `dKn`: the particles' normal spring constant.
     pub k_n: Option<f64>,
-    /// See `k_n`.
+    /// `dKt`: the particles' tangential spring constant; `None` when the file leaves it
+    /// at (or writes) pkdgrav's −1, which means [`KT_PER_KN`] times the normal constant.
     pub k_t: Option<f64>,
     /// `dMuS`, `dMuR`, `dMuT`: the particles' friction coefficients.
     pub mu_s: Option<f64>,
@@ -40,6 +69,286 @@ pub struct Params {
     pub gravity: Option<Vec3>,
     /// `bWallsEdgeDetect`: HSDEM edge detection (pkdgrav's default is on).
     pub edge_detect: Option<bool>,
+    /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
+    /// any of them.
+    pub two_layer: Option<TwoLayer>,
+    /// What the evaluator does not follow, in line order.
+    pub warnings: Vec<ParWarning>,
+}
+
+/// pkdgrav's two-layer contact constants (physics.md §8), with its sentinels resolved:
+/// `dKnOuter`, `dKnInner` = −1 are `dKn`; `dKtOuter`, `dKtInner` = −1 are
+/// [`KT_PER_KN`] of their normal constant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoLayer {
+    /// `dInnerOverlapBndry`: the boundary as a fraction of the radius.
+    pub boundary: f64,
+    /// `dKnOuter`.
+    pub k_n_outer: f64,
+    /// `dKtOuter`.
+    pub k_t_outer: f64,
+    /// `dKnInner`.
+    pub k_n_inner: f64,
+    /// `dKtInner`.
+    pub k_t_inner: f64,
+}
+
+/// A `.par` line (or a key left out) that the evaluator does not follow as pkdgrav would.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ParWarning {
+    /// The line, 1-based; `None` for a key the file leaves out.
+    pub line: Option<usize>,
+    /// The key.
+    pub key: String,
+    /// What pkdgrav does, and what the evaluator does instead.
+    pub message: String,
+}
+
+impl std::fmt::Display for ParWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.line {
+            Some(n) => write!(f, "line {n}: `{}`: {}", self.key, self.message),
+            None => write!(f, "`{}` not given: {}", self.key, self.message),
+        }
+    }
+}
+
+/// What the evaluator does with a key pkdgrav knows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Use {
+    /// Read into [`Params`] and followed (or checked and resolved there).
+    Read,
+    /// Changes nothing the evaluator computes (output names, logging, the tree and
+    /// neighbour search, settings pkdgrav itself overrides).
+    NoEffect,
+    /// The evaluator does what pkdgrav does at `value` only: another value warns, and
+    /// so does leaving the key out when pkdgrav's `default` is not `value`.
+    Only {
+        /// The value the evaluator follows.
+        value: f64,
+        /// pkdgrav's default.
+        default: f64,
+        /// What pkdgrav does otherwise.
+        why: &'static str,
+    },
+    /// Physics the evaluator does not model yet: any line warns.
+    NotYet(&'static str),
+}
+
+const DEM_ONLY_2: &str = "pkdgrav's DEM builds need 2; the evaluator runs as if it were 2";
+const LEVELS: &str = "the evaluator warns and stops at pkdgrav's default overlap levels (3 %, 15 %, 50 % of the radius)";
+const TWO_LAYERS: &str = "two-layer contacts (DEM_TWOLAYERS, physics.md §8) are not modelled yet: the value is read and checked, but the run does not use it";
+const HARD_OPTION: &str = "pkdgrav's hard-sphere overlap, slide, collapse and crush options are not modelled yet (DEM builds ignore them)";
+
+/// Every `.par` key of pkdgrav's wall runs (physics.md §3–4), and a few general ones,
+/// with what the evaluator does with it. Keys beginning `dSlide`, `dCollapse` and
+/// `dCrush` (the hard-sphere options) are not listed one by one ([`use_of`]).
+pub const KEYS: &[(&str, Use)] = &[
+    ("achInFile", Use::Read),
+    ("achWallsFile", Use::Read),
+    ("dDelta", Use::Read),
+    ("nSteps", Use::Read),
+    ("iStartStep", Use::Read),
+    ("iOutInterval", Use::Read),
+    ("dEpsN", Use::Read),
+    ("dEpsT", Use::Read),
+    ("dKn", Use::Read),
+    ("dKt", Use::Read),
+    ("dMuS", Use::Read),
+    ("dMuR", Use::Read),
+    ("dMuT", Use::Read),
+    ("dxUnifGrav", Use::Read),
+    ("dyUnifGrav", Use::Read),
+    ("dzUnifGrav", Use::Read),
+    ("bWallsEdgeDetect", Use::Read),
+    ("dInnerOverlapBndry", Use::Read),
+    ("dKnOuter", Use::Read),
+    ("dKtOuter", Use::Read),
+    ("dKnInner", Use::Read),
+    ("dKtInner", Use::Read),
+    ("dBetaS", Use::Read),
+    ("achOutName", Use::NoEffect),
+    ("nDigits", Use::NoEffect),
+    ("iLogInterval", Use::NoEffect),
+    ("iRedOutInterval", Use::NoEffect),
+    ("bVWarnings", Use::NoEffect),
+    ("bVStart", Use::NoEffect),
+    ("bVDetails", Use::NoEffect),
+    ("bDoDensity", Use::NoEffect),
+    ("nSmooth", Use::NoEffect),
+    ("iFixedBallOption", Use::NoEffect),
+    ("bReadDEMData", Use::NoEffect),
+    ("nDEMOutputs", Use::NoEffect),
+    ("iDEMStatsInterval", Use::NoEffect),
+    ("dTangentialSpringDrag", Use::NoEffect),
+    ("iMaxRung", Use::NoEffect),
+    ("iCohesionModel", Use::NoEffect),
+    ("dTheta", Use::NoEffect),
+    ("dEta", Use::NoEffect),
+    ("nBucket", Use::NoEffect),
+    ("dExtraStore", Use::NoEffect),
+    ("bOverwrite", Use::NoEffect),
+    (
+        "bDoGravity",
+        Use::Only {
+            value: 1.0,
+            default: 1.0,
+            why: "with 0, pkdgrav computes no contact forces at all (its DEM force call lives in the gravity step); the evaluator still computes them",
+        },
+    ),
+    (
+        "bDoSelfGravity",
+        Use::Only {
+            value: 0.0,
+            default: 1.0,
+            why: "pkdgrav adds self-gravity between the particles (tree gravity); the evaluator does not: set 0 for wall scenes",
+        },
+    ),
+    (
+        "iForceOverrideOption",
+        Use::Only {
+            value: 2.0,
+            default: 0.0,
+            why: DEM_ONLY_2,
+        },
+    ),
+    (
+        "iCheckInterval",
+        Use::Only {
+            value: 0.0,
+            default: 10.0,
+            why: "pkdgrav's DEM builds refuse checkpoints and exit at the start; the evaluator runs anyway: set 0",
+        },
+    ),
+    (
+        "bKDK",
+        Use::Only {
+            value: 1.0,
+            default: 1.0,
+            why: "the evaluator runs kick-drift-kick only (bKDK = 1)",
+        },
+    ),
+    (
+        "bHeliocentric",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "heliocentric frames are not modelled",
+        },
+    ),
+    (
+        "bPeriodic",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "periodic boundaries are not modelled",
+        },
+    ),
+    (
+        "iOutcomes",
+        Use::Only {
+            value: 2.0,
+            default: 2.0,
+            why: "the evaluator only bounces (2); DEM builds ignore iOutcomes, pkdgrav's hard-sphere code would merge or fragment",
+        },
+    ),
+    (
+        "dAccCrit",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "zeroing small motions (physics.md §1.7) is not modelled yet",
+        },
+    ),
+    (
+        "dMinorFrac",
+        Use::Only {
+            value: 0.03,
+            default: 0.03,
+            why: LEVELS,
+        },
+    ),
+    (
+        "dMajorFrac",
+        Use::Only {
+            value: 0.15,
+            default: 0.15,
+            why: LEVELS,
+        },
+    ),
+    (
+        "dErrorFrac",
+        Use::Only {
+            value: 0.5,
+            default: 0.5,
+            why: LEVELS,
+        },
+    ),
+    (
+        "bUseContactRadius",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "the contact radius of twisting (physics.md §1.4) is not modelled yet",
+        },
+    ),
+    (
+        "bUseLegacyRoll",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "the legacy rolling model (physics.md §1.6) is not modelled yet",
+        },
+    ),
+    (
+        "dCohesiveCoeff",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "cohesion (DEM_COHESION, physics.md §7) is not modelled yet",
+        },
+    ),
+    (
+        "bWallsSolveQuartic",
+        Use::Only {
+            value: 0.0,
+            default: 0.0,
+            why: "the quartic prediction near rotating cylinders is not modelled yet",
+        },
+    ),
+    (
+        "achCohesionFile",
+        Use::NotYet("per-colour cohesion (physics.md §7) is not modelled yet"),
+    ),
+    ("iOverlapOption", Use::NotYet(HARD_OPTION)),
+];
+
+/// What the evaluator does with `key`; `None` for a key it does not know.
+pub fn use_of(key: &str) -> Option<Use> {
+    if ["dSlide", "dCollapse", "dCrush"]
+        .iter()
+        .any(|p| key.starts_with(p))
+    {
+        return Some(Use::NotYet(HARD_OPTION));
+    }
+    KEYS.iter().find(|(k, _)| *k == key).map(|&(_, u)| u)
+}
+
+/// The known key nearest to the unknown `key`, if one is near enough to be a slip: the
+/// same letters in another case, or a few letters off.
+pub fn suggestion(key: &str) -> Option<&'static str> {
+    let lower = key.to_ascii_lowercase();
+    let budget = (key.len() / 4).max(1);
+    KEYS.iter()
+        .map(|&(k, _)| {
+            (
+                strsim::damerau_levenshtein(&k.to_ascii_lowercase(), &lower),
+                k,
+            )
+        })
+        .filter(|&(d, _)| d <= budget)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, k)| k)
 }
 
 /// The range a run parameter must lie in, whether it comes from a `.par` file or the
@@ -90,69 +399,247 @@ impl Rule {
     }
 }
 
-/// Reads a pkdgrav parameter file; other parameters are ignored.
-pub fn read_par(text: &str) -> Result<Params, InputError> {
-    let mut values: HashMap<&str, (usize, &str)> = HashMap::new();
-    for (n, raw) in text.lines().enumerate() {
-        let line = raw.split('#').next().unwrap_or("").trim();
-        if line.is_empty() {
-            continue;
+/// One `key = value` line.
+struct Line<'a> {
+    n: usize,
+    value: &'a str,
+}
+
+/// The lines of a `.par` file by key (a later line for a key replaces an earlier one, as
+/// in pkdgrav), and the keys with their lines in file order.
+struct Lines<'a> {
+    by_key: HashMap<&'a str, Line<'a>>,
+    order: Vec<(usize, &'a str)>,
+}
+
+impl<'a> Lines<'a> {
+    /// Splits `text` into its `key = value` lines.
+    fn split(text: &'a str) -> Result<Lines<'a>, InputError> {
+        let mut by_key = HashMap::new();
+        let mut order = Vec::new();
+        for (i, raw) in text.split('\n').enumerate() {
+            let n = i + 1;
+            if raw.len() > LINE_LIMIT {
+                return Err(error(
+                    format!("line {n}"),
+                    format!(
+                        "the line is {} bytes long; pkdgrav reads .par lines in 128-byte chunks, so it would read the rest of the line as a line of its own and stop with a syntax error: keep lines (comments included) to {LINE_LIMIT} bytes",
+                        raw.len()
+                    ),
+                ));
+            }
+            let line = raw.split('#').next().unwrap_or("").trim();
+            if line.is_empty() {
+                continue;
+            }
+            let Some((name, value)) = line.split_once('=') else {
+                return Err(error(
+                    format!("line {n}"),
+                    format!("`{line}` is not `name = value`"),
+                ));
+            };
+            let (name, value) = (name.trim(), value.trim().trim_matches('"'));
+            by_key.insert(name, Line { n, value });
+            order.push((n, name));
         }
-        let Some((name, value)) = line.split_once('=') else {
-            return Err(error(
-                format!("line {}", n + 1),
-                format!("`{line}` is not `name = value`"),
-            ));
-        };
-        values.insert(name.trim(), (n + 1, value.trim().trim_matches('"')));
+        Ok(Lines { by_key, order })
     }
-    let number = |name: &str, rule: Rule| -> Result<Option<f64>, InputError> {
-        values
-            .get(name)
-            .map(|&(n, v)| {
-                let x = v.parse::<f64>().map_err(|_| {
+
+    /// The line of `key`, if given.
+    fn line(&self, key: &str) -> Option<usize> {
+        self.by_key.get(key).map(|l| l.n)
+    }
+
+    fn text(&self, key: &str) -> Option<String> {
+        self.by_key.get(key).map(|l| l.value.to_string())
+    }
+
+    /// `key`'s value as a number, with its line.
+    fn real(&self, key: &str) -> Result<Option<(usize, f64)>, InputError> {
+        self.by_key
+            .get(key)
+            .map(|l| {
+                let x = l.value.parse::<f64>().map_err(|_| {
                     error(
-                        format!("line {n}"),
-                        format!("`{name}` is `{v}`, not a number"),
+                        format!("line {}", l.n),
+                        format!("`{key}` is `{}`, not a number", l.value),
                     )
                 })?;
+                Ok((l.n, x))
+            })
+            .transpose()
+    }
+
+    /// `key`'s value if it obeys `rule`.
+    fn checked(&self, key: &str, rule: Rule) -> Result<Option<f64>, InputError> {
+        self.real(key)?
+            .map(|(n, x)| {
                 rule.check(x).map_err(|says| {
                     error(
                         format!("line {n}"),
-                        format!("`{name}` is `{v}`; it must be {says}"),
+                        format!("`{key}` is `{}`; it must be {says}", self.by_key[key].value),
                     )
                 })
             })
             .transpose()
+    }
+
+    /// `key`'s value as a whole number of 0 or more (pkdgrav reads it with C's `%d`,
+    /// which would read `2e4` as 2: an error here).
+    fn count(&self, key: &str) -> Result<Option<u64>, InputError> {
+        self.by_key
+            .get(key)
+            .map(|l| {
+                l.value.parse::<u64>().map_err(|_| {
+                    error(
+                        format!("line {}", l.n),
+                        format!(
+                            "`{key}` is `{}`; it must be a whole number, 0 or more",
+                            l.value
+                        ),
+                    )
+                })
+            })
+            .transpose()
+    }
+
+    /// A spring constant with pkdgrav's −1 sentinel: `Ok(None)` for −1 (or not given),
+    /// an error for any other negative value.
+    fn spring(&self, key: &str) -> Result<Option<f64>, InputError> {
+        match self.real(key)? {
+            None => Ok(None),
+            Some((_, -1.0)) => Ok(None),
+            Some((n, x)) if x < 0.0 || !x.is_finite() => Err(error(
+                format!("line {n}"),
+                format!(
+                    "`{key}` is `{}`; it must be 0 or more, or -1 (pkdgrav's \"2/7 of the normal constant\")",
+                    self.by_key[key].value
+                ),
+            )),
+            Some((_, x)) => Ok(Some(x)),
+        }
+    }
+}
+
+/// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the
+/// others into its warnings ([`KEYS`]).
+pub fn read_par(text: &str) -> Result<Params, InputError> {
+    let lines = Lines::split(text)?;
+    let mut warnings = Vec::new();
+    let mut warn = |line: Option<usize>, key: &str, message: String| {
+        warnings.push(ParWarning {
+            line,
+            key: key.to_string(),
+            message,
+        });
     };
-    let text_of = |name: &str| values.get(name).map(|&(_, v)| v.to_string());
-    let gravity = ["dxUnifGrav", "dyUnifGrav", "dzUnifGrav"];
+    for &(n, key) in &lines.order {
+        if let Some(last) = lines.line(key)
+            && last != n
+        {
+            warn(
+                Some(n),
+                key,
+                format!("given again on line {last}, which wins (as in pkdgrav)"),
+            );
+            continue;
+        }
+        match use_of(key) {
+            None => warn(
+                Some(n),
+                key,
+                match suggestion(key) {
+                    Some(s) => format!(
+                        "not a pkdgrav parameter the evaluator knows, so it is ignored; did you mean `{s}`?"
+                    ),
+                    None => "not a pkdgrav parameter the evaluator knows, so it is ignored".into(),
+                },
+            ),
+            Some(Use::NotYet(why)) => warn(Some(n), key, why.to_string()),
+            Some(Use::Only { value, why, .. }) => {
+                // pkdgrav's switches (`b…`) are C ints: any value but 0 is on.
+                let same = |x: f64| {
+                    if key.starts_with('b') {
+                        (x != 0.0) == (value != 0.0)
+                    } else {
+                        x == value
+                    }
+                };
+                if let Some((_, x)) = lines.real(key)?
+                    && !same(x)
+                {
+                    warn(Some(n), key, format!("{x} is not modelled: {why}"));
+                }
+            }
+            Some(Use::Read | Use::NoEffect) => {}
+        }
+    }
+    for &(key, u) in KEYS {
+        if let Use::Only {
+            value,
+            default,
+            why,
+        } = u
+            && default != value
+            && lines.line(key).is_none()
+        {
+            warn(None, key, format!("pkdgrav's default is {default}: {why}"));
+        }
+    }
+    let k_n = lines.checked("dKn", Rule::NonNegative)?;
+    match (k_n, lines.line("dKn")) {
+        (None, _) => warn(
+            None,
+            "dKn",
+            "pkdgrav's default is 0 (no normal spring); the evaluator derives k_n from the scene instead (docs/evaluator.md)".into(),
+        ),
+        (Some(0.0), n) => warn(
+            n,
+            "dKn",
+            "0: pkdgrav warns and runs without a normal spring, so particles pass through walls and each other".into(),
+        ),
+        _ => {}
+    }
+    if let Some(n) = lines.line("dBetaS") {
+        lines.checked("dBetaS", Rule::NonNegative)?;
+        warn(
+            Some(n),
+            "dBetaS",
+            "β_s (the rolling and twisting spring–dashpot–slider, physics.md §1.4) is not modelled yet; the run does not use it".into(),
+        );
+    }
+    let two_layer = two_layer(&lines, k_n.unwrap_or(0.0))?;
+    for key in [
+        "dInnerOverlapBndry",
+        "dKnOuter",
+        "dKtOuter",
+        "dKnInner",
+        "dKtInner",
+    ] {
+        if let Some(n) = lines.line(key) {
+            warn(Some(n), key, TWO_LAYERS.into());
+        }
+    }
+    warnings.sort_by_key(|w| w.line.unwrap_or(usize::MAX));
     let g = [
-        number(gravity[0], Rule::Any)?,
-        number(gravity[1], Rule::Any)?,
-        number(gravity[2], Rule::Any)?,
+        lines.checked("dxUnifGrav", Rule::Any)?,
+        lines.checked("dyUnifGrav", Rule::Any)?,
+        lines.checked("dzUnifGrav", Rule::Any)?,
     ];
     Ok(Params {
-        in_file: text_of("achInFile"),
-        walls_file: text_of("achWallsFile"),
-        dt: number("dDelta", Rule::Positive)?,
-        steps: match number("nSteps", Rule::NonNegative)? {
-            Some(x) if x >= 0.0 && x.fract() == 0.0 => Some(x as u64),
-            Some(x) => {
-                return Err(error(
-                    format!("line {}", values["nSteps"].0),
-                    format!("`nSteps` is {x}, not a whole number"),
-                ));
-            }
-            None => None,
-        },
-        eps_n: number("dEpsN", Rule::Restitution)?,
-        eps_t: number("dEpsT", Rule::Tangential)?,
-        k_n: number("dKn", Rule::Positive)?,
-        k_t: number("dKt", Rule::NonNegative)?,
-        mu_s: number("dMuS", Rule::NonNegative)?,
-        mu_r: number("dMuR", Rule::NonNegative)?,
-        mu_t: number("dMuT", Rule::NonNegative)?,
+        in_file: lines.text("achInFile"),
+        walls_file: lines.text("achWallsFile"),
+        dt: lines.checked("dDelta", Rule::Positive)?,
+        steps: lines.count("nSteps")?,
+        start_step: lines.count("iStartStep")?,
+        out_interval: lines.count("iOutInterval")?,
+        eps_n: lines.checked("dEpsN", Rule::Restitution)?,
+        eps_t: lines.checked("dEpsT", Rule::Tangential)?,
+        k_n,
+        k_t: lines.spring("dKt")?,
+        mu_s: lines.checked("dMuS", Rule::NonNegative)?,
+        mu_r: lines.checked("dMuR", Rule::NonNegative)?,
+        mu_t: lines.checked("dMuT", Rule::NonNegative)?,
         gravity: g.iter().any(Option::is_some).then(|| {
             Vec3::new(
                 g[0].unwrap_or(0.0),
@@ -160,8 +647,57 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 g[2].unwrap_or(0.0),
             )
         }),
-        edge_detect: number("bWallsEdgeDetect", Rule::Any)?.map(|x| x != 0.0),
+        edge_detect: lines.real("bWallsEdgeDetect")?.map(|(_, x)| x != 0.0),
+        two_layer,
+        warnings,
     })
+}
+
+/// The two-layer constants when the file gives any, resolved against `k_n` (`dKn`) as
+/// pkdgrav does after parsing; each must then be above 0.
+fn two_layer(lines: &Lines, k_n: f64) -> Result<Option<TwoLayer>, InputError> {
+    let keys = [
+        "dInnerOverlapBndry",
+        "dKnOuter",
+        "dKtOuter",
+        "dKnInner",
+        "dKtInner",
+    ];
+    if keys.iter().all(|k| lines.line(k).is_none()) {
+        return Ok(None);
+    }
+    let k_n_outer = lines.spring("dKnOuter")?.unwrap_or(k_n);
+    let k_n_inner = lines.spring("dKnInner")?.unwrap_or(k_n);
+    let layers = TwoLayer {
+        boundary: lines
+            .checked("dInnerOverlapBndry", Rule::NonNegative)?
+            .unwrap_or(0.0),
+        k_n_outer,
+        k_t_outer: lines.spring("dKtOuter")?.unwrap_or(KT_PER_KN * k_n_outer),
+        k_n_inner,
+        k_t_inner: lines.spring("dKtInner")?.unwrap_or(KT_PER_KN * k_n_inner),
+    };
+    let resolved = [
+        ("dKnOuter", layers.k_n_outer),
+        ("dKtOuter", layers.k_t_outer),
+        ("dKnInner", layers.k_n_inner),
+        ("dKtInner", layers.k_t_inner),
+    ];
+    for (key, x) in resolved {
+        if x <= 0.0 {
+            let at = lines
+                .line(key)
+                .or(lines.line("dKn"))
+                .map_or_else(|| "the file".to_string(), |n| format!("line {n}"));
+            return Err(error(
+                at,
+                format!(
+                    "`{key}` comes to {x}; pkdgrav needs every two-layer spring constant above 0 (−1 means dKn, or 2/7 of the normal constant)"
+                ),
+            ));
+        }
+    }
+    Ok(Some(layers))
 }
 
 /// Reads the pkdgrav parameter file at `path`.

@@ -488,10 +488,10 @@ impl<'a> HardStepper<'a> {
             between,
         } = Materials::new(scene, &settings.material);
         let mut warnings = Vec::new();
-        let origins = Origins::new(scene, settings.stepping);
+        let origins = Origins::new(scene, settings.stepping, settings.t_start());
         let index = plan.wall_index.then(|| WallIndex::new(scene));
         let usable: Vec<bool> = origins
-            .walls(scene, 0.0)
+            .walls(scene, settings.t_start())
             .iter()
             .map(|w| w.shape.hard_sphere_supported())
             .collect();
@@ -529,14 +529,14 @@ impl<'a> HardStepper<'a> {
             pair_contacts: 0,
             warnings,
             collapse_warned: false,
-            t: 0.0,
-            steps: 0,
+            t: settings.t_start(),
+            steps: settings.start_step,
         }
     }
 
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
-        self.t < self.settings.t_end - self.settings.dt * 1e-9
+        self.settings.due(self.steps, self.t)
     }
 
     /// One step: kick, drift from collision to collision, kick.
@@ -642,7 +642,7 @@ impl<'a> HardStepper<'a> {
         let last = energy(&self.states, &self.settings.gravity);
         Outcome {
             t: self.t,
-            steps: self.steps,
+            steps: self.steps - self.settings.start_step,
             particles: self.states,
             events: self.events,
             assemblies: Vec::new(),

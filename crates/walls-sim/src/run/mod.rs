@@ -61,8 +61,14 @@ pub struct Settings {
     pub method: ContactModel,
     /// The timestep.
     pub dt: f64,
-    /// When to stop.
+    /// When to stop, unless `last_step` says.
     pub t_end: f64,
+    /// The number of the step the run starts after: it starts at `start_step`·`dt`, and
+    /// its steps are numbered from `start_step` + 1 (pkdgrav's `iStartStep`).
+    pub start_step: u64,
+    /// The number of the last step, when the run counts steps rather than time
+    /// (pkdgrav's `nSteps`): it then runs exactly the steps `start_step` + 1 … `last_step`.
+    pub last_step: Option<u64>,
     /// Uniform gravity.
     pub gravity: Vec3,
     /// The particles' material.
@@ -94,12 +100,14 @@ pub enum Planning {
 
 impl Settings {
     /// Settings with pkdgrav's defaults for what is not given: SSDEM, no gravity,
-    /// particle contacts and edge detection on.
+    /// particle contacts and edge detection on, from time 0 until `t_end`.
     pub fn new(dt: f64, t_end: f64, material: ParticleMaterial) -> Self {
         Settings {
             method: ContactModel::Ssdem,
             dt,
             t_end,
+            start_step: 0,
+            last_step: None,
             gravity: Vec3::zeros(),
             material,
             particle_contacts: true,
@@ -107,6 +115,19 @@ impl Settings {
             stepping: OscillationStepping::Exact,
             integrator: Integrator::Leapfrog,
             planning: Planning::Needed,
+        }
+    }
+
+    /// The time the run starts at: `start_step`·`dt` (pkdgrav's t₀).
+    pub fn t_start(&self) -> f64 {
+        self.start_step as f64 * self.dt
+    }
+
+    /// Whether a run that has reached step number `step` at time `t` takes another.
+    fn due(&self, step: u64, t: f64) -> bool {
+        match self.last_step {
+            Some(last) => step < last,
+            None => t < self.t_end - self.dt * 1e-9,
         }
     }
 }
@@ -192,7 +213,7 @@ impl State {
 pub struct Outcome {
     /// The time reached.
     pub t: f64,
-    /// Steps taken.
+    /// Steps taken (from `start_step`: the last step's number is `start_step` + this).
     pub steps: u64,
     /// The particles at the end.
     pub particles: Vec<State>,
@@ -208,8 +229,9 @@ pub struct Outcome {
     pub warnings: Vec<Warning>,
 }
 
-/// What watches a run: called after every step with the step number, the time, the
-/// particles and the reactive walls' assemblies.
+/// What watches a run: called after every step with the step number (pkdgrav's, counted
+/// from [`Settings::start_step`]), the time, the particles and the reactive walls'
+/// assemblies.
 pub type Observer<'a> =
     &'a mut dyn FnMut(u64, f64, &[State], &[crate::dynamics::reactive::Assembly]);
 
@@ -315,8 +337,12 @@ struct Origins {
 }
 
 impl Origins {
-    fn new(walls: &[Wall], stepping: OscillationStepping) -> Origins {
-        let now = walls.iter().map(Wall::origin_at_start).collect();
+    /// The origins at the start time `t0`.
+    fn new(walls: &[Wall], stepping: OscillationStepping, t0: f64) -> Origins {
+        let now = walls
+            .iter()
+            .map(|w| w.motion.position_or_origin(t0))
+            .collect();
         Origins { now, stepping }
     }
 

@@ -397,8 +397,8 @@ impl<'a> SoftStepper<'a> {
             .map(|w| w.motion.oscillation.amplitude != 0.0)
             .collect();
         warnings.extend(super::stability::soft_warnings(scene, &states, settings));
-        let origins = Origins::new(scene, settings.stepping);
-        let now = origins.walls(scene, 0.0);
+        let origins = Origins::new(scene, settings.stepping, settings.t_start());
+        let now = origins.walls(scene, settings.t_start());
         let mut assemblies = if plan.reactive {
             crate::dynamics::reactive::assemblies(scene)
         } else {
@@ -447,14 +447,14 @@ impl<'a> SoftStepper<'a> {
             warnings,
             overlaps: OverlapWarnings::default(),
             once: WarnedOnce::default(),
-            t: 0.0,
-            steps: 0,
+            t: settings.t_start(),
+            steps: settings.start_step,
         }
     }
 
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
-        self.t < self.settings.t_end - self.settings.dt * 1e-9
+        self.settings.due(self.steps, self.t)
     }
 
     /// One step: kick and drift, the walls and assemblies moved on, the forces of the
@@ -775,7 +775,7 @@ impl<'a> SoftStepper<'a> {
         let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
         Outcome {
             t: self.t,
-            steps: self.steps,
+            steps: self.steps - self.settings.start_step,
             particles: self.states,
             events: self.events,
             assemblies: self.assemblies,

@@ -15,9 +15,9 @@ use walls_sim::run::Settings;
 /// `walls-sim run`: the SPEC §2 command line.
 #[derive(clap::Args)]
 pub struct RunArgs {
-    /// The walls file.
+    /// The walls file (default: the --par file's achWallsFile, beside the .par file).
     #[arg(value_name = "FILE")]
-    pub file: String,
+    pub file: Option<String>,
     /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
     /// .ss file. Without it, nine particles are dropped onto the scene.
     #[allow(
@@ -26,8 +26,9 @@ pub struct RunArgs {
     )]
     #[arg(long, value_name = "FILE")]
     pub particles: Option<String>,
-    /// A pkdgrav parameter file: timestep, steps, material, gravity, and the particle
-    /// file (achInFile) when --particles is not given.
+    /// A pkdgrav parameter file: timestep, steps, output interval, material, gravity,
+    /// and the walls file (achWallsFile) and particle file (achInFile) when not given
+    /// here. Keys the evaluator does not follow are warned about.
     #[arg(long, value_name = "FILE")]
     pub par: Option<String>,
     /// The contact model.
@@ -70,8 +71,8 @@ pub struct RunArgs {
     /// (pkdgrav's bWallsEdgeDetect = 0).
     #[arg(long)]
     pub no_edges: bool,
-    /// Write the trajectory to DIR: particles.csv and walls.csv, at step 0 and every
-    /// --every steps.
+    /// Write the trajectory to DIR: particles.csv and walls.csv, at the start and every
+    /// --every steps (and at a --par run's last step).
     #[arg(long, value_name = "DIR")]
     pub out: Option<std::path::PathBuf>,
     /// How oscillating walls move: on the exact sinusoid, or step by step at the
@@ -90,9 +91,9 @@ pub struct RunArgs {
     /// than appending to them as pkdgrav does.
     #[arg(long)]
     pub fresh: bool,
-    /// Steps between trajectory rows.
-    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u64).range(1..))]
-    pub every: u64,
+    /// Steps between trajectory rows (default: the --par file's iOutInterval, else 100).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: Option<u64>,
     /// Print the result as JSON on standard output.
     #[arg(long)]
     pub json: bool,
@@ -133,19 +134,48 @@ pub struct Prepared {
     pub settings: Settings,
     /// How many errors the walls file has.
     pub errors: usize,
+    /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
+    /// 100; 0 (`iOutInterval = 0`) for none but the last step's.
+    pub every: u64,
 }
 
-/// Reads and checks everything a run needs: the walls file (checked in the run's mode),
-/// the particles, the `.par` file, and the settings from options, `.par` and defaults.
+/// Steps between outputs when neither `--every` nor the `.par` file says.
+const EVERY: u64 = 100;
+
+/// Reads and checks everything a run needs: the `.par` file (its warnings go to
+/// standard error), the walls file (the argument, else the `.par` file's; checked in the
+/// run's mode), the particles, and the settings from options, `.par` and defaults.
 pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
-    let (checked, errors) = read_walls(&args.file, args.method, "running")?;
+    use walls_sim::config;
+    let flags = flags(args);
+    let par = config::read_par(&flags).map_err(|e| e.to_string())?;
+    if let (Some(path), Some(p)) = (&args.par, &par) {
+        for w in &p.warnings {
+            eprintln!("walls-sim: warning: {path}: {w}");
+        }
+    }
+    let file =
+        config::walls_file(args.file.as_deref(), &flags, par.as_ref()).ok_or_else(
+            || match &args.par {
+                Some(path) => {
+                    format!("no walls file: give FILE, or an achWallsFile line in {path}")
+                }
+                None => "no walls file: give FILE, or --par with an achWallsFile line".to_string(),
+            },
+        )?;
+    let (checked, errors) = read_walls(&file, args.method, "running")?;
     let walls = decode(&checked.scene);
-    let run = walls_sim::config::load(&flags(args), &walls).map_err(|e| e.to_string())?;
+    let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
+    let every = args
+        .every
+        .or_else(|| par.as_ref()?.out_interval)
+        .unwrap_or(EVERY);
     Ok(Prepared {
         walls,
         particles: run.particles,
         settings: run.settings,
         errors,
+        every,
     })
 }
 
@@ -195,9 +225,11 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         particles,
         settings,
         errors,
+        every,
     } = prepare(args)?;
     let scene = &walls[..];
-    let (t_end, dt) = (settings.t_end, settings.dt);
+    // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
+    let output = |step: u64| (every > 0 && step % every == 0) || Some(step) == settings.last_step;
     let mut trajectory = match &args.out {
         Some(dir) => Some(
             walls_sim::io::trajectory::Trajectory::create(dir)
@@ -205,11 +237,15 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         ),
         None => None,
     };
-    let progress = progress_bar((t_end / dt).ceil() as u64);
+    let first = settings.start_step;
+    let progress = progress_bar(match settings.last_step {
+        Some(last) => last.saturating_sub(first),
+        None => ((settings.t_end - settings.t_start()) / settings.dt).ceil() as u64,
+    });
     let mut written: std::io::Result<()> = Ok(());
     if let Some(out) = &mut trajectory {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
-        written = out.record(0, 0.0, &start, scene, &[]);
+        written = out.record(first, settings.t_start(), &start, scene, &[]);
     }
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
     // appended to as pkdgrav does, unless --fresh.
@@ -228,16 +264,16 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         &settings,
         &mut |step, t, states, assemblies| {
             if let Some(bar) = &progress {
-                bar.set_position(step);
+                bar.set_position(step - first);
             }
             if let Some(out) = &mut reactive_files
-                && step % args.every == 0
+                && output(step)
                 && written.is_ok()
             {
                 written = out.record_assemblies(step, scene, assemblies);
             }
             if let Some(out) = &mut trajectory
-                && step % args.every == 0
+                && output(step)
                 && written.is_ok()
             {
                 written = out.record(step, t, states, scene, assemblies);
@@ -273,6 +309,19 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         for w in &outcome.warnings {
             eprintln!("walls-sim: warning: {w}");
         }
+    }
+    // Where pkdgrav would abort, the run stopped: say so, and exit 1.
+    if outcome
+        .warnings
+        .iter()
+        .any(|w| matches!(w, walls_sim::run::Warning::OverlapStop { .. }))
+    {
+        eprintln!(
+            "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: an overlap above half a radius",
+            first + outcome.steps,
+            outcome.t
+        );
+        return Ok(ExitCode::from(1));
     }
     Ok(exit_status(errors))
 }
