@@ -1,6 +1,6 @@
-//! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
-//! variant that feeds the dashpot velocities predicted to the step's end, or explicit
-//! Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
+//! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or pkdgrav's variant that
+//! feeds the wall dashpot velocities predicted to the step's end; or pkdgrav's whole
+//! order of operations, [`Integrator::Pkdgrav`]; or, to compare, explicit Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
 //! every particle a particle overlaps, and rolling and twisting resistance where the
 //! material has them.
 //!
@@ -14,7 +14,9 @@
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
 //! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,
 //! `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing kick),
-//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`.
+//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`;
+//! with [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before
+//! the first step, as pkdgrav does.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
