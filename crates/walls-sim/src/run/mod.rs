@@ -52,6 +52,15 @@ pub enum Integrator {
     /// acceleration, then the forces. First order and not symplectic; for comparison
     /// (docs/accuracy.md).
     ExplicitEuler,
+    /// pkdgrav's own step, in its order (physics.md §2): the forces evaluated once at
+    /// the start (stepping the springs of contacts open then); every contact, with a
+    /// wall or a particle, fed the velocities and spins predicted to the step's end
+    /// with the last accelerations (v_n + a_n·dt, w_n + ẇ_n·dt); pkdgrav's levers
+    /// (r − x against a wall, the distances to the plane of intersection between
+    /// particles, §1.1); and the walls moved as its soft-sphere build moves them (§5:
+    /// in steps of `step`, or of dt when it is 0, to the sinusoid's value, with the
+    /// velocity half a step after the step's end), whatever the oscillation stepping.
+    Pkdgrav,
 }
 
 /// What to run.
@@ -322,6 +331,16 @@ impl WallNow {
         }
     }
 
+    /// `wall` with its origin at `origin` and its origin's velocity `velocity`.
+    fn moving(wall: &Wall, origin: Vec3, velocity: Vec3) -> WallNow {
+        WallNow {
+            origin,
+            shape: wall.shape.at(origin),
+            velocity,
+            spin: wall.motion.spin(),
+        }
+    }
+
     /// The velocity of the wall's material at `q`.
     fn point_velocity(&self, q: &Vec3) -> Vec3 {
         self.velocity + self.spin.cross(&(q - self.origin))
@@ -355,6 +374,32 @@ impl Origins {
         }
     }
 
+    /// Moves every origin as pkdgrav's soft-sphere build does over the step from `t`
+    /// to `t + dt` (`msrWallsMove(t + dt/2, dt)`, physics.md §5): by the change of the
+    /// sinusoid and of the linear travel between the whole steps of `step` (dt when it
+    /// is 0) that hold t + dt/2 and t + 3dt/2.
+    fn advance_pkdgrav(&mut self, walls: &[Wall], t: f64, dt: f64) {
+        let (ta, tb) = (t + 0.5 * dt, t + 1.5 * dt);
+        for (o, w) in self.now.iter_mut().zip(walls) {
+            let m = &w.motion;
+            if !m.translates() {
+                continue;
+            }
+            let step = if m.step > 0.0 { m.step } else { dt };
+            let (qa, qb) = ((ta / step).floor() * step, (tb / step).floor() * step);
+            let osc = &m.oscillation;
+            let mut next = *o + m.velocity * (qb - qa);
+            if osc.amplitude != 0.0 {
+                let phase = std::f64::consts::TAU * osc.cycle();
+                let swing = (osc.frequency * qb + phase).sin() - (osc.frequency * qa + phase).sin();
+                next += osc.direction * (osc.amplitude * swing);
+            }
+            if next.iter().all(|x| x.is_finite()) {
+                *o = next;
+            }
+        }
+    }
+
     /// The walls as they stand at time `t`.
     fn walls(&self, walls: &[Wall], t: f64) -> Vec<WallNow> {
         walls
@@ -363,6 +408,28 @@ impl Origins {
             .map(|(w, o)| WallNow::new(w, *o, t))
             .collect()
     }
+
+    /// The walls where they stand, their origins moving at pkdgrav's velocity for time
+    /// `t` ([`smooth_velocity`]).
+    fn walls_pkdgrav(&self, walls: &[Wall], t: f64) -> Vec<WallNow> {
+        walls
+            .iter()
+            .zip(&self.now)
+            .map(|(w, o)| WallNow::moving(w, *o, smooth_velocity(&w.motion, t)))
+            .collect()
+    }
+}
+
+/// The velocity pkdgrav gives a wall's origin at time `t` (physics.md §5): `velocity`
+/// plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to `step`.
+fn smooth_velocity(motion: &walls_geometry::Motion, t: f64) -> Vec3 {
+    let o = &motion.oscillation;
+    let mut v = motion.velocity;
+    if o.amplitude != 0.0 {
+        let angle = o.frequency * t + std::f64::consts::TAU * o.cycle();
+        v += o.direction * (o.amplitude * o.frequency * angle.cos());
+    }
+    v
 }
 
 /// `v` turned about the axis of `spin` by its rate times `time`.

@@ -1,6 +1,6 @@
-//! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or, to compare, pkdgrav's
-//! variant that feeds the dashpot velocities predicted to the step's end, or explicit
-//! Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
+//! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or pkdgrav's variant that
+//! feeds the wall dashpot velocities predicted to the step's end; or pkdgrav's whole
+//! order of operations, [`Integrator::Pkdgrav`]; or, to compare, explicit Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
 //! every particle a particle overlaps, and rolling and twisting resistance where the
 //! material has them.
 //!
@@ -14,7 +14,9 @@
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
 //! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,
 //! `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing kick),
-//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`.
+//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`;
+//! with [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before
+//! the first step, as pkdgrav does.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
@@ -100,6 +102,12 @@ struct Walls<'a> {
     /// The fraction of a step by which contact velocities are predicted ahead with the
     /// last acceleration (pkdgrav's dashpot velocity: ½).
     predict: f64,
+    /// The fraction of a step by which spins are predicted ahead with the last angular
+    /// acceleration.
+    predict_spin: f64,
+    /// Whether the lever of the contact velocity and of the tangential force is
+    /// pkdgrav's r − x (else the radius).
+    pkdgrav_levers: bool,
     /// The time at the step's end, the timestep, and the step's number.
     t: f64,
     dt: f64,
@@ -192,7 +200,13 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             out.deepest = Some((overlap / r, w));
         }
         let vel = s.particle.vel + s.acc * (dt * walls.predict);
-        let u = vel + s.particle.spin.cross(&(-n * r)) - wall_v;
+        let spin = if walls.predict_spin != 0.0 {
+            s.particle.spin + s.alpha * (dt * walls.predict_spin)
+        } else {
+            s.particle.spin
+        };
+        let lever = if walls.pkdgrav_levers { r - overlap } else { r };
+        let u = vel + spin.cross(&(-n * lever)) - wall_v;
         let mat = &walls.materials[w];
         let k = k.unwrap_or_else(|| {
             open.push((
@@ -233,7 +247,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             velocity: u,
         };
         let c = if walls.plan.sliding_friction {
-            contact(m, r, &touch, &mut open[k].1.spring, dt, mat)
+            contact(m, lever, &touch, &mut open[k].1.spring, dt, mat)
         } else {
             normal_contact(&touch, mat.k_n, walls.damping[w] * m.sqrt())
         };
@@ -243,13 +257,13 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             // The reaction, at the contact point on the particle's surface (where its
             // own torque acts, so that angular momentum is kept exactly).
             let cog = walls.cogs[a];
-            let at = s.particle.pos - n * r;
+            let at = s.particle.pos - n * lever;
             out.reactions
                 .push((a, -c.force, (at - cog).cross(&-c.force)));
         }
         if walls.plan.rolling || walls.plan.twisting {
             let rolling = Rolling {
-                spin: s.particle.spin - wall.spin,
+                spin: spin - wall.spin,
                 normal: n,
                 normal_force: n.dot(&c.force).abs(),
                 lever: r,
@@ -284,22 +298,41 @@ struct Kicks {
     late: f64,
     /// The kick after the forces.
     closing: f64,
-    /// The contact-velocity prediction with the last acceleration.
+    /// The contact-velocity prediction with the last acceleration, against walls.
     predict: f64,
+    /// The prediction of spins (against walls and particles) and of the velocities of
+    /// particles meeting each other.
+    predict_all: f64,
+    /// pkdgrav's levers (physics.md §1.1) instead of the radii.
+    pkdgrav_levers: bool,
 }
 
 impl Kicks {
     fn of(integrator: Integrator) -> Kicks {
-        let (opening, late, closing, predict) = match integrator {
-            Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0),
-            Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5),
-            Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0),
+        let (opening, late, closing, predict, predict_all) = match integrator {
+            Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0, 0.0),
+            Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5, 0.0),
+            Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0, 0.0),
+            Integrator::Pkdgrav => (0.5, 0.0, 0.5, 0.5, 0.5),
         };
         Kicks {
             opening,
             late,
             closing,
             predict,
+            predict_all,
+            pkdgrav_levers: integrator == Integrator::Pkdgrav,
+        }
+    }
+
+    /// pkdgrav's force evaluation at the start (physics.md §2): the velocities and spins
+    /// as they are (v^pred = v, w^pred = w), and no kick after it.
+    fn at_start(self) -> Kicks {
+        Kicks {
+            closing: 0.0,
+            predict: 0.0,
+            predict_all: 0.0,
+            ..self
         }
     }
 }
@@ -398,7 +431,11 @@ impl<'a> SoftStepper<'a> {
             .collect();
         warnings.extend(super::stability::soft_warnings(scene, &states, settings));
         let origins = Origins::new(scene, settings.stepping, settings.t_start());
-        let now = origins.walls(scene, settings.t_start());
+        let now = if settings.integrator == Integrator::Pkdgrav {
+            origins.walls_pkdgrav(scene, settings.t_start())
+        } else {
+            origins.walls(scene, settings.t_start())
+        };
         let mut assemblies = if plan.reactive {
             crate::dynamics::reactive::assemblies(scene)
         } else {
@@ -452,6 +489,31 @@ impl<'a> SoftStepper<'a> {
         }
     }
 
+    /// pkdgrav's force evaluation at the start, before the first step (physics.md §2,
+    /// §12), for [`Integrator::Pkdgrav`]: gravity and every contact open at t₀, with
+    /// the velocities and spins as they are. It sets the accelerations the first kick
+    /// uses and steps the springs of those contacts once; it moves and kicks nothing.
+    fn start(&mut self) -> Flow {
+        let kicks = self.kicks;
+        self.kicks = kicks.at_start();
+        self.place_assemblies();
+        self.gravity_loads();
+        let mut flow = Flow::Continue;
+        if self.plan.particle_contacts
+            && self.states.len() > 1
+            && self.pair_contacts() == Flow::Stop
+        {
+            flow = Flow::Stop;
+        }
+        if flow == Flow::Continue {
+            self.wall_contacts();
+            flow = self.note_wall_contacts();
+            self.sum_reactions();
+        }
+        self.kicks = kicks;
+        flow
+    }
+
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
         self.settings.due(self.steps, self.t)
@@ -502,13 +564,23 @@ impl<'a> SoftStepper<'a> {
     /// The clock moves on a step, and the moving walls with it.
     fn move_walls(&mut self) {
         let dt = self.settings.dt;
+        let pkdgrav = self.settings.integrator == Integrator::Pkdgrav;
         if self.plan.moving_walls {
-            self.origins.advance(self.scene, self.t, dt);
+            if pkdgrav {
+                self.origins.advance_pkdgrav(self.scene, self.t, dt);
+            } else {
+                self.origins.advance(self.scene, self.t, dt);
+            }
         }
         self.t += dt;
         self.steps += 1;
         if self.plan.moving_walls {
-            self.now = self.origins.walls(self.scene, self.t);
+            self.now = if pkdgrav {
+                // pkdgrav's walls move at the velocity of half a step later (§5).
+                self.origins.walls_pkdgrav(self.scene, self.t + 0.5 * dt)
+            } else {
+                self.origins.walls(self.scene, self.t)
+            };
         }
     }
 
@@ -529,6 +601,14 @@ impl<'a> SoftStepper<'a> {
                 dt,
                 RotationIntegrator::AdaptiveRk,
             );
+        }
+        self.place_assemblies();
+    }
+
+    /// Each assembly's walls placed where it has taken them, and its centre of gravity
+    /// noted.
+    fn place_assemblies(&mut self) {
+        for a in &self.assemblies {
             for (k, &w) in a.walls.iter().enumerate() {
                 self.now[w] = WallNow {
                     origin: a.cog,
@@ -564,6 +644,11 @@ impl<'a> SoftStepper<'a> {
     /// The forces of the candidate pairs that overlap, in the list's order.
     fn pair_forces(&mut self) -> Flow {
         let (dt, step, t, plan) = (self.settings.dt, self.steps, self.t, self.plan);
+        let Kicks {
+            predict_all,
+            pkdgrav_levers,
+            ..
+        } = self.kicks;
         let mat = &self.between;
         let states = &self.states;
         let loads = &mut self.loads;
@@ -591,7 +676,27 @@ impl<'a> SoftStepper<'a> {
                 return Flow::Stop;
             }
             let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
-            let u = p.vel + p.spin.cross(&(-n * p.radius)) - q.vel - q.spin.cross(&(n * q.radius));
+            // The velocities and spins the contact sees: as they are, or (pkdgrav's)
+            // predicted to the step's end, for a free particle; a stuck one's as they are.
+            let seen = |s: &State, free: bool| {
+                if predict_all != 0.0 && free {
+                    (
+                        s.particle.vel + s.acc * (dt * predict_all),
+                        s.particle.spin + s.alpha * (dt * predict_all),
+                    )
+                } else {
+                    (s.particle.vel, s.particle.spin)
+                }
+            };
+            let ((vi, wi), (vj, wj)) = (seen(&states[i], free_i), seen(&states[j], free_j));
+            // The levers: the radii, or pkdgrav's distances from each centre to the
+            // plane where the spheres intersect (physics.md §1.1).
+            let (li, lj) = if pkdgrav_levers {
+                pair_levers(p.radius, q.radius, distance)
+            } else {
+                (p.radius, q.radius)
+            };
+            let u = vi + wi.cross(&(-n * li)) - vj - wj.cross(&(n * lj));
             let reduced = match (free_i, free_j) {
                 (true, true) => p.mass * q.mass / (p.mass + q.mass),
                 (true, false) => p.mass,
@@ -613,21 +718,21 @@ impl<'a> SoftStepper<'a> {
                 velocity: u,
             };
             let c = if plan.sliding_friction {
-                contact(reduced, p.radius, &touch, &mut entry.spring, dt, mat)
+                contact(reduced, li, &touch, &mut entry.spring, dt, mat)
             } else {
                 let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
                 normal_contact(&touch, mat.k_n, c_n)
             };
             // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂
             // from j.
-            let mut torque = (c.torque, c.torque * (q.radius / p.radius));
+            let mut torque = (c.torque, c.torque * (lj / li));
             if plan.rolling || plan.twisting {
                 let lever = p.radius * q.radius / (p.radius + q.radius);
                 // Equal and opposite torques change the relative spin through the
                 // reduced inertia (or the free one's, against a stuck particle).
                 let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
                 let rolling = Rolling {
-                    spin: p.spin - q.spin,
+                    spin: wi - wj,
                     normal: n,
                     normal_force: n.dot(&c.force).abs(),
                     lever,
@@ -668,6 +773,8 @@ impl<'a> SoftStepper<'a> {
             materials: &self.materials,
             closing_kick: self.kicks.closing,
             predict: self.kicks.predict,
+            predict_spin: self.kicks.predict_all,
+            pkdgrav_levers: self.kicks.pkdgrav_levers,
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,
@@ -753,6 +860,15 @@ impl<'a> SoftStepper<'a> {
     /// assemblies' closing half kick.
     fn kick_assemblies(&mut self) {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
+        self.sum_reactions();
+        for a in self.assemblies.iter_mut() {
+            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
+            a.kick(dt / 2.0);
+        }
+    }
+
+    /// The particles' reactions on the assemblies, summed in particle order.
+    fn sum_reactions(&mut self) {
         for a in self.assemblies.iter_mut() {
             a.force = Vec3::zeros();
             a.torque = Vec3::zeros();
@@ -762,10 +878,6 @@ impl<'a> SoftStepper<'a> {
                 self.assemblies[*a].force += f;
                 self.assemblies[*a].torque += tq;
             }
-        }
-        for a in self.assemblies.iter_mut() {
-            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-            a.kick(dt / 2.0);
         }
     }
 
@@ -794,6 +906,9 @@ pub(super) fn run(
     observe: Observer,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
+    if settings.integrator == Integrator::Pkdgrav && run.start() == Flow::Stop {
+        return run.outcome();
+    }
     while run.running() {
         if run.step() == Flow::Stop {
             break;
@@ -853,6 +968,18 @@ impl PairList {
         if stale {
             self.build(states);
         }
+    }
+}
+
+/// pkdgrav's levers of a pair contact (physics.md §1.1): the distances from the centres
+/// of spheres of radii `a` and `b`, `d` apart, to the plane where they intersect;
+/// exactly d/2 each when the radii are equal.
+fn pair_levers(a: f64, b: f64, d: f64) -> (f64, f64) {
+    if a == b {
+        (0.5 * d, 0.5 * d)
+    } else {
+        let la = (a * a - b * b + d * d) / (2.0 * d);
+        (la, d - la)
     }
 }
 
