@@ -28,7 +28,7 @@ pub mod poly;
 pub mod shape;
 mod wall;
 
-pub use material::Material;
+pub use material::{BETA_S_DEFAULT, Material};
 pub use mesh::Mesh;
 pub use motion::{Motion, Oscillation, OscillationStepping};
 pub use particle::Particle;

@@ -1,6 +1,6 @@
 //! A contact's material values, and pkdgrav's fall-backs from a wall's values to the
 //! particles' (SPEC §3): a wall's `epsn`/`epst` of 99 and its `k_n`, `k_t`, `mu_s`,
-//! `mu_r`, `mu_t` of −1 mean "the particles' value".
+//! `mu_r`, `mu_t`, `beta_s` of −1 mean "the particles' value".
 
 /// The material values of a contact, or of a wall as written.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -19,7 +19,14 @@ pub struct Material {
     pub mu_r: f64,
     /// Twisting friction coefficient (0: none).
     pub mu_t: f64,
+    /// The shape parameter β_s of the rolling and twisting spring–dashpot–slider
+    /// (pkdgrav's `dBetaS`, a wall's `beta_s`; physics.md §1.4).
+    pub beta_s: f64,
 }
+
+/// pkdgrav's β_s when the `.par` file leaves `dBetaS` out (its default build,
+/// `DEM_ROTATION_DASHPOT`; physics.md §4).
+pub const BETA_S_DEFAULT: f64 = 0.5;
 
 /// The restitution value that means "the particles' value".
 pub const EPS_FALLBACK: f64 = 99.0;
@@ -41,6 +48,7 @@ impl Material {
             mu_s: own(self.mu_s, particles.mu_s),
             mu_r: own(self.mu_r, particles.mu_r),
             mu_t: own(self.mu_t, particles.mu_t),
+            beta_s: own(self.beta_s, particles.beta_s),
         }
     }
 

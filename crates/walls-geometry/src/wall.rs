@@ -136,6 +136,7 @@ impl Wall {
             mu_s: number(Keyword::MuS),
             mu_r: number(Keyword::MuR),
             mu_t: number(Keyword::MuT),
+            beta_s: number(Keyword::BetaS),
         };
         let appearance = Appearance {
             color: wall.integer(Keyword::Color),

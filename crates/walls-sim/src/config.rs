@@ -188,6 +188,7 @@ pub fn resolve(
         mu_s: flags.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(default.mu_s),
         mu_r: flags.mu_r.or(from_par(|p| p.mu_r)).unwrap_or(default.mu_r),
         mu_t: flags.mu_t.or(from_par(|p| p.mu_t)).unwrap_or(default.mu_t),
+        beta_s: from_par(|p| p.beta_s).unwrap_or(default.beta_s),
     };
     let start_step = par.and_then(|p| p.start_step).unwrap_or(0);
     let last_step = match flags.t_end {
@@ -246,5 +247,6 @@ pub fn pkdgrav_material(k_n: f64) -> ParticleMaterial {
         mu_s: 0.0,
         mu_r: 0.0,
         mu_t: 0.0,
+        beta_s: walls_geometry::BETA_S_DEFAULT,
     }
 }

@@ -135,6 +135,7 @@ impl Par {
             mu_s: self.or("dMuS", 0.0),
             mu_r: self.or("dMuR", 0.0),
             mu_t: self.or("dMuT", 0.0),
+            beta_s: self.or("dBetaS", walls_geometry::BETA_S_DEFAULT),
         };
         let dt = self.number("dDelta").expect("dDelta");
         // pkdgrav takes exactly nSteps steps. The run adds dt to its clock each step and

@@ -24,6 +24,7 @@ fn material(eps_n: f64, eps_t: f64, mu_s: f64) -> ParticleMaterial {
         mu_s,
         mu_r: 0.0,
         mu_t: 0.0,
+        beta_s: walls_geometry::BETA_S_DEFAULT,
     }
 }
 

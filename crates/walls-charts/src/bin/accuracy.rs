@@ -104,6 +104,7 @@ fn settings(
                 mu_s: 0.0,
                 mu_r: 0.0,
                 mu_t: 0.0,
+                beta_s: walls_geometry::BETA_S_DEFAULT,
             },
         )
     }

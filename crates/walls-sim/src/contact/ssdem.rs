@@ -152,3 +152,162 @@ pub fn resistance(c: &Rolling, mu_r: f64, mu_t: f64, dt: f64) -> Vec3 {
 pub fn contact_radius(r: f64, x: f64) -> f64 {
     (2.0 * r * x - x * x).max(0.0).sqrt()
 }
+
+/// What pkdgrav keeps of one contact from step to step (`dem.h DEM_ELEMENT`, physics.md
+/// §1.3): the shear spring, the normal it was last turned to (pkdgrav's: towards the
+/// partner; zero in a new contact), the rolling spring and the twist angle.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Record {
+    /// The shear spring S.
+    pub spring: Vec3,
+    /// The previous normal n_old, from the particle towards its partner.
+    pub normal: Vec3,
+    /// The rolling spring.
+    pub roll: Vec3,
+    /// The twist angle.
+    pub twist: f64,
+}
+
+/// One contact as pkdgrav's `DEM_ROTATION_DASHPOT` build sees it (physics.md §1.1–§1.4),
+/// in its own frame: particle 1 and its partner 2 (a particle or a wall).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dashpot {
+    /// The overlap x.
+    pub overlap: f64,
+    /// The unit normal n̂ from particle 1 towards its partner.
+    pub normal: Vec3,
+    /// The partner's contact-point velocity relative to particle 1's, predicted (u).
+    pub velocity: Vec3,
+    /// The partner's spin less particle 1's, predicted (ω).
+    pub spin: Vec3,
+    /// The sum of the two spins as they are (the half-step spins; a wall's own spin),
+    /// which turn the springs about the mean normal.
+    pub turn: Vec3,
+    /// The levers l₁ and l₂ (a wall: d = r − x, and 0).
+    pub levers: (f64, f64),
+    /// The reduced mass μ.
+    pub mass: f64,
+    /// The rolling radius R* (r₁r₂/(r₁+r₂) between particles, r₁ against a wall).
+    pub radius: f64,
+    /// Whether the partner is a wall (the spring follows the normal the other way, and
+    /// κ = ½/d).
+    pub wall: bool,
+}
+
+/// What a [`Dashpot`] contact does: the force on particle 1 (−it on a particle partner)
+/// and the torques on both.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DashpotForce {
+    /// The force on particle 1, F_n + F_t.
+    pub force: Vec3,
+    /// The torque on particle 1.
+    pub torque: Vec3,
+    /// The torque on a particle partner.
+    pub partner_torque: Vec3,
+    /// The rolling and twisting torque on particle 1, M_r + M_t (the partner feels
+    /// −it).
+    pub resistance: Vec3,
+}
+
+/// `v` turned right-handedly about the unit `axis` by the angle whose sine and cosine are
+/// given.
+fn turn(v: &Vec3, axis: &Vec3, sin: f64, cos: f64) -> Vec3 {
+    v * cos + axis.cross(v) * sin + axis * (axis.dot(v) * (1.0 - cos))
+}
+
+/// pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting (physics.md
+/// §1.2–§1.5): the springs in `record` turned with the contact (about the mean normal by
+/// the mean spin over `dt`, then with the normal's change, the other way for a wall),
+/// stretched, and limited (the shear spring reset when the contact slides, the rolling
+/// and twisting springs held at their slider limits).
+pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material) -> DashpotForce {
+    let n = &c.normal;
+    if record.normal != Vec3::zeros() {
+        // §1.3 step 1: about the mean normal, by the mean spin of the two over the step.
+        if let Some(mean) = (record.normal + n).try_normalize(0.0) {
+            let angle = 0.5 * dt * c.turn.dot(&mean);
+            if angle != 0.0 {
+                let (sin, cos) = angle.sin_cos();
+                record.spring = turn(&record.spring, &mean, sin, cos);
+                record.roll = turn(&record.roll, &mean, sin, cos);
+            }
+        }
+        // Step 2: with the change of normal (against it for a wall).
+        let a = if c.wall {
+            n.cross(&record.normal)
+        } else {
+            record.normal.cross(n)
+        };
+        let sin = a.norm();
+        if sin > 0.0 {
+            let axis = a / sin;
+            let cos = n.dot(&record.normal);
+            record.spring = turn(&record.spring, &axis, sin, cos);
+            record.roll = turn(&record.roll, &axis, sin, cos);
+        }
+    }
+    record.normal = *n;
+    let u = &c.velocity;
+    let un = n * n.dot(u);
+    let ut = u - un;
+    let c_n = damping(mat.eps_n, mat.k_n, c.mass);
+    let c_t = damping(mat.eps_t, mat.k_t, c.mass);
+    let f_n = n * (-mat.k_n * c.overlap) + un * c_n;
+    let normal_force = f_n.norm();
+    // Step 4 and 5: the shear spring, and the slide (spring reset, capped dashpot).
+    record.spring += ut * dt;
+    let mut f_t = record.spring * mat.k_t + ut * c_t;
+    let cap = mat.mu_s * normal_force;
+    if f_t.norm_squared() > cap * cap {
+        record.spring = Vec3::zeros();
+        let speed = ut.norm();
+        f_t = if speed > 0.0 {
+            ut * (cap.min(c_t * speed) / speed)
+        } else {
+            Vec3::zeros()
+        };
+    }
+    // §1.4: rolling and twisting, spring–dashpot–sliders scaled by (β_s R*)².
+    let b = (mat.beta_s * c.radius).powi(2);
+    let mut resistance = Vec3::zeros();
+    let (l1, l2) = c.levers;
+    if mat.mu_r != 0.0 {
+        let kappa = if c.wall {
+            0.5 / l1
+        } else {
+            0.5 * (l2 - l1) / (l1 * l2)
+        };
+        let rate = c.spin - n * n.dot(&c.spin) + n.cross(u) * kappa;
+        record.roll += rate * dt;
+        let mut m_r = record.roll * (mat.k_n * b);
+        let limit = mat.mu_r * mat.beta_s * c.radius * normal_force;
+        let size = m_r.norm();
+        if size > limit {
+            m_r *= limit / size;
+            record.roll -= rate * dt;
+        } else {
+            m_r += rate * (c_n * b);
+        }
+        resistance += m_r;
+    }
+    if mat.mu_t != 0.0 {
+        let rate = c.spin.dot(n);
+        record.twist += rate * dt;
+        let torque = 2.0 * mat.k_t * b * record.twist;
+        let limit = mat.mu_t * mat.beta_s * c.radius * mat.mu_s * normal_force;
+        let m_t = if torque.abs() > limit {
+            record.twist -= rate * dt;
+            limit.copysign(torque)
+        } else {
+            torque + 2.0 * c_t * b * rate
+        };
+        resistance += n * m_t;
+    }
+    let shear = n.cross(&f_t);
+    DashpotForce {
+        force: f_n + f_t,
+        torque: shear * l1 + resistance,
+        partner_torque: shear * l2 - resistance,
+        resistance,
+    }
+}

@@ -65,6 +65,9 @@ pub struct Params {
     pub mu_r: Option<f64>,
     /// See `mu_s`.
     pub mu_t: Option<f64>,
+    /// `dBetaS`: β_s of the rolling and twisting spring–dashpot–slider (physics.md
+    /// §1.4); pkdgrav's default is [`walls_geometry::BETA_S_DEFAULT`].
+    pub beta_s: Option<f64>,
     /// `dxUnifGrav`, `dyUnifGrav`, `dzUnifGrav`: uniform gravity (missing components 0).
     pub gravity: Option<Vec3>,
     /// `bWallsEdgeDetect`: HSDEM edge detection (pkdgrav's default is on).
@@ -600,14 +603,6 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         ),
         _ => {}
     }
-    if let Some(n) = lines.line("dBetaS") {
-        lines.checked("dBetaS", Rule::NonNegative)?;
-        warn(
-            Some(n),
-            "dBetaS",
-            "β_s (the rolling and twisting spring–dashpot–slider, physics.md §1.4) is not modelled yet; the run does not use it".into(),
-        );
-    }
     let two_layer = two_layer(&lines, k_n.unwrap_or(0.0))?;
     for key in [
         "dInnerOverlapBndry",
@@ -640,6 +635,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         mu_s: lines.checked("dMuS", Rule::NonNegative)?,
         mu_r: lines.checked("dMuR", Rule::NonNegative)?,
         mu_t: lines.checked("dMuT", Rule::NonNegative)?,
+        beta_s: lines.checked("dBetaS", Rule::NonNegative)?,
         gravity: g.iter().any(Option::is_some).then(|| {
             Vec3::new(
                 g[0].unwrap_or(0.0),

@@ -56,6 +56,7 @@ pub fn default_material(k_n: f64) -> ParticleMaterial {
         mu_s: 0.0,
         mu_r: 0.0,
         mu_t: 0.0,
+        beta_s: walls_geometry::BETA_S_DEFAULT,
     }
 }
 

@@ -25,8 +25,8 @@ use super::{
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    Material, Rolling, Touch, contact, contact_radius, damping_per_root_mass, normal_contact,
-    resistance,
+    Dashpot, Material, Record, Rolling, Touch, contact, contact_radius, damping_per_root_mass,
+    dashpot_contact, normal_contact, resistance,
 };
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
@@ -37,10 +37,11 @@ use walls_geometry::Wall;
 
 type Vec3 = Vector3<f64>;
 
-/// An open contact: the tangential spring, the normal speed it began with, and the last
-/// step it was seen.
+/// An open contact: its springs (the tangential spring alone, but with
+/// [`Integrator::Pkdgrav`] every spring pkdgrav keeps), the normal speed it began with,
+/// and the last step it was seen.
 struct Open {
-    spring: Vec3,
+    record: Record,
     vn_in: f64,
     seen: u64,
 }
@@ -212,7 +213,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             open.push((
                 w,
                 Open {
-                    spring: Vec3::zeros(),
+                    record: Record::default(),
                     vn_in: -n.dot(&u),
                     seen: step,
                 },
@@ -241,13 +242,42 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             open.swap_remove(k);
             return out;
         }
+        let plan = walls.plan;
+        if walls.pkdgrav_levers && (plan.sliding_friction || plan.rolling || plan.twisting) {
+            // pkdgrav's contact law, in its frame: the normal towards the wall, the
+            // wall's motion relative to the particle's (physics.md §1.1–§1.5).
+            let dashpot = Dashpot {
+                overlap,
+                normal: -n,
+                velocity: -u,
+                spin: wall.spin - spin,
+                turn: s.particle.spin + wall.spin,
+                levers: (lever, 0.0),
+                mass: m,
+                radius: r,
+                wall: true,
+            };
+            let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
+            load.force += c.force;
+            load.torque += c.torque;
+            if let Some(a) = walls.assembly_of[w] {
+                // The reaction (physics.md §10), with the rolling and twisting torques.
+                let at = s.particle.pos - n * lever;
+                out.reactions.push((
+                    a,
+                    -c.force,
+                    (at - walls.cogs[a]).cross(&-c.force) - c.resistance,
+                ));
+            }
+            continue;
+        }
         let touch = Touch {
             overlap,
             normal: n,
             velocity: u,
         };
-        let c = if walls.plan.sliding_friction {
-            contact(m, lever, &touch, &mut open[k].1.spring, dt, mat)
+        let c = if plan.sliding_friction {
+            contact(m, lever, &touch, &mut open[k].1.record.spring, dt, mat)
         } else {
             normal_contact(&touch, mat.k_n, walls.damping[w] * m.sqrt())
         };
@@ -706,19 +736,45 @@ impl<'a> SoftStepper<'a> {
             let entry = self.pairs_open.entry(i, j, || {
                 *began += 1;
                 Open {
-                    spring: Vec3::zeros(),
+                    record: Record::default(),
                     vn_in: -n.dot(&u),
                     seen: step,
                 }
             });
             entry.seen = step;
+            if pkdgrav_levers && (plan.sliding_friction || plan.rolling || plan.twisting) {
+                // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
+                // towards j, velocities and spins are j's relative to i's (physics.md
+                // §1.1–§1.5).
+                let dashpot = Dashpot {
+                    overlap,
+                    normal: -n,
+                    velocity: -u,
+                    spin: wj - wi,
+                    turn: p.spin + q.spin,
+                    levers: (li, lj),
+                    mass: reduced,
+                    radius: p.radius * q.radius / (p.radius + q.radius),
+                    wall: false,
+                };
+                let c = dashpot_contact(&dashpot, &mut entry.record, dt, mat);
+                if free_i {
+                    loads[i].force += c.force;
+                    loads[i].torque += c.torque;
+                }
+                if free_j {
+                    loads[j].force -= c.force;
+                    loads[j].torque += c.partner_torque;
+                }
+                continue;
+            }
             let touch = Touch {
                 overlap,
                 normal: n,
                 velocity: u,
             };
             let c = if plan.sliding_friction {
-                contact(reduced, li, &touch, &mut entry.spring, dt, mat)
+                contact(reduced, li, &touch, &mut entry.record.spring, dt, mat)
             } else {
                 let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
                 normal_contact(&touch, mat.k_n, c_n)
