@@ -15,8 +15,6 @@
 //!   1e-6) and must keep doing so;
 //! - [`Bar::Guard`]: a known model difference (docs/fidelity.md names its cause); the
 //!   error measured today, which may not grow by more than half;
-//! - [`Bar::FaithfulButSpin`]: positions and velocities reproduce pkdgrav (1e-9), and a
-//!   known model difference in spin alone is guarded as above;
 //! - [`Bar::OverlapStop`]: the simulator cannot run the scene at all: its run stops on
 //!   an overlap of two particles above half a radius (W103), at the step given (0: at
 //!   pkdgrav's force evaluation before the first step).
@@ -282,8 +280,6 @@ fn load(scene: &str) -> Scene {
 struct Measured {
     error: f64,
     worst: String,
-    /// The largest position and velocity errors alone.
-    motion: f64,
     outcome: Outcome,
     steps: u64,
 }
@@ -354,7 +350,6 @@ fn measure(scene: &str) -> Measured {
     Measured {
         error,
         worst,
-        motion: each[0].max(each[1]),
         outcome,
         steps: s.steps,
     }
@@ -367,9 +362,6 @@ enum Bar {
     /// A known model difference: the error measured today, which must not grow by more
     /// than half.
     Guard(f64),
-    /// Faithful in position and velocity (1e-9), a known model difference in spin
-    /// alone: the error measured today, which must not grow by more than half.
-    FaithfulButSpin(f64),
     /// The simulator cannot run the scene: the run stops at this step on an overlap of
     /// two particles above half a radius (W103).
     OverlapStop(u64),
@@ -393,19 +385,6 @@ fn check(scene: &str, bar: Bar) {
             m.error,
             m.worst
         ),
-        Bar::FaithfulButSpin(today) => {
-            assert!(
-                m.motion <= 1e-9,
-                "{scene}: position or velocity error {:.3e} above 1e-9",
-                m.motion
-            );
-            assert!(
-                m.error < 1.5 * today,
-                "{scene}: error {:.3e} at {}, up from {today:e} (docs/fidelity.md)",
-                m.error,
-                m.worst
-            );
-        }
         Bar::OverlapStop(step) => assert!(
             m.outcome.steps == step
                 && m.outcome.warnings.iter().any(|w| matches!(
@@ -436,32 +415,32 @@ macro_rules! scenes {
 scenes! {
     agg_cube: Bar::OverlapStop(0);
     cohesion: Bar::Guard(5.637);
-    cone_inside: Bar::Guard(2.331e-1);
-    contact_radius: Bar::Guard(9.044e-1);
-    cyl_finite: Bar::Guard(8.597e-2);
-    cyl_inf_inside: Bar::Guard(8.661e-2);
-    cylinder_test: Bar::Guard(7.498e-1);
-    disk: Bar::Guard(4.340e-2);
+    cone_inside: Bar::Faithful(1e-9);
+    contact_radius: Bar::Guard(4.730e-1);
+    cyl_finite: Bar::Faithful(1e-9);
+    cyl_inf_inside: Bar::Faithful(1e-9);
+    cylinder_test: Bar::Faithful(1e-6);
+    disk: Bar::Faithful(1e-9);
     hs_cyl_end: Bar::Faithful(1e-9);
     hs_disk_rim: Bar::Faithful(1e-9);
     hs_moving: Bar::Faithful(1e-9);
     hs_oblique: Bar::Faithful(1e-9);
     hs_rect_edge_corner: Bar::Faithful(1e-9);
     hs_sticky: Bar::Guard(3.512e-4);
-    osc_floor_step0: Bar::Guard(3.224e-1);
-    osc_floor_step5: Bar::Guard(3.264e-1);
-    pair_headon: Bar::FaithfulButSpin(1.695e-2);
-    pair_oblique: Bar::Guard(2.684e-2);
-    reactive_plate: Bar::Guard(4.120e-3);
-    rectangle: Bar::Guard(1.103e-1);
-    roll: Bar::Guard(3.347e-5);
-    shell: Bar::Guard(4.558e-1);
-    spinning_disk: Bar::Guard(1.515e-1);
-    sticky_death: Bar::Guard(1.533e-2);
-    translating_wall: Bar::Guard(5.893e-2);
-    triangle: Bar::Guard(7.423e-2);
-    twist_rest: Bar::FaithfulButSpin(1.469e-1);
-    two_layer: Bar::Guard(1.932e-1);
-    wall_oblique: Bar::Guard(2.848e-1);
-    wall_overrides: Bar::Guard(1.777e-1);
+    osc_floor_step0: Bar::Faithful(1e-9);
+    osc_floor_step5: Bar::Faithful(1e-9);
+    pair_headon: Bar::Faithful(1e-9);
+    pair_oblique: Bar::Faithful(1e-9);
+    reactive_plate: Bar::Guard(4.124e-3);
+    rectangle: Bar::Faithful(1e-9);
+    roll: Bar::Faithful(1e-9);
+    shell: Bar::Faithful(1e-9);
+    spinning_disk: Bar::Faithful(1e-9);
+    sticky_death: Bar::Faithful(1e-9);
+    translating_wall: Bar::Faithful(1e-9);
+    triangle: Bar::Faithful(1e-9);
+    twist_rest: Bar::Faithful(1e-9);
+    two_layer: Bar::Guard(1.883e-1);
+    wall_oblique: Bar::Faithful(1e-9);
+    wall_overrides: Bar::Faithful(1e-9);
 }

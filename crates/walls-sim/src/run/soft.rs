@@ -149,7 +149,11 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         return out;
     }
     if let Some((w, _)) = s.stuck_to {
-        carry(s, &walls.now[w], dt);
+        // pkdgrav carries a stuck particle with its wall's move, before the forces
+        // (physics.md §6; `SoftStepper::carry_stuck`).
+        if !walls.pkdgrav_levers {
+            carry(s, &walls.now[w], dt);
+        }
         return out;
     }
     let (m, r) = (s.particle.mass, s.particle.radius);
@@ -555,6 +559,9 @@ impl<'a> SoftStepper<'a> {
     fn step(&mut self) -> Flow {
         self.kick_drift();
         self.move_walls();
+        if self.kicks.pkdgrav_levers {
+            self.carry_stuck();
+        }
         self.move_assemblies();
         self.gravity_loads();
         if self.plan.particle_contacts
@@ -611,6 +618,19 @@ impl<'a> SoftStepper<'a> {
             } else {
                 self.origins.walls(self.scene, self.t)
             };
+        }
+    }
+
+    /// The particles stuck to walls carried with their walls' move, as pkdgrav moves
+    /// them in the wall move, before the forces (physics.md §6): with
+    /// [`Integrator::Pkdgrav`], which a particle meeting a stuck one then sees where the
+    /// wall has taken it.
+    fn carry_stuck(&mut self) {
+        let dt = self.settings.dt;
+        for s in &mut self.states {
+            if let (true, Some((w, _))) = (s.alive, s.stuck_to) {
+                carry(s, &self.now[w], dt);
+            }
         }
     }
 
