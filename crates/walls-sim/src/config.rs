@@ -223,6 +223,7 @@ pub fn resolve(
         gravity,
         particle_contacts: !flags.no_particle_contacts,
         edges: !flags.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),
+        contact_radius: par.and_then(|p| p.contact_radius).unwrap_or(false),
         stepping: flags.stepping,
         integrator: flags.integrator,
         planning: flags.planning,

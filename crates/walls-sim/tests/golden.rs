@@ -150,6 +150,7 @@ impl Par {
             edges: self.or("bWallsEdgeDetect", 1.0) != 0.0,
             stepping: OscillationStepping::Pkdgrav,
             integrator: Integrator::Pkdgrav,
+            contact_radius: self.or("bUseContactRadius", 0.0) != 0.0,
             ..Settings::new(dt, t_end, material)
         }
     }
@@ -416,7 +417,7 @@ scenes! {
     agg_cube: Bar::OverlapStop(0);
     cohesion: Bar::Guard(5.637);
     cone_inside: Bar::Faithful(1e-9);
-    contact_radius: Bar::Guard(4.730e-1);
+    contact_radius: Bar::Faithful(1e-9);
     cyl_finite: Bar::Faithful(1e-9);
     cyl_inf_inside: Bar::Faithful(1e-9);
     cylinder_test: Bar::Faithful(1e-6);

@@ -166,7 +166,8 @@ fn unknown_keys_warn_with_a_suggestion() {
 
 #[test]
 fn values_and_keys_the_evaluator_does_not_model_warn() {
-    // `dBetaS` is modelled (the rolling and twisting of Integrator::Pkdgrav): no warning.
+    // `dBetaS` and `bUseContactRadius` are modelled (the rolling and twisting of
+    // Integrator::Pkdgrav): no warning.
     let text = format!(
         "{QUIET}bDoGravity = 0\ndBetaS = 0.6\ndErrorFrac = 0.4\ndCohesiveCoeff = 0\nbUseContactRadius = 1\ndSlideLimit = 0.1\nnSmooth = 16\n"
     );
@@ -175,7 +176,6 @@ fn values_and_keys_the_evaluator_does_not_model_warn() {
         [
             (Some(5), "bDoGravity".to_string()),
             (Some(7), "dErrorFrac".into()),
-            (Some(9), "bUseContactRadius".into()),
             (Some(10), "dSlideLimit".into()),
         ]
     );

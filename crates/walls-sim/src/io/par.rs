@@ -72,6 +72,9 @@ pub struct Params {
     pub gravity: Option<Vec3>,
     /// `bWallsEdgeDetect`: HSDEM edge detection (pkdgrav's default is on).
     pub edge_detect: Option<bool>,
+    /// `bUseContactRadius`: the rolling and twisting radius is the contact radius
+    /// (physics.md §1.4; `Integrator::Pkdgrav` follows it).
+    pub contact_radius: Option<bool>,
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
     pub two_layer: Option<TwoLayer>,
@@ -287,14 +290,7 @@ pub const KEYS: &[(&str, Use)] = &[
             why: LEVELS,
         },
     ),
-    (
-        "bUseContactRadius",
-        Use::Only {
-            value: 0.0,
-            default: 0.0,
-            why: "the contact radius of twisting (physics.md §1.4) is not modelled yet",
-        },
-    ),
+    ("bUseContactRadius", Use::Read),
     (
         "bUseLegacyRoll",
         Use::Only {
@@ -644,6 +640,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             )
         }),
         edge_detect: lines.real("bWallsEdgeDetect")?.map(|(_, x)| x != 0.0),
+        contact_radius: lines.real("bUseContactRadius")?.map(|(_, x)| x != 0.0),
         two_layer,
         warnings,
     })

@@ -93,6 +93,10 @@ pub struct Settings {
     pub integrator: Integrator,
     /// Which parts of the model run: those the scene needs, or all of them.
     pub planning: Planning,
+    /// [`Integrator::Pkdgrav`]: whether the rolling and twisting radius R* is the
+    /// contact radius instead of the reduced radius (pkdgrav's `bUseContactRadius`,
+    /// physics.md §1.4; off by default).
+    pub contact_radius: bool,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -124,6 +128,7 @@ impl Settings {
             stepping: OscillationStepping::Exact,
             integrator: Integrator::Leapfrog,
             planning: Planning::Needed,
+            contact_radius: false,
         }
     }
 

@@ -107,8 +107,10 @@ struct Walls<'a> {
     /// acceleration.
     predict_spin: f64,
     /// Whether the lever of the contact velocity and of the tangential force is
-    /// pkdgrav's r − x (else the radius).
+    /// pkdgrav's r − x (else the radius), with pkdgrav's contact law.
     pkdgrav_levers: bool,
+    /// pkdgrav's rolling radius is the contact radius (`bUseContactRadius`).
+    contact_radius: bool,
     /// The time at the step's end, the timestep, and the step's number.
     t: f64,
     dt: f64,
@@ -258,7 +260,11 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 turn: s.particle.spin + wall.spin,
                 levers: (lever, 0.0),
                 mass: m,
-                radius: r,
+                radius: if walls.contact_radius {
+                    (r * r - lever * lever).max(0.0).sqrt()
+                } else {
+                    r
+                },
                 wall: true,
             };
             let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
@@ -774,7 +780,11 @@ impl<'a> SoftStepper<'a> {
                     turn: p.spin + q.spin,
                     levers: (li, lj),
                     mass: reduced,
-                    radius: p.radius * q.radius / (p.radius + q.radius),
+                    radius: if self.settings.contact_radius {
+                        (p.radius * p.radius - li * li).max(0.0).sqrt()
+                    } else {
+                        p.radius * q.radius / (p.radius + q.radius)
+                    },
                     wall: false,
                 };
                 let c = dashpot_contact(&dashpot, &mut entry.record, dt, mat);
@@ -851,6 +861,7 @@ impl<'a> SoftStepper<'a> {
             predict: self.kicks.predict,
             predict_spin: self.kicks.predict_all,
             pkdgrav_levers: self.kicks.pkdgrav_levers,
+            contact_radius: self.settings.contact_radius,
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,
