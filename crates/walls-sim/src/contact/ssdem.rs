@@ -10,6 +10,12 @@
 //! contact circle of a sphere of radius R overlapping by x. Each is capped so that it
 //! cannot reverse the spin within a step.
 //!
+//! [`dashpot_contact`] is pkdgrav's own law instead (its default `DEM_ROTATION_DASHPOT`
+//! build, physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls and pairs:
+//! the springs kept in a [`Record`] turn with the contact, the shear spring resets when
+//! the contact slides, and rolling and twisting are spring–dashpot–sliders scaled by
+//! (β_s R*)².
+//!
 //! Damping from restitution: C = −2·ln ε·√(m·k/(π² + ln²ε)), 0 when ε is 0 or 1. The
 //! contact lasts π/ω_d with ω_d² = k/m − (C/2m)².
 

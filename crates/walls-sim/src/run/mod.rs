@@ -59,7 +59,11 @@ pub enum Integrator {
     /// (r − x against a wall, the distances to the plane of intersection between
     /// particles, §1.1); and the walls moved as its soft-sphere build moves them (§5:
     /// in steps of `step`, or of dt when it is 0, to the sinusoid's value, with the
-    /// velocity half a step after the step's end), whatever the oscillation stepping.
+    /// velocity half a step after the step's end), whatever the oscillation stepping;
+    /// particles stuck to walls carried with the wall's move, before the forces (§6);
+    /// and pkdgrav's contact law (§1.3–§1.5, `contact::ssdem::dashpot_contact`): the
+    /// shear spring turned with the contact and reset when it slides, rolling and
+    /// twisting as spring–dashpot–sliders with β_s.
     Pkdgrav,
 }
 
