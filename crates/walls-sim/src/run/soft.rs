@@ -171,8 +171,11 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     match walls.index {
         Some(index) => {
             index.for_each_candidate(&s.particle.pos, r, walls.origins, |w| visit.push(w));
+            // The candidates come ascending; search only them (the walls pushed after
+            // them are not in order), so no wall is visited twice.
+            let candidates = visit.len();
             for (w, _) in &load.walls {
-                if visit.binary_search(w).is_err() {
+                if visit[..candidates].binary_search(w).is_err() {
                     visit.push(*w);
                 }
             }
@@ -246,6 +249,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 vn_out: 0.0,
             });
             open.swap_remove(k);
+            load.visit = visit;
             return out;
         }
         let plan = walls.plan;
