@@ -22,22 +22,22 @@
 //! `cargo test -p walls-sim --test golden -- --nocapture` prints each scene's error and
 //! run time (the figures of docs/fidelity.md).
 //!
-//! The run's settings come from the scene's `params.par` through [`Par`], a small local
-//! reading of the few keys the simulator uses, with pkdgrav's meaning of them
-//! (physics.md §4: `dKt = -1` is 2/7·dKn). It is temporary: `io::par` refuses
-//! `dKt = -1` today, and once `walls-sim run --par` runs a scene's folder as it is, these
-//! tests should read the folder the same way.
+//! Each scene runs as a pkdgrav run directory, the way `walls-sim run --par` runs one:
+//! its `params.par` read by `walls_sim::io::par` and resolved by `walls_sim::config`
+//! (pkdgrav's sentinels, the exact step count), with pkdgrav's integrator. Only the
+//! contact model comes from the build named in the file's opening comment (no `DEM`:
+//! hard spheres), as the evaluator has no `--pkdgrav-build` yet.
 
 use nalgebra::Vector3;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use walls_geometry::{Particle, Wall};
 use walls_sim::OscillationStepping;
-use walls_sim::io::particles::read_ss;
+use walls_sim::config::{self, Flags, Run};
+use walls_sim::io::par::read_file as read_par_file;
 use walls_sim::run::{
-    ContactModel, Integrator, Outcome, Overlapping, ParticleMaterial, Settings, State, Warning,
-    run_observed,
+    ContactModel, Integrator, Outcome, Overlapping, Settings, State, Warning, run_observed,
 };
 
 type Vec3 = Vector3<f64>;
@@ -54,105 +54,28 @@ fn read(scene: &str, file: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-/// The keys of a scene's `params.par` (temporary; see the module's documentation),
-/// with the build's compile options from the file's opening comment.
-struct Par {
-    values: HashMap<String, String>,
-    options: Vec<String>,
-}
-
-impl Par {
-    fn new(text: &str) -> Par {
-        let mut values = HashMap::new();
-        for line in text.lines() {
-            let line = line.split('#').next().unwrap_or("").trim();
-            if let Some((k, v)) = line.split_once('=') {
-                values.insert(k.trim().to_string(), v.trim().trim_matches('"').to_string());
-            }
+/// The contact model of the build named in a `params.par`'s opening comment ("# pkdgrav
+/// build: NAME -- compile options: A B C", continued over comment lines): soft spheres
+/// when the options include `DEM`.
+fn build_model(par: &str) -> ContactModel {
+    let mut header = String::new();
+    for line in par.lines().take_while(|l| l.starts_with('#')) {
+        if line.contains("pkdgrav reads") {
+            break;
         }
-        // "# pkdgrav build: NAME -- compile options: A B C" and its continuation lines,
-        // up to the first "(" that is not part of the options.
-        let mut header = String::new();
-        for line in text.lines().take_while(|l| l.starts_with('#')) {
-            if line.contains("pkdgrav reads") {
-                break;
-            }
-            header.push_str(line.trim_start_matches('#'));
-            header.push(' ');
-        }
-        let options = header
-            .split_once("compile options:")
-            .map(|(_, rest)| rest.split('(').next().unwrap_or(""))
-            .unwrap_or("")
-            .split_whitespace()
-            .map(str::to_string)
-            .collect();
-        Par { values, options }
+        header.push_str(line.trim_start_matches('#'));
+        header.push(' ');
     }
-
-    fn number(&self, key: &str) -> Option<f64> {
-        self.values.get(key).map(|v| {
-            v.parse()
-                .unwrap_or_else(|_| panic!("{key} = {v} is not a number"))
-        })
-    }
-
-    /// pkdgrav's value of `key`: the file's, else `default` (physics.md §4).
-    fn or(&self, key: &str, default: f64) -> f64 {
-        self.number(key).unwrap_or(default)
-    }
-
-    /// The contact model of the build: soft-sphere when it has `DEM`.
-    fn method(&self) -> ContactModel {
-        if self.options.iter().any(|o| o == "DEM") {
-            ContactModel::Ssdem
-        } else {
-            ContactModel::Hsdem
-        }
-    }
-
-    fn steps(&self) -> u64 {
-        self.or("nSteps", 0.0) as u64
-    }
-
-    /// The settings pkdgrav ran with, as far as the simulator has them: pkdgrav's
-    /// integrator (`Integrator::Pkdgrav`, which moves SSDEM walls pkdgrav's way itself)
-    /// and oscillation stepping (HSDEM's), the build's contact model, the material
-    /// (dKt = −1 → 2/7·dKn), gravity and edge detection.
-    fn settings(&self) -> Settings {
-        let k_n = self.or("dKn", 0.0);
-        let k_t = match self.or("dKt", -1.0) {
-            -1.0 => 0.285_714_285_714_285_7 * k_n,
-            k_t => k_t,
-        };
-        let material = ParticleMaterial {
-            eps_n: self.or("dEpsN", 1.0),
-            eps_t: self.or("dEpsT", 1.0),
-            k_n,
-            k_t,
-            mu_s: self.or("dMuS", 0.0),
-            mu_r: self.or("dMuR", 0.0),
-            mu_t: self.or("dMuT", 0.0),
-            beta_s: self.or("dBetaS", walls_geometry::BETA_S_DEFAULT),
-        };
-        let dt = self.number("dDelta").expect("dDelta");
-        // pkdgrav takes exactly nSteps steps. The run adds dt to its clock each step and
-        // stops at t_end, so t_end = nSteps·dt can take one step more when the sum falls
-        // short (cylinder_test, twist_rest): ask for half a step less.
-        let t_end = (self.steps() as f64 - 0.5) * dt;
-        Settings {
-            method: self.method(),
-            gravity: Vec3::new(
-                self.or("dxUnifGrav", 0.0),
-                self.or("dyUnifGrav", 0.0),
-                self.or("dzUnifGrav", 0.0),
-            ),
-            edges: self.or("bWallsEdgeDetect", 1.0) != 0.0,
-            stepping: OscillationStepping::Pkdgrav,
-            integrator: Integrator::Pkdgrav,
-            contact_radius: self.or("bUseContactRadius", 0.0) != 0.0,
-            ..Settings::new(dt, t_end, material)
-        }
+    let dem = header
+        .split_once("compile options:")
+        .map(|(_, rest)| rest.split('(').next().unwrap_or(""))
+        .unwrap_or("")
+        .split_whitespace()
+        .any(|o| o == "DEM");
+    if dem {
+        ContactModel::Ssdem
+    } else {
+        ContactModel::Hsdem
     }
 }
 
@@ -255,15 +178,27 @@ struct Scene {
 }
 
 fn load(scene: &str) -> Scene {
-    let par = Par::new(&read(scene, "params.par"));
-    let settings = par.settings();
-    let walls = walls_test_support::scene_in(&read(scene, "walls.dat"), settings.method);
-    let bytes = std::fs::read(folder(scene).join("particles.ss")).expect("particles.ss");
-    let (_, particles) = read_ss(&bytes).unwrap_or_else(|e| panic!("particles.ss: {e}"));
+    let par_path = folder(scene).join("params.par");
+    let par_path = par_path.to_str().expect("a UTF-8 path").to_string();
+    let params = read_par_file(&par_path).unwrap_or_else(|e| panic!("{e}"));
+    let method = build_model(&read(scene, "params.par"));
+    let walls = walls_test_support::scene_in(&read(scene, "walls.dat"), method);
+    let flags = Flags {
+        par: Some(par_path),
+        method,
+        stepping: OscillationStepping::Pkdgrav,
+        integrator: Integrator::Pkdgrav,
+        ..Flags::default()
+    };
+    let Run {
+        particles,
+        settings,
+    } = config::load(&flags, Some(&params), &walls).unwrap_or_else(|e| panic!("{scene}: {e}"));
+    let last = params.steps.expect("nSteps");
     let expected = expected(scene);
     assert_eq!(
         expected.keys().next_back().copied(),
-        Some(par.steps()),
+        Some(last),
         "expected.csv ends at the last step"
     );
     let scales = scales(scene, &expected, &settings.gravity);
@@ -273,7 +208,7 @@ fn load(scene: &str) -> Scene {
         settings,
         expected,
         scales,
-        steps: par.steps(),
+        steps: last,
     }
 }
 
