@@ -84,7 +84,7 @@ impl Motion {
 
     /// The time the wall's motion is evaluated at: t quantised to whole steps. A step
     /// too small for t/step to be a finite double is no quantisation at all.
-    pub fn quantised_time(&self, t: f64) -> f64 {
+    fn quantised_time(&self, t: f64) -> f64 {
         let step = self.step;
         let steps = (t / step).floor();
         if step > 0.0 && steps.is_finite() {

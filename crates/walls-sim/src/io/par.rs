@@ -390,11 +390,7 @@ impl Rule {
             ),
             Rule::Fraction => (x > 0.0 && x <= 1.0, "above 0 and at most 1"),
         };
-        if ok && x.is_finite() {
-            Ok(x)
-        } else {
-            Err(says)
-        }
+        if ok { Ok(x) } else { Err(says) }
     }
 }
 
