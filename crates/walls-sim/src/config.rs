@@ -15,6 +15,7 @@
 //! [`read_par`] and [`load`] read the files; [`resolve`] applies the precedence.
 
 use crate::OscillationStepping;
+use crate::build::Build;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
@@ -34,6 +35,9 @@ pub struct Flags {
     pub par: Option<String>,
     /// `--method`.
     pub method: ContactModel,
+    /// `--pkdgrav-build` (default pkdgrav's default build, with `DEM` as `--method`
+    /// says); when given, it decides the contact model.
+    pub build: Option<Build>,
     /// `--dt`.
     pub dt: Option<f64>,
     /// `--t-end`.
@@ -163,7 +167,11 @@ pub fn resolve(
         (None, None) => Vec3::zeros(),
     };
     let from_par = |f: fn(&Params) -> Option<f64>| par.and_then(f);
-    let method = flags.method;
+    let build = flags
+        .build
+        .clone()
+        .unwrap_or_else(|| Build::default().with_model(flags.method));
+    let method = build.contact_model();
     let derived_k_n = || defaults::default_k_n(scene, &particles, &gravity);
     let k_n = flags
         .k_n
@@ -220,6 +228,7 @@ pub fn resolve(
     };
     let settings = Settings {
         method,
+        build,
         gravity,
         particle_contacts: !flags.no_particle_contacts,
         edges: !flags.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),

@@ -1,6 +1,7 @@
 //! The reference evaluator of walls files (SPEC §3), on the typed walls of
 //! walls-geometry (shapes, motion, material). Its layout is the pipeline:
 //!
+//! * [`build`]: pkdgrav's compile options, which decide its physics;
 //! * [`io`]: the particles and parameters of a pkdgrav run (CSV, `.ss`, `.par`), the
 //!   trajectory and pkdgrav's WALLSREACT files, each reader beside its writer; and
 //!   [`config`], the run's settings from flags, then the `.par` file, then defaults;
@@ -15,6 +16,7 @@
 
 pub mod advise;
 pub mod broad;
+pub mod build;
 pub mod config;
 pub mod contact;
 pub mod dynamics;

@@ -24,9 +24,8 @@
 //!
 //! Each scene runs as a pkdgrav run directory, the way `walls-sim run --par` runs one:
 //! its `params.par` read by `walls_sim::io::par` and resolved by `walls_sim::config`
-//! (pkdgrav's sentinels, the exact step count), with pkdgrav's integrator. Only the
-//! contact model comes from the build named in the file's opening comment (no `DEM`:
-//! hard spheres), as the evaluator has no `--pkdgrav-build` yet.
+//! (pkdgrav's sentinels, the exact step count), with pkdgrav's integrator and the build
+//! named in the file's opening comment, as `--pkdgrav-build` gives it.
 
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
@@ -34,11 +33,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use walls_geometry::{Particle, Wall};
 use walls_sim::OscillationStepping;
+use walls_sim::build::Build;
 use walls_sim::config::{self, Flags, Run};
 use walls_sim::io::par::read_file as read_par_file;
-use walls_sim::run::{
-    ContactModel, Integrator, Outcome, Overlapping, Settings, State, Warning, run_observed,
-};
+use walls_sim::run::{Integrator, Outcome, Overlapping, Settings, State, Warning, run_observed};
 
 type Vec3 = Vector3<f64>;
 
@@ -54,10 +52,9 @@ fn read(scene: &str, file: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-/// The contact model of the build named in a `params.par`'s opening comment ("# pkdgrav
-/// build: NAME -- compile options: A B C", continued over comment lines): soft spheres
-/// when the options include `DEM`.
-fn build_model(par: &str) -> ContactModel {
+/// The build named in a `params.par`'s opening comment ("# pkdgrav build: NAME --
+/// compile options: A B C", continued over comment lines, up to a parenthesis).
+fn build_of(par: &str) -> Build {
     let mut header = String::new();
     for line in par.lines().take_while(|l| l.starts_with('#')) {
         if line.contains("pkdgrav reads") {
@@ -66,17 +63,11 @@ fn build_model(par: &str) -> ContactModel {
         header.push_str(line.trim_start_matches('#'));
         header.push(' ');
     }
-    let dem = header
+    let options = header
         .split_once("compile options:")
         .map(|(_, rest)| rest.split('(').next().unwrap_or(""))
-        .unwrap_or("")
-        .split_whitespace()
-        .any(|o| o == "DEM");
-    if dem {
-        ContactModel::Ssdem
-    } else {
-        ContactModel::Hsdem
-    }
+        .unwrap_or("");
+    Build::parse(options).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// One particle's state as pkdgrav wrote it.
@@ -181,11 +172,11 @@ fn load(scene: &str) -> Scene {
     let par_path = folder(scene).join("params.par");
     let par_path = par_path.to_str().expect("a UTF-8 path").to_string();
     let params = read_par_file(&par_path).unwrap_or_else(|e| panic!("{e}"));
-    let method = build_model(&read(scene, "params.par"));
-    let walls = walls_test_support::scene_in(&read(scene, "walls.dat"), method);
+    let build = build_of(&read(scene, "params.par"));
+    let walls = walls_test_support::scene_in(&read(scene, "walls.dat"), build.contact_model());
     let flags = Flags {
         par: Some(par_path),
-        method,
+        build: Some(build),
         stepping: OscillationStepping::Pkdgrav,
         integrator: Integrator::Pkdgrav,
         ..Flags::default()

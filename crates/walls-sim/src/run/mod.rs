@@ -70,8 +70,12 @@ pub enum Integrator {
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// The contact model.
+    /// The contact model (the build's `DEM`: [`crate::build::Build::contact_model`]).
     pub method: ContactModel,
+    /// The pkdgrav build whose physics the run follows (physics.md §0): which of
+    /// cohesion, two-layer contacts, reactive walls, aggregates and the rolling model
+    /// it has.
+    pub build: crate::build::Build,
     /// The timestep.
     pub dt: f64,
     /// When to stop, unless `last_step` says.
@@ -121,6 +125,7 @@ impl Settings {
     pub fn new(dt: f64, t_end: f64, material: ParticleMaterial) -> Self {
         Settings {
             method: ContactModel::Ssdem,
+            build: crate::build::Build::default(),
             dt,
             t_end,
             start_step: 0,

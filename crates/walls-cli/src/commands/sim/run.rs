@@ -31,9 +31,15 @@ pub struct RunArgs {
     /// here. Keys the evaluator does not follow are warned about.
     #[arg(long, value_name = "FILE")]
     pub par: Option<String>,
-    /// The contact model.
+    /// The contact model (with --pkdgrav-build, the build's: DEM or not).
     #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
     pub method: ContactModel,
+    /// The pkdgrav build to follow: its compile options, space or comma separated
+    /// (default pkdgrav's own, "DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT"; no DEM:
+    /// hard-sphere walls). DEM_COHESION, DEM_TWOLAYERS, DEM_WALLS_REACT and AGGS turn
+    /// on their physics.
+    #[arg(long, value_name = "OPTIONS", value_parser = build_option, conflicts_with = "method")]
+    pub pkdgrav_build: Option<walls_sim::build::Build>,
     /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub dt: Option<f64>,
@@ -97,6 +103,11 @@ pub struct RunArgs {
     /// Print the result as JSON on standard output.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `--pkdgrav-build`'s value.
+fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
+    walls_sim::build::Build::parse(text).map_err(|e| e.to_string())
 }
 
 /// The SSDEM integrator.
@@ -163,7 +174,11 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
                 None => "no walls file: give FILE, or --par with an achWallsFile line".to_string(),
             },
         )?;
-    let (checked, errors) = read_walls(&file, args.method, "running")?;
+    let model = args
+        .pkdgrav_build
+        .as_ref()
+        .map_or(args.method, walls_sim::build::Build::contact_model);
+    let (checked, errors) = read_walls(&file, model, "running")?;
     let walls = decode(&checked.scene);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     let every = args
@@ -186,6 +201,7 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
         particles: args.particles.clone(),
         par: args.par.clone(),
         method: args.method,
+        build: args.pkdgrav_build.clone(),
         dt: args.dt,
         t_end: args.t_end,
         gravity: args
