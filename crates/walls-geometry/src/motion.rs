@@ -22,9 +22,10 @@ type Vec3 = Vector3<f64>;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OscillationStepping {
     /// The exact sinusoid of SPEC §1 at every time.
-    #[default]
     Exact,
-    /// pkdgrav's way: each step adds the oscillation velocity at its start times dt.
+    /// pkdgrav's way (the default, as runs follow pkdgrav): each step adds the
+    /// oscillation velocity at its start times dt.
+    #[default]
     Pkdgrav,
 }
 

@@ -160,7 +160,10 @@ pub fn resolve(
     if particles.is_empty() {
         return Err(ConfigError::NoParticles);
     }
+    // pkdgrav's `bDoGravity = 0`: no forces at all, uniform gravity included.
+    let forces = par.and_then(|p| p.do_gravity).unwrap_or(true);
     let gravity = match (flags.gravity, par.and_then(|p| p.gravity)) {
+        (None, _) if !forces => Vec3::zeros(),
         (Some(g), _) => g,
         (None, Some(g)) => g,
         (None, None) if embedded => Vec3::new(0.0, 0.0, -1.0),
@@ -233,6 +236,9 @@ pub fn resolve(
         particle_contacts: !flags.no_particle_contacts,
         edges: !flags.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),
         contact_radius: par.and_then(|p| p.contact_radius).unwrap_or(false),
+        legacy_roll: par.and_then(|p| p.legacy_roll).unwrap_or(false),
+        forces,
+        acc_crit: par.and_then(|p| p.acc_crit).unwrap_or(0.0),
         stepping: flags.stepping,
         integrator: flags.integrator,
         planning: flags.planning,

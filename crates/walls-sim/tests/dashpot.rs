@@ -42,6 +42,7 @@ fn pair(u: Vec3, spin: Vec3) -> Dashpot {
         mass: 0.5,
         radius: 0.05,
         wall: false,
+        constant_torque: None,
     }
 }
 
@@ -229,4 +230,57 @@ fn beta_s_defaults_to_pkdgravs_half_and_walls_fall_back_to_it() {
     let wall = |text: &str| scene(text)[0].material.against(&particles).beta_s;
     assert_eq!(wall("wall type plane origin 0 0 0\n"), 1.0);
     assert_eq!(wall("wall type plane origin 0 0 0 beta_s 0.25\n"), 0.25);
+}
+
+/// Builds without `DEM_ROTATION_DASHPOT` (physics.md §1.6): rolling is μ_r·N·(r̂ × n̂)
+/// times each particle's lever, r = l₁ w₁ × n̂ − l₂ w₂ × n̂, capped so that it cannot
+/// reverse a spin across the normal within the step; twisting μ_t·N·a·sign(ω_t)·n̂, with
+/// no twisting at all when the radius a is 0 (no `bUseContactRadius`); nothing is kept
+/// in the record's rolling spring or twist angle.
+#[test]
+fn constant_torques_oppose_rolling_and_twisting_with_the_levers_given() {
+    use walls_sim::contact::ssdem::ConstantTorque;
+    let mat = material();
+    let w1 = Vec3::new(0.0, 5e3, 3.0);
+    let torque = |levers: (f64, f64), twist_radius: f64| {
+        let mut c = pair(Vec3::zeros(), -w1);
+        c.constant_torque = Some(ConstantTorque {
+            spins: (w1, Vec3::zeros()),
+            roll_levers: levers,
+            twist_radius,
+            inertias: (1.0, 1.0),
+        });
+        let mut record = Record::default();
+        let out = dashpot_contact(&c, &mut record, DT, &mat);
+        assert_eq!((record.roll, record.twist), (Vec3::zeros(), 0.0));
+        out
+    };
+    let n_force = mat.k_n * 1e-3;
+    let out = torque((0.05, 0.05), 0.0);
+    // w₁ × n̂ points along +x: the torque is μ_r N l (x̂ × ẑ) = −μ_r N l ŷ on 1, +ŷ on 2.
+    assert!(
+        close(out.resistance.y, -mat.mu_r * n_force * 0.05),
+        "{out:?}"
+    );
+    assert_eq!((out.resistance.x, out.resistance.z), (0.0, 0.0));
+    let legacy = torque((0.0995, 0.03), 0.0);
+    assert!(close(legacy.resistance.y, -mat.mu_r * n_force * 0.0995));
+    assert!(close(legacy.partner_torque.y, mat.mu_r * n_force * 0.03,));
+    // Twisting with a contact radius: against particle 1's spin about n̂.
+    let twisting = torque((0.05, 0.05), 0.01);
+    assert!(close(twisting.resistance.z, -mat.mu_t * n_force * 0.01));
+    assert!(close(twisting.partner_torque.z, mat.mu_t * n_force * 0.01));
+    // A tiny spin: the rolling torque stops it against its partner and no more
+    // (reduced inertia · |w⊥|/dt).
+    let mut c = pair(Vec3::zeros(), Vec3::zeros());
+    let slow = Vec3::new(0.0, 1e-6, 0.0);
+    c.spin = -slow;
+    c.constant_torque = Some(ConstantTorque {
+        spins: (slow, Vec3::zeros()),
+        roll_levers: (0.05, 0.05),
+        twist_radius: 0.0,
+        inertias: (1.0, 1.0),
+    });
+    let out = dashpot_contact(&c, &mut Record::default(), DT, &mat);
+    assert!(close(out.resistance.y, -0.5e-6 / DT), "{out:?}");
 }

@@ -167,7 +167,8 @@ fn unknown_keys_warn_with_a_suggestion() {
 #[test]
 fn values_and_keys_the_evaluator_does_not_model_warn() {
     // `dBetaS` and `bUseContactRadius` are modelled (the rolling and twisting of
-    // Integrator::Pkdgrav): no warning.
+    // Integrator::Pkdgrav): no warning. `bDoGravity = 0` is followed (no forces at all),
+    // with a warning that says what it means.
     let text = format!(
         "{QUIET}bDoGravity = 0\ndBetaS = 0.6\ndErrorFrac = 0.4\ndCohesiveCoeff = 0\nbUseContactRadius = 1\ndSlideLimit = 0.1\nnSmooth = 16\n"
     );
@@ -181,7 +182,7 @@ fn values_and_keys_the_evaluator_does_not_model_warn() {
     );
     let p = read_par(&text).unwrap();
     assert!(
-        p.warnings[0].message.contains("no contact forces"),
+        p.warnings[0].message.contains("no forces at all"),
         "{}",
         p.warnings[0]
     );

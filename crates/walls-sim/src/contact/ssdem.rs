@@ -198,6 +198,86 @@ pub struct Dashpot {
     /// Whether the partner is a wall (the spring follows the normal the other way, and
     /// κ = ½/d).
     pub wall: bool,
+    /// Builds without `DEM_ROTATION_DASHPOT`: rolling and twisting as the directional
+    /// constant torques of physics.md §1.6 instead of §1.4's springs (`None`: springs).
+    pub constant_torque: Option<ConstantTorque>,
+}
+
+/// What the directional constant torques of a build without `DEM_ROTATION_DASHPOT`
+/// need (physics.md §1.6), besides the [`Dashpot`] contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConstantTorque {
+    /// The predicted spins of particle 1 and of its partner (zero for a wall).
+    pub spins: (Vec3, Vec3),
+    /// The rolling levers of particle 1 and its partner: the reduced radius (r₁ against
+    /// a wall) for both by default; l₁, l₂ (d) with `bUseLegacyRoll`; the contact radius
+    /// with `bUseContactRadius`.
+    pub roll_levers: (f64, f64),
+    /// The twisting radius: the contact radius with `bUseContactRadius`, else 0 (no
+    /// twisting torque).
+    pub twist_radius: f64,
+    /// The moments of inertia of particle 1 and its partner (infinite for a wall or a
+    /// stuck particle): through their reduced value they cap the rolling torques so
+    /// that they cannot reverse the relative spin across the normal within the step.
+    pub inertias: (f64, f64),
+}
+
+/// The directional constant rolling and twisting torques on particle 1 and its partner
+/// (physics.md §1.6): rolling μ_r·N·(r̂ × n̂) times each one's lever, with r the
+/// rolling velocity l₁ w₁ × n̂ − l₂ w₂ × n̂ (d w × n̂ against a wall), capped so that their
+/// impulses over `dt` cannot reverse the relative spin across the normal; twisting
+/// μ_t·N·sign(ω_t)·n̂ times the twisting radius, ω_t the partner's spin less particle 1's
+/// along n̂.
+fn constant_torques(
+    c: &Dashpot,
+    t: &ConstantTorque,
+    normal_force: f64,
+    mat: &Material,
+    dt: f64,
+) -> (Vec3, Vec3) {
+    let n = &c.normal;
+    let (l1, l2) = c.levers;
+    let (w1, w2) = t.spins;
+    let mut on = (Vec3::zeros(), Vec3::zeros());
+    if mat.mu_r != 0.0 {
+        let roll = if c.wall {
+            w1.cross(n) * l1
+        } else {
+            w1.cross(n) * l1 - w2.cross(n) * l2
+        };
+        if let Some(dir) = roll.try_normalize(0.0) {
+            // Capped so that the pair's torques cannot reverse the spin of one against
+            // the other across the normal (through the reduced inertia) within the step.
+            let (i1, i2) = t.inertias;
+            let reduced = if i2.is_finite() {
+                i1 * i2 / (i1 + i2)
+            } else {
+                i1
+            };
+            let relative = w1 - w2;
+            let across = (relative - n * n.dot(&relative)).norm();
+            let wanted = mat.mu_r * normal_force * t.roll_levers.0;
+            let scale = if wanted > 0.0 {
+                (reduced * across / dt / wanted).min(1.0)
+            } else {
+                0.0
+            };
+            let per_lever = dir.cross(n) * (mat.mu_r * normal_force * scale);
+            on.0 += per_lever * t.roll_levers.0;
+            if !c.wall {
+                on.1 -= per_lever * t.roll_levers.1;
+            }
+        }
+    }
+    if mat.mu_t != 0.0 && t.twist_radius > 0.0 {
+        let rate = c.spin.dot(n);
+        if rate != 0.0 {
+            let m_t = n * (mat.mu_t * normal_force * t.twist_radius).copysign(rate);
+            on.0 += m_t;
+            on.1 -= m_t;
+        }
+    }
+    on
 }
 
 /// What a [`Dashpot`] contact does: the force on particle 1 (−it on a particle partner)
@@ -273,6 +353,16 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
             Vec3::zeros()
         };
     }
+    let shear = n.cross(&f_t);
+    if let Some(t) = &c.constant_torque {
+        let (on_1, on_2) = constant_torques(c, t, normal_force, mat, dt);
+        return DashpotForce {
+            force: f_n + f_t,
+            torque: shear * c.levers.0 + on_1,
+            partner_torque: shear * c.levers.1 + on_2,
+            resistance: on_1,
+        };
+    }
     // §1.4: rolling and twisting, spring–dashpot–sliders scaled by (β_s R*)².
     let b = (mat.beta_s * c.radius).powi(2);
     let mut resistance = Vec3::zeros();
@@ -309,7 +399,6 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
         };
         resistance += n * m_t;
     }
-    let shear = n.cross(&f_t);
     DashpotForce {
         force: f_n + f_t,
         torque: shear * l1 + resistance,

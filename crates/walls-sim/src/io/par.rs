@@ -75,6 +75,15 @@ pub struct Params {
     /// `bUseContactRadius`: the rolling and twisting radius is the contact radius
     /// (physics.md §1.4; `Integrator::Pkdgrav` follows it).
     pub contact_radius: Option<bool>,
+    /// `bUseLegacyRoll`: the non-dashpot rolling lever is l₁, l₂ (d against a wall)
+    /// (physics.md §1.6).
+    pub legacy_roll: Option<bool>,
+    /// `bDoGravity`: with 0, pkdgrav evaluates no forces at all: no uniform gravity,
+    /// no contacts (physics.md §2).
+    pub do_gravity: Option<bool>,
+    /// `dAccCrit`: below it, small motions are zeroed (physics.md §1.7; 0, the default,
+    /// turns it off).
+    pub acc_crit: Option<f64>,
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
     pub two_layer: Option<TwoLayer>,
@@ -194,14 +203,7 @@ pub const KEYS: &[(&str, Use)] = &[
     ("nBucket", Use::NoEffect),
     ("dExtraStore", Use::NoEffect),
     ("bOverwrite", Use::NoEffect),
-    (
-        "bDoGravity",
-        Use::Only {
-            value: 1.0,
-            default: 1.0,
-            why: "with 0, pkdgrav computes no contact forces at all (its DEM force call lives in the gravity step); the evaluator still computes them",
-        },
-    ),
+    ("bDoGravity", Use::Read),
     (
         "bDoSelfGravity",
         Use::Only {
@@ -258,14 +260,7 @@ pub const KEYS: &[(&str, Use)] = &[
             why: "the evaluator only bounces (2); DEM builds ignore iOutcomes, pkdgrav's hard-sphere code would merge or fragment",
         },
     ),
-    (
-        "dAccCrit",
-        Use::Only {
-            value: 0.0,
-            default: 0.0,
-            why: "zeroing small motions (physics.md §1.7) is not modelled yet",
-        },
-    ),
+    ("dAccCrit", Use::Read),
     (
         "dMinorFrac",
         Use::Only {
@@ -291,14 +286,7 @@ pub const KEYS: &[(&str, Use)] = &[
         },
     ),
     ("bUseContactRadius", Use::Read),
-    (
-        "bUseLegacyRoll",
-        Use::Only {
-            value: 0.0,
-            default: 0.0,
-            why: "the legacy rolling model (physics.md §1.6) is not modelled yet",
-        },
-    ),
+    ("bUseLegacyRoll", Use::Read),
     (
         "dCohesiveCoeff",
         Use::Only {
@@ -566,6 +554,17 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                     warn(Some(n), key, format!("{x} is not modelled: {why}"));
                 }
             }
+            Some(Use::Read) if key == "bDoGravity" => {
+                if let Some((_, x)) = lines.real(key)?
+                    && x == 0.0
+                {
+                    warn(
+                        Some(n),
+                        key,
+                        "0: pkdgrav then evaluates no forces at all (its contact forces are computed in the gravity step): no uniform gravity, no contacts; the run does the same, and particles pass through walls and each other".into(),
+                    );
+                }
+            }
             Some(Use::Read | Use::NoEffect) => {}
         }
     }
@@ -637,6 +636,9 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         }),
         edge_detect: lines.real("bWallsEdgeDetect")?.map(|(_, x)| x != 0.0),
         contact_radius: lines.real("bUseContactRadius")?.map(|(_, x)| x != 0.0),
+        legacy_roll: lines.real("bUseLegacyRoll")?.map(|(_, x)| x != 0.0),
+        do_gravity: lines.real("bDoGravity")?.map(|(_, x)| x != 0.0),
+        acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
         two_layer,
         warnings,
     })

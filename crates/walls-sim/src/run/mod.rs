@@ -43,7 +43,6 @@ pub type ParticleMaterial = Material;
 pub enum Integrator {
     /// Kick-drift-kick leapfrog: half a kick, a drift, the forces, half a kick. Second
     /// order; the dashpot sees the velocity of the first half kick.
-    #[default]
     Leapfrog,
     /// The same leapfrog, with the dashpot fed velocities predicted to the end of the
     /// step with the last acceleration, as pkdgrav does.
@@ -63,7 +62,10 @@ pub enum Integrator {
     /// particles stuck to walls carried with the wall's move, before the forces (§6);
     /// and pkdgrav's contact law (§1.3–§1.5, `contact::ssdem::dashpot_contact`): the
     /// shear spring turned with the contact and reset when it slides, rolling and
-    /// twisting as spring–dashpot–sliders with β_s.
+    /// twisting as spring–dashpot–sliders with β_s (or, in a build without
+    /// `DEM_ROTATION_DASHPOT`, the constant torques of §1.6). The default: runs show
+    /// what pkdgrav will do.
+    #[default]
     Pkdgrav,
 }
 
@@ -105,6 +107,18 @@ pub struct Settings {
     /// contact radius instead of the reduced radius (pkdgrav's `bUseContactRadius`,
     /// physics.md §1.4; off by default).
     pub contact_radius: bool,
+    /// [`Integrator::Pkdgrav`] in a build without `DEM_ROTATION_DASHPOT`: whether the
+    /// rolling lever is l₁, l₂ (d against a wall) instead of the reduced radius
+    /// (pkdgrav's `bUseLegacyRoll`, physics.md §1.6; off by default).
+    pub legacy_roll: bool,
+    /// Whether forces are evaluated at all (pkdgrav's `bDoGravity`, physics.md §2):
+    /// without, SSDEM particles feel no contacts (config also drops uniform gravity).
+    pub forces: bool,
+    /// [`Integrator::Pkdgrav`]: pkdgrav's `dAccCrit` (physics.md §1.7): after the
+    /// forces, a particle slowing down with |a| below it and |v| below it·dt is stopped
+    /// (and likewise its spin, with the thresholds over and times its radius); 0 turns
+    /// it off.
+    pub acc_crit: f64,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -134,10 +148,13 @@ impl Settings {
             material,
             particle_contacts: true,
             edges: true,
-            stepping: OscillationStepping::Exact,
-            integrator: Integrator::Leapfrog,
+            stepping: OscillationStepping::Pkdgrav,
+            integrator: Integrator::Pkdgrav,
             planning: Planning::Needed,
             contact_radius: false,
+            legacy_roll: false,
+            forces: true,
+            acc_crit: 0.0,
         }
     }
 

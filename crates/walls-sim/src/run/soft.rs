@@ -25,8 +25,8 @@ use super::{
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    Dashpot, Material, Record, Rolling, Touch, contact, contact_radius, damping_per_root_mass,
-    dashpot_contact, normal_contact, resistance,
+    ConstantTorque, Dashpot, Material, Record, Rolling, Touch, contact, contact_radius,
+    damping_per_root_mass, dashpot_contact, normal_contact, resistance,
 };
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
@@ -111,6 +111,12 @@ struct Walls<'a> {
     pkdgrav_levers: bool,
     /// pkdgrav's rolling radius is the contact radius (`bUseContactRadius`).
     contact_radius: bool,
+    /// A build without `DEM_ROTATION_DASHPOT`: rolling and twisting are constant
+    /// torques (physics.md §1.6), the rolling lever d with `bUseLegacyRoll` (the
+    /// value).
+    constant_torque: Option<bool>,
+    /// pkdgrav's `dAccCrit` (0: off).
+    acc_crit: f64,
     /// The time at the step's end, the timestep, and the step's number.
     t: f64,
     dt: f64,
@@ -270,6 +276,19 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                     r
                 },
                 wall: true,
+                constant_torque: walls.constant_torque.map(|legacy| {
+                    let a = (r * r - lever * lever).max(0.0).sqrt();
+                    ConstantTorque {
+                        spins: (spin, Vec3::zeros()),
+                        roll_levers: match (walls.contact_radius, legacy) {
+                            (true, _) => (a, 0.0),
+                            (false, true) => (lever, 0.0),
+                            (false, false) => (r, 0.0),
+                        },
+                        twist_radius: if walls.contact_radius { a } else { 0.0 },
+                        inertias: (inertia(m, r), f64::INFINITY),
+                    }
+                }),
             };
             let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
             load.force += c.force;
@@ -326,10 +345,29 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     load.torque += resist;
     s.acc = load.force / m;
     s.alpha = load.torque / inertia(m, r);
+    if walls.acc_crit > 0.0 {
+        zero_small_motions(s, walls.acc_crit, dt);
+    }
     s.particle.vel += s.acc * (dt * walls.closing_kick);
     s.particle.spin += s.alpha * (dt * walls.closing_kick);
     load.visit = visit;
     out
+}
+
+/// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, physics.md §1.7): a
+/// particle slowing down (a·v < 0) with |a| < a_c and |v| < a_c·dt is stopped, v and a
+/// both zeroed; its spin likewise, with |ẇ| < a_c·r and |w| < a_c·dt/r.
+fn zero_small_motions(s: &mut State, a_c: f64, dt: f64) {
+    let p = &mut s.particle;
+    if s.acc.dot(&p.vel) < 0.0 && s.acc.norm() < a_c && p.vel.norm() < a_c * dt {
+        p.vel = Vec3::zeros();
+        s.acc = Vec3::zeros();
+    }
+    let r = p.radius;
+    if s.alpha.dot(&p.spin) < 0.0 && s.alpha.norm() < a_c * r && p.spin.norm() < a_c * dt / r {
+        p.spin = Vec3::zeros();
+        s.alpha = Vec3::zeros();
+    }
 }
 
 /// The fractions of a step each kick of the integrator covers, and how far ahead the
@@ -544,6 +582,7 @@ impl<'a> SoftStepper<'a> {
         self.gravity_loads();
         let mut flow = Flow::Continue;
         if self.plan.particle_contacts
+            && self.settings.forces
             && self.states.len() > 1
             && self.pair_contacts() == Flow::Stop
         {
@@ -575,6 +614,7 @@ impl<'a> SoftStepper<'a> {
         self.move_assemblies();
         self.gravity_loads();
         if self.plan.particle_contacts
+            && self.settings.forces
             && self.states.len() > 1
             && self.pair_contacts() == Flow::Stop
         {
@@ -784,12 +824,38 @@ impl<'a> SoftStepper<'a> {
                     turn: p.spin + q.spin,
                     levers: (li, lj),
                     mass: reduced,
-                    radius: if self.settings.contact_radius {
+                    radius: if self.settings.contact_radius && self.settings.legacy_roll {
+                        // The contact radius is never worked out then (physics.md §1.6).
+                        0.0
+                    } else if self.settings.contact_radius {
                         (p.radius * p.radius - li * li).max(0.0).sqrt()
                     } else {
                         p.radius * q.radius / (p.radius + q.radius)
                     },
                     wall: false,
+                    constant_torque: (!self.settings.build.rotation_dashpot).then(|| {
+                        let a = (p.radius * p.radius - li * li).max(0.0).sqrt();
+                        let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
+                        let inertia_of = |free: bool, m: f64, r: f64| {
+                            if free { inertia(m, r) } else { f64::INFINITY }
+                        };
+                        ConstantTorque {
+                            spins: (wi, wj),
+                            roll_levers: match (
+                                self.settings.contact_radius,
+                                self.settings.legacy_roll,
+                            ) {
+                                (true, _) => (a, a),
+                                (false, true) => (li, lj),
+                                (false, false) => (reduced_radius, reduced_radius),
+                            },
+                            twist_radius: if self.settings.contact_radius { a } else { 0.0 },
+                            inertias: (
+                                inertia_of(free_i, p.mass, p.radius),
+                                inertia_of(free_j, q.mass, q.radius),
+                            ),
+                        }
+                    }),
                 };
                 let c = dashpot_contact(&dashpot, &mut entry.record, dt, mat);
                 if free_i {
@@ -852,12 +918,14 @@ impl<'a> SoftStepper<'a> {
     /// Each particle's contacts with the walls, added to its load, then the closing
     /// kick (in parallel for many particles); what each did is in `reports`.
     fn wall_contacts(&mut self) {
+        // Without forces (`bDoGravity = 0`) the walls are not looked at.
+        let forces = self.settings.forces;
         let walls = Walls {
-            now: &self.now,
+            now: if forces { &self.now } else { &[] },
             assembly_of: &self.assembly_of,
             cogs: &self.cogs,
             origins: &self.origins.now,
-            index: self.index.as_ref(),
+            index: self.index.as_ref().filter(|_| forces),
             plan: self.plan,
             damping: &self.damping,
             materials: &self.materials,
@@ -866,6 +934,9 @@ impl<'a> SoftStepper<'a> {
             predict_spin: self.kicks.predict_all,
             pkdgrav_levers: self.kicks.pkdgrav_levers,
             contact_radius: self.settings.contact_radius,
+            constant_torque: (!self.settings.build.rotation_dashpot)
+                .then_some(self.settings.legacy_roll),
+            acc_crit: self.settings.acc_crit,
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,

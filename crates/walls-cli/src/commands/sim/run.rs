@@ -81,13 +81,15 @@ pub struct RunArgs {
     /// --every steps (and at a --par run's last step).
     #[arg(long, value_name = "DIR")]
     pub out: Option<std::path::PathBuf>,
-    /// How oscillating walls move: on the exact sinusoid, or step by step at the
-    /// oscillation velocity of each step's start, as pkdgrav does.
-    #[arg(long, value_enum, default_value_t = Oscillation::Exact)]
+    /// How oscillating walls move: step by step as pkdgrav does (the default), or on
+    /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
+    /// walls as pkdgrav does).
+    #[arg(long, value_enum, default_value_t = Oscillation::Pkdgrav)]
     pub oscillation: Oscillation,
-    /// SSDEM: the integrator: kick-drift-kick leapfrog; the same with pkdgrav's dashpot
-    /// velocity predicted to the step's end; or explicit Euler (for comparison).
-    #[arg(long, value_enum, default_value_t = IntegratorArg::Leapfrog)]
+    /// SSDEM: the integrator: pkdgrav's own step and contact law (the default); or,
+    /// for comparison, kick-drift-kick leapfrog with the summary's contact law, the same
+    /// with the dashpot velocity predicted to the step's end, or explicit Euler.
+    #[arg(long, value_enum, default_value_t = IntegratorArg::Pkdgrav)]
     pub integrator: IntegratorArg,
     /// Run every part of the model, whatever the scene needs (for comparison; see
     /// `walls-sim plan`).
@@ -113,10 +115,12 @@ fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
 /// The SSDEM integrator.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum IntegratorArg {
+    /// pkdgrav's step order and contact law (physics.md §1–§2, §5).
+    Pkdgrav,
     /// Kick-drift-kick leapfrog.
     Leapfrog,
     /// Kick-drift-kick with the dashpot at the velocity predicted to the step's end.
-    Pkdgrav,
+    LeapfrogPredicted,
     /// Explicit Euler.
     Euler,
 }
@@ -222,8 +226,9 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
             Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
         },
         integrator: match args.integrator {
+            IntegratorArg::Pkdgrav => Integrator::Pkdgrav,
             IntegratorArg::Leapfrog => Integrator::Leapfrog,
-            IntegratorArg::Pkdgrav => Integrator::LeapfrogPredicted,
+            IntegratorArg::LeapfrogPredicted => Integrator::LeapfrogPredicted,
             IntegratorArg::Euler => Integrator::ExplicitEuler,
         },
         planning: if args.all_parts {
