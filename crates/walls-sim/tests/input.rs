@@ -203,3 +203,55 @@ proptest::proptest! {
         let _ = read_par(&text);
     }
 }
+
+#[test]
+fn ss_files_written_read_back_exactly_with_pkdgrav_s_names() {
+    use walls_sim::io::particles::{ss_file_name, write_ss};
+    let mut a = walls_geometry::Particle::at_rest(0.1, nalgebra::Vector3::new(1.0, -2.0, 3.5), 0);
+    a.vel = nalgebra::Vector3::new(1e-300, f64::MAX, -0.0);
+    a.spin = nalgebra::Vector3::new(0.1, 0.2, 0.30000000000000004);
+    a.color = -3;
+    a.index = -7;
+    let b = walls_geometry::Particle::at_rest(2.0, nalgebra::Vector3::zeros(), 1);
+    let ps = vec![a, b];
+    let bytes = write_ss(1.4743270000000004e-10, &ps);
+    assert_eq!(bytes.len(), 16 + 2 * 96);
+    assert_eq!(read_ss(&bytes).unwrap(), (1.4743270000000004e-10, ps));
+    assert_eq!(ss_file_name("ss", 5, 120), "ss.00120");
+    assert_eq!(ss_file_name("run", 6, 1234567), "run.1234567");
+}
+
+#[test]
+fn a_negative_colour_is_stuck_from_the_start_and_stuck_particles_are_written_so() {
+    use walls_sim::run::{Settings, run};
+    // Colour −2: stuck to wall 1, the oscillating plate; it rides with it, and keeps
+    // its colour in the output. A free particle sticking to the sticky floor (wall 0)
+    // is written with colour −1.
+    let walls = walls_test_support::scene(
+        "wall type plane origin 0 0 0 epsn 0\nwall type plane origin 0 0 5 osc-ampl 0.5 osc-vec 1 0 0 osc-freq 10\n",
+    );
+    let mut held = walls_geometry::Particle::at_rest(0.1, nalgebra::Vector3::new(0.0, 0.0, 4.9), 0);
+    held.color = -2;
+    let mut falling =
+        walls_geometry::Particle::at_rest(0.1, nalgebra::Vector3::new(3.0, 0.0, 0.2), 1);
+    falling.vel.z = -1.0;
+    falling.color = 4;
+    let mut s = Settings::new(1e-3, 0.3, walls_sim::run::defaults::default_material(1e5));
+    s.particle_contacts = false;
+    let out = run(&walls, vec![held, falling], &s);
+    let (held, falling) = (&out.particles[0], &out.particles[1]);
+    assert_eq!(held.stuck_to.map(|(w, _)| w), Some(1));
+    let plate = walls[1].motion.position_or_origin(out.t);
+    assert!(
+        (held.particle.pos.x - plate.x).abs() < 1e-9,
+        "{:?} vs {plate:?}",
+        held.particle.pos
+    );
+    assert_eq!(held.as_written().color, -2);
+    assert_eq!(falling.stuck_to.map(|(w, _)| w), Some(0));
+    assert_eq!(falling.as_written().color, -1);
+    assert_eq!(
+        falling.particle.color, 4,
+        "the run's own record keeps the colour given"
+    );
+}

@@ -41,6 +41,10 @@ pub struct Params {
     pub in_file: Option<String>,
     /// `achWallsFile`: the walls file.
     pub walls_file: Option<String>,
+    /// `achOutName`: the outputs' base name (pkdgrav's default `ss`).
+    pub out_name: Option<String>,
+    /// `nDigits`: the digits of the outputs' step numbers (pkdgrav's default 5).
+    pub digits: Option<usize>,
     /// `dDelta`: the timestep.
     pub dt: Option<f64>,
     /// `nSteps`: the number of the last step (steps run from `iStartStep` + 1 to it).
@@ -182,8 +186,8 @@ pub const KEYS: &[(&str, Use)] = &[
     ("dKnInner", Use::Read),
     ("dKtInner", Use::Read),
     ("dBetaS", Use::Read),
-    ("achOutName", Use::NoEffect),
-    ("nDigits", Use::NoEffect),
+    ("achOutName", Use::Read),
+    ("nDigits", Use::Read),
     ("iLogInterval", Use::NoEffect),
     ("iRedOutInterval", Use::NoEffect),
     ("bVWarnings", Use::NoEffect),
@@ -615,6 +619,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
     Ok(Params {
         in_file: lines.text("achInFile"),
         walls_file: lines.text("achWallsFile"),
+        out_name: lines.text("achOutName"),
+        digits: lines
+            .checked("nDigits", Rule::NonNegative)?
+            .map(|d| d.min(30.0) as usize),
         dt: lines.checked("dDelta", Rule::Positive)?,
         steps: lines.count("nSteps")?,
         start_step: lines.count("iStartStep")?,

@@ -7,6 +7,9 @@
 //!   mass, radius, pos[3], vel[3], spin[3]; int32 color, original index) or 28 bytes
 //!   (float mass, radius, pos[3]; int32 color, index).
 //!
+//! [`write_ss`] writes the `.ss` files of a run's outputs, named as pkdgrav names them
+//! ([`ss_file_name`]).
+//!
 //! Every error says where: the CSV line or the `.ss` byte offset.
 
 use super::{FileError, InputError, error};
@@ -205,6 +208,35 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
         out.push(p);
     }
     Ok((time, out))
+}
+
+/// `particles` as a pkdgrav `.ss` file at `time` (standard records, big-endian XDR):
+/// what [`read_ss`] reads back exactly.
+pub fn write_ss(time: f64, particles: &[Particle]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(16 + 96 * particles.len());
+    out.extend_from_slice(&time.to_be_bytes());
+    let count = i32::try_from(particles.len()).unwrap_or(i32::MAX);
+    out.extend_from_slice(&count.to_be_bytes());
+    out.extend_from_slice(&STANDARD.to_be_bytes());
+    for p in particles.iter().take(count as usize) {
+        for x in [p.mass, p.radius]
+            .into_iter()
+            .chain(p.pos.iter().copied())
+            .chain(p.vel.iter().copied())
+            .chain(p.spin.iter().copied())
+        {
+            out.extend_from_slice(&x.to_be_bytes());
+        }
+        out.extend_from_slice(&p.color.to_be_bytes());
+        out.extend_from_slice(&p.index.to_be_bytes());
+    }
+    out
+}
+
+/// The name pkdgrav gives the output after `step`: `name.NNNNN`, the step with at least
+/// `digits` digits (`achOutName`, `nDigits`).
+pub fn ss_file_name(name: &str, digits: usize, step: u64) -> String {
+    format!("{name}.{step:0digits$}")
 }
 
 /// Particles from the file at `path`: CSV (by its extension, in any case) or a pkdgrav

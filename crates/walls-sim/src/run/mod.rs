@@ -242,6 +242,18 @@ impl State {
         }
     }
 
+    /// The particle as pkdgrav writes it in an output: its colour −1 − the wall's number
+    /// once stuck to a wall (unless it was already negative; physics.md §6).
+    pub fn as_written(&self) -> Particle {
+        let mut p = self.particle.clone();
+        if let Some((w, _)) = self.stuck_to
+            && p.color >= 0
+        {
+            p.color = -1 - i32::try_from(w).unwrap_or(i32::MAX - 1);
+        }
+        p
+    }
+
     /// Whether it moves freely: alive and not held by a sticky wall.
     fn free(&self) -> bool {
         self.alive && self.stuck_to.is_none()
@@ -290,10 +302,12 @@ pub fn run_observed(
 ) -> Outcome {
     let dt = settings.dt;
     assert!(dt > 0.0 && dt.is_finite(), "timestep {dt}");
+    let t0 = settings.t_start();
     let states: Vec<State> = particles
         .iter()
         .map(|p| State {
             acc: settings.gravity,
+            stuck_to: stuck_from_the_start(p, walls, t0),
             ..State::new(p)
         })
         .collect();
@@ -306,6 +320,15 @@ pub fn run_observed(
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
     }
+}
+
+/// The wall a particle is stuck to from the start, with its offset from the wall's
+/// origin at `t0`: pkdgrav's negative `color`, −1 − the wall's number (physics.md §0,
+/// `PARTICLE_STUCK`), when that wall exists.
+fn stuck_from_the_start(p: &Particle, walls: &[Wall], t0: f64) -> Option<(usize, Vec3)> {
+    let w = usize::try_from(-1 - i64::from(p.color)).ok()?;
+    let wall = walls.get(w)?;
+    Some((w, p.pos - wall.motion.position_or_origin(t0)))
 }
 
 /// Runs `particles` against `walls` ([`run_observed`] without watching).

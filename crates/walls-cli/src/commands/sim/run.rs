@@ -81,6 +81,11 @@ pub struct RunArgs {
     /// --every steps (and at a --par run's last step).
     #[arg(long, value_name = "DIR")]
     pub out: Option<std::path::PathBuf>,
+    /// Also write pkdgrav's own outputs in --out at its output steps: `.ss` files named
+    /// as pkdgrav names them (the --par file's achOutName and nDigits, else ss.NNNNN),
+    /// which pkdgrav's tools read.
+    #[arg(long, requires = "out")]
+    pub ss_output: bool,
     /// How oscillating walls move: step by step as pkdgrav does (the default), or on
     /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
     /// walls as pkdgrav does).
@@ -152,6 +157,8 @@ pub struct Prepared {
     /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
     /// 100; 0 (`iOutInterval = 0`) for none but the last step's.
     pub every: u64,
+    /// The `.ss` outputs' base name and digits (`achOutName`, `nDigits`).
+    pub ss_name: (String, usize),
 }
 
 /// Steps between outputs when neither `--every` nor the `.par` file says.
@@ -189,12 +196,19 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         .every
         .or_else(|| par.as_ref()?.out_interval)
         .unwrap_or(EVERY);
+    let ss_name = (
+        par.as_ref()
+            .and_then(|p| p.out_name.clone())
+            .unwrap_or_else(|| "ss".to_string()),
+        par.as_ref().and_then(|p| p.digits).unwrap_or(5),
+    );
     Ok(Prepared {
         walls,
         particles: run.particles,
         settings: run.settings,
         errors,
         every,
+        ss_name,
     })
 }
 
@@ -247,6 +261,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         settings,
         errors,
         every,
+        ss_name,
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
@@ -299,6 +314,13 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
             {
                 written = out.record(step, t, states, scene, assemblies);
             }
+            if let Some(dir) = &args.out
+                && args.ss_output
+                && output(step)
+                && written.is_ok()
+            {
+                written = write_ss(dir, &ss_name, step, t, states);
+            }
         },
     );
     if let Some(bar) = progress {
@@ -345,6 +367,27 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         return Ok(ExitCode::from(1));
     }
     Ok(exit_status(errors))
+}
+
+/// pkdgrav's output after `step`: the living particles, in input order, as pkdgrav
+/// writes them, at time `t`.
+fn write_ss(
+    dir: &std::path::Path,
+    (name, digits): &(String, usize),
+    step: u64,
+    t: f64,
+    states: &[walls_sim::run::State],
+) -> std::io::Result<()> {
+    use walls_sim::io::particles::{ss_file_name, write_ss};
+    let alive: Vec<Particle> = states
+        .iter()
+        .filter(|s| s.alive)
+        .map(walls_sim::run::State::as_written)
+        .collect();
+    std::fs::write(
+        dir.join(ss_file_name(name, *digits, step)),
+        write_ss(t, &alive),
+    )
 }
 
 /// A progress bar over `steps` steps, when standard error is a terminal.
