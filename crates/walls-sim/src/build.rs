@@ -191,6 +191,32 @@ impl Build {
     }
 }
 
+/// What the inputs of a run show that `build` lacks: each missing option, with the
+/// input that needs it (walls with a mass need `DEM_WALLS_REACT`; particles whose
+/// `org_idx` is negative, aggregate members, need `AGGS`).
+pub fn missing(
+    build: &Build,
+    walls: &[walls_geometry::Wall],
+    particles: &[walls_geometry::Particle],
+) -> Vec<(&'static str, String)> {
+    let mut out = Vec::new();
+    let heavy = walls.iter().filter(|w| w.reactive.is_heavy()).count();
+    if build.dem && !build.walls_react && heavy > 0 {
+        out.push((
+            "DEM_WALLS_REACT",
+            format!("{heavy} walls have a mass (reactive walls)"),
+        ));
+    }
+    let members = particles.iter().filter(|p| p.index < 0).count();
+    if !build.aggs && members > 0 {
+        out.push((
+            "AGGS",
+            format!("{members} particles have a negative org_idx (aggregate members)"),
+        ));
+    }
+    out
+}
+
 /// The known option nearest to `name`: the same name in another case, or one within a
 /// third of its length in edits.
 fn nearest(name: &str) -> Option<&'static str> {

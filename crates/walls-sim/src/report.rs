@@ -19,6 +19,7 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
     model.extend(
         parts
             .iter()
+            .filter(|p| p.name != "pkdgrav build")
             .filter(|p| p.used || (everything && p.name != "reactive walls"))
             .map(|p| p.name),
     );
@@ -26,7 +27,8 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
 }
 
 /// The outcome as JSON: the time and steps, each particle's state, the wall events, the
-/// particle contacts, the energy, the parts of the model used and the warnings.
+/// particle contacts, the energy, the parts of the model used, the pkdgrav build and the
+/// warnings.
 pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &Outcome) -> Value {
     let kind = |k: EventKind| match k {
         EventKind::Bounce => "bounce",
@@ -51,6 +53,7 @@ pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &O
         "pair_contacts": out.pair_contacts,
         "energy": {"initial": out.energy.0, "final": out.energy.1},
         "model": model(scene, particles, settings),
+        "build": settings.build.names(),
         "warnings": out.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
     })
 }

@@ -17,6 +17,10 @@
 //! - sticky and death walls: a wall with `epsn` 0 or below;
 //! - the wall index: more than 16 bounded walls (planes and infinite cylinders are always
 //!   looked at).
+//!
+//! The list also names the pkdgrav build the run follows, with the options the inputs
+//! need and it lacks ([`crate::build::missing`]), and which rolling and twisting model
+//! that build has.
 
 use walls_geometry::Particle;
 
@@ -256,6 +260,39 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         !death.is_empty(),
         format!("walls {} have a negative epsn", list(&death)),
         "no wall has a negative epsn",
+    );
+    let build = &settings.build;
+    let missing = crate::build::missing(build, walls, particles);
+    part(
+        "pkdgrav build",
+        true,
+        format!(
+            "{}{}",
+            build.names(),
+            missing
+                .iter()
+                .map(|(o, why)| format!("; lacks {o}, which the inputs need: {why}"))
+                .collect::<String>()
+        ),
+        "",
+    );
+    let pkdgrav_law = soft && settings.integrator == crate::run::Integrator::Pkdgrav;
+    part(
+        "rolling and twisting model",
+        pkdgrav_law && (rolling || twisting),
+        if build.rotation_dashpot {
+            "spring-dashpot-sliders scaled by beta_s (DEM_ROTATION_DASHPOT, physics.md §1.4)"
+                .to_string()
+        } else if settings.contact_radius {
+            "directional constant torques, twisting with the contact radius (no DEM_ROTATION_DASHPOT, bUseContactRadius; physics.md §1.6)".to_string()
+        } else {
+            "directional constant torques, no twisting torque (no DEM_ROTATION_DASHPOT; physics.md §1.6)".to_string()
+        },
+        if pkdgrav_law {
+            "no rolling or twisting friction"
+        } else {
+            "HSDEM, or an integrator other than pkdgrav's (the summary's capped torques)"
+        },
     );
     let g = settings.gravity.norm();
     part(

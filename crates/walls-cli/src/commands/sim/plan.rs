@@ -1,5 +1,6 @@
 //! `walls-sim plan`: lists the parts of the model a run would use, with the reason for
-//! each ([`walls_sim::run::plan`]); it takes the same options as `run`.
+//! each ([`walls_sim::run::plan`]), and the pkdgrav build it follows with where that
+//! came from; it takes the same options as `run`.
 
 use super::run::{RunArgs, prepare};
 use super::{error, exit_status};
@@ -11,8 +12,24 @@ pub fn run(args: &RunArgs) -> ExitCode {
         Ok(p) => p,
         Err(e) => return error(e),
     };
-    let (_, parts) =
+    let (_, mut parts) =
         walls_sim::run::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
+    // Where the build came from.
+    let origin = match (&args.pkdgrav_build, args.method) {
+        (Some(_), _) => "as --pkdgrav-build gives it",
+        (None, crate::ContactModel::Ssdem) => {
+            "pkdgrav's default build; --pkdgrav-build names another"
+        }
+        (None, crate::ContactModel::Hsdem) => {
+            "pkdgrav's default build without DEM, as --method hsdem; --pkdgrav-build names another"
+        }
+    };
+    for p in parts.iter_mut().filter(|p| p.name == "pkdgrav build") {
+        p.reason = match p.reason.split_once(';') {
+            Some((names, rest)) => format!("{names} ({origin});{rest}"),
+            None => format!("{} ({origin})", p.reason),
+        };
+    }
     if args.json {
         let list: Vec<_> = parts
             .iter()
