@@ -460,7 +460,7 @@ fn walls_tokens_of_a_build_option_the_run_lacks_are_warned_about() {
         Integrator::Leapfrog,
     ));
     assert_eq!(leapfrog.len(), 2);
-    assert!(leapfrog[0].1.contains("--integrator pkdgrav"));
+    assert!(leapfrog[0].1.contains("Integrator::Pkdgrav"));
     let full = pkdgrav(
         "DEM DEM_ROTATION_DASHPOT DEM_COHESION DEM_TWOLAYERS",
         Integrator::Pkdgrav,

@@ -14,7 +14,8 @@
 //! build, physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls and pairs:
 //! the springs kept in a [`Record`] turn with the contact, the shear spring resets when
 //! the contact slides, and rolling and twisting are spring–dashpot–sliders scaled by
-//! (β_s R*)².
+//! (β_s R*)². [`dashpot_contact_with`] adds what pkdgrav's optional builds change in it
+//! ([`Optional`]): cohesion (§7) and two-layer springs ([`Layers`], §8).
 //!
 //! Damping from restitution: C = −2·ln ε·√(m·k/(π² + ln²ε)), 0 when ε is 0 or 1. The
 //! contact lasts π/ω_d with ω_d² = k/m − (C/2m)².
