@@ -9,7 +9,8 @@
 //! * [`Motion`]: velocity, oscillation, step and spin; the origin and the material's
 //!   velocity at a time.
 //! * [`Material`]: the contact values, with pkdgrav's −1/99 fall-backs resolved against
-//!   the particles' values by [`Material::against`].
+//!   the particles' values by [`Material::against`]; [`OptionalMaterial`], a wall's
+//!   cohesion and two-layer values (pkdgrav's optional builds), resolved by the run.
 //! * [`Appearance`] (colour, transparency) and [`Reactive`] (mass, assembly, centre of
 //!   gravity, inertia, axes).
 //!
@@ -28,7 +29,7 @@ pub mod poly;
 pub mod shape;
 mod wall;
 
-pub use material::{BETA_S_DEFAULT, Material};
+pub use material::{BETA_S_DEFAULT, Material, OptionalMaterial};
 pub use mesh::Mesh;
 pub use motion::{Motion, Oscillation, OscillationStepping};
 pub use particle::Particle;

@@ -57,3 +57,69 @@ impl Material {
         self.eps_n == EPS_FALLBACK || self.eps_t == EPS_FALLBACK
     }
 }
+
+/// A wall's values for the contact physics of pkdgrav's optional builds, as written:
+/// cohesion (`DEM_COHESION`, physics.md §7) and two-layer contacts (`DEM_TWOLAYERS`,
+/// §8). Every value left at −1 means "the `.par` value"; a `k_n_*` written resets its
+/// `k_t_*` to 2/7 of it (the scene's resolution does that, in file order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OptionalMaterial {
+    /// `cohesion_model`: 0 microscopic contact, 1 granular bridge, −1 the `.par`'s.
+    pub cohesion_model: i64,
+    /// `cohesive_coeff`, in raw pkdgrav units of stress.
+    pub cohesive_coeff: f64,
+    /// `inner_overlap_boundary`: the two-layer boundary as a fraction of the radius.
+    pub inner_overlap_boundary: f64,
+    /// `k_n_outer`.
+    pub k_n_outer: f64,
+    /// `k_t_outer`.
+    pub k_t_outer: f64,
+    /// `k_n_inner`.
+    pub k_n_inner: f64,
+    /// `k_t_inner`.
+    pub k_t_inner: f64,
+}
+
+impl Default for OptionalMaterial {
+    /// Every value at −1: the `.par` values throughout.
+    fn default() -> Self {
+        OptionalMaterial {
+            cohesion_model: -1,
+            cohesive_coeff: VALUE_FALLBACK,
+            inner_overlap_boundary: VALUE_FALLBACK,
+            k_n_outer: VALUE_FALLBACK,
+            k_t_outer: VALUE_FALLBACK,
+            k_n_inner: VALUE_FALLBACK,
+            k_t_inner: VALUE_FALLBACK,
+        }
+    }
+}
+
+impl OptionalMaterial {
+    /// The cohesion tokens this wall sets (not −1), by name.
+    pub fn cohesion_tokens(&self) -> Vec<&'static str> {
+        let mut out = Vec::new();
+        if self.cohesion_model != -1 {
+            out.push("cohesion_model");
+        }
+        if self.cohesive_coeff != VALUE_FALLBACK {
+            out.push("cohesive_coeff");
+        }
+        out
+    }
+
+    /// The two-layer tokens this wall sets (not −1), by name.
+    pub fn two_layer_tokens(&self) -> Vec<&'static str> {
+        [
+            ("inner_overlap_boundary", self.inner_overlap_boundary),
+            ("k_n_outer", self.k_n_outer),
+            ("k_t_outer", self.k_t_outer),
+            ("k_n_inner", self.k_n_inner),
+            ("k_t_inner", self.k_t_inner),
+        ]
+        .into_iter()
+        .filter(|&(_, x)| x != VALUE_FALLBACK)
+        .map(|(name, _)| name)
+        .collect()
+    }
+}

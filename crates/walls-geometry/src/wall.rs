@@ -3,7 +3,7 @@
 //! previews, the plan) reads the typed parts: [`Shape`], [`Motion`], [`Material`],
 //! [`Appearance`] and [`Reactive`].
 
-use crate::material::Material;
+use crate::material::{Material, OptionalMaterial};
 use crate::motion::{Motion, Oscillation};
 use crate::shape::{
     Disk, FiniteCylinder, InfiniteCylinder, Plane, Rectangle, Shape, Shell, Triangle,
@@ -62,6 +62,9 @@ pub struct Wall {
     /// Its contact values as written, with pkdgrav's fall-backs (−1, 99) unresolved:
     /// [`Material::against`] resolves them.
     pub material: Material,
+    /// Its values for cohesion and two-layer contacts (pkdgrav's optional builds), as
+    /// written.
+    pub optional: OptionalMaterial,
     /// How it is drawn.
     pub appearance: Appearance,
     /// Its mass and assembly values.
@@ -138,6 +141,15 @@ impl Wall {
             mu_t: number(Keyword::MuT),
             beta_s: number(Keyword::BetaS),
         };
+        let optional = OptionalMaterial {
+            cohesion_model: wall.integer(Keyword::CohesionModel),
+            cohesive_coeff: number(Keyword::CohesiveCoeff),
+            inner_overlap_boundary: number(Keyword::InnerOverlapBoundary),
+            k_n_outer: number(Keyword::KNOuter),
+            k_t_outer: number(Keyword::KTOuter),
+            k_n_inner: number(Keyword::KNInner),
+            k_t_inner: number(Keyword::KTInner),
+        };
         let appearance = Appearance {
             color: wall.integer(Keyword::Color),
             transparency: number(Keyword::Transparency),
@@ -159,6 +171,7 @@ impl Wall {
             shape,
             motion,
             material,
+            optional,
             appearance,
             reactive,
         }

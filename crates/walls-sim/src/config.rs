@@ -77,6 +77,11 @@ pub struct Run {
     pub particles: Vec<Particle>,
     /// The settings.
     pub settings: Settings,
+    /// The `.par` lines the run does not follow because of its build or integrator
+    /// (cohesion's and two-layer contacts' keys without `DEM_COHESION` or
+    /// `DEM_TWOLAYERS`, or without pkdgrav's integrator), in line order; the `.par`
+    /// file's own warnings are in [`Params::warnings`].
+    pub warnings: Vec<par::ParWarning>,
 }
 
 /// Why a run cannot be set up.
@@ -118,7 +123,19 @@ pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, 
         Some(f) => Some(particles::read_file(&f)?),
         None => None,
     };
-    resolve(flags, par, scene, particles)
+    let mut run = resolve(flags, par, scene, particles)?;
+    if crate::run::optional::cohesion_on(&run.settings)
+        && let Some(file) = cohesion_file(flags, par)
+    {
+        run.settings.cohesion.colours = Some(crate::io::cohesion::read_file(&file)?);
+    }
+    Ok(run)
+}
+
+/// The cohesion file to read: the `.par` file's `achCohesionFile`, taken relative to the
+/// `.par` file's folder.
+pub fn cohesion_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
+    beside_par(flags, par?.cohesion_file.as_deref()?)
 }
 
 /// `name`, a path written in the `.par` file, as a path from here: relative to the
@@ -229,9 +246,21 @@ pub fn resolve(
             (dt_for(t_end), t_end)
         }
     };
+    let cohesion = crate::contact::cohesion::Cohesion {
+        model: par
+            .and_then(|p| p.cohesion_model)
+            .and_then(crate::contact::cohesion::Model::from_number)
+            .unwrap_or_default(),
+        coefficient: from_par(|p| p.cohesive_coeff).unwrap_or(0.0),
+        colours: None,
+    };
+    let two_layer = par.and_then(|p| p.two_layer);
+    let warnings = optional_key_warnings(par, &build, flags.integrator);
     let settings = Settings {
         method,
         build,
+        cohesion,
+        two_layer,
         gravity,
         particle_contacts: !flags.no_particle_contacts,
         edges: !flags.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),
@@ -249,7 +278,51 @@ pub fn resolve(
     Ok(Run {
         particles,
         settings,
+        warnings,
     })
+}
+
+/// The `.par` keys of optional builds (cohesion, two-layer contacts) that a run with
+/// `build` and `integrator` does not follow, each with its line.
+fn optional_key_warnings(
+    par: Option<&Params>,
+    build: &Build,
+    integrator: Integrator,
+) -> Vec<par::ParWarning> {
+    let Some(par) = par else {
+        return Vec::new();
+    };
+    par.optional_keys
+        .iter()
+        .filter_map(|k| {
+            let has = match k.option {
+                "DEM_COHESION" => build.cohesion,
+                _ => build.two_layers,
+            };
+            let what = if k.option == "DEM_COHESION" {
+                "cohesion (physics.md §7)"
+            } else {
+                "two-layer contacts (physics.md §8)"
+            };
+            let message = if !has {
+                format!(
+                    "the build lacks {}, which {what} needs: the run ignores the key (add {} to --pkdgrav-build)",
+                    k.option, k.option
+                )
+            } else if integrator != Integrator::Pkdgrav {
+                format!(
+                    "{what} is followed only with pkdgrav's contact law (Integrator::Pkdgrav, which --integrator does not select yet): the run ignores the key"
+                )
+            } else {
+                return None;
+            };
+            Some(par::ParWarning {
+                line: Some(k.line),
+                key: k.key.to_string(),
+                message,
+            })
+        })
+        .collect()
 }
 
 /// pkdgrav's particle material (`master.c msrInitialize`) with the normal spring

@@ -53,10 +53,14 @@ fn two_layer_sentinels_fall_back_to_dkn_and_two_sevenths() {
             k_t_inner: KT_PER_KN * 4e5,
         })
     );
-    // Not modelled yet: each line says so.
-    let lines: Vec<_> = p.warnings.iter().map(|w| w.line).collect();
-    assert_eq!(lines, [Some(5), Some(6), Some(7), Some(8), Some(9)]);
-    assert!(p.warnings[0].message.contains("not modelled yet"));
+    // Followed by a DEM_TWOLAYERS build: no warning here; each line is kept with its
+    // option, for `config` to warn about when the run's build lacks it.
+    assert_eq!(p.warnings, vec![]);
+    let lines: Vec<_> = p.optional_keys.iter().map(|k| (k.line, k.option)).collect();
+    assert_eq!(
+        lines,
+        [5, 6, 7, 8, 9].map(|n| (n, "DEM_TWOLAYERS")).to_vec()
+    );
     // Only dKnInner given: the outer layer is dKn's.
     let p = read_par(&format!("{QUIET}dKnInner = 2e5\n")).unwrap();
     let layers = p.two_layer.unwrap();

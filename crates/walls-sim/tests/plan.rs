@@ -34,7 +34,7 @@ fn a_static_frictionless_floor_needs_only_gravity_and_springs() {
     let floor = scene("wall type plane\n");
     let ps = defaults::default_particles(&floor);
     let s = settings(1e4, 1.0);
-    assert_eq!(used(&floor, &ps, &s), ["uniform gravity"]);
+    assert_eq!(used(&floor, &ps, &s), ["pkdgrav build", "uniform gravity"]);
     // The nine particles fall side by side onto a frictionless floor: proved never to
     // meet. With friction they could be pushed sideways, so they might.
     let mut rough = s.clone();

@@ -14,7 +14,8 @@
 //! build, physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls and pairs:
 //! the springs kept in a [`Record`] turn with the contact, the shear spring resets when
 //! the contact slides, and rolling and twisting are spring–dashpot–sliders scaled by
-//! (β_s R*)².
+//! (β_s R*)². [`dashpot_contact_with`] adds what pkdgrav's optional builds change in it
+//! ([`Optional`]): cohesion (§7) and two-layer springs ([`Layers`], §8).
 //!
 //! Damping from restitution: C = −2·ln ε·√(m·k/(π² + ln²ε)), 0 when ε is 0 or 1. The
 //! contact lasts π/ω_d with ω_d² = k/m − (C/2m)².
@@ -172,6 +173,63 @@ pub struct Record {
     pub roll: Vec3,
     /// The twist angle.
     pub twist: f64,
+    /// Two-layer contacts (physics.md §8): the layer the contact was in last step,
+    /// positive the outer, negative the inner; 0 in a new contact.
+    pub layer: i8,
+}
+
+/// The spring constants of a two-layer contact (`DEM_TWOLAYERS`, physics.md §8).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Layers {
+    /// The overlap b where the inner layer begins (the fraction times R_eff).
+    pub boundary: f64,
+    /// The outer layer's normal spring constant.
+    pub k_n_outer: f64,
+    /// The outer layer's tangential spring constant.
+    pub k_t_outer: f64,
+    /// The inner layer's normal spring constant.
+    pub k_n_inner: f64,
+    /// The inner layer's tangential spring constant.
+    pub k_t_inner: f64,
+}
+
+/// What pkdgrav's optional builds add to one [`Dashpot`] contact: the cohesion force
+/// (`DEM_COHESION`, physics.md §7; 0 for none) and the two layers (`DEM_TWOLAYERS`, §8).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Optional {
+    /// The size of the cohesive force, pulling particle 1 towards its partner.
+    pub cohesion: f64,
+    /// The two-layer spring constants, which replace the material's k_n and k_t.
+    pub layers: Option<Layers>,
+}
+
+impl Layers {
+    /// The layer of an overlap `x` (1 outer, −1 inner), its normal and tangential spring
+    /// constants, and the size of the normal spring force: k_n,out·x in the outer layer,
+    /// k_n,in·(x − b) + k_n,out·b in the inner.
+    pub fn at(&self, x: f64) -> (i8, f64, f64, f64) {
+        if x > self.boundary {
+            (
+                -1,
+                self.k_n_inner,
+                self.k_t_inner,
+                self.k_n_inner * (x - self.boundary) + self.k_n_outer * self.boundary,
+            )
+        } else {
+            (1, self.k_n_outer, self.k_t_outer, self.k_n_outer * x)
+        }
+    }
+
+    /// The factor the shear spring takes on crossing from layer `from` into layer `to`
+    /// (√(k_t,from/k_t,to), which keeps ½k_t·S²); 1 without a crossing or in a new
+    /// contact (`from` 0).
+    pub fn rescale(&self, from: i8, to: i8) -> f64 {
+        match (from, to) {
+            (1, -1) => (self.k_t_outer / self.k_t_inner).sqrt(),
+            (-1, 1) => (self.k_t_inner / self.k_t_outer).sqrt(),
+            _ => 1.0,
+        }
+    }
 }
 
 /// One contact as pkdgrav's `DEM_ROTATION_DASHPOT` build sees it (physics.md §1.1–§1.4),
@@ -307,7 +365,30 @@ fn turn(v: &Vec3, axis: &Vec3, sin: f64, cos: f64) -> Vec3 {
 /// stretched, and limited (the shear spring reset when the contact slides, the rolling
 /// and twisting springs held at their slider limits).
 pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material) -> DashpotForce {
+    dashpot_contact_with(c, record, dt, mat, &Optional::default())
+}
+
+/// [`dashpot_contact`] with what pkdgrav's optional builds add (`extra`): the two-layer
+/// spring constants chosen by the overlap, the shear spring rescaled when the contact
+/// crosses from one layer into the other (physics.md §8), and the cohesive force added
+/// to the normal force after the friction limits (§7: the limits' N excludes it).
+pub fn dashpot_contact_with(
+    c: &Dashpot,
+    record: &mut Record,
+    dt: f64,
+    mat: &Material,
+    extra: &Optional,
+) -> DashpotForce {
     let n = &c.normal;
+    let (k_n, k_t, spring_force) = match &extra.layers {
+        None => (mat.k_n, mat.k_t, mat.k_n * c.overlap),
+        Some(layers) => {
+            let (layer, k_n, k_t, force) = layers.at(c.overlap);
+            record.spring *= layers.rescale(record.layer, layer);
+            record.layer = layer;
+            (k_n, k_t, force)
+        }
+    };
     if record.normal != Vec3::zeros() {
         // §1.3 step 1: about the mean normal, by the mean spin of the two over the step.
         if let Some(mean) = (record.normal + n).try_normalize(0.0) {
@@ -336,13 +417,13 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
     let u = &c.velocity;
     let un = n * n.dot(u);
     let ut = u - un;
-    let c_n = damping(mat.eps_n, mat.k_n, c.mass);
-    let c_t = damping(mat.eps_t, mat.k_t, c.mass);
-    let f_n = n * (-mat.k_n * c.overlap) + un * c_n;
+    let c_n = damping(mat.eps_n, k_n, c.mass);
+    let c_t = damping(mat.eps_t, k_t, c.mass);
+    let f_n = n * -spring_force + un * c_n;
     let normal_force = f_n.norm();
     // Step 4 and 5: the shear spring, and the slide (spring reset, capped dashpot).
     record.spring += ut * dt;
-    let mut f_t = record.spring * mat.k_t + ut * c_t;
+    let mut f_t = record.spring * k_t + ut * c_t;
     let cap = mat.mu_s * normal_force;
     if f_t.norm_squared() > cap * cap {
         record.spring = Vec3::zeros();
@@ -354,10 +435,16 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
         };
     }
     let shear = n.cross(&f_t);
+    // §7: cohesion pulls along n̂, added after the limits.
+    let cohesion = if extra.cohesion != 0.0 {
+        n * extra.cohesion
+    } else {
+        Vec3::zeros()
+    };
     if let Some(t) = &c.constant_torque {
         let (on_1, on_2) = constant_torques(c, t, normal_force, mat, dt);
         return DashpotForce {
-            force: f_n + f_t,
+            force: f_n + f_t + cohesion,
             torque: shear * c.levers.0 + on_1,
             partner_torque: shear * c.levers.1 + on_2,
             resistance: on_1,
@@ -375,7 +462,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
         };
         let rate = c.spin - n * n.dot(&c.spin) + n.cross(u) * kappa;
         record.roll += rate * dt;
-        let mut m_r = record.roll * (mat.k_n * b);
+        let mut m_r = record.roll * (k_n * b);
         let limit = mat.mu_r * mat.beta_s * c.radius * normal_force;
         let size = m_r.norm();
         if size > limit {
@@ -389,7 +476,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
     if mat.mu_t != 0.0 {
         let rate = c.spin.dot(n);
         record.twist += rate * dt;
-        let torque = 2.0 * mat.k_t * b * record.twist;
+        let torque = 2.0 * k_t * b * record.twist;
         let limit = mat.mu_t * mat.beta_s * c.radius * mat.mu_s * normal_force;
         let m_t = if torque.abs() > limit {
             record.twist -= rate * dt;
@@ -400,7 +487,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
         resistance += n * m_t;
     }
     DashpotForce {
-        force: f_n + f_t,
+        force: f_n + f_t + cohesion,
         torque: shear * l1 + resistance,
         partner_torque: shear * l2 - resistance,
         resistance,

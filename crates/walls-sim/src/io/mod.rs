@@ -2,11 +2,13 @@
 //!
 //! * [`particles`]: particles from CSV and pkdgrav `.ss` files;
 //! * [`par`]: pkdgrav parameter files;
+//! * [`cohesion`]: pkdgrav's per-colour cohesion files (`achCohesionFile`);
 //! * [`trajectory`]: the `particles.csv` and `walls.csv` of `walls-sim run --out`,
 //!   written and read back as the same rows;
 //! * [`wallsreact`]: pkdgrav's `WALLSREACTdata.out` and `WALLSREACTviz.out`, and the
 //!   viz file read back as the [`wallsreact::VizWall`]s written.
 
+pub mod cohesion;
 pub mod par;
 pub mod particles;
 pub mod trajectory;

@@ -2,7 +2,9 @@
 //! reads them (`reference/pkdgrav/physics.md` §3–4): the input and walls files, the
 //! timestep, the first and last step numbers and the output interval, the particles'
 //! material with pkdgrav's sentinels (`dKt = -1` is 2/7·`dKn`; the two-layer constants'
-//! −1 fall back to `dKn` and 2/7 of it), uniform gravity and edge detection; and the range
+//! −1 fall back to `dKn` and 2/7 of it), cohesion, uniform gravity and edge detection;
+//! the keys only an optional build follows ([`OPTIONAL_KEYS`], which `config` checks
+//! against the run's build); and the range
 //! each run parameter must lie in ([`Rule`]), whether it comes from a `.par` file or the
 //! command line.
 //!
@@ -91,6 +93,17 @@ pub struct Params {
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
     pub two_layer: Option<TwoLayer>,
+    /// `iCohesionModel` (`DEM_COHESION`): 0 microscopic contact, 1 granular bridge.
+    pub cohesion_model: Option<i64>,
+    /// `dCohesiveCoeff` (`DEM_COHESION`), in raw pkdgrav units of stress.
+    pub cohesive_coeff: Option<f64>,
+    /// `achCohesionFile` (`DEM_COHESION`): the per-colour coefficients, relative to the
+    /// `.par` file's folder; `None` when absent or empty.
+    pub cohesion_file: Option<String>,
+    /// The lines of keys that only a build with an optional compile option follows
+    /// (cohesion's, two-layer contacts'), in line order: `config` warns about those the
+    /// run's build lacks.
+    pub optional_keys: Vec<OptionalKey>,
     /// What the evaluator does not follow, in line order.
     pub warnings: Vec<ParWarning>,
 }
@@ -111,6 +124,30 @@ pub struct TwoLayer {
     /// `dKtInner`.
     pub k_t_inner: f64,
 }
+
+/// A `.par` line whose key only a pkdgrav build with `option` follows.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OptionalKey {
+    /// The line, 1-based.
+    pub line: usize,
+    /// The key.
+    pub key: &'static str,
+    /// The compile option (`DEM_COHESION`, `DEM_TWOLAYERS`).
+    pub option: &'static str,
+}
+
+/// The `.par` keys of pkdgrav's optional builds, with the compile option each needs
+/// (physics.md §4, §7, §8).
+pub const OPTIONAL_KEYS: &[(&str, &str)] = &[
+    ("iCohesionModel", "DEM_COHESION"),
+    ("dCohesiveCoeff", "DEM_COHESION"),
+    ("achCohesionFile", "DEM_COHESION"),
+    ("dInnerOverlapBndry", "DEM_TWOLAYERS"),
+    ("dKnOuter", "DEM_TWOLAYERS"),
+    ("dKtOuter", "DEM_TWOLAYERS"),
+    ("dKnInner", "DEM_TWOLAYERS"),
+    ("dKtInner", "DEM_TWOLAYERS"),
+];
 
 /// A `.par` line (or a key left out) that the evaluator does not follow as pkdgrav would.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -156,7 +193,6 @@ pub enum Use {
 
 const DEM_ONLY_2: &str = "pkdgrav's DEM builds need 2; the evaluator runs as if it were 2";
 const LEVELS: &str = "the evaluator warns and stops at pkdgrav's default overlap levels (3 %, 15 %, 50 % of the radius)";
-const TWO_LAYERS: &str = "two-layer contacts (DEM_TWOLAYERS, physics.md §8) are not modelled yet: the value is read and checked, but the run does not use it";
 const HARD_OPTION: &str = "pkdgrav's hard-sphere overlap, slide, collapse and crush options are not modelled yet (DEM builds ignore them)";
 
 /// Every `.par` key of pkdgrav's wall runs (physics.md §3–4), and a few general ones,
@@ -201,7 +237,9 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iDEMStatsInterval", Use::NoEffect),
     ("dTangentialSpringDrag", Use::NoEffect),
     ("iMaxRung", Use::NoEffect),
-    ("iCohesionModel", Use::NoEffect),
+    ("iCohesionModel", Use::Read),
+    ("dCohesiveCoeff", Use::Read),
+    ("achCohesionFile", Use::Read),
     ("dTheta", Use::NoEffect),
     ("dEta", Use::NoEffect),
     ("nBucket", Use::NoEffect),
@@ -292,24 +330,12 @@ pub const KEYS: &[(&str, Use)] = &[
     ("bUseContactRadius", Use::Read),
     ("bUseLegacyRoll", Use::Read),
     (
-        "dCohesiveCoeff",
-        Use::Only {
-            value: 0.0,
-            default: 0.0,
-            why: "cohesion (DEM_COHESION, physics.md §7) is not modelled yet",
-        },
-    ),
-    (
         "bWallsSolveQuartic",
         Use::Only {
             value: 0.0,
             default: 0.0,
             why: "the quartic prediction near rotating cylinders is not modelled yet",
         },
-    ),
-    (
-        "achCohesionFile",
-        Use::NotYet("per-colour cohesion (physics.md §7) is not modelled yet"),
     ),
     ("iOverlapOption", Use::NotYet(HARD_OPTION)),
 ];
@@ -599,17 +625,30 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         _ => {}
     }
     let two_layer = two_layer(&lines, k_n.unwrap_or(0.0))?;
-    for key in [
-        "dInnerOverlapBndry",
-        "dKnOuter",
-        "dKtOuter",
-        "dKnInner",
-        "dKtInner",
-    ] {
-        if let Some(n) = lines.line(key) {
-            warn(Some(n), key, TWO_LAYERS.into());
+    let mut optional_keys: Vec<OptionalKey> = OPTIONAL_KEYS
+        .iter()
+        .filter_map(|&(key, option)| {
+            Some(OptionalKey {
+                line: lines.line(key)?,
+                key,
+                option,
+            })
+        })
+        .collect();
+    optional_keys.sort_by_key(|k| k.line);
+    let cohesion_model = match lines.real("iCohesionModel")? {
+        None => None,
+        Some((_, x)) if x == 0.0 || x == 1.0 => Some(x as i64),
+        Some((n, _)) => {
+            return Err(error(
+                format!("line {n}"),
+                format!(
+                    "`iCohesionModel` is `{}`; it must be 0 (microscopic contact) or 1 (granular bridge)",
+                    lines.by_key["iCohesionModel"].value
+                ),
+            ));
         }
-    }
+    };
     warnings.sort_by_key(|w| w.line.unwrap_or(usize::MAX));
     let g = [
         lines.checked("dxUnifGrav", Rule::Any)?,
@@ -648,6 +687,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         do_gravity: lines.real("bDoGravity")?.map(|(_, x)| x != 0.0),
         acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
         two_layer,
+        cohesion_model,
+        cohesive_coeff: lines.checked("dCohesiveCoeff", Rule::Any)?,
+        cohesion_file: lines.text("achCohesionFile").filter(|f| !f.is_empty()),
+        optional_keys,
         warnings,
     })
 }

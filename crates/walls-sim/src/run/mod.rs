@@ -17,6 +17,7 @@
 
 pub mod defaults;
 mod hard;
+pub mod optional;
 pub mod plan;
 mod soft;
 mod stability;
@@ -119,6 +120,13 @@ pub struct Settings {
     /// (and likewise its spin, with the thresholds over and times its radius); 0 turns
     /// it off.
     pub acc_crit: f64,
+    /// Cohesion's `.par` values (physics.md §7): followed when the build has
+    /// `DEM_COHESION` and the integrator is [`Integrator::Pkdgrav`].
+    pub cohesion: crate::contact::cohesion::Cohesion,
+    /// The two-layer constants of the `.par` file (physics.md §8), `None` for pkdgrav's
+    /// defaults (no boundary, every constant from k_n): followed when the build has
+    /// `DEM_TWOLAYERS` and the integrator is [`Integrator::Pkdgrav`].
+    pub two_layer: Option<crate::io::par::TwoLayer>,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -155,6 +163,8 @@ impl Settings {
             legacy_roll: false,
             forces: true,
             acc_crit: 0.0,
+            cohesion: crate::contact::cohesion::Cohesion::default(),
+            two_layer: None,
         }
     }
 
@@ -316,10 +326,15 @@ pub fn run_observed(
         Planning::Everything => Plan::everything(),
         Planning::Exactly(plan) => plan,
     };
-    match settings.method {
+    let mut outcome = match settings.method {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
-    }
+    };
+    // Walls' tokens the build (or the integrator) does not follow come first.
+    outcome
+        .warnings
+        .splice(0..0, optional::token_warnings(walls, settings));
+    outcome
 }
 
 /// The wall a particle is stuck to from the start, with its offset from the wall's

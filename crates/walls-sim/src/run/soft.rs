@@ -26,10 +26,11 @@ use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
     ConstantTorque, Dashpot, Material, Record, Rolling, Touch, contact, contact_radius,
-    damping_per_root_mass, dashpot_contact, normal_contact, resistance,
+    damping_per_root_mass, dashpot_contact_with, normal_contact, resistance,
 };
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
+use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -117,6 +118,8 @@ struct Walls<'a> {
     constant_torque: Option<bool>,
     /// pkdgrav's `dAccCrit` (0: off).
     acc_crit: f64,
+    /// Cohesion and two-layer contacts (pkdgrav's optional builds).
+    optional: &'a OptionalPhysics,
     /// The time at the step's end, the timestep, and the step's number.
     t: f64,
     dt: f64,
@@ -259,7 +262,9 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             return out;
         }
         let plan = walls.plan;
-        if walls.pkdgrav_levers && (plan.sliding_friction || plan.rolling || plan.twisting) {
+        if walls.pkdgrav_levers
+            && (plan.sliding_friction || plan.rolling || plan.twisting || walls.optional.any())
+        {
             // pkdgrav's contact law, in its frame: the normal towards the wall, the
             // wall's motion relative to the particle's (physics.md §1.1–§1.5).
             let dashpot = Dashpot {
@@ -290,7 +295,8 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                     }
                 }),
             };
-            let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
+            let extra = walls.optional.wall(w, i, r, lever, mat);
+            let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
             load.force += c.force;
             load.torque += c.torque;
             if let Some(a) = walls.assembly_of[w] {
@@ -450,6 +456,8 @@ struct SoftStepper<'a> {
     damping: Vec<f64>,
     /// The particles' material, for their contacts with each other.
     between: Material,
+    /// Cohesion and two-layer contacts (pkdgrav's optional builds).
+    optional: OptionalPhysics,
     /// Whether each wall oscillates (a bounce off it may gain speed).
     oscillating: Vec<bool>,
     /// The wall index, when the plan uses one.
@@ -535,6 +543,7 @@ impl<'a> SoftStepper<'a> {
             }
         }
         let index = plan.wall_index.then(|| WallIndex::new(scene));
+        let optional = OptionalPhysics::new(scene, &states, settings);
         let damping: Vec<f64> = materials
             .iter()
             .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
@@ -548,6 +557,7 @@ impl<'a> SoftStepper<'a> {
             materials,
             damping,
             between,
+            optional,
             oscillating,
             index,
             origins,
@@ -812,7 +822,9 @@ impl<'a> SoftStepper<'a> {
                 }
             });
             entry.seen = step;
-            if pkdgrav_levers && (plan.sliding_friction || plan.rolling || plan.twisting) {
+            if pkdgrav_levers
+                && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
+            {
                 // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
                 // towards j, velocities and spins are j's relative to i's (physics.md
                 // §1.1–§1.5).
@@ -857,7 +869,8 @@ impl<'a> SoftStepper<'a> {
                         }
                     }),
                 };
-                let c = dashpot_contact(&dashpot, &mut entry.record, dt, mat);
+                let extra = self.optional.pair(i, j, p.radius, q.radius, li, mat);
+                let c = dashpot_contact_with(&dashpot, &mut entry.record, dt, mat, &extra);
                 if free_i {
                     loads[i].force += c.force;
                     loads[i].torque += c.torque;
@@ -937,6 +950,7 @@ impl<'a> SoftStepper<'a> {
             constant_torque: (!self.settings.build.rotation_dashpot)
                 .then_some(self.settings.legacy_roll),
             acc_crit: self.settings.acc_crit,
+            optional: &self.optional,
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,

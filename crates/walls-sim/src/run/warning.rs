@@ -11,7 +11,8 @@
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
-//! * `W4xx`, reactive walls: assemblies that cannot turn.
+//! * `W4xx`, reactive walls: assemblies that cannot turn;
+//! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow.
 
 use super::COLLISION_CAP;
 use std::fmt;
@@ -184,6 +185,27 @@ pub enum Warning {
         /// The assemblies' numbers.
         assemblies: Vec<i64>,
     },
+    /// W501: walls set cohesion tokens (`cohesion_model`, `cohesive_coeff`) that the run
+    /// does not follow (a build without `DEM_COHESION`, or not pkdgrav's integrator).
+    CohesionTokensIgnored {
+        /// The walls' indices.
+        walls: Vec<usize>,
+        /// The tokens set.
+        tokens: Vec<&'static str>,
+        /// Why the run does not follow them.
+        reason: String,
+    },
+    /// W502: walls set two-layer tokens (`inner_overlap_boundary`, `k_n_outer`, …) that
+    /// the run does not follow (a build without `DEM_TWOLAYERS`, or not pkdgrav's
+    /// integrator).
+    TwoLayerTokensIgnored {
+        /// The walls' indices.
+        walls: Vec<usize>,
+        /// The tokens set.
+        tokens: Vec<&'static str>,
+        /// Why the run does not follow them.
+        reason: String,
+    },
 }
 
 impl Warning {
@@ -203,6 +225,8 @@ impl Warning {
             Warning::RestitutionAt99 { .. } => "W302",
             Warning::CollisionCap { .. } => "W303",
             Warning::ImmovableAssemblies { .. } => "W401",
+            Warning::CohesionTokensIgnored { .. } => "W501",
+            Warning::TwoLayerTokensIgnored { .. } => "W502",
         }
     }
 }
@@ -296,6 +320,24 @@ impl fmt::Display for Warning {
                 f,
                 "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
             ),
+            Warning::CohesionTokensIgnored {
+                walls,
+                tokens,
+                reason,
+            } => write!(
+                f,
+                "walls {walls:?} set {}: {reason}, so the run has no cohesion and ignores them",
+                tokens.join(", ")
+            ),
+            Warning::TwoLayerTokensIgnored {
+                walls,
+                tokens,
+                reason,
+            } => write!(
+                f,
+                "walls {walls:?} set {}: {reason}, so the run's contacts have one layer and ignore them",
+                tokens.join(", ")
+            ),
         }
     }
 }
@@ -371,6 +413,16 @@ mod tests {
             },
             Warning::ImmovableAssemblies {
                 assemblies: vec![1],
+            },
+            Warning::CohesionTokensIgnored {
+                walls: vec![1],
+                tokens: vec!["cohesive_coeff"],
+                reason: "the build lacks DEM_COHESION".into(),
+            },
+            Warning::TwoLayerTokensIgnored {
+                walls: vec![0],
+                tokens: vec!["k_n_outer"],
+                reason: "the build lacks DEM_TWOLAYERS".into(),
             },
         ]
     }

@@ -192,6 +192,11 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     let (checked, errors) = read_walls(&file, model, "running")?;
     let walls = decode(&checked.scene);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
+    if let Some(path) = &args.par {
+        for w in &run.warnings {
+            eprintln!("walls-sim: warning: {path}: {w}");
+        }
+    }
     let every = args
         .every
         .or_else(|| par.as_ref()?.out_interval)

@@ -1,0 +1,93 @@
+//! pkdgrav's per-colour cohesion file (`achCohesionFile`, physics.md §7): the number of
+//! colours N, the rule that combines two colours' coefficients (0 none, 1 mean, 2 max,
+//! 3 min), then N lines of `color coefficient`. Numbers are separated by white space (N
+//! and the rule may share a line). Every error names the file and the line.
+
+use super::{FileError, InputError, error};
+use crate::contact::cohesion::{Colours, Rule};
+
+/// The whitespace-separated words of `text`, each with its line (1-based).
+fn words(text: &str) -> Vec<(usize, &str)> {
+    text.lines()
+        .enumerate()
+        .flat_map(|(i, l)| l.split_whitespace().map(move |w| (i + 1, w)))
+        .collect()
+}
+
+/// Reads a cohesion file's text.
+pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
+    let words = words(text);
+    let last_line = text.lines().count().max(1);
+    let mut next = words.iter().copied();
+    let mut take = |what: &str| {
+        next.next().ok_or_else(|| {
+            error(
+                format!("line {last_line}"),
+                format!("the file ends where {what} should be"),
+            )
+        })
+    };
+    let (n_line, n_word) = take("the number of colours")?;
+    let count: usize = n_word.parse().map_err(|_| {
+        error(
+            format!("line {n_line}"),
+            format!("the number of colours is `{n_word}`, not a whole number of 0 or more"),
+        )
+    })?;
+    let (r_line, r_word) = take("the rule (0 none, 1 mean, 2 max, 3 min)")?;
+    let rule = r_word
+        .parse::<i64>()
+        .ok()
+        .and_then(Rule::from_number)
+        .ok_or_else(|| {
+            error(
+                format!("line {r_line}"),
+                format!(
+                    "the rule is `{r_word}`; it must be 0 (none), 1 (mean), 2 (max) or 3 (min)"
+                ),
+            )
+        })?;
+    let mut coefficients: Vec<(i32, f64)> = Vec::with_capacity(count);
+    for k in 1..=count {
+        let (c_line, c_word) = take(&format!("colour {k} of {count}"))?;
+        let colour: i32 = c_word.parse().map_err(|_| {
+            error(
+                format!("line {c_line}"),
+                format!("the colour is `{c_word}`, not a whole number"),
+            )
+        })?;
+        let (x_line, x_word) = take(&format!("the coefficient of colour {colour}"))?;
+        let x: f64 = x_word
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| {
+                error(
+                    format!("line {x_line}"),
+                    format!(
+                        "the coefficient of colour {colour} is `{x_word}`, not a finite number"
+                    ),
+                )
+            })?;
+        if coefficients.iter().any(|(c, _)| *c == colour) {
+            return Err(error(
+                format!("line {c_line}"),
+                format!("colour {colour} is listed twice"),
+            ));
+        }
+        coefficients.push((colour, x));
+    }
+    if let Some((line, word)) = next.next() {
+        return Err(error(
+            format!("line {line}"),
+            format!("`{word}` follows the {count} colours the file's first number announces"),
+        ));
+    }
+    Ok(Colours { rule, coefficients })
+}
+
+/// Reads the cohesion file at `path`.
+pub fn read_file(path: &str) -> Result<Colours, FileError> {
+    let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
+    read_cohesion(&text).map_err(|e| FileError::input(path, e))
+}
