@@ -11,7 +11,7 @@
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
-//! * `W4xx`, reactive walls: assemblies that cannot turn.
+//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores.
 
 use super::COLLISION_CAP;
 use std::fmt;
@@ -184,6 +184,13 @@ pub enum Warning {
         /// The assemblies' numbers.
         assemblies: Vec<i64>,
     },
+    /// W402: walls with a mass (and an assembly) in a soft-sphere run whose pkdgrav build
+    /// lacks `DEM_WALLS_REACT`: pkdgrav then reads the masses and ignores them, and so
+    /// does the run; the walls move as their motion tokens say.
+    MassesIgnored {
+        /// The walls' indices.
+        walls: Vec<usize>,
+    },
 }
 
 impl Warning {
@@ -203,6 +210,7 @@ impl Warning {
             Warning::RestitutionAt99 { .. } => "W302",
             Warning::CollisionCap { .. } => "W303",
             Warning::ImmovableAssemblies { .. } => "W401",
+            Warning::MassesIgnored { .. } => "W402",
         }
     }
 }
@@ -296,6 +304,10 @@ impl fmt::Display for Warning {
                 f,
                 "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
             ),
+            Warning::MassesIgnored { walls } => write!(
+                f,
+                "walls {walls:?} have a mass, but the pkdgrav build lacks DEM_WALLS_REACT: pkdgrav without it ignores wall masses, and so does this run (the walls move as their motion tokens say); add DEM_WALLS_REACT to --pkdgrav-build for reactive walls"
+            ),
         }
     }
 }
@@ -372,6 +384,7 @@ mod tests {
             Warning::ImmovableAssemblies {
                 assemblies: vec![1],
             },
+            Warning::MassesIgnored { walls: vec![0, 2] },
         ]
     }
 
