@@ -391,18 +391,28 @@ fn reactive_files_error(scene: &str) -> (f64, f64) {
             let polygon = f[k] == "0";
             out.extend([0.0, 0.0]);
             out.extend([sc.l; 3]);
-            out.extend(if polygon { [sc.l; 6].to_vec() } else { [1.0; 3].to_vec() });
+            out.extend(if polygon {
+                [sc.l; 6].to_vec()
+            } else {
+                [1.0; 3].to_vec()
+            });
             k += if polygon { 11 } else { 8 };
         }
         out
     };
     let compare = |name: &str, ours: &str, theirs: &str, scale: &dyn Fn(&str) -> Vec<f64>| {
-        let (ours, theirs): (Vec<&str>, Vec<&str>) = (ours.lines().collect(), theirs.lines().collect());
+        let (ours, theirs): (Vec<&str>, Vec<&str>) =
+            (ours.lines().collect(), theirs.lines().collect());
         assert_eq!(ours.len(), theirs.len(), "{scene} {name}: line count");
         let mut worst = (0.0f64, String::new());
         for (n, (a, b)) in ours.iter().zip(&theirs).enumerate() {
             let (fa, fb): (Vec<&str>, Vec<&str>) = (a.split(' ').collect(), b.split(' ').collect());
-            assert_eq!(fa.len(), fb.len(), "{scene} {name} line {}: field count", n + 1);
+            assert_eq!(
+                fa.len(),
+                fb.len(),
+                "{scene} {name} line {}: field count",
+                n + 1
+            );
             assert_eq!(fa[0], fb[0], "{scene} {name} line {}: label", n + 1);
             for (k, ((x, y), sk)) in fa.iter().zip(&fb).zip(scale(b)).enumerate() {
                 if sk == 0.0 {
@@ -421,7 +431,9 @@ fn reactive_files_error(scene: &str) -> (f64, f64) {
     };
     let data = compare(DATA_FILE, &ours_data, &golden_data, &|line: &str| {
         let n = line.split(' ').count();
-        (0..n).map(|k| if k == 0 { 0.0 } else { data_scale(k) }).collect()
+        (0..n)
+            .map(|k| if k == 0 { 0.0 } else { data_scale(k) })
+            .collect()
     });
     let viz = compare(VIZ_FILE, &ours_viz, &golden_viz, &viz_scales);
     (data, viz)
@@ -449,12 +461,12 @@ scenes! {
     hs_moving: Bar::Faithful(1e-9);
     hs_oblique: Bar::Faithful(1e-9);
     hs_rect_edge_corner: Bar::Faithful(1e-9);
-    hs_sticky: Bar::Guard(3.512e-4);
+    hs_sticky: Bar::Faithful(1e-9);
     osc_floor_step0: Bar::Faithful(1e-9);
     osc_floor_step5: Bar::Faithful(1e-9);
     pair_headon: Bar::Faithful(1e-9);
     pair_oblique: Bar::Faithful(1e-9);
-    reactive_plate: Bar::Guard(4.124e-3);
+    reactive_plate: Bar::Faithful(1e-9);
     rectangle: Bar::Faithful(1e-9);
     roll: Bar::Faithful(1e-9);
     shell: Bar::Faithful(1e-9);

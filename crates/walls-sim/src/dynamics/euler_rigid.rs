@@ -199,8 +199,8 @@ fn cash_karp(y: &State, dydx: &State, h: f64, f: &impl Fn(&State) -> State) -> (
     }
     let ak5 = f(&t);
     for i in 0..12 {
-        t[i] = y[i]
-            + h * (B61 * dydx[i] + B62 * ak2[i] + B63 * ak3[i] + B64 * ak4[i] + B65 * ak5[i]);
+        t[i] =
+            y[i] + h * (B61 * dydx[i] + B62 * ak2[i] + B63 * ak3[i] + B64 * ak4[i] + B65 * ak5[i]);
     }
     let ak6 = f(&t);
     let mut out = State::zeros();
