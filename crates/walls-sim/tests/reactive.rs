@@ -344,3 +344,22 @@ fn wall_masses_are_ignored_without_dem_walls_react_and_the_run_says_so() {
     assert_eq!(out.assemblies.len(), 1);
     assert!(!out.warnings.iter().any(|w| w.code() == "W402"));
 }
+
+#[test]
+fn a_reactive_walls_spin_seen_by_the_rolling_springs_depends_on_its_type() {
+    // physics.md §10: the face normal's component for triangles and rectangles, orient's
+    // for disks and cylinders, all of it for shells.
+    use walls_sim::dynamics::reactive::relative_spin;
+    let w = Vec3::new(1.0, 2.0, 3.0);
+    let shape = |text: &str| scene(text).remove(0).shape;
+    let rect = shape("wall type rectangle\n origin 0 0 0\n vertex1 2 0 0\n vertex2 0 3 0\n");
+    assert_eq!(relative_spin(&rect, &w), Vec3::new(0.0, 0.0, 3.0));
+    let tri = shape("wall type triangle\n origin 0 0 0\n vertex1 0 1 0\n vertex2 0 0 1\n");
+    assert_eq!(relative_spin(&tri, &w), Vec3::new(1.0, 0.0, 0.0));
+    let disk = shape("wall type disk\n orient 0 1 0\n radius 1\n");
+    assert_eq!(relative_spin(&disk, &w), Vec3::new(0.0, 2.0, 0.0));
+    let cyl = shape("wall type cylinder-finite\n orient 1 0 0\n radius 1\n length 2\n");
+    assert_eq!(relative_spin(&cyl, &w), Vec3::new(1.0, 0.0, 0.0));
+    let shell = shape("wall type shell\n radius 1\n");
+    assert_eq!(relative_spin(&shell, &w), w);
+}
