@@ -441,9 +441,12 @@ fn reactive_files_error(scene: &str) -> (f64, f64) {
 
 #[test]
 fn reactive_plate_wallsreact_files() {
+    // Faithful is 1e-9; today the data file is at 1.8e-15 and the wall placements at
+    // 1.1e-12 of L (2e-13 of the plate's size: the rounding of a thousand steps of
+    // three rotations each), so the bars are tighter.
     let (data, viz) = reactive_files_error("reactive_plate");
-    assert!(data <= 1e-9, "WALLSREACTdata.out: error {data:.3e}");
-    assert!(viz <= 1e-9, "WALLSREACTviz.out: error {viz:.3e}");
+    assert!(data <= 1e-12, "WALLSREACTdata.out: error {data:.3e}");
+    assert!(viz <= 1e-10, "WALLSREACTviz.out: error {viz:.3e}");
 }
 
 // The bars: docs/fidelity.md gives each scene's error today and the cause of the gap.
