@@ -527,12 +527,16 @@ fn a_stuck_particle_turns_and_spins_with_its_wall_from_when_it_sticks() {
     );
     assert_eq!(out.particles[0].particle.spin, Vec3::zeros());
     assert!(close(out.energy.1, 0.0), "{:?}", out.energy);
-    // In a drum spinning at 2, stuck 0.09 into a step of 0.1: it has turned 2·0.01 rad by
-    // the step's end, not 2·0.1, and spins with the drum.
+    // In a drum spinning at 2, stuck 0.09 into a step of 0.1: with the leapfrog it has
+    // turned 2·0.01 rad by the step's end, not 2·0.1, and spins with the drum (pkdgrav's
+    // step carries it for the whole step, below).
     let out = run(
         &scene("wall type cylinder-infinite\n  radius 1\n  epsn 0\n  epst 1\n  ang-speed 2\n"),
         vec![particle([0.81, 0.0, 0.0], [1.0, 0.0, 0.0])],
-        &settings(0.8, 0.1, 0.1, [0.0; 3]),
+        &Settings {
+            integrator: walls_sim::run::Integrator::Leapfrog,
+            ..settings(0.8, 0.1, 0.1, [0.0; 3])
+        },
     );
     let s = &out.particles[0];
     assert!(close(out.events[0].t, 0.09), "{:?}", out.events);
@@ -551,4 +555,40 @@ fn dropped_down_the_axis_onto_a_small_hole_it_bounces_straight_back() {
     );
     let v = out.particles[0].particle.vel;
     assert!((v - Vec3::new(0.0, 0.0, 1.0)).norm() < 1e-12, "{v:?}");
+}
+
+#[test]
+fn pkdgrav_carries_a_particle_that_sticks_within_a_step_by_the_walls_whole_step() {
+    // A sticky plate moving along x at 2; the particle falls onto it and touches at
+    // t = 0.35, τ = 0.05 into the step from 0.3 to 0.4. pkdgrav leaves it where it touched
+    // and adds the wall's travel over the whole step at the step's end (physics.md §6):
+    // at t = 1 it is 2·(1 − 0.3) along, v_wall·τ = 0.1 further than the wall carried it
+    // after the impact, 2·(1 − 0.35), which the other integrators give.
+    let walls = scene(
+        "wall type rectangle\n  origin -5 -5 0\n  vertex1 10 0 0\n  vertex2 0 10 0\n  epsn 0\n  epst 1\n  velocity 2 0 0\n",
+    );
+    let ps = vec![particle([0.0, 0.0, 0.45], [0.0, 0.0, -1.0])];
+    let leapfrog = Settings {
+        integrator: walls_sim::run::Integrator::Leapfrog,
+        ..settings(0.8, 0.1, 1.0, [0.0; 3])
+    };
+    let pkdgrav = Settings {
+        integrator: walls_sim::run::Integrator::Pkdgrav,
+        ..leapfrog.clone()
+    };
+    let after = run(&walls, ps.clone(), &leapfrog);
+    let whole = run(&walls, ps, &pkdgrav);
+    for out in [&after, &whole] {
+        assert_eq!(out.events[0].kind, EventKind::Stick);
+        assert!(close(out.events[0].t, 0.35), "{:?}", out.events);
+        let p = &out.particles[0].particle;
+        assert!(close(p.pos.z, 0.1) && close(p.vel.x, 2.0), "{p:?}");
+    }
+    let (xa, xw) = (
+        after.particles[0].particle.pos.x,
+        whole.particles[0].particle.pos.x,
+    );
+    assert!(close(xa, 2.0 * 0.65), "{xa}");
+    assert!(close(xw, 2.0 * 0.7), "{xw}");
+    assert!(close(xw - xa, 2.0 * 0.05));
 }

@@ -2,5 +2,6 @@
 //! rotation of a rigid body by Euler's equations ([`rigid`]). Wall kinematics (where a
 //! wall is and how fast its surface moves) is walls-geometry's `Motion`.
 
+pub mod euler_rigid;
 pub mod reactive;
 pub mod rigid;

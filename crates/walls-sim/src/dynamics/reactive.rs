@@ -50,6 +50,12 @@ pub struct Assembly {
     pub force: Vec3,
     /// See `force`.
     pub torque: Vec3,
+    /// The torque in the body frame, (p̂₁·τ, p̂₂·τ, p̂₃·τ) with the axes at the force
+    /// evaluation: what pkdgrav's rotation holds fixed over the next step.
+    pub torque_body: Vec3,
+    /// pkdgrav's motion ([`Assembly::follow_pkdgrav`]): each wall's shape where it now
+    /// is, moved and turned step by step as pkdgrav moves it.
+    placed: Option<Vec<Shape>>,
 }
 
 /// The assemblies of `walls`, by number.
@@ -82,11 +88,32 @@ pub fn assemblies(walls: &[Wall]) -> Vec<Assembly> {
                 offsets: vec![origin - r.cog],
                 force: Vec3::zeros(),
                 torque: Vec3::zeros(),
+                torque_body: Vec3::zeros(),
+                placed: None,
             }),
         }
     }
     out.sort_by_key(|a| a.number);
     out
+}
+
+/// The spin a reactive wall of shape `shape` turning at `omega` shows a particle's
+/// rolling and twisting springs (physics.md §10, §1.4): along the face normal for a
+/// triangle or rectangle, along `orient` for a disk or cylinder, the whole of it for a
+/// shell (and for the infinite shapes, which cannot be reactive).
+pub fn relative_spin(shape: &Shape, omega: &Vec3) -> Vec3 {
+    let along = |a: Vec3| a * a.dot(omega);
+    match shape {
+        Shape::Triangle(_) | Shape::Rectangle(_) => match shape.edges() {
+            Some((e1, e2)) => match e1.cross(&e2).try_normalize(0.0) {
+                Some(n) => along(n),
+                None => Vec3::zeros(),
+            },
+            None => Vec3::zeros(),
+        },
+        Shape::Disk(_) | Shape::FiniteCylinder(_) => along(shape.axis().unwrap_or_default()),
+        Shape::Shell(_) | Shape::Plane(_) | Shape::InfiniteCylinder(_) => *omega,
+    }
 }
 
 /// The assemblies that cannot move: a principal moment that is not a positive finite
@@ -101,6 +128,66 @@ pub fn immovable(assemblies: &[Assembly]) -> Vec<i64> {
 }
 
 impl Assembly {
+    /// Switches the assembly to pkdgrav's motion (physics.md §10), for
+    /// `Integrator::Pkdgrav`: [`Assembly::move_pkdgrav`] moves it, its angular velocity
+    /// is not kicked, and its contacts see the body-frame `rot-vec` as if it were a
+    /// space vector. `scene` is the walls it was made from.
+    pub fn follow_pkdgrav(&mut self, scene: &[Wall]) {
+        self.placed = Some(self.walls.iter().map(|&w| scene[w].shape.clone()).collect());
+    }
+
+    /// Whether the assembly moves as pkdgrav moves it ([`Assembly::follow_pkdgrav`]).
+    pub fn is_pkdgrav(&self) -> bool {
+        self.placed.is_some()
+    }
+
+    /// pkdgrav's wall move for the assembly (physics.md §10), after the opening kick of
+    /// its velocity: the centre of gravity and every wall's origin move by velocity·dt;
+    /// then ω (body frame) and the principal axes are integrated together over `dt` by
+    /// Euler's equations with the body torque of the last force evaluation held fixed
+    /// ([`crate::dynamics::euler_rigid`]); then each wall turns about the centre of
+    /// gravity by three successive right-handed rotations, about the new p̂₁, p̂₂ and p̂₃
+    /// by ω₁·dt, ω₂·dt and ω₃·dt (the new ω). Only for an assembly that follows pkdgrav.
+    pub fn move_pkdgrav(&mut self, dt: f64) {
+        let travel = self.velocity * dt;
+        self.cog += travel;
+        let Some(placed) = self.placed.as_mut() else {
+            return;
+        };
+        for shape in placed.iter_mut() {
+            *shape = shape.at(shape.origin() + travel);
+        }
+        crate::dynamics::euler_rigid::integrate(
+            &mut self.rotation,
+            &self.inertia,
+            &self.torque_body,
+            dt,
+        );
+        for k in 0..3 {
+            let angle = self.rotation.omega[k] * dt;
+            if angle == 0.0 {
+                continue;
+            }
+            let axis = nalgebra::Unit::new_normalize(self.rotation.axes[k]);
+            let turn = Rotation3::from_axis_angle(&axis, angle);
+            for shape in placed.iter_mut() {
+                let origin = self.cog + turn * (shape.origin() - self.cog);
+                *shape = shape.turned(origin, &turn);
+            }
+        }
+    }
+
+    /// The body-frame torque from the space-frame torque summed at a force evaluation,
+    /// with the axes as they are then.
+    pub fn note_torque_body(&mut self) {
+        let a = &self.rotation.axes;
+        self.torque_body = Vec3::new(
+            a[0].dot(&self.torque),
+            a[1].dot(&self.torque),
+            a[2].dot(&self.torque),
+        );
+    }
+
     /// The rotation from the start to now: the principal axes then to now.
     pub fn turn(&self) -> Rotation3<f64> {
         let now = Matrix3::from_columns(&self.rotation.axes);
@@ -108,19 +195,30 @@ impl Assembly {
         Rotation3::from_matrix_unchecked(now * then.transpose())
     }
 
-    /// The angular velocity in the world frame.
+    /// The angular velocity in the world frame; for an assembly that follows pkdgrav,
+    /// the body-frame `rot-vec` itself, which pkdgrav's contacts take for a space vector
+    /// (physics.md §10).
     pub fn spin(&self) -> Vec3 {
+        if self.is_pkdgrav() {
+            return self.rotation.omega;
+        }
         let (w, a) = (&self.rotation.omega, &self.rotation.axes);
         a[0] * w.x + a[1] * w.y + a[2] * w.z
     }
 
     /// Where the `k`-th wall's origin is now.
     pub fn origin(&self, k: usize) -> Vec3 {
+        if let Some(placed) = &self.placed {
+            return placed[k].origin();
+        }
         self.cog + self.turn() * self.offsets[k]
     }
 
     /// The `k`-th wall's shape now, from its shape at the start.
     pub fn shape(&self, start: &Shape, k: usize) -> Shape {
+        if let Some(placed) = &self.placed {
+            return placed[k].clone();
+        }
         let turn = self.turn();
         start.turned(self.cog + turn * self.offsets[k], &turn)
     }

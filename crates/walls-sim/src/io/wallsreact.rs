@@ -336,27 +336,29 @@ impl ReactiveOutput {
             .collect();
         let mut walls: Vec<(usize, VizWall)> = Vec::new();
         for a in assemblies {
-            let turn = a.turn();
             for (k, &w) in a.walls.iter().enumerate() {
-                let shape = &scene[w].shape;
                 // pkdgrav's viz file holds finite walls only.
-                if matches!(shape, Shape::Plane { .. } | Shape::InfiniteCylinder { .. }) {
+                if matches!(
+                    scene[w].shape,
+                    Shape::Plane { .. } | Shape::InfiniteCylinder { .. }
+                ) {
                     continue;
                 }
-                let origin = a.origin(k);
+                let now = a.shape(&scene[w].shape, k);
+                let origin = now.origin();
                 walls.push((
                     w,
-                    match (shape.edges(), shape.axis()) {
-                        (Some((e1, e2)), _) => VizWall::Polygon {
+                    match (now.edges(), now.axis()) {
+                        (Some((vertex1, vertex2)), _) => VizWall::Polygon {
                             id: w,
                             origin,
-                            vertex1: turn * e1,
-                            vertex2: turn * e2,
+                            vertex1,
+                            vertex2,
                         },
                         (None, axis) => VizWall::Round {
                             id: w,
                             origin,
-                            orient: turn * axis.unwrap_or_default(),
+                            orient: axis.unwrap_or_default(),
                         },
                     },
                 ));

@@ -114,6 +114,10 @@ struct Drift<'a> {
     between: Material,
     edges: bool,
     dt: f64,
+    /// pkdgrav's carry of a particle that sticks within the step
+    /// ([`Integrator::Pkdgrav`](super::Integrator::Pkdgrav)): the wall's travel over the
+    /// whole step, added at its end (physics.md §6), not the travel after the impact.
+    whole_step_carry: bool,
     /// Each particle's own clock within the step.
     clock: Vec<f64>,
     version: Vec<u32>,
@@ -378,6 +382,7 @@ fn drift(d: &mut Drift, t0: f64) -> DriftReport {
 /// Particle `i` meets wall `w` at `tau` into the step that began at `t0`: a bounce, a
 /// stick or a removal.
 fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event {
+    let whole_step_carry = d.whole_step_carry;
     let wall = &d.walls[w];
     let s = &mut d.states[i];
     let p = &s.particle;
@@ -392,9 +397,16 @@ fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event
         s.alive = false;
         EventKind::Remove
     } else if mat.eps_n == 0.0 {
-        // Held from τ on: the carry at the end of the step turns it by the wall's spin
-        // over the whole step, so start it turned back by τ's worth.
-        let offset = turned(&wall.start.spin, -tau, p.pos - wall.origin(tau));
+        let offset = if whole_step_carry {
+            // pkdgrav's: held where it touched, then carried at the end of the step by
+            // the wall's whole step of travel and turn, as if it had been held from the
+            // step's start (physics.md §6).
+            p.pos - wall.start.origin
+        } else {
+            // Held from τ on: the carry at the end of the step turns it by the wall's
+            // spin over the whole step, so start it turned back by τ's worth.
+            turned(&wall.start.spin, -tau, p.pos - wall.origin(tau))
+        };
         s.stuck_to = Some((w, offset));
         s.particle.vel = wall_v;
         s.particle.spin = wall.start.spin;
@@ -596,6 +608,7 @@ impl<'a> HardStepper<'a> {
             between: self.between,
             edges: self.plan.edges,
             dt,
+            whole_step_carry: self.settings.integrator == super::Integrator::Pkdgrav,
             clock: vec![0.0; n],
             version: vec![0; n],
             collisions: vec![0; n],

@@ -12,8 +12,8 @@
 //! - edge detection: HSDEM with edge detection on and a wall that has edges, corners or
 //!   rims (rectangles, disks, finite cylinders);
 //! - particle–particle contacts: more than one particle, and not switched off;
-//! - reactive walls: a wall with a finite mass (not in the evaluator yet: the run says
-//!   so);
+//! - reactive walls: a wall with a finite mass and an assembly, in a soft-sphere run
+//!   whose build has `DEM_WALLS_REACT` (without it the masses are ignored, W402);
 //! - sticky and death walls: a wall with `epsn` 0 or below;
 //! - the wall index: more than 16 bounded walls (planes and infinite cylinders are always
 //!   looked at).
@@ -239,10 +239,12 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
     );
     let reactive = part(
         "reactive walls",
-        soft && !heavy.is_empty(),
+        soft && !heavy.is_empty() && settings.build.walls_react,
         format!("walls {} have a mass and an assembly", list(&heavy)),
         if heavy.is_empty() {
             "no wall has both a mass and an assembly"
+        } else if soft {
+            "the pkdgrav build lacks DEM_WALLS_REACT: the masses are ignored (W402)"
         } else {
             "HSDEM: pkdgrav's reactive walls are SSDEM only; they stay where they are"
         },

@@ -267,12 +267,18 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         {
             // pkdgrav's contact law, in its frame: the normal towards the wall, the
             // wall's motion relative to the particle's (physics.md §1.1–§1.5).
+            // A reactive wall turns the springs by its spin about the face normal or
+            // axis alone (physics.md §10).
+            let wall_spin = match walls.assembly_of[w] {
+                Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
+                None => wall.spin,
+            };
             let dashpot = Dashpot {
                 overlap,
                 normal: -n,
                 velocity: -u,
-                spin: wall.spin - spin,
-                turn: s.particle.spin + wall.spin,
+                spin: wall_spin - spin,
+                turn: s.particle.spin + wall_spin,
                 levers: (lever, 0.0),
                 mass: m,
                 radius: if walls.contact_radius {
@@ -504,8 +510,10 @@ impl<'a> SoftStepper<'a> {
             walls: materials,
             between,
         } = Materials::new(scene, &settings.material);
+        // pkdgrav without DEM_WALLS_REACT reads the walls' masses and ignores them.
+        let reactive = plan.reactive && settings.build.walls_react;
         let initial = energy(&states, &g)
-            + if plan.reactive {
+            + if reactive {
                 assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
             } else {
                 0.0
@@ -526,11 +534,22 @@ impl<'a> SoftStepper<'a> {
         } else {
             origins.walls(scene, settings.t_start())
         };
-        let mut assemblies = if plan.reactive {
+        let heavy: Vec<usize> = (0..scene.len())
+            .filter(|&w| scene[w].reactive.is_heavy())
+            .collect();
+        if !heavy.is_empty() && !settings.build.walls_react {
+            warnings.push(Warning::MassesIgnored { walls: heavy });
+        }
+        let mut assemblies = if reactive {
             crate::dynamics::reactive::assemblies(scene)
         } else {
             Vec::new()
         };
+        if settings.integrator == Integrator::Pkdgrav {
+            for a in &mut assemblies {
+                a.follow_pkdgrav(scene);
+            }
+        }
         let stuck = crate::dynamics::reactive::immovable(&assemblies);
         if !stuck.is_empty() {
             assemblies.retain(|a| !stuck.contains(&a.number));
@@ -697,9 +716,16 @@ impl<'a> SoftStepper<'a> {
     /// Each assembly's half kick of momentum and angular momentum with the last step's
     /// force and torque, its drift, and its free rotation over the step (kick-drift-kick
     /// as for the particles); its walls are placed where it has taken them.
+    /// With [`Integrator::Pkdgrav`], pkdgrav's: the opening half kick of the velocity
+    /// alone, then [`Assembly::move_pkdgrav`] (physics.md §10).
     fn move_assemblies(&mut self) {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
         for a in self.assemblies.iter_mut() {
+            if a.is_pkdgrav() {
+                a.velocity += (a.force / a.mass + g) * (dt / 2.0);
+                a.move_pkdgrav(dt);
+                continue;
+            }
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
             a.cog += a.velocity * dt;
             a.kick(dt / 2.0);
@@ -1039,7 +1065,9 @@ impl<'a> SoftStepper<'a> {
         self.sum_reactions();
         for a in self.assemblies.iter_mut() {
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-            a.kick(dt / 2.0);
+            if !a.is_pkdgrav() {
+                a.kick(dt / 2.0);
+            }
         }
     }
 
@@ -1054,6 +1082,9 @@ impl<'a> SoftStepper<'a> {
                 self.assemblies[*a].force += f;
                 self.assemblies[*a].torque += tq;
             }
+        }
+        for a in self.assemblies.iter_mut() {
+            a.note_torque_body();
         }
     }
 

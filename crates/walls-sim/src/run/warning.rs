@@ -11,7 +11,7 @@
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
-//! * `W4xx`, reactive walls: assemblies that cannot turn;
+//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores;
 //! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow.
 
 use super::COLLISION_CAP;
@@ -206,6 +206,13 @@ pub enum Warning {
         /// Why the run does not follow them.
         reason: String,
     },
+    /// W402: walls with a mass (and an assembly) in a soft-sphere run whose pkdgrav build
+    /// lacks `DEM_WALLS_REACT`: pkdgrav then reads the masses and ignores them, and so
+    /// does the run; the walls move as their motion tokens say.
+    MassesIgnored {
+        /// The walls' indices.
+        walls: Vec<usize>,
+    },
 }
 
 impl Warning {
@@ -227,6 +234,7 @@ impl Warning {
             Warning::ImmovableAssemblies { .. } => "W401",
             Warning::CohesionTokensIgnored { .. } => "W501",
             Warning::TwoLayerTokensIgnored { .. } => "W502",
+            Warning::MassesIgnored { .. } => "W402",
         }
     }
 }
@@ -338,6 +346,10 @@ impl fmt::Display for Warning {
                 "walls {walls:?} set {}: {reason}, so the run's contacts have one layer and ignore them",
                 tokens.join(", ")
             ),
+            Warning::MassesIgnored { walls } => write!(
+                f,
+                "walls {walls:?} have a mass, but the pkdgrav build lacks DEM_WALLS_REACT: pkdgrav without it ignores wall masses, and so does this run (the walls move as their motion tokens say); add DEM_WALLS_REACT to --pkdgrav-build for reactive walls"
+            ),
         }
     }
 }
@@ -424,6 +436,7 @@ mod tests {
                 tokens: vec!["k_n_outer"],
                 reason: "the build lacks DEM_TWOLAYERS".into(),
             },
+            Warning::MassesIgnored { walls: vec![0, 2] },
         ]
     }
 

@@ -288,9 +288,11 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
         written = out.record(first, settings.t_start(), &start, scene, &[]);
     }
-    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies:
-    // appended to as pkdgrav does, unless --fresh.
+    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
+    // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
+    // to as pkdgrav does, unless --fresh.
     let reactive = settings.method == walls_sim::run::ContactModel::Ssdem
+        && settings.build.walls_react
         && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
     let mut reactive_files = match (&args.out, reactive) {
         (Some(dir), true) => Some(
