@@ -14,10 +14,13 @@
 //! - [`Bar::Faithful`]: the simulator reproduces pkdgrav today (1e-9; `cylinder_test`
 //!   1e-6) and must keep doing so;
 //! - [`Bar::Guard`]: a known model difference (docs/fidelity.md names its cause); the
-//!   error measured today, which may not grow by more than half;
-//! - [`Bar::OverlapStop`]: the simulator cannot run the scene at all: its run stops on
-//!   an overlap of two particles above half a radius (W103), at the step given (0: at
-//!   pkdgrav's force evaluation before the first step).
+//!   error measured today, which may not grow by more than half.
+//!
+//! `agg_cube` (a rigid aggregate, physics.md §9) meets the faithful bar with room to
+//! spare (2.6e-10), though its contacts last five steps at overlaps of 10⁻⁴ of a radius,
+//! where one unit in the last place of a position is 10⁻¹² of the contact force: the
+//! way pkdgrav renormalises the aggregate's axes (scaling by the reciprocal of the length
+//! rather than dividing by it) alone moves the error from 2.3e-9 to 2.6e-10.
 //!
 //! `cargo test -p walls-sim --test golden -- --nocapture` prints each scene's error and
 //! run time (the figures of docs/fidelity.md).
@@ -36,7 +39,7 @@ use walls_sim::OscillationStepping;
 use walls_sim::build::Build;
 use walls_sim::config::{self, Flags, Run};
 use walls_sim::io::par::read_file as read_par_file;
-use walls_sim::run::{Integrator, Outcome, Overlapping, Settings, State, Warning, run_observed};
+use walls_sim::run::{Integrator, Outcome, Settings, State, run_observed};
 
 type Vec3 = Vector3<f64>;
 
@@ -289,16 +292,11 @@ enum Bar {
     /// A known model difference: the error measured today, which must not grow by more
     /// than half.
     Guard(f64),
-    /// The simulator cannot run the scene: the run stops at this step on an overlap of
-    /// two particles above half a radius (W103).
-    OverlapStop(u64),
 }
 
 fn check(scene: &str, bar: Bar) {
     let m = measure(scene);
-    if !matches!(bar, Bar::OverlapStop(_)) {
-        assert_eq!(m.outcome.steps, m.steps, "{scene}: pkdgrav's step count");
-    }
+    assert_eq!(m.outcome.steps, m.steps, "{scene}: pkdgrav's step count");
     match bar {
         Bar::Faithful(bar) => assert!(
             m.error <= bar,
@@ -311,20 +309,6 @@ fn check(scene: &str, bar: Bar) {
             "{scene}: error {:.3e} at {}, up from {today:e} (docs/fidelity.md)",
             m.error,
             m.worst
-        ),
-        Bar::OverlapStop(step) => assert!(
-            m.outcome.steps == step
-                && m.outcome.warnings.iter().any(|w| matches!(
-                    w,
-                    Warning::OverlapStop {
-                        what: Overlapping::Particles(..),
-                        ..
-                    }
-                )),
-            "{scene}: expected the run to stop at step {step} on two particles' overlap, \
-             it took {} steps, warning {:?}",
-            m.outcome.steps,
-            m.outcome.warnings
         ),
     }
 }
@@ -340,7 +324,7 @@ macro_rules! scenes {
 
 // The bars: docs/fidelity.md gives each scene's error today and the cause of the gap.
 scenes! {
-    agg_cube: Bar::OverlapStop(0);
+    agg_cube: Bar::Faithful(1e-9);
     cohesion: Bar::Guard(5.637);
     cone_inside: Bar::Faithful(1e-9);
     contact_radius: Bar::Faithful(1e-9);

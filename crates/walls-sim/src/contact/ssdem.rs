@@ -213,6 +213,9 @@ pub struct DashpotForce {
     /// The rolling and twisting torque on particle 1, M_r + M_t (the partner feels
     /// −it).
     pub resistance: Vec3,
+    /// The rolling torque M_r alone (part of `resistance`), which pkdgrav's aggregates
+    /// turn into a pseudo-force (physics.md §9.4).
+    pub rolling: Vec3,
 }
 
 /// `v` turned right-handedly about the unit `axis` by the angle whose sine and cosine are
@@ -276,6 +279,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
     // §1.4: rolling and twisting, spring–dashpot–sliders scaled by (β_s R*)².
     let b = (mat.beta_s * c.radius).powi(2);
     let mut resistance = Vec3::zeros();
+    let mut rolling = Vec3::zeros();
     let (l1, l2) = c.levers;
     if mat.mu_r != 0.0 {
         let kappa = if c.wall {
@@ -295,6 +299,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
             m_r += rate * (c_n * b);
         }
         resistance += m_r;
+        rolling = m_r;
     }
     if mat.mu_t != 0.0 {
         let rate = c.spin.dot(n);
@@ -315,5 +320,6 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
         torque: shear * l1 + resistance,
         partner_torque: shear * l2 - resistance,
         resistance,
+        rolling,
     }
 }

@@ -209,8 +209,11 @@ pub struct State {
     pub alive: bool,
     /// The sticky wall holding it, with the contact point relative to the wall's origin.
     pub stuck_to: Option<(usize, Vec3)>,
-    acc: Vec3,
-    alpha: Vec3,
+    pub(crate) acc: Vec3,
+    pub(crate) alpha: Vec3,
+    /// A member of a rigid aggregate (physics.md §9): moved with it, never kicked or
+    /// drifted on its own.
+    pub(crate) member: bool,
 }
 
 impl State {
@@ -222,6 +225,7 @@ impl State {
             stuck_to: None,
             acc: Vec3::zeros(),
             alpha: Vec3::zeros(),
+            member: false,
         }
     }
 
@@ -288,6 +292,30 @@ pub fn run_observed(
     match settings.method {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
+    }
+}
+
+/// The warning for particles that are members of aggregates (negative `org_idx`) in a
+/// run that does not follow aggregates (W501), saying why.
+fn aggregates_ignored(states: &[State], settings: &Settings) -> Warning {
+    let mut numbers: Vec<u32> = states
+        .iter()
+        .filter_map(|s| crate::dynamics::aggregate::aggregate_of(&s.particle))
+        .collect();
+    let members = numbers.len();
+    numbers.sort_unstable();
+    numbers.dedup();
+    let reason = if !settings.build.aggs {
+        "the build has no AGGS"
+    } else if settings.method == ContactModel::Hsdem {
+        "aggregates are followed in soft-sphere (DEM) runs only"
+    } else {
+        "the integrator is not pkdgrav's"
+    };
+    Warning::AggregatesIgnored {
+        members,
+        aggregates: numbers.len(),
+        reason,
     }
 }
 

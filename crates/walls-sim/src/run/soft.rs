@@ -28,6 +28,7 @@ use crate::contact::ssdem::{
     Dashpot, Material, Record, Rolling, Touch, contact, contact_radius, damping_per_root_mass,
     dashpot_contact, normal_contact, resistance,
 };
+use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
 use crate::run::plan::Plan;
@@ -123,6 +124,8 @@ struct Walls<'a> {
 struct Load {
     force: Vec3,
     torque: Vec3,
+    /// An aggregate member's rolling pseudo-forces, summed (physics.md §9.4).
+    push: Vec3,
     walls: Vec<(usize, Open)>,
     /// The walls to look at this step, kept to save allocating.
     visit: Vec<usize>,
@@ -140,6 +143,8 @@ struct ParticleStep {
     /// The reactions on reactive walls' assemblies: (assembly, force, torque about its
     /// centre of gravity).
     reactions: Vec<(usize, Vec3, Vec3)>,
+    /// An aggregate member reached this sticky (or death) wall: pkdgrav asserts.
+    member_held: Option<usize>,
 }
 
 /// One particle's contacts with the walls at the step's time, added to its `load` (which
@@ -230,6 +235,12 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             open.len() - 1
         });
         if mat.eps_n <= 0.0 {
+            if s.member {
+                // An aggregate cannot stick (pkdgrav asserts, physics.md §9.5).
+                out.member_held = Some(w);
+                load.visit = visit;
+                return out;
+            }
             // A death wall removes the particle; a sticky wall holds it.
             let kind = if mat.eps_n < 0.0 {
                 s.alive = false;
@@ -274,6 +285,13 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
             load.force += c.force;
             load.torque += c.torque;
+            if s.member && c.rolling != Vec3::zeros() {
+                // An aggregate feels the rolling torque as a pseudo-force at the contact
+                // point (physics.md §9.4).
+                let push = aggregate::rolling_push(&c.rolling, &-n, lever);
+                load.torque += (-n * lever).cross(&push) - c.rolling;
+                load.push += push;
+            }
             if let Some(a) = walls.assembly_of[w] {
                 // The reaction (physics.md §10), with the rolling and twisting torques.
                 let at = s.particle.pos - n * lever;
@@ -324,11 +342,15 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         resist *= stop / resist.norm();
     }
     load.torque += resist;
+    load.visit = visit;
+    if s.member {
+        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
+        return out;
+    }
     s.acc = load.force / m;
     s.alpha = load.torque / inertia(m, r);
     s.particle.vel += s.acc * (dt * walls.closing_kick);
     s.particle.spin += s.alpha * (dt * walls.closing_kick);
-    load.visit = visit;
     out
 }
 
@@ -426,6 +448,10 @@ struct SoftStepper<'a> {
     assembly_of: Vec<Option<usize>>,
     /// Each assembly's centre of gravity this step (kept to save allocating).
     cogs: Vec<Vec3>,
+    /// pkdgrav's rigid aggregates of particles (`AGGS`, physics.md §9), if any.
+    aggregates: Option<Aggregates>,
+    /// Set up failed (an aggregate of one member): the run stops before it starts.
+    halted: bool,
     loads: Vec<Load>,
     pairs_open: OpenContacts,
     candidates: PairList,
@@ -456,8 +482,13 @@ impl<'a> SoftStepper<'a> {
         let g = settings.gravity;
         let Materials {
             walls: materials,
-            between,
+            mut between,
         } = Materials::new(scene, &settings.material);
+        if settings.build.aggs {
+            // An AGGS build has no rolling or twisting between particles (§9.6).
+            between.mu_r = 0.0;
+            between.mu_t = 0.0;
+        }
         let initial = energy(&states, &g)
             + if plan.reactive {
                 assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
@@ -474,6 +505,8 @@ impl<'a> SoftStepper<'a> {
             .map(|w| w.motion.oscillation.amplitude != 0.0)
             .collect();
         warnings.extend(super::stability::soft_warnings(scene, &states, settings));
+        let mut states = states;
+        let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
         let origins = Origins::new(scene, settings.stepping, settings.t_start());
         let now = if settings.integrator == Integrator::Pkdgrav {
             origins.walls_pkdgrav(scene, settings.t_start())
@@ -515,6 +548,8 @@ impl<'a> SoftStepper<'a> {
             origins,
             now,
             cogs: Vec::with_capacity(assemblies.len()),
+            aggregates,
+            halted,
             assemblies,
             assembly_of,
             loads,
@@ -553,6 +588,7 @@ impl<'a> SoftStepper<'a> {
             self.wall_contacts();
             flow = self.note_wall_contacts();
             self.sum_reactions();
+            self.gather_aggregates(false);
         }
         self.kicks = kicks;
         flow
@@ -568,6 +604,7 @@ impl<'a> SoftStepper<'a> {
     /// they did, and the assemblies' closing kick.
     fn step(&mut self) -> Flow {
         self.kick_drift();
+        self.move_aggregates();
         self.move_walls();
         if self.kicks.pkdgrav_levers {
             self.carry_stuck();
@@ -583,7 +620,43 @@ impl<'a> SoftStepper<'a> {
         self.wall_contacts();
         let flow = self.note_wall_contacts();
         self.kick_assemblies();
+        self.gather_aggregates(true);
         flow
+    }
+
+    /// pkdgrav's aggregates (physics.md §9.3): the opening half kick of each centre, the
+    /// drift (the rotation by Euler's equations, the centre with its half-step
+    /// velocity), and the members placed where it has taken them.
+    fn move_aggregates(&mut self) {
+        let Some(aggs) = self.aggregates.as_mut() else {
+            return;
+        };
+        let dt = self.settings.dt;
+        for a in &mut aggs.list {
+            a.kick(0.5 * dt);
+            a.advance(dt);
+            a.place(&mut self.states, dt);
+        }
+    }
+
+    /// Each aggregate's acceleration and torque from its members' loads (physics.md
+    /// §9.4), and, after a step's forces, its closing half kick.
+    fn gather_aggregates(&mut self, kick: bool) {
+        let Some(aggs) = self.aggregates.as_mut() else {
+            return;
+        };
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        let loads = &self.loads;
+        for a in &mut aggs.list {
+            a.gather(
+                &self.states,
+                |i| (loads[i].force, loads[i].push, loads[i].torque),
+                &g,
+            );
+            if kick {
+                a.kick(0.5 * dt);
+            }
+        }
     }
 
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
@@ -592,7 +665,7 @@ impl<'a> SoftStepper<'a> {
         let dt = self.settings.dt;
         let Kicks { opening, late, .. } = self.kicks;
         let kick_drift = |s: &mut State| {
-            if s.free() {
+            if s.free() && !s.member {
                 s.particle.vel += s.acc * (dt * opening);
                 s.particle.spin += s.alpha * (dt * opening);
                 let v = s.particle.vel;
@@ -688,6 +761,7 @@ impl<'a> SoftStepper<'a> {
         for (s, load) in self.states.iter().zip(&mut self.loads) {
             load.force = g * s.particle.mass;
             load.torque = Vec3::zeros();
+            load.push = Vec3::zeros();
         }
     }
 
@@ -712,8 +786,13 @@ impl<'a> SoftStepper<'a> {
         let mat = &self.between;
         let states = &self.states;
         let loads = &mut self.loads;
+        let aggregates = self.aggregates.as_ref();
         for &(i, j) in &self.candidates.pairs {
             let (i, j) = (i as usize, j as usize);
+            // Members of one aggregate never meet (physics.md §9.1).
+            if aggregates.is_some_and(|a| a.same(i, j)) {
+                continue;
+            }
             // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
             // rule); two stuck ones, or a removed one, meet nothing.
             let (free_i, free_j) = (states[i].free(), states[j].free());
@@ -897,6 +976,14 @@ impl<'a> SoftStepper<'a> {
         let t = self.t;
         let mut stop = false;
         for (i, report) in self.reports.iter_mut().enumerate() {
+            if let Some(wall) = report.member_held {
+                self.warnings.push(Warning::AggregateHeld {
+                    particle: i,
+                    wall,
+                    t,
+                });
+                stop = true;
+            }
             if let Some((fraction, w)) = report.deepest {
                 stop |= self.overlaps.check(
                     fraction,
@@ -997,6 +1084,9 @@ pub(super) fn run(
     observe: Observer,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
+    if run.halted {
+        return run.outcome();
+    }
     if settings.integrator == Integrator::Pkdgrav && run.start() == Flow::Stop {
         return run.outcome();
     }
@@ -1007,6 +1097,48 @@ pub(super) fn run(
         observe(run.steps, run.t, &run.states, &run.assemblies);
     }
     run.outcome()
+}
+
+/// pkdgrav's aggregates of the particles (physics.md §9), when the run follows them: an
+/// `AGGS` build with pkdgrav's integrator. Members without that get a warning and run as
+/// free spheres; an aggregate of one member stops the run before it starts (the second
+/// value), as pkdgrav aborts.
+fn set_up_aggregates(
+    states: &mut [State],
+    settings: &Settings,
+    warnings: &mut Vec<Warning>,
+) -> (Option<Aggregates>, bool) {
+    let members = states
+        .iter()
+        .filter(|s| aggregate::aggregate_of(&s.particle).is_some())
+        .count();
+    if members == 0 {
+        return (None, false);
+    }
+    if !settings.build.aggs || settings.integrator != Integrator::Pkdgrav {
+        warnings.push(super::aggregates_ignored(states, settings));
+        return (None, false);
+    }
+    let particles: Vec<_> = states.iter().map(|s| s.particle.clone()).collect();
+    match Aggregates::find(&particles) {
+        Ok(Some(aggs)) => {
+            for (s, of) in states.iter_mut().zip(&aggs.of) {
+                s.member = of.is_some();
+            }
+            (Some(aggs), false)
+        }
+        Ok(None) => (None, false),
+        Err(aggregate::SetupError::SingleMember {
+            aggregate,
+            particle,
+        }) => {
+            warnings.push(Warning::SingleMemberAggregate {
+                aggregate,
+                particle,
+            });
+            (None, true)
+        }
+    }
 }
 
 /// The candidate particle pairs, kept from step to step (a Verlet list): the pairs whose

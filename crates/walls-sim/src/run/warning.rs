@@ -184,6 +184,35 @@ pub enum Warning {
         /// The assemblies' numbers.
         assemblies: Vec<i64>,
     },
+    /// W501: particles with a negative `org_idx` (members of aggregates) in a run that
+    /// does not follow aggregates (a build without `AGGS`, or not pkdgrav's integrator):
+    /// they run as free spheres, as pkdgrav without `AGGS` runs them.
+    AggregatesIgnored {
+        /// How many particles are members.
+        members: usize,
+        /// How many aggregates they make.
+        aggregates: usize,
+        /// Why the run does not follow them.
+        reason: &'static str,
+    },
+    /// W502: an aggregate with a single member: pkdgrav aborts (`msrAggsFind`), and the
+    /// run stops before its first step.
+    SingleMemberAggregate {
+        /// The aggregate's number (−1 − org_idx).
+        aggregate: u32,
+        /// The member's index in the input.
+        particle: usize,
+    },
+    /// W503: a member of an aggregate reached a sticky or death wall: pkdgrav asserts
+    /// that aggregates cannot stick, and the run stops.
+    AggregateHeld {
+        /// The member's index in the input.
+        particle: usize,
+        /// The wall.
+        wall: usize,
+        /// When.
+        t: f64,
+    },
 }
 
 impl Warning {
@@ -203,6 +232,9 @@ impl Warning {
             Warning::RestitutionAt99 { .. } => "W302",
             Warning::CollisionCap { .. } => "W303",
             Warning::ImmovableAssemblies { .. } => "W401",
+            Warning::AggregatesIgnored { .. } => "W501",
+            Warning::SingleMemberAggregate { .. } => "W502",
+            Warning::AggregateHeld { .. } => "W503",
         }
     }
 }
@@ -296,6 +328,26 @@ impl fmt::Display for Warning {
                 f,
                 "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
             ),
+            Warning::AggregatesIgnored {
+                members,
+                aggregates,
+                reason,
+            } => write!(
+                f,
+                "{members} particles are members of {aggregates} aggregates (negative org_idx), which need a build with AGGS and pkdgrav's integrator; {reason}: they run as free spheres, as pkdgrav without AGGS runs them"
+            ),
+            Warning::SingleMemberAggregate {
+                aggregate,
+                particle,
+            } => write!(
+                f,
+                "aggregate {aggregate} (org_idx {}) has a single member, particle {particle}: pkdgrav aborts; the run stops before its first step",
+                -1 - *aggregate as i64
+            ),
+            Warning::AggregateHeld { particle, wall, t } => write!(
+                f,
+                "particle {particle}, a member of an aggregate, reached sticky or death wall {wall} (t = {t}): pkdgrav asserts that aggregates cannot stick; the run stops"
+            ),
         }
     }
 }
@@ -371,6 +423,20 @@ mod tests {
             },
             Warning::ImmovableAssemblies {
                 assemblies: vec![1],
+            },
+            Warning::AggregatesIgnored {
+                members: 2,
+                aggregates: 1,
+                reason: "the build has no AGGS",
+            },
+            Warning::SingleMemberAggregate {
+                aggregate: 0,
+                particle: 3,
+            },
+            Warning::AggregateHeld {
+                particle: 0,
+                wall: 1,
+                t: 0.5,
             },
         ]
     }
