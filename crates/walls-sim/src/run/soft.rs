@@ -12,11 +12,14 @@
 //! ([`crate::broad::grid`]) when particles have moved far enough.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
-//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,
-//! `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing kick),
-//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`;
-//! with [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before
-//! the first step, as pkdgrav does.
+//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_aggregates`, `move_walls`,
+//! `move_assemblies`, `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing
+//! kick), `note_wall_contacts` (events and warnings, in particle order),
+//! `kick_assemblies` and `gather_aggregates`; with [`Integrator::Pkdgrav`],
+//! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
+//! does. pkdgrav's aggregates (`AGGS`, [`crate::dynamics::aggregate`]) run only with
+//! [`Integrator::Pkdgrav`]; their members are placed by their aggregate, not kicked or
+//! drifted, and hand it their loads.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
