@@ -125,6 +125,15 @@ impl Aggregates {
         Ok(Some(Aggregates { list, of }))
     }
 
+    /// Where member `i` at `pos` is relative to its aggregate's centre (zero for a
+    /// particle that is not a member).
+    pub fn offset(&self, i: usize, pos: &Vec3) -> Vec3 {
+        match self.of[i] {
+            Some(a) => pos - self.list[a as usize].com,
+            None => Vec3::zeros(),
+        }
+    }
+
     /// Whether particles `i` and `j` are members of the same aggregate.
     #[inline]
     pub fn same(&self, i: usize, j: usize) -> bool {
@@ -263,25 +272,21 @@ impl Aggregate {
     }
 
     /// The centre's acceleration and the torque from the members' loads: each member's
-    /// total force `force` (gravity included), the sum of the rolling pseudo-forces it
-    /// felt `push`, and its torque `torque` about its own centre (each contact's force
-    /// moment at the contact point, twisting torques, and the pseudo-forces' moments).
-    pub fn gather(
-        &mut self,
-        states: &[State],
-        load: impl Fn(usize) -> (Vec3, Vec3, Vec3),
-        g: &Vec3,
-    ) {
+    /// total force (gravity included), and its torque: about its own centre, the
+    /// contact forces' moments at their contact points and the twisting torques, and,
+    /// about the aggregate's centre, the moments of the rolling pseudo-forces
+    /// ([`rolling_push`]) at their contact points.
+    pub fn gather(&mut self, states: &[State], load: impl Fn(usize) -> (Vec3, Vec3), g: &Vec3) {
         let mut ma = Vec3::zeros();
         let mut torque = Vec3::zeros();
         for &i in &self.members {
             let s = &states[i];
             let m = s.particle.mass;
-            let (force, push, own) = load(i);
+            let (force, own) = load(i);
             let a = g + (force - g * m) / m;
             ma += a * m;
             let rho = s.particle.pos - self.com;
-            torque += rho.cross(&(force + push)) + own;
+            torque += rho.cross(&force) + own;
         }
         self.acc = ma / self.mass;
         self.torque = self.axes.transpose() * torque;

@@ -119,6 +119,8 @@ struct Walls<'a> {
     t: f64,
     dt: f64,
     step: u64,
+    /// pkdgrav's aggregates, if any (for their members' rolling pseudo-forces).
+    aggregates: Option<&'a Aggregates>,
 }
 
 /// What acts on one particle in a step: the force and torque summed so far, and its
@@ -127,8 +129,6 @@ struct Walls<'a> {
 struct Load {
     force: Vec3,
     torque: Vec3,
-    /// An aggregate member's rolling pseudo-forces, summed (physics.md §9.4).
-    push: Vec3,
     walls: Vec<(usize, Open)>,
     /// The walls to look at this step, kept to save allocating.
     visit: Vec<usize>,
@@ -146,8 +146,6 @@ struct ParticleStep {
     /// The reactions on reactive walls' assemblies: (assembly, force, torque about its
     /// centre of gravity).
     reactions: Vec<(usize, Vec3, Vec3)>,
-    /// An aggregate member reached this sticky (or death) wall: pkdgrav asserts.
-    member_held: Option<usize>,
 }
 
 /// One particle's contacts with the walls at the step's time, added to its `load` (which
@@ -239,8 +237,21 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         });
         if mat.eps_n <= 0.0 {
             if s.member {
-                // An aggregate cannot stick (pkdgrav asserts, physics.md §9.5).
-                out.member_held = Some(w);
+                // An aggregate neither sticks nor dies (pkdgrav asserts, physics.md
+                // §9.5): the event, and `note_wall_contacts` stops the run.
+                out.events.push(Event {
+                    t,
+                    particle: i,
+                    wall: w,
+                    kind: if mat.eps_n < 0.0 {
+                        EventKind::Remove
+                    } else {
+                        EventKind::Stick
+                    },
+                    vn_in: open[k].1.vn_in,
+                    vn_out: 0.0,
+                });
+                open.swap_remove(k);
                 load.visit = visit;
                 return out;
             }
@@ -288,12 +299,15 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             let c = dashpot_contact(&dashpot, &mut open[k].1.record, dt, mat);
             load.force += c.force;
             load.torque += c.torque;
-            if s.member && c.rolling != Vec3::zeros() {
+            if s.member
+                && c.rolling != Vec3::zeros()
+                && let Some(aggs) = walls.aggregates
+            {
                 // An aggregate feels the rolling torque as a pseudo-force at the contact
-                // point (physics.md §9.4).
+                // point, with its moment about the aggregate's centre (physics.md §9.4).
                 let push = aggregate::rolling_push(&c.rolling, &-n, lever);
-                load.torque += (-n * lever).cross(&push) - c.rolling;
-                load.push += push;
+                let arm = aggs.offset(i, &s.particle.pos) - n * lever;
+                load.torque += arm.cross(&push) - c.rolling;
             }
             if let Some(a) = walls.assembly_of[w] {
                 // The reaction (physics.md §10), with the rolling and twisting torques.
@@ -651,11 +665,7 @@ impl<'a> SoftStepper<'a> {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
         let loads = &self.loads;
         for a in &mut aggs.list {
-            a.gather(
-                &self.states,
-                |i| (loads[i].force, loads[i].push, loads[i].torque),
-                &g,
-            );
+            a.gather(&self.states, |i| (loads[i].force, loads[i].torque), &g);
             if kick {
                 a.kick(0.5 * dt);
             }
@@ -764,7 +774,6 @@ impl<'a> SoftStepper<'a> {
         for (s, load) in self.states.iter().zip(&mut self.loads) {
             load.force = g * s.particle.mass;
             load.torque = Vec3::zeros();
-            load.push = Vec3::zeros();
         }
     }
 
@@ -951,6 +960,7 @@ impl<'a> SoftStepper<'a> {
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,
+            aggregates: self.aggregates.as_ref(),
         };
         let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| wall_step(i, s, load, &walls);
         if self.parallel {
@@ -977,16 +987,8 @@ impl<'a> SoftStepper<'a> {
     /// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
     fn note_wall_contacts(&mut self) -> Flow {
         let t = self.t;
-        let mut stop = false;
+        let mut stop = self.aggregates.is_some() && self.aggregates_held();
         for (i, report) in self.reports.iter_mut().enumerate() {
-            if let Some(wall) = report.member_held {
-                self.warnings.push(Warning::AggregateHeld {
-                    particle: i,
-                    wall,
-                    t,
-                });
-                stop = true;
-            }
             if let Some((fraction, w)) = report.deepest {
                 stop |= self.overlaps.check(
                     fraction,
@@ -1035,6 +1037,31 @@ impl<'a> SoftStepper<'a> {
             }
         }
         if stop { Flow::Stop } else { Flow::Continue }
+    }
+
+    /// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
+    /// asserts, physics.md §9.5): the warning, in place of the event.
+    fn aggregates_held(&mut self) -> bool {
+        let mut held = false;
+        for (i, report) in self.reports.iter_mut().enumerate() {
+            if !self.states[i].member {
+                continue;
+            }
+            for e in &report.events {
+                if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
+                    self.warnings.push(Warning::AggregateHeld {
+                        particle: i,
+                        wall: e.wall,
+                        t: self.t,
+                    });
+                    held = true;
+                }
+            }
+            report
+                .events
+                .retain(|e| !matches!(e.kind, EventKind::Stick | EventKind::Remove));
+        }
+        held
     }
 
     /// The particles' reactions on the assemblies, summed in particle order, and the
