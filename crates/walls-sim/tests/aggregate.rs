@@ -374,3 +374,39 @@ fn an_aggregate_reaching_a_sticky_wall_stops_the_run() {
             .all(|s| s.alive && s.stuck_to.is_none())
     );
 }
+
+#[test]
+fn an_aggregate_striking_a_free_sphere_keeps_the_momentum() {
+    // A two-sphere aggregate moving along x strikes a free sphere off its centre line:
+    // the pair force moves the aggregate's centre and turns it, and once they have
+    // parted the total momentum (members: the centre's velocity plus their turning,
+    // which sums to zero) is what it was, and the aggregate spins.
+    let v = 0.5;
+    let ps = vec![
+        sphere(0.1, [0.0, 0.0, 0.0], [v, 0.0, 0.0], [0.0; 3], -1),
+        sphere(0.1, [-0.15, 0.0, 0.0], [v, 0.0, 0.0], [0.0; 3], -1),
+        sphere(0.1, [0.25, 0.08, 0.0], [0.0; 3], [0.0; 3], 0),
+    ];
+    let p0: Vec3 = ps.iter().map(|p| p.vel * p.mass).sum();
+    let s = settings(AGGS, 1e-5, 40_000, [0.0; 3], 0.0);
+    let out = walls_sim::run::run(&[], ps, &s);
+    assert_eq!(out.steps, 40_000, "{:?}", out.warnings);
+    assert!(out.pair_contacts == 1, "{}", out.pair_contacts);
+    let p1: Vec3 = out
+        .particles
+        .iter()
+        .map(|s| s.particle.vel * s.particle.mass)
+        .sum();
+    assert!(
+        (p1 - p0).norm() < 1e-12 * p0.norm(),
+        "{p1:?} against {p0:?}"
+    );
+    let free = &out.particles[2].particle;
+    assert!(free.vel.x > 0.1 && free.vel.y > 0.0, "{:?}", free.vel);
+    let spin = out.particles[0].particle.spin;
+    assert!(
+        spin.z.abs() > 0.1 && spin.x == 0.0 && spin.y == 0.0,
+        "{spin:?}"
+    );
+    assert_eq!(out.particles[1].particle.spin, spin);
+}
