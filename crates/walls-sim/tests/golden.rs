@@ -10,12 +10,14 @@
 //! has removed and the other still has, or an output step the run never reached, is an
 //! infinite error.
 //!
-//! Each scene is one test, with its bar:
-//! - [`Bar::Faithful`]: the simulator reproduces pkdgrav today (1e-9; `cylinder_test`
-//!   1e-6) and must keep doing so;
-//! - [`Bar::OverlapStop`]: the simulator cannot run the scene at all: its run stops on
-//!   an overlap of two particles above half a radius (W103), at the step given (0: at
-//!   pkdgrav's force evaluation before the first step).
+//! Each scene is one test, with its bar: the simulator reproduces pkdgrav (1e-9;
+//! `cylinder_test` 1e-6) and must keep doing so. Every scene meets it today.
+//!
+//! `agg_cube` (a rigid aggregate, physics.md §9) meets the faithful bar with room to
+//! spare (2.6e-10), though its contacts last five steps at overlaps of 10⁻⁴ of a radius,
+//! where one unit in the last place of a position is 10⁻¹² of the contact force: the
+//! way pkdgrav renormalises the aggregate's axes (scaling by the reciprocal of the length
+//! rather than dividing by it) alone moves the error from 2.3e-9 to 2.6e-10.
 //!
 //! `cargo test -p walls-sim --test golden -- --nocapture` prints each scene's error and
 //! run time (the figures of docs/fidelity.md).
@@ -34,7 +36,7 @@ use walls_sim::OscillationStepping;
 use walls_sim::build::Build;
 use walls_sim::config::{self, Flags, Run};
 use walls_sim::io::par::read_file as read_par_file;
-use walls_sim::run::{Integrator, Outcome, Overlapping, Settings, State, Warning, run_observed};
+use walls_sim::run::{Integrator, Outcome, Settings, State, run_observed};
 
 type Vec3 = Vector3<f64>;
 
@@ -281,42 +283,17 @@ fn measure(scene: &str) -> Measured {
     }
 }
 
-/// What a scene must show.
-enum Bar {
-    /// Faithful to pkdgrav: the error at most this.
-    Faithful(f64),
-    /// The simulator cannot run the scene: the run stops at this step on an overlap of
-    /// two particles above half a radius (W103).
-    OverlapStop(u64),
-}
-
-fn check(scene: &str, bar: Bar) {
+/// Runs `scene` and checks it against pkdgrav's outputs: its step count, and the error
+/// at most `bar`.
+fn check(scene: &str, bar: f64) {
     let m = measure(scene);
-    if !matches!(bar, Bar::OverlapStop(_)) {
-        assert_eq!(m.outcome.steps, m.steps, "{scene}: pkdgrav's step count");
-    }
-    match bar {
-        Bar::Faithful(bar) => assert!(
-            m.error <= bar,
-            "{scene}: error {:.3e} above {bar:e} at {}",
-            m.error,
-            m.worst
-        ),
-        Bar::OverlapStop(step) => assert!(
-            m.outcome.steps == step
-                && m.outcome.warnings.iter().any(|w| matches!(
-                    w,
-                    Warning::OverlapStop {
-                        what: Overlapping::Particles(..),
-                        ..
-                    }
-                )),
-            "{scene}: expected the run to stop at step {step} on two particles' overlap, \
-             it took {} steps, warning {:?}",
-            m.outcome.steps,
-            m.outcome.warnings
-        ),
-    }
+    assert_eq!(m.outcome.steps, m.steps, "{scene}: pkdgrav's step count");
+    assert!(
+        m.error <= bar,
+        "{scene}: error {:.3e} above {bar:e} at {}",
+        m.error,
+        m.worst
+    );
 }
 
 macro_rules! scenes {
@@ -441,34 +418,34 @@ fn reactive_plate_wallsreact_files() {
 
 // The bars: docs/fidelity.md gives each scene's error today and the cause of the gap.
 scenes! {
-    agg_cube: Bar::OverlapStop(0);
-    cohesion: Bar::Faithful(1e-9);
-    cone_inside: Bar::Faithful(1e-9);
-    contact_radius: Bar::Faithful(1e-9);
-    cyl_finite: Bar::Faithful(1e-9);
-    cyl_inf_inside: Bar::Faithful(1e-9);
-    cylinder_test: Bar::Faithful(1e-6);
-    disk: Bar::Faithful(1e-9);
-    hs_cyl_end: Bar::Faithful(1e-9);
-    hs_disk_rim: Bar::Faithful(1e-9);
-    hs_moving: Bar::Faithful(1e-9);
-    hs_oblique: Bar::Faithful(1e-9);
-    hs_rect_edge_corner: Bar::Faithful(1e-9);
-    hs_sticky: Bar::Faithful(1e-9);
-    osc_floor_step0: Bar::Faithful(1e-9);
-    osc_floor_step5: Bar::Faithful(1e-9);
-    pair_headon: Bar::Faithful(1e-9);
-    pair_oblique: Bar::Faithful(1e-9);
-    reactive_plate: Bar::Faithful(1e-9);
-    rectangle: Bar::Faithful(1e-9);
-    roll: Bar::Faithful(1e-9);
-    shell: Bar::Faithful(1e-9);
-    spinning_disk: Bar::Faithful(1e-9);
-    sticky_death: Bar::Faithful(1e-9);
-    translating_wall: Bar::Faithful(1e-9);
-    triangle: Bar::Faithful(1e-9);
-    twist_rest: Bar::Faithful(1e-9);
-    two_layer: Bar::Faithful(1e-9);
-    wall_oblique: Bar::Faithful(1e-9);
-    wall_overrides: Bar::Faithful(1e-9);
+    agg_cube: 1e-9;
+    cohesion: 1e-9;
+    cone_inside: 1e-9;
+    contact_radius: 1e-9;
+    cyl_finite: 1e-9;
+    cyl_inf_inside: 1e-9;
+    cylinder_test: 1e-6;
+    disk: 1e-9;
+    hs_cyl_end: 1e-9;
+    hs_disk_rim: 1e-9;
+    hs_moving: 1e-9;
+    hs_oblique: 1e-9;
+    hs_rect_edge_corner: 1e-9;
+    hs_sticky: 1e-9;
+    osc_floor_step0: 1e-9;
+    osc_floor_step5: 1e-9;
+    pair_headon: 1e-9;
+    pair_oblique: 1e-9;
+    reactive_plate: 1e-9;
+    rectangle: 1e-9;
+    roll: 1e-9;
+    shell: 1e-9;
+    spinning_disk: 1e-9;
+    sticky_death: 1e-9;
+    translating_wall: 1e-9;
+    triangle: 1e-9;
+    twist_rest: 1e-9;
+    two_layer: 1e-9;
+    wall_oblique: 1e-9;
+    wall_overrides: 1e-9;
 }

@@ -285,18 +285,20 @@ pub struct ConstantTorque {
 /// rolling velocity l₁ w₁ × n̂ − l₂ w₂ × n̂ (d w × n̂ against a wall), capped so that their
 /// impulses over `dt` cannot reverse the relative spin across the normal; twisting
 /// μ_t·N·sign(ω_t)·n̂ times the twisting radius, ω_t the partner's spin less particle 1's
-/// along n̂.
+/// along n̂. Returns the torques on particle 1 and its partner, and the rolling torque on
+/// particle 1 alone.
 fn constant_torques(
     c: &Dashpot,
     t: &ConstantTorque,
     normal_force: f64,
     mat: &Material,
     dt: f64,
-) -> (Vec3, Vec3) {
+) -> (Vec3, Vec3, Vec3) {
     let n = &c.normal;
     let (l1, l2) = c.levers;
     let (w1, w2) = t.spins;
     let mut on = (Vec3::zeros(), Vec3::zeros());
+    let mut rolling = Vec3::zeros();
     if mat.mu_r != 0.0 {
         let roll = if c.wall {
             w1.cross(n) * l1
@@ -321,7 +323,8 @@ fn constant_torques(
                 0.0
             };
             let per_lever = dir.cross(n) * (mat.mu_r * normal_force * scale);
-            on.0 += per_lever * t.roll_levers.0;
+            rolling = per_lever * t.roll_levers.0;
+            on.0 += rolling;
             if !c.wall {
                 on.1 -= per_lever * t.roll_levers.1;
             }
@@ -335,7 +338,7 @@ fn constant_torques(
             on.1 -= m_t;
         }
     }
-    on
+    (on.0, on.1, rolling)
 }
 
 /// What a [`Dashpot`] contact does: the force on particle 1 (−it on a particle partner)
@@ -351,6 +354,9 @@ pub struct DashpotForce {
     /// The rolling and twisting torque on particle 1, M_r + M_t (the partner feels
     /// −it).
     pub resistance: Vec3,
+    /// The rolling torque M_r alone (part of `resistance`), which pkdgrav's aggregates
+    /// turn into a pseudo-force (physics.md §9.4).
+    pub rolling: Vec3,
 }
 
 /// `v` turned right-handedly about the unit `axis` by the angle whose sine and cosine are
@@ -442,17 +448,19 @@ pub fn dashpot_contact_with(
         Vec3::zeros()
     };
     if let Some(t) = &c.constant_torque {
-        let (on_1, on_2) = constant_torques(c, t, normal_force, mat, dt);
+        let (on_1, on_2, rolling) = constant_torques(c, t, normal_force, mat, dt);
         return DashpotForce {
             force: f_n + f_t + cohesion,
             torque: shear * c.levers.0 + on_1,
             partner_torque: shear * c.levers.1 + on_2,
             resistance: on_1,
+            rolling,
         };
     }
     // §1.4: rolling and twisting, spring–dashpot–sliders scaled by (β_s R*)².
     let b = (mat.beta_s * c.radius).powi(2);
     let mut resistance = Vec3::zeros();
+    let mut rolling = Vec3::zeros();
     let (l1, l2) = c.levers;
     if mat.mu_r != 0.0 {
         let kappa = if c.wall {
@@ -472,6 +480,7 @@ pub fn dashpot_contact_with(
             m_r += rate * (c_n * b);
         }
         resistance += m_r;
+        rolling = m_r;
     }
     if mat.mu_t != 0.0 {
         let rate = c.spin.dot(n);
@@ -491,5 +500,6 @@ pub fn dashpot_contact_with(
         torque: shear * l1 + resistance,
         partner_torque: shear * l2 - resistance,
         resistance,
+        rolling,
     }
 }

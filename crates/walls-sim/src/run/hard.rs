@@ -500,6 +500,12 @@ impl<'a> HardStepper<'a> {
             between,
         } = Materials::new(scene, &settings.material);
         let mut warnings = Vec::new();
+        if states
+            .iter()
+            .any(|s| crate::dynamics::aggregate::aggregate_of(&s.particle).is_some())
+        {
+            warnings.push(super::aggregates_ignored(&states, settings));
+        }
         let origins = Origins::new(scene, settings.stepping, settings.t_start());
         let index = plan.wall_index.then(|| WallIndex::new(scene));
         let usable: Vec<bool> = origins

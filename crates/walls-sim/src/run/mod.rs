@@ -236,8 +236,11 @@ pub struct State {
     pub alive: bool,
     /// The sticky wall holding it, with the contact point relative to the wall's origin.
     pub stuck_to: Option<(usize, Vec3)>,
-    acc: Vec3,
-    alpha: Vec3,
+    pub(crate) acc: Vec3,
+    pub(crate) alpha: Vec3,
+    /// A member of a rigid aggregate (physics.md §9): moved with it, never kicked or
+    /// drifted on its own.
+    pub(crate) member: bool,
 }
 
 impl State {
@@ -249,6 +252,7 @@ impl State {
             stuck_to: None,
             acc: Vec3::zeros(),
             alpha: Vec3::zeros(),
+            member: false,
         }
     }
 
@@ -344,6 +348,30 @@ fn stuck_from_the_start(p: &Particle, walls: &[Wall], t0: f64) -> Option<(usize,
     let w = usize::try_from(-1 - i64::from(p.color)).ok()?;
     let wall = walls.get(w)?;
     Some((w, p.pos - wall.motion.position_or_origin(t0)))
+}
+
+/// The warning for particles that are members of aggregates (negative `org_idx`) in a
+/// run that does not follow aggregates (W601), saying why.
+fn aggregates_ignored(states: &[State], settings: &Settings) -> Warning {
+    let mut numbers: Vec<u32> = states
+        .iter()
+        .filter_map(|s| crate::dynamics::aggregate::aggregate_of(&s.particle))
+        .collect();
+    let members = numbers.len();
+    numbers.sort_unstable();
+    numbers.dedup();
+    let reason = if !settings.build.aggs {
+        "the build has no AGGS"
+    } else if settings.method == ContactModel::Hsdem {
+        "aggregates are followed in soft-sphere (DEM) runs only"
+    } else {
+        "the integrator is not pkdgrav's"
+    };
+    Warning::AggregatesIgnored {
+        members,
+        aggregates: numbers.len(),
+        reason,
+    }
 }
 
 /// Runs `particles` against `walls` ([`run_observed`] without watching).

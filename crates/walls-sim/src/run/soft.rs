@@ -12,11 +12,14 @@
 //! ([`crate::broad::grid`]) when particles have moved far enough.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
-//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_walls`, `move_assemblies`,
-//! `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing kick),
-//! `note_wall_contacts` (events and warnings, in particle order) and `kick_assemblies`;
-//! with [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before
-//! the first step, as pkdgrav does.
+//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_aggregates`, `move_walls`,
+//! `move_assemblies`, `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing
+//! kick), `note_wall_contacts` (events and warnings, in particle order),
+//! `kick_assemblies` and `gather_aggregates`; with [`Integrator::Pkdgrav`],
+//! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
+//! does. pkdgrav's aggregates (`AGGS`, [`crate::dynamics::aggregate`]) run only with
+//! [`Integrator::Pkdgrav`]; their members are placed by their aggregate, not kicked or
+//! drifted, and hand it their loads.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
@@ -28,6 +31,7 @@ use crate::contact::ssdem::{
     ConstantTorque, Dashpot, Material, Record, Rolling, Touch, contact, contact_radius,
     damping_per_root_mass, dashpot_contact_with, normal_contact, resistance,
 };
+use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
 use crate::run::optional::OptionalPhysics;
@@ -124,6 +128,8 @@ struct Walls<'a> {
     t: f64,
     dt: f64,
     step: u64,
+    /// pkdgrav's aggregates, if any (for their members' rolling pseudo-forces).
+    aggregates: Option<&'a Aggregates>,
 }
 
 /// What acts on one particle in a step: the force and torque summed so far, and its
@@ -239,6 +245,25 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             open.len() - 1
         });
         if mat.eps_n <= 0.0 {
+            if s.member {
+                // An aggregate neither sticks nor dies (pkdgrav asserts, physics.md
+                // §9.5): the event, and `note_wall_contacts` stops the run.
+                out.events.push(Event {
+                    t,
+                    particle: i,
+                    wall: w,
+                    kind: if mat.eps_n < 0.0 {
+                        EventKind::Remove
+                    } else {
+                        EventKind::Stick
+                    },
+                    vn_in: open[k].1.vn_in,
+                    vn_out: 0.0,
+                });
+                open.swap_remove(k);
+                load.visit = visit;
+                return out;
+            }
             // A death wall removes the particle; a sticky wall holds it.
             let kind = if mat.eps_n < 0.0 {
                 s.alive = false;
@@ -305,6 +330,16 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
             load.force += c.force;
             load.torque += c.torque;
+            if s.member
+                && c.rolling != Vec3::zeros()
+                && let Some(aggs) = walls.aggregates
+            {
+                // An aggregate feels the rolling torque as a pseudo-force at the contact
+                // point, with its moment about the aggregate's centre (physics.md §9.4).
+                let push = aggregate::rolling_push(&c.rolling, &-n, lever);
+                let arm = aggs.offset(i, &s.particle.pos) - n * lever;
+                load.torque += arm.cross(&push) - c.rolling;
+            }
             if let Some(a) = walls.assembly_of[w] {
                 // The reaction (physics.md §10), with the rolling and twisting torques.
                 let at = s.particle.pos - n * lever;
@@ -355,6 +390,11 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         resist *= stop / resist.norm();
     }
     load.torque += resist;
+    load.visit = visit;
+    if s.member {
+        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
+        return out;
+    }
     s.acc = load.force / m;
     s.alpha = load.torque / inertia(m, r);
     if walls.acc_crit > 0.0 {
@@ -362,7 +402,6 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     s.particle.vel += s.acc * (dt * walls.closing_kick);
     s.particle.spin += s.alpha * (dt * walls.closing_kick);
-    load.visit = visit;
     out
 }
 
@@ -478,6 +517,10 @@ struct SoftStepper<'a> {
     assembly_of: Vec<Option<usize>>,
     /// Each assembly's centre of gravity this step (kept to save allocating).
     cogs: Vec<Vec3>,
+    /// pkdgrav's rigid aggregates of particles (`AGGS`, physics.md §9), if any.
+    aggregates: Option<Aggregates>,
+    /// Set up failed (an aggregate of one member): the run stops before it starts.
+    halted: bool,
     loads: Vec<Load>,
     pairs_open: OpenContacts,
     candidates: PairList,
@@ -508,10 +551,15 @@ impl<'a> SoftStepper<'a> {
         let g = settings.gravity;
         let Materials {
             walls: materials,
-            between,
+            mut between,
         } = Materials::new(scene, &settings.material);
         // pkdgrav without DEM_WALLS_REACT reads the walls' masses and ignores them.
         let reactive = plan.reactive && settings.build.walls_react;
+        if settings.build.aggs {
+            // An AGGS build has no rolling or twisting between particles (§9.6).
+            between.mu_r = 0.0;
+            between.mu_t = 0.0;
+        }
         let initial = energy(&states, &g)
             + if reactive {
                 assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
@@ -528,6 +576,8 @@ impl<'a> SoftStepper<'a> {
             .map(|w| w.motion.oscillation.amplitude != 0.0)
             .collect();
         warnings.extend(super::stability::soft_warnings(scene, &states, settings));
+        let mut states = states;
+        let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
         let origins = Origins::new(scene, settings.stepping, settings.t_start());
         let now = if settings.integrator == Integrator::Pkdgrav {
             origins.walls_pkdgrav(scene, settings.t_start())
@@ -582,6 +632,8 @@ impl<'a> SoftStepper<'a> {
             origins,
             now,
             cogs: Vec::with_capacity(assemblies.len()),
+            aggregates,
+            halted,
             assemblies,
             assembly_of,
             loads,
@@ -621,6 +673,7 @@ impl<'a> SoftStepper<'a> {
             self.wall_contacts();
             flow = self.note_wall_contacts();
             self.sum_reactions();
+            self.gather_aggregates(false);
         }
         self.kicks = kicks;
         flow
@@ -636,6 +689,7 @@ impl<'a> SoftStepper<'a> {
     /// they did, and the assemblies' closing kick.
     fn step(&mut self) -> Flow {
         self.kick_drift();
+        self.move_aggregates();
         self.move_walls();
         if self.kicks.pkdgrav_levers {
             self.carry_stuck();
@@ -652,7 +706,39 @@ impl<'a> SoftStepper<'a> {
         self.wall_contacts();
         let flow = self.note_wall_contacts();
         self.kick_assemblies();
+        self.gather_aggregates(true);
         flow
+    }
+
+    /// pkdgrav's aggregates (physics.md §9.3): the opening half kick of each centre, the
+    /// drift (the rotation by Euler's equations, the centre with its half-step
+    /// velocity), and the members placed where it has taken them.
+    fn move_aggregates(&mut self) {
+        let Some(aggs) = self.aggregates.as_mut() else {
+            return;
+        };
+        let dt = self.settings.dt;
+        for a in &mut aggs.list {
+            a.kick(0.5 * dt);
+            a.advance(dt);
+            a.place(&mut self.states, dt);
+        }
+    }
+
+    /// Each aggregate's acceleration and torque from its members' loads (physics.md
+    /// §9.4), and, after a step's forces, its closing half kick.
+    fn gather_aggregates(&mut self, kick: bool) {
+        let Some(aggs) = self.aggregates.as_mut() else {
+            return;
+        };
+        let (g, dt) = (self.settings.gravity, self.settings.dt);
+        let loads = &self.loads;
+        for a in &mut aggs.list {
+            a.gather(&self.states, |i| (loads[i].force, loads[i].torque), &g);
+            if kick {
+                a.kick(0.5 * dt);
+            }
+        }
     }
 
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
@@ -661,7 +747,7 @@ impl<'a> SoftStepper<'a> {
         let dt = self.settings.dt;
         let Kicks { opening, late, .. } = self.kicks;
         let kick_drift = |s: &mut State| {
-            if s.free() {
+            if s.free() && !s.member {
                 s.particle.vel += s.acc * (dt * opening);
                 s.particle.spin += s.alpha * (dt * opening);
                 let v = s.particle.vel;
@@ -788,8 +874,13 @@ impl<'a> SoftStepper<'a> {
         let mat = &self.between;
         let states = &self.states;
         let loads = &mut self.loads;
+        let aggregates = self.aggregates.as_ref();
         for &(i, j) in &self.candidates.pairs {
             let (i, j) = (i as usize, j as usize);
+            // Members of one aggregate never meet (physics.md §9.1).
+            if aggregates.is_some_and(|a| a.same(i, j)) {
+                continue;
+            }
             // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
             // rule); two stuck ones, or a removed one, meet nothing.
             let (free_i, free_j) = (states[i].free(), states[j].free());
@@ -980,6 +1071,7 @@ impl<'a> SoftStepper<'a> {
             t: self.t,
             dt: self.settings.dt,
             step: self.steps,
+            aggregates: self.aggregates.as_ref(),
         };
         let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| wall_step(i, s, load, &walls);
         if self.parallel {
@@ -1006,7 +1098,7 @@ impl<'a> SoftStepper<'a> {
     /// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
     fn note_wall_contacts(&mut self) -> Flow {
         let t = self.t;
-        let mut stop = false;
+        let mut stop = self.aggregates.is_some() && self.aggregates_held();
         for (i, report) in self.reports.iter_mut().enumerate() {
             if let Some((fraction, w)) = report.deepest {
                 stop |= self.overlaps.check(
@@ -1056,6 +1148,31 @@ impl<'a> SoftStepper<'a> {
             }
         }
         if stop { Flow::Stop } else { Flow::Continue }
+    }
+
+    /// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
+    /// asserts, physics.md §9.5): the warning, in place of the event.
+    fn aggregates_held(&mut self) -> bool {
+        let mut held = false;
+        for (i, report) in self.reports.iter_mut().enumerate() {
+            if !self.states[i].member {
+                continue;
+            }
+            for e in &report.events {
+                if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
+                    self.warnings.push(Warning::AggregateHeld {
+                        particle: i,
+                        wall: e.wall,
+                        t: self.t,
+                    });
+                    held = true;
+                }
+            }
+            report
+                .events
+                .retain(|e| !matches!(e.kind, EventKind::Stick | EventKind::Remove));
+        }
+        held
     }
 
     /// The particles' reactions on the assemblies, summed in particle order, and the
@@ -1113,6 +1230,9 @@ pub(super) fn run(
     observe: Observer,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
+    if run.halted {
+        return run.outcome();
+    }
     if settings.integrator == Integrator::Pkdgrav && run.start() == Flow::Stop {
         return run.outcome();
     }
@@ -1123,6 +1243,48 @@ pub(super) fn run(
         observe(run.steps, run.t, &run.states, &run.assemblies);
     }
     run.outcome()
+}
+
+/// pkdgrav's aggregates of the particles (physics.md §9), when the run follows them: an
+/// `AGGS` build with pkdgrav's integrator. Members without that get a warning and run as
+/// free spheres; an aggregate of one member stops the run before it starts (the second
+/// value), as pkdgrav aborts.
+fn set_up_aggregates(
+    states: &mut [State],
+    settings: &Settings,
+    warnings: &mut Vec<Warning>,
+) -> (Option<Aggregates>, bool) {
+    let members = states
+        .iter()
+        .filter(|s| aggregate::aggregate_of(&s.particle).is_some())
+        .count();
+    if members == 0 {
+        return (None, false);
+    }
+    if !settings.build.aggs || settings.integrator != Integrator::Pkdgrav {
+        warnings.push(super::aggregates_ignored(states, settings));
+        return (None, false);
+    }
+    let particles: Vec<_> = states.iter().map(|s| s.particle.clone()).collect();
+    match Aggregates::find(&particles) {
+        Ok(Some(aggs)) => {
+            for (s, of) in states.iter_mut().zip(&aggs.of) {
+                s.member = of.is_some();
+            }
+            (Some(aggs), false)
+        }
+        Ok(None) => (None, false),
+        Err(aggregate::SetupError::SingleMember {
+            aggregate,
+            particle,
+        }) => {
+            warnings.push(Warning::SingleMemberAggregate {
+                aggregate,
+                particle,
+            });
+            (None, true)
+        }
+    }
 }
 
 /// The candidate particle pairs, kept from step to step (a Verlet list): the pairs whose

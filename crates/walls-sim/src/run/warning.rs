@@ -12,7 +12,8 @@
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
 //! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores;
-//! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow.
+//! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow;
+//! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run.
 
 use super::COLLISION_CAP;
 use std::fmt;
@@ -213,6 +214,35 @@ pub enum Warning {
         /// The walls' indices.
         walls: Vec<usize>,
     },
+    /// W601: particles with a negative `org_idx` (members of aggregates) in a run that
+    /// does not follow aggregates (a build without `AGGS`, or not pkdgrav's integrator):
+    /// they run as free spheres, as pkdgrav without `AGGS` runs them.
+    AggregatesIgnored {
+        /// How many particles are members.
+        members: usize,
+        /// How many aggregates they make.
+        aggregates: usize,
+        /// Why the run does not follow them.
+        reason: &'static str,
+    },
+    /// W602: an aggregate with a single member: pkdgrav aborts (`msrAggsFind`), and the
+    /// run stops before its first step.
+    SingleMemberAggregate {
+        /// The aggregate's number (−1 − org_idx).
+        aggregate: u32,
+        /// The member's index in the input.
+        particle: usize,
+    },
+    /// W603: a member of an aggregate reached a sticky or death wall: pkdgrav asserts
+    /// that aggregates cannot stick, and the run stops.
+    AggregateHeld {
+        /// The member's index in the input.
+        particle: usize,
+        /// The wall.
+        wall: usize,
+        /// When.
+        t: f64,
+    },
 }
 
 impl Warning {
@@ -235,6 +265,9 @@ impl Warning {
             Warning::CohesionTokensIgnored { .. } => "W501",
             Warning::TwoLayerTokensIgnored { .. } => "W502",
             Warning::MassesIgnored { .. } => "W402",
+            Warning::AggregatesIgnored { .. } => "W601",
+            Warning::SingleMemberAggregate { .. } => "W602",
+            Warning::AggregateHeld { .. } => "W603",
         }
     }
 }
@@ -350,6 +383,26 @@ impl fmt::Display for Warning {
                 f,
                 "walls {walls:?} have a mass, but the pkdgrav build lacks DEM_WALLS_REACT: pkdgrav without it ignores wall masses, and so does this run (the walls move as their motion tokens say); add DEM_WALLS_REACT to --pkdgrav-build for reactive walls"
             ),
+            Warning::AggregatesIgnored {
+                members,
+                aggregates,
+                reason,
+            } => write!(
+                f,
+                "{members} particles are members of {aggregates} aggregates (negative org_idx), which need a build with AGGS and pkdgrav's integrator; {reason}: they run as free spheres, as pkdgrav without AGGS runs them"
+            ),
+            Warning::SingleMemberAggregate {
+                aggregate,
+                particle,
+            } => write!(
+                f,
+                "aggregate {aggregate} (org_idx {}) has a single member, particle {particle}: pkdgrav aborts; the run stops before its first step",
+                -1 - *aggregate as i64
+            ),
+            Warning::AggregateHeld { particle, wall, t } => write!(
+                f,
+                "particle {particle}, a member of an aggregate, reached sticky or death wall {wall} (t = {t}): pkdgrav asserts that aggregates cannot stick; the run stops"
+            ),
         }
     }
 }
@@ -437,6 +490,20 @@ mod tests {
                 reason: "the build lacks DEM_TWOLAYERS".into(),
             },
             Warning::MassesIgnored { walls: vec![0, 2] },
+            Warning::AggregatesIgnored {
+                members: 2,
+                aggregates: 1,
+                reason: "the build has no AGGS",
+            },
+            Warning::SingleMemberAggregate {
+                aggregate: 0,
+                particle: 3,
+            },
+            Warning::AggregateHeld {
+                particle: 0,
+                wall: 1,
+                t: 0.5,
+            },
         ]
     }
 
