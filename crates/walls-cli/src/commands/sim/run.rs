@@ -361,13 +361,20 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         }
     }
     // Where pkdgrav would abort, the run stopped: say so, and exit 1.
-    if outcome
-        .warnings
-        .iter()
-        .any(|w| matches!(w, walls_sim::run::Warning::OverlapStop { .. }))
-    {
+    let stop = outcome.warnings.iter().find_map(|w| {
+        use walls_sim::run::Warning;
+        match w {
+            Warning::OverlapStop { .. } => Some("an overlap above half a radius"),
+            Warning::SingleMemberAggregate { .. } => Some("an aggregate of a single member"),
+            Warning::AggregateHeld { .. } => {
+                Some("a member of an aggregate at a sticky or death wall")
+            }
+            _ => None,
+        }
+    });
+    if let Some(why) = stop {
         eprintln!(
-            "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: an overlap above half a radius",
+            "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: {why}",
             first + outcome.steps,
             outcome.t
         );
