@@ -213,7 +213,13 @@ struct Measured {
 }
 
 fn measure(scene: &str) -> Measured {
-    let s = load(scene);
+    measure_as(scene, |_| {})
+}
+
+/// [`measure`], with the settings changed by `change` first.
+fn measure_as(scene: &str, change: impl Fn(&mut Settings)) -> Measured {
+    let mut s = load(scene);
+    change(&mut s.settings);
     let mut seen: BTreeMap<u64, Vec<State>> = BTreeMap::new();
     let start = Instant::now();
     let outcome = run_observed(
@@ -294,6 +300,44 @@ fn check(scene: &str, bar: f64) {
         m.error,
         m.worst
     );
+    if let Ok(path) = std::env::var("GOLDEN_CSV") {
+        record_before_and_after(&path, scene, bar, m.error);
+    }
+}
+
+/// Appends `scene`'s row to the CSV file at `path` for docs/charts/golden.png (the
+/// `golden` chart binary): the scene, its bar, the error as the evaluator ran a pkdgrav
+/// run directory before issue 15 (kick-drift-kick leapfrog with the summary's contact
+/// law, the exact oscillation, reactive walls followed but the build's cohesion, two-layer
+/// contacts and aggregates not) and the error today.
+fn record_before_and_after(path: &str, scene: &str, bar: f64, after: f64) {
+    use std::io::Write;
+    let before = measure_as(scene, |s| {
+        s.integrator = Integrator::Leapfrog;
+        s.stepping = OscillationStepping::Exact;
+        // Reactive walls always moved; cohesion, two layers and aggregates never.
+        s.build = Build::parse("DEM_WALLS_REACT")
+            .expect("a build")
+            .with_model(s.method);
+    });
+    // A run that stopped counts as infinitely far (the chart draws it at its top).
+    let stopped = |m: &Measured, e: f64| {
+        if m.outcome.steps < m.steps {
+            f64::INFINITY
+        } else {
+            e
+        }
+    };
+    let row = format!(
+        "{scene},{bar:e},{:e},{after:e}\n",
+        stopped(&before, before.error)
+    );
+    std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path)
+        .and_then(|mut f| f.write_all(row.as_bytes()))
+        .unwrap_or_else(|e| panic!("{path}: {e}"));
 }
 
 macro_rules! scenes {

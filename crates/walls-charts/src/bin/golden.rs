@@ -2,11 +2,11 @@
 //!
 //! The errors are measured by the golden tests: `GOLDEN_CSV=docs/charts/golden_errors.csv
 //! cargo test -p walls-sim --test golden` runs each of the 30 scenes twice and appends
-//! one row per scene (scene, bar, before, after) to that file:
+//! one row per scene (scene, bar, before, after; no header) to that file:
 //! - before: as `walls-sim run --par` ran a pkdgrav run directory before the issue:
-//!   kick-drift-kick leapfrog with the summary's contact law, the exact oscillation, and
-//!   the build's cohesion, two-layer contacts, reactive masses and aggregates not
-//!   followed;
+//!   kick-drift-kick leapfrog with the summary's contact law, the exact oscillation,
+//!   reactive walls followed (the evaluator always moved them) but the build's cohesion,
+//!   two-layer contacts and aggregates not;
 //! - after: the default today: pkdgrav's step, contact law and wall motion, and the
 //!   build named in the scene's `params.par`.
 //!
@@ -20,13 +20,16 @@ use walls_charts::{Chart, Mark, Series, out_dir, write};
 fn main() -> std::io::Result<()> {
     let dir = out_dir();
     let path = dir.join("golden_errors.csv");
-    let mut reader = csv::Reader::from_path(&path).map_err(|e| {
-        std::io::Error::other(format!(
-            "{}: {e} (write it with GOLDEN_CSV={} cargo test -p walls-sim --test golden)",
-            path.display(),
-            path.display()
-        ))
-    })?;
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_path(&path)
+        .map_err(|e| {
+            std::io::Error::other(format!(
+                "{}: {e} (write it with GOLDEN_CSV={} cargo test -p walls-sim --test golden)",
+                path.display(),
+                path.display()
+            ))
+        })?;
     let mut rows: Vec<(String, f64, f64, f64)> = Vec::new();
     for record in reader.records() {
         let r = record.map_err(std::io::Error::other)?;
@@ -51,8 +54,8 @@ fn main() -> std::io::Result<()> {
         &dir,
         &Chart {
             name: "golden".into(),
-            title: "error against pkdgrav per golden scene (docs/fidelity.md order)".into(),
-            x_label: "scene (alphabetical; docs/fidelity.md lists them)".into(),
+            title: "error against pkdgrav per golden scene (bar 1e-9; cylinder_test 1e-6)".into(),
+            x_label: "scene, alphabetical (docs/fidelity.md numbers them)".into(),
             y_label: "largest relative error over the outputs".into(),
             log_x: false,
             log_y: true,
