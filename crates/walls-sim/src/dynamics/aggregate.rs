@@ -10,8 +10,9 @@
 //! - **Kicks** ([`Aggregate::kick`]): the centre velocity only; ω is not kicked.
 //! - **Drift** ([`Aggregate::advance`]): ω and Λ together by Euler's equations under the
 //!   body-frame torque of the last force evaluation, by Numerical Recipes' adaptive
-//!   Cash–Karp (`odeint`/`rkqs`, [`cash_karp`]): tolerance 10⁻⁶, first step dt, minimum
-//!   10⁻³ dt, yscal = |y| + |hẏ| + 10⁻¹⁵; then each row of Λ renormalised to unit length
+//!   Cash–Karp ([`euler_rigid::integrate`], shared with reactive walls): tolerance 10⁻⁶,
+//!   first step dt, minimum 10⁻³ dt, yscal = |y| + |hẏ| + 10⁻¹⁵; then each row of Λ
+//!   renormalised to unit length
 //!   (what pkdgrav's "orthonormalise" does), and the centre moved with its half-step
 //!   velocity.
 //! - **Members** ([`Aggregate::place`]): r = Λ r_body + r_com, v = v_com + Λ(ω × r_body)
@@ -24,19 +25,13 @@
 //!   rolling torque's pseudo-force ([`rolling_push`]) and gravity's moment; it is taken to
 //!   the body frame with Λ as it stands at the force evaluation.
 
+use crate::dynamics::euler_rigid;
+use crate::dynamics::rigid::Rotation;
 use crate::run::State;
-use nalgebra::{Matrix3, SVector, Vector3};
+use nalgebra::{Matrix3, Vector3};
 use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
-type Y = SVector<f64, 12>;
-
-/// pkdgrav's relative accuracy for an aggregate's rotation.
-pub const TOLERANCE: f64 = 1e-6;
-/// The smallest substep, as a fraction of the step.
-pub const MIN_STEP_FRACTION: f64 = 1e-3;
-/// The floor of the error scale (yscal) of each variable.
-pub const SCALE_FLOOR: f64 = 1e-15;
 /// Inertia elements below this fraction of the largest are set to 0.
 pub const INERTIA_CUT: f64 = 1e-12;
 
@@ -208,30 +203,22 @@ impl Aggregate {
     /// torque (adaptive Cash–Karp), Λ's rows renormalised, the centre moved with its
     /// velocity. Returns the substeps taken.
     pub fn advance(&mut self, dt: f64) -> u32 {
-        let mut y = Y::zeros();
-        for k in 0..3 {
-            y[k] = self.omega[k];
+        let mut rot = Rotation {
+            omega: self.omega,
+            axes: [0, 1, 2].map(|c| self.axes.column(c).into_owned()),
+        };
+        let cost = euler_rigid::integrate(&mut rot, &self.moments, &self.torque, dt);
+        self.omega = rot.omega;
+        for (c, axis) in rot.axes.iter().enumerate() {
+            self.axes.set_column(c, axis);
         }
-        for r in 0..3 {
-            for c in 0..3 {
-                y[3 + 3 * r + c] = self.axes[(r, c)];
-            }
-        }
-        let (moments, torque) = (self.moments, self.torque);
-        let steps = odeint(&mut y, dt, |y| euler(y, &moments, &torque));
-        for k in 0..3 {
-            self.omega[k] = y[k];
-        }
-        for r in 0..3 {
-            let row = Vec3::new(y[3 + 3 * r], y[4 + 3 * r], y[5 + 3 * r]);
+        for mut row in self.axes.row_iter_mut() {
             // pkdgrav scales by the reciprocal of the length (not a division).
-            let row = row * (1.0 / row.norm());
-            for c in 0..3 {
-                self.axes[(r, c)] = row[c];
-            }
+            let scale = 1.0 / row.norm();
+            row *= scale;
         }
         self.com += self.vel * dt;
-        steps
+        cost.accepted
     }
 
     /// The body-frame angular acceleration by Euler's equations with the held torque.
@@ -319,158 +306,6 @@ pub fn rolling_push(m_r: &Vec3, n: &Vec3, l: f64) -> Vec3 {
         return Vec3::zeros();
     }
     dir * (size / l / d)
-}
-
-/// Euler's equations for y = (ω, rows of Λ): Iᵢω̇ᵢ = τᵢ + (Iⱼ − Iₖ)ωⱼωₖ, and each row q
-/// of Λ (a space axis in the body frame) turning as q̇ = q × ω.
-fn euler(y: &Y, i: &Vec3, t: &Vec3) -> Y {
-    let (w1, w2, w3) = (y[0], y[1], y[2]);
-    let mut d = Y::zeros();
-    d[0] = (t.x + (i.y - i.z) * w2 * w3) / i.x;
-    d[1] = (t.y + (i.z - i.x) * w3 * w1) / i.y;
-    d[2] = (t.z + (i.x - i.y) * w1 * w2) / i.z;
-    for r in 0..3 {
-        let (q1, q2, q3) = (y[3 + 3 * r], y[4 + 3 * r], y[5 + 3 * r]);
-        d[3 + 3 * r] = w3 * q2 - w2 * q3;
-        d[4 + 3 * r] = w1 * q3 - w3 * q1;
-        d[5 + 3 * r] = w2 * q1 - w1 * q2;
-    }
-    d
-}
-
-/// Numerical Recipes' `odeint` driving [`rkqs`] from 0 to `x2` (one step of dt): first
-/// trial step x2, error scale |y| + |h ẏ| + [`SCALE_FLOOR`], tolerance [`TOLERANCE`],
-/// the next step never below [`MIN_STEP_FRACTION`] of x2. Returns the steps taken.
-fn odeint(y: &mut Y, x2: f64, f: impl Fn(&Y) -> Y) -> u32 {
-    if x2 == 0.0 {
-        return 0;
-    }
-    let h_min = MIN_STEP_FRACTION * x2.abs();
-    let mut x = 0.0f64;
-    let mut h = x2;
-    let mut steps = 0;
-    for _ in 0..10_000 {
-        let dydx = f(y);
-        let mut scale = Y::zeros();
-        for k in 0..12 {
-            scale[k] = y[k].abs() + (dydx[k] * h).abs() + SCALE_FLOOR;
-        }
-        if (x + h - x2) * (x + h) > 0.0 {
-            h = x2 - x;
-        }
-        let next = rkqs(y, &dydx, &mut x, h, &scale, &f);
-        steps += 1;
-        if (x - x2) * x2 >= 0.0 {
-            return steps;
-        }
-        h = if next.abs() <= h_min { h_min } else { next };
-    }
-    steps
-}
-
-/// Numerical Recipes' `rkqs`: Cash–Karp steps from `x`, trying `h_try` and shrinking on
-/// error (safety 0.9, exponent −¼, by at most 10); advances `x` and `y`, returns the next
-/// trial step (exponent −⅕, at most 5 times larger).
-fn rkqs(y: &mut Y, dydx: &Y, x: &mut f64, h_try: f64, scale: &Y, f: &impl Fn(&Y) -> Y) -> f64 {
-    const SAFETY: f64 = 0.9;
-    const PGROW: f64 = -0.2;
-    const PSHRNK: f64 = -0.25;
-    const ERRCON: f64 = 1.89e-4;
-    let mut h = h_try;
-    loop {
-        let (out, err) = cash_karp(y, dydx, h, f);
-        let mut errmax = 0.0f64;
-        for k in 0..12 {
-            errmax = errmax.max((err[k] / scale[k]).abs());
-        }
-        errmax /= TOLERANCE;
-        if errmax <= 1.0 || !errmax.is_finite() {
-            let next = if errmax > ERRCON {
-                SAFETY * h * errmax.powf(PGROW)
-            } else {
-                5.0 * h
-            };
-            *x += h;
-            *y = out;
-            return next;
-        }
-        let htemp = SAFETY * h * errmax.powf(PSHRNK);
-        h = if h >= 0.0 {
-            htemp.max(0.1 * h)
-        } else {
-            htemp.min(0.1 * h)
-        };
-        if *x + h == *x {
-            // Numerical Recipes stops here ("stepsize underflow"); take the step.
-            let (out, _) = cash_karp(y, dydx, h, f);
-            *x += h;
-            *y = out;
-            return h;
-        }
-    }
-}
-
-/// One Cash–Karp step (Numerical Recipes' `rkck`): the fifth-order result and the error
-/// estimate (fifth minus embedded fourth order).
-pub fn cash_karp<const N: usize>(
-    y: &SVector<f64, N>,
-    dydx: &SVector<f64, N>,
-    h: f64,
-    f: &impl Fn(&SVector<f64, N>) -> SVector<f64, N>,
-) -> (SVector<f64, N>, SVector<f64, N>) {
-    const B21: f64 = 0.2;
-    const B31: f64 = 3.0 / 40.0;
-    const B32: f64 = 9.0 / 40.0;
-    const B41: f64 = 0.3;
-    const B42: f64 = -0.9;
-    const B43: f64 = 1.2;
-    const B51: f64 = -11.0 / 54.0;
-    const B52: f64 = 2.5;
-    const B53: f64 = -70.0 / 27.0;
-    const B54: f64 = 35.0 / 27.0;
-    const B61: f64 = 1631.0 / 55296.0;
-    const B62: f64 = 175.0 / 512.0;
-    const B63: f64 = 575.0 / 13824.0;
-    const B64: f64 = 44275.0 / 110592.0;
-    const B65: f64 = 253.0 / 4096.0;
-    const C1: f64 = 37.0 / 378.0;
-    const C3: f64 = 250.0 / 621.0;
-    const C4: f64 = 125.0 / 594.0;
-    const C6: f64 = 512.0 / 1771.0;
-    const DC5: f64 = -277.00 / 14336.0;
-    let dc1 = C1 - 2825.0 / 27648.0;
-    let dc3 = C3 - 18575.0 / 48384.0;
-    let dc4 = C4 - 13525.0 / 55296.0;
-    let dc6 = C6 - 0.25;
-    let mut t = SVector::<f64, N>::zeros();
-    for i in 0..N {
-        t[i] = y[i] + B21 * h * dydx[i];
-    }
-    let ak2 = f(&t);
-    for i in 0..N {
-        t[i] = y[i] + h * (B31 * dydx[i] + B32 * ak2[i]);
-    }
-    let ak3 = f(&t);
-    for i in 0..N {
-        t[i] = y[i] + h * (B41 * dydx[i] + B42 * ak2[i] + B43 * ak3[i]);
-    }
-    let ak4 = f(&t);
-    for i in 0..N {
-        t[i] = y[i] + h * (B51 * dydx[i] + B52 * ak2[i] + B53 * ak3[i] + B54 * ak4[i]);
-    }
-    let ak5 = f(&t);
-    for i in 0..N {
-        t[i] =
-            y[i] + h * (B61 * dydx[i] + B62 * ak2[i] + B63 * ak3[i] + B64 * ak4[i] + B65 * ak5[i]);
-    }
-    let ak6 = f(&t);
-    let mut out = SVector::<f64, N>::zeros();
-    let mut err = SVector::<f64, N>::zeros();
-    for i in 0..N {
-        out[i] = y[i] + h * (C1 * dydx[i] + C3 * ak3[i] + C4 * ak4[i] + C6 * ak6[i]);
-        err[i] = h * (dc1 * dydx[i] + dc3 * ak3[i] + dc4 * ak4[i] + DC5 * ak5[i] + dc6 * ak6[i]);
-    }
-    (out, err)
 }
 
 /// The eigenvalues and eigenvectors (columns) of the symmetric `a` by the cyclic Jacobi
