@@ -34,11 +34,10 @@
 //! For pkdgrav's reactive walls one step of the order of the particles' contact time is
 //! a rotation of well under a degree, and one Cash–Karp step of dt is accepted.
 
-use crate::dynamics::rigid::Rotation;
-use nalgebra::{SVector, Vector3};
+use crate::dynamics::rigid::{Rotation, State};
+use nalgebra::Vector3;
 
 type Vec3 = Vector3<f64>;
-type State = SVector<f64, 12>;
 
 /// pkdgrav's relative accuracy.
 pub const TOLERANCE: f64 = 1e-6;
@@ -78,7 +77,7 @@ pub fn integrate_with(
     let f = |y: &State| derivative(y, inertia, torque_body);
     let (x1, x2) = (0.0, dt);
     let h_min = MIN_STEP_FRACTION * dt.abs();
-    let mut y = pack(rot);
+    let mut y = rot.packed();
     let mut x = x1;
     let mut h = dt;
     // Numerical Recipes' odeint allows 10000 steps; more cannot happen with a minimum
@@ -133,7 +132,7 @@ pub fn integrate_with(
             h_next
         };
     }
-    unpack(&y, rot);
+    rot.unpack(&y);
     cost
 }
 
@@ -210,24 +209,6 @@ fn cash_karp(y: &State, dydx: &State, h: f64, f: &impl Fn(&State) -> State) -> (
         err[i] = h * (DC1 * dydx[i] + DC3 * ak3[i] + DC4 * ak4[i] + DC5 * ak5[i] + DC6 * ak6[i]);
     }
     (out, err)
-}
-
-/// The state vector: ω, then p̂₁, p̂₂, p̂₃.
-fn pack(rot: &Rotation) -> State {
-    let mut y = State::zeros();
-    y.fixed_rows_mut::<3>(0).copy_from(&rot.omega);
-    for i in 0..3 {
-        y.fixed_rows_mut::<3>(3 + 3 * i).copy_from(&rot.axes[i]);
-    }
-    y
-}
-
-/// Writes the state vector back.
-fn unpack(y: &State, rot: &mut Rotation) {
-    rot.omega = y.fixed_rows::<3>(0).into_owned();
-    for i in 0..3 {
-        rot.axes[i] = y.fixed_rows::<3>(3 + 3 * i).into_owned();
-    }
 }
 
 #[cfg(test)]

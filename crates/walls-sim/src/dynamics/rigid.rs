@@ -31,7 +31,8 @@
 use nalgebra::{Matrix3, SVector, Vector3};
 
 type Vec3 = Vector3<f64>;
-type State = SVector<f64, 12>;
+/// A rotation as twelve numbers: ω, then p̂₁, p̂₂, p̂₃ (the integrators' state).
+pub(crate) type State = SVector<f64, 12>;
 
 /// A rigid body's rotation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,6 +44,24 @@ pub struct Rotation {
 }
 
 impl Rotation {
+    /// The rotation as the integrators' state vector: ω, then p̂₁, p̂₂, p̂₃.
+    pub(crate) fn packed(&self) -> State {
+        let mut y = State::zeros();
+        y.fixed_rows_mut::<3>(0).copy_from(&self.omega);
+        for i in 0..3 {
+            y.fixed_rows_mut::<3>(3 + 3 * i).copy_from(&self.axes[i]);
+        }
+        y
+    }
+
+    /// Takes the rotation back from a state vector ([`Rotation::packed`]).
+    pub(crate) fn unpack(&mut self, y: &State) {
+        self.omega = y.fixed_rows::<3>(0).into_owned();
+        for i in 0..3 {
+            self.axes[i] = y.fixed_rows::<3>(3 + 3 * i).into_owned();
+        }
+    }
+
     /// A body with body-frame angular velocity `omega` whose principal axes are the world
     /// axes.
     pub fn new(omega: Vec3) -> Rotation {
@@ -144,7 +163,7 @@ pub fn step_rk(
         return steps;
     }
     let h_min = MIN_SUBSTEP_FRACTION * dt.abs();
-    let mut y = pack(rot);
+    let mut y = rot.packed();
     let mut t = 0.0;
     let mut h = dt;
     let mut k1 = derivative(&y, inertia, torque_world);
@@ -189,7 +208,7 @@ pub fn step_rk(
             h = h_min * dt.signum();
         }
     }
-    unpack(&y, rot);
+    rot.unpack(&y);
     steps.reorthonormalised = reorthonormalise(rot);
     steps
 }
@@ -256,24 +275,6 @@ fn reorthonormalise(rot: &mut Rotation) -> bool {
         rot.axes[i] = a.column(i).into_owned();
     }
     true
-}
-
-/// The state vector: ω, then p̂₁, p̂₂, p̂₃.
-fn pack(rot: &Rotation) -> State {
-    let mut y = State::zeros();
-    y.fixed_rows_mut::<3>(0).copy_from(&rot.omega);
-    for i in 0..3 {
-        y.fixed_rows_mut::<3>(3 + 3 * i).copy_from(&rot.axes[i]);
-    }
-    y
-}
-
-/// Writes the state vector back.
-fn unpack(y: &State, rot: &mut Rotation) {
-    rot.omega = y.fixed_rows::<3>(0).into_owned();
-    for i in 0..3 {
-        rot.axes[i] = y.fixed_rows::<3>(3 + 3 * i).into_owned();
-    }
 }
 
 /// Euler's equations in the body frame with the axes carried along.
