@@ -43,7 +43,7 @@ fn main() {
     for method in [ContactModel::Ssdem, ContactModel::Hsdem] {
         for threads in [1, 2] {
             let settings = Settings {
-                method,
+                build: walls_sim::build::Build::default_for(method),
                 gravity: Vector3::new(0.0, 0.0, -1.0),
                 ..Settings::new(dt, dt * steps as f64, defaults::default_material(k_n))
             };

@@ -161,6 +161,11 @@ impl Build {
         }
     }
 
+    /// pkdgrav's default build ([`DEFAULT`]) with `DEM` set or cleared to run `model`.
+    pub fn default_for(model: ContactModel) -> Build {
+        Build::default().with_model(model)
+    }
+
     /// This build with `DEM` set or cleared to run `model`.
     pub fn with_model(mut self, model: ContactModel) -> Build {
         let dem = model == ContactModel::Ssdem;

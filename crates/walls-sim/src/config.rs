@@ -190,7 +190,7 @@ pub fn resolve(
     let build = flags
         .build
         .clone()
-        .unwrap_or_else(|| Build::default().with_model(flags.method));
+        .unwrap_or_else(|| Build::default_for(flags.method));
     let method = build.contact_model();
     let derived_k_n = || defaults::default_k_n(scene, &particles, &gravity);
     let k_n = flags
@@ -257,7 +257,6 @@ pub fn resolve(
     let two_layer = par.and_then(|p| p.two_layer);
     let warnings = optional_key_warnings(par, &build, flags.integrator);
     let settings = Settings {
-        method,
         build,
         cohesion,
         two_layer,

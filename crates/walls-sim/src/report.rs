@@ -12,7 +12,7 @@ use walls_geometry::Wall;
 pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec<&'static str> {
     let (_, parts) = crate::run::plan::parts(scene, particles, settings);
     let everything = settings.planning == Planning::Everything;
-    let mut model = vec![match settings.method {
+    let mut model = vec![match settings.method() {
         ContactModel::Ssdem => "ssdem: spring-dashpot",
         ContactModel::Hsdem => "hsdem: exact collision prediction",
     }];

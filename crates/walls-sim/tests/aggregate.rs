@@ -159,7 +159,7 @@ fn without_aggs_the_members_run_free_with_a_warning() {
     assert!((vz + 9.81 * 10.0 * 1e-3).abs() < 1e-15, "{vz}");
     // The hard-sphere model does not follow aggregates either.
     let mut hard = settings("AGGS", 1e-3, 10, [0.0; 3], 0.0);
-    hard.method = walls_sim::run::ContactModel::Hsdem;
+    hard.build = hard.build.with_model(walls_sim::run::ContactModel::Hsdem);
     let out = walls_sim::run::run(&[], particles, &hard);
     assert_eq!(out.warnings[0].code(), "W601");
     assert!(out.warnings[0].to_string().contains("soft-sphere"));

@@ -318,7 +318,7 @@ fn record_before_and_after(path: &str, scene: &str, bar: f64, after: f64) {
         // Reactive walls always moved; cohesion, two layers and aggregates never.
         s.build = Build::parse("DEM_WALLS_REACT")
             .expect("a build")
-            .with_model(s.method);
+            .with_model(s.method());
     });
     // A run that stopped counts as infinitely far (the chart draws it at its top).
     let stopped = |m: &Measured, e: f64| {

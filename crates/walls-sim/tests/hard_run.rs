@@ -16,7 +16,7 @@ fn scene(text: &str) -> Vec<Wall> {
 
 fn settings(eps_n: f64, dt: f64, t_end: f64, gravity: [f64; 3]) -> Settings {
     Settings {
-        method: ContactModel::Hsdem,
+        build: walls_sim::build::Build::default_for(ContactModel::Hsdem),
         gravity: Vec3::from(gravity),
         ..Settings::new(
             dt,

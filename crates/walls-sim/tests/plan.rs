@@ -77,7 +77,7 @@ fn each_part_is_needed_for_its_reason() {
     assert_eq!(reason("death walls"), "walls 2 have a negative epsn");
     // In HSDEM the disk's rim calls for edge detection.
     let hard = Settings {
-        method: ContactModel::Hsdem,
+        build: walls_sim::build::Build::default_for(ContactModel::Hsdem),
         ..s
     };
     assert!(parts(&busy, &ps, &hard).0.edges);
@@ -170,7 +170,7 @@ fn the_wall_index_finds_the_same_contacts_as_looking_at_every_wall() {
         .collect();
     for method in [ContactModel::Ssdem, ContactModel::Hsdem] {
         let base = Settings {
-            method,
+            build: walls_sim::build::Build::default_for(method),
             dt: if method == ContactModel::Ssdem {
                 2e-5
             } else {

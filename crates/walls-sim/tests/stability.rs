@@ -102,7 +102,7 @@ fn a_fast_particle_tunnels_through_a_thin_wall_in_ssdem_is_reported_and_hsdem_st
         out.warnings
     );
     let hard = Settings {
-        method: ContactModel::Hsdem,
+        build: walls_sim::build::Build::default_for(ContactModel::Hsdem),
         ..soft(0.5, dt, 3.0 * dt)
     };
     let out = run(
@@ -182,7 +182,7 @@ fn degenerate_shapes_still_bounce_particles_correctly() {
         if hard_too {
             let text = format!("{walls}  epsn 0.5\n  epst 1\n");
             let hard = Settings {
-                method: ContactModel::Hsdem,
+                build: walls_sim::build::Build::default_for(ContactModel::Hsdem),
                 ..soft(0.5, 0.1, 1.5)
             };
             let out = run(&scene(&text), vec![start], &hard);

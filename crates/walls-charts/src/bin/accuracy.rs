@@ -89,7 +89,7 @@ fn settings(
     t_end: f64,
 ) -> Settings {
     Settings {
-        method,
+        build: walls_sim::build::Build::default_for(method),
         integrator,
         particle_contacts: false,
         ..Settings::new(

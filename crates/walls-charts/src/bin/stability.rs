@@ -39,7 +39,7 @@ fn ball(z: f64, v: f64) -> Particle {
 
 fn settings(method: ContactModel, k_n: f64, dt: f64, t_end: f64) -> Settings {
     Settings {
-        method,
+        build: walls_sim::build::Build::default_for(method),
         ..Settings::new(
             dt,
             t_end,

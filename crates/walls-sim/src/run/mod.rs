@@ -73,11 +73,9 @@ pub enum Integrator {
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// The contact model (the build's `DEM`: [`crate::build::Build::contact_model`]).
-    pub method: ContactModel,
-    /// The pkdgrav build whose physics the run follows (physics.md §0): which of
-    /// cohesion, two-layer contacts, reactive walls, aggregates and the rolling model
-    /// it has.
+    /// The pkdgrav build whose physics the run follows (physics.md §0): soft or hard
+    /// spheres (`DEM`, [`Settings::method`]), and which of cohesion, two-layer contacts,
+    /// reactive walls, aggregates and the rolling model it has.
     pub build: crate::build::Build,
     /// The timestep.
     pub dt: f64,
@@ -146,7 +144,6 @@ impl Settings {
     /// particle contacts and edge detection on, from time 0 until `t_end`.
     pub fn new(dt: f64, t_end: f64, material: ParticleMaterial) -> Self {
         Settings {
-            method: ContactModel::Ssdem,
             build: crate::build::Build::default(),
             dt,
             t_end,
@@ -166,6 +163,11 @@ impl Settings {
             cohesion: crate::contact::cohesion::Cohesion::default(),
             two_layer: None,
         }
+    }
+
+    /// The contact model: soft spheres when the build has `DEM`, else hard spheres.
+    pub fn method(&self) -> ContactModel {
+        self.build.contact_model()
     }
 
     /// The time the run starts at: `start_step`·`dt` (pkdgrav's t₀).
@@ -330,7 +332,7 @@ pub fn run_observed(
         Planning::Everything => Plan::everything(),
         Planning::Exactly(plan) => plan,
     };
-    let mut outcome = match settings.method {
+    let mut outcome = match settings.method() {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
     };
@@ -362,7 +364,7 @@ fn aggregates_ignored(states: &[State], settings: &Settings) -> Warning {
     numbers.dedup();
     let reason = if !settings.build.aggs {
         "the build has no AGGS"
-    } else if settings.method == ContactModel::Hsdem {
+    } else if settings.method() == ContactModel::Hsdem {
         "aggregates are followed in soft-sphere (DEM) runs only"
     } else {
         "the integrator is not pkdgrav's"

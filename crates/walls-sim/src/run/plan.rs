@@ -115,7 +115,7 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         });
         used
     };
-    let hard = settings.method == ContactModel::Hsdem;
+    let hard = settings.method() == ContactModel::Hsdem;
     let m: &ParticleMaterial = &settings.material;
     let moving = which(&|w| w.motion.translates());
     let moving_walls = part(

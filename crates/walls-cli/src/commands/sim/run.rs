@@ -291,7 +291,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
     // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
     // to as pkdgrav does, unless --fresh.
-    let reactive = settings.method == walls_sim::run::ContactModel::Ssdem
+    let reactive = settings.method() == walls_sim::run::ContactModel::Ssdem
         && settings.build.walls_react
         && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
     let mut reactive_files = match (&args.out, reactive) {
