@@ -80,6 +80,14 @@ fn negative_values_pkdgrav_refuses_are_errors_with_the_line() {
     for (text, message) in [
         ("dKn = -1\n", "line 1: `dKn` is `-1`; it must be 0 or more"),
         (
+            "nDigits = 5.5\n",
+            "line 1: `nDigits` is `5.5`; it must be a whole number, 0 or more",
+        ),
+        (
+            "nDigits = 99\n",
+            "line 1: `nDigits` is `99`; it must be at most 20",
+        ),
+        (
             "\ndMuR = -0.5\n",
             "line 2: `dMuR` is `-0.5`; it must be 0 or more",
         ),

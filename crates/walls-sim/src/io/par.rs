@@ -340,6 +340,9 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iOverlapOption", Use::NotYet(HARD_OPTION)),
 ];
 
+/// The most digits `nDigits` may ask for: a 64-bit step number has at most 20.
+pub const MAX_DIGITS: usize = 20;
+
 /// What the evaluator does with `key`; `None` for a key it does not know.
 pub fn use_of(key: &str) -> Option<Use> {
     if ["dSlide", "dCollapse", "dCrush"]
@@ -516,6 +519,18 @@ impl<'a> Lines<'a> {
             .transpose()
     }
 
+    /// `nDigits`: a whole number of digits, at most [`MAX_DIGITS`] (a step number has
+    /// at most 20).
+    fn digits(&self) -> Result<Option<usize>, InputError> {
+        match self.count("nDigits")? {
+            Some(d) if d > MAX_DIGITS as u64 => Err(error(
+                format!("line {}", self.by_key["nDigits"].n),
+                format!("`nDigits` is `{d}`; it must be at most {MAX_DIGITS}"),
+            )),
+            d => Ok(d.map(|d| d as usize)),
+        }
+    }
+
     /// A spring constant with pkdgrav's −1 sentinel: `Ok(None)` for −1 (or not given),
     /// an error for any other negative value.
     fn spring(&self, key: &str) -> Result<Option<f64>, InputError> {
@@ -659,9 +674,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         in_file: lines.text("achInFile"),
         walls_file: lines.text("achWallsFile"),
         out_name: lines.text("achOutName"),
-        digits: lines
-            .checked("nDigits", Rule::NonNegative)?
-            .map(|d| d.min(30.0) as usize),
+        digits: lines.digits()?,
         dt: lines.checked("dDelta", Rule::Positive)?,
         steps: lines.count("nSteps")?,
         start_step: lines.count("iStartStep")?,
