@@ -336,10 +336,22 @@ pub fn run_observed(
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
     };
-    // Walls' tokens the build (or the integrator) does not follow come first.
-    outcome
-        .warnings
-        .splice(0..0, optional::token_warnings(walls, settings));
+    // Walls' tokens the build (or the integrator) does not follow come first, then
+    // negative colours naming no wall.
+    let mut first = optional::token_warnings(walls, settings);
+    let nowhere: Vec<usize> = particles
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.color < 0 && stuck_from_the_start(p, walls, t0).is_none())
+        .map(|(i, _)| i)
+        .collect();
+    if !nowhere.is_empty() {
+        first.push(Warning::StuckToNoWall {
+            particles: nowhere,
+            walls: walls.len(),
+        });
+    }
+    outcome.warnings.splice(0..0, first);
     outcome
 }
 

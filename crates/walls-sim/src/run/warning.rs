@@ -207,6 +207,14 @@ pub enum Warning {
         /// Why the run does not follow them.
         reason: String,
     },
+    /// W107: particles whose `.ss` colour is negative, which pkdgrav reads as stuck to
+    /// wall −1 − colour, where the scene has no such wall: they run free.
+    StuckToNoWall {
+        /// The particles' indices.
+        particles: Vec<usize>,
+        /// How many walls the scene has.
+        walls: usize,
+    },
     /// W402: walls with a mass (and an assembly) in a soft-sphere run whose pkdgrav build
     /// lacks `DEM_WALLS_REACT`: pkdgrav then reads the masses and ignores them, and so
     /// does the run; the walls move as their motion tokens say.
@@ -265,6 +273,7 @@ impl Warning {
             Warning::CohesionTokensIgnored { .. } => "W501",
             Warning::TwoLayerTokensIgnored { .. } => "W502",
             Warning::MassesIgnored { .. } => "W402",
+            Warning::StuckToNoWall { .. } => "W107",
             Warning::AggregatesIgnored { .. } => "W601",
             Warning::SingleMemberAggregate { .. } => "W602",
             Warning::AggregateHeld { .. } => "W603",
@@ -379,6 +388,10 @@ impl fmt::Display for Warning {
                 "walls {walls:?} set {}: {reason}, so the run's contacts have one layer and ignore them",
                 tokens.join(", ")
             ),
+            Warning::StuckToNoWall { particles, walls } => write!(
+                f,
+                "particles {particles:?} have a negative colour, which pkdgrav reads as stuck to wall -1 - colour, but the scene has {walls} walls: they run free"
+            ),
             Warning::MassesIgnored { walls } => write!(
                 f,
                 "walls {walls:?} have a mass, but the pkdgrav build lacks DEM_WALLS_REACT: pkdgrav without it ignores wall masses, and so does this run (the walls move as their motion tokens say); add DEM_WALLS_REACT to --pkdgrav-build for reactive walls"
@@ -490,6 +503,10 @@ mod tests {
                 reason: "the build lacks DEM_TWOLAYERS".into(),
             },
             Warning::MassesIgnored { walls: vec![0, 2] },
+            Warning::StuckToNoWall {
+                particles: vec![3],
+                walls: 2,
+            },
             Warning::AggregatesIgnored {
                 members: 2,
                 aggregates: 1,
