@@ -19,6 +19,7 @@
 //! [`json`] writes the resolved scene as `walls-sim scene` prints it, with each wall's
 //! position at a time.
 
+mod bounds;
 pub mod impact;
 pub mod json;
 pub mod material;
@@ -27,11 +28,13 @@ pub mod motion;
 mod particle;
 pub mod poly;
 pub mod shape;
+pub mod units;
 mod wall;
 
+pub use bounds::{scene_bounds, scene_bounds_at};
 pub use material::{BETA_S_DEFAULT, Material, OptionalMaterial};
 pub use mesh::Mesh;
 pub use motion::{Motion, Oscillation, OscillationStepping};
 pub use particle::Particle;
 pub use shape::{Feature, Hit, Nearest, Shape};
-pub use wall::{Appearance, Reactive, Wall, decode, scene_bounds};
+pub use wall::{Appearance, Reactive, Wall, decode};

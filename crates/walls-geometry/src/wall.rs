@@ -69,6 +69,8 @@ pub struct Wall {
     pub appearance: Appearance,
     /// Its mass and assembly values.
     pub reactive: Reactive,
+    /// The units the file was in when it described the wall: the scale it speaks in.
+    pub units: walls_model::Units,
 }
 
 impl Wall {
@@ -174,6 +176,7 @@ impl Wall {
             optional,
             appearance,
             reactive,
+            units: wall.units,
         }
     }
 
@@ -187,23 +190,4 @@ impl Wall {
 /// Every wall of `scene`, decoded, in file order.
 pub fn decode(scene: &Scene) -> Vec<Wall> {
     scene.walls.iter().map(Wall::decode).collect()
-}
-
-/// The box around the walls' finite parts (planes and infinite cylinders by their
-/// origin), at least a unit across: the scene's size for default particles, previews
-/// and cut planes.
-pub fn scene_bounds(walls: &[Wall]) -> (Vec3, Vec3) {
-    let mut lo = Vec3::repeat(f64::INFINITY);
-    let mut hi = Vec3::repeat(f64::NEG_INFINITY);
-    for w in walls {
-        let (a, b) = w.shape.extent();
-        lo = lo.inf(&a);
-        hi = hi.sup(&b);
-    }
-    if !lo.iter().all(|x| x.is_finite()) {
-        return (Vec3::repeat(-0.5), Vec3::repeat(0.5));
-    }
-    let centre = (lo + hi) / 2.0;
-    let half = ((hi - lo) / 2.0).sup(&Vec3::repeat(0.5));
-    (centre - half, centre + half)
 }

@@ -20,7 +20,8 @@ pub use rules::axis_not_unit::AXIS_LENGTH_TOLERANCE;
 pub use rules::rectangle_not_rectangular::RECTANGLE_COS_TOLERANCE;
 pub use rules::wall_too_fast::STEP_TRAVEL_FRACTION;
 pub use scene::{
-    Place, Scene, Setting, Settings, Source, Span, Value, Vec3, Wall, WallSettings, direction,
+    Place, Scene, Setting, Settings, Source, Span, Units, Value, Vec3, Wall, WallSettings,
+    direction,
 };
 use walls_diagnostics::Diagnostic;
 pub use walls_keywords::ContactModel;

@@ -10,7 +10,9 @@
 
 use crate::ContactModel;
 use crate::rules::{self, Read, negative_osc_freq, number_too_large};
-use crate::scene::{Place, Scene, Setting, Settings, Source, Value, Vec3, Wall, WallSettings};
+use crate::scene::{
+    Place, Scene, Setting, Settings, Source, Units, Value, Vec3, Wall, WallSettings,
+};
 use std::ops::Range;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
@@ -23,11 +25,7 @@ pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>
     let mut r = Resolver {
         tree,
         mode,
-        units: Units {
-            length: 1.0,
-            mass: 1.0,
-            time: 1.0,
-        },
+        units: Units::default(),
         defaults: Settings::default(),
         shared: None,
         scene: Scene::default(),
@@ -46,6 +44,7 @@ pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>
         r.statement(stmt, block);
     }
     r.close_block();
+    r.scene.units = r.units;
     (r.scene, r.out)
 }
 
@@ -87,13 +86,6 @@ fn parse_number(text: &str) -> Option<f64> {
         m / POW10[(-exponent) as usize]
     };
     Some(if negative { -value } else { value })
-}
-
-#[derive(Clone, Copy)]
-struct Units {
-    length: f64,
-    mass: f64,
-    time: f64,
 }
 
 /// What the property tokens currently edit.
@@ -160,6 +152,7 @@ impl<'t> Resolver<'t> {
                     span: self.tree.span(self.tree.head(stmt)),
                     block: crate::Span::from(head.start..end),
                     settings: WallSettings::new(inherited),
+                    units: self.units,
                 });
                 self.target = Target::Wall(index);
                 return;

@@ -217,6 +217,9 @@ pub struct Wall {
     pub block: Span,
     /// What was set for it: the defaults in force at `wall`, then its own tokens.
     pub settings: WallSettings,
+    /// The units in force at `wall` (and through its block, which a unit token closes):
+    /// what its values were scaled by.
+    pub units: Units,
 }
 
 impl Wall {
@@ -307,4 +310,35 @@ pub struct Scene {
     pub walls: Vec<Wall>,
     /// Every property set in a `defaults` block, in file order, with its keyword's span.
     pub defaults: Vec<(Keyword, Range<usize>)>,
+    /// The units in force at the end of the file.
+    pub units: Units,
+}
+
+/// `lengthunit`, `massunit` and `timeunit` as the file set them (SPEC §1): how many
+/// pkdgrav units one of the file's units is. All 1 until set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Units {
+    /// pkdgrav lengths per file length.
+    pub length: f64,
+    /// pkdgrav masses per file mass.
+    pub mass: f64,
+    /// pkdgrav times per file time.
+    pub time: f64,
+}
+
+impl Default for Units {
+    fn default() -> Self {
+        Units {
+            length: 1.0,
+            mass: 1.0,
+            time: 1.0,
+        }
+    }
+}
+
+impl Units {
+    /// Whether the file set any unit (to something other than 1).
+    pub fn are_set(&self) -> bool {
+        *self != Units::default()
+    }
 }

@@ -180,7 +180,15 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
         })
         .collect();
     let decoded = decode(scene);
-    let (lo, hi) = scene_bounds(&decoded);
+    let (mut lo, mut hi) = scene_bounds(&decoded, &[]);
+    if let Some(p) = particles {
+        for frame in &p.frames {
+            for (i, q) in frame.iter().enumerate() {
+                let r = Vec3::repeat(p.radii.get(i).copied().unwrap_or(0.0).abs());
+                (lo, hi) = (lo.inf(&(q - r)), hi.sup(&(q + r)));
+            }
+        }
+    }
     let centre = (lo + hi) / 2.0;
 
     let mut s = String::new();

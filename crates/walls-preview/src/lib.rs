@@ -6,9 +6,11 @@
 
 pub mod html;
 pub mod mesh;
+pub mod movie;
 pub mod palette;
 pub mod pov;
 pub mod svg;
 pub mod vtk;
 
-pub use mesh::{Mesh, WallMesh, wall_meshes};
+pub use mesh::{Mesh, WallMesh, wall_meshes, wall_meshes_in};
+pub use movie::MovieFrame;

@@ -2,7 +2,7 @@
 //! ([`walls_geometry::Shape::tessellate`]), with how ssdraw draws it:
 //!
 //! - a plane as the polygon where it cuts the scene's box (the box around the finite
-//!   walls, at least a unit across); a plane clear of the box as a square twice the
+//!   walls and the particles, [`walls_geometry::scene_bounds`]); a plane clear of the box as a square twice the
 //!   scene's size;
 //! - a triangle and a rectangle as themselves;
 //! - a disk as a ring of `segments` quads between its hole and its rim (a fan without
@@ -41,18 +41,36 @@ pub struct WallMesh {
     pub opacity: f64,
     /// Where its origin is at the time asked.
     pub origin: Vec3,
+    /// How it is turned from its orientation as written: the identity unless a run
+    /// turned it ([`place`]). The mesh is the one as written, turned by `turn` about
+    /// the origin and moved to `origin`.
+    pub turn: nalgebra::Rotation3<f64>,
     /// Its triangles.
     pub mesh: Mesh,
 }
 
-/// Every wall of `scene` at time `t`, with `segments` segments around round shapes.
+/// Every wall of `scene` at time `t`, with `segments` segments around round shapes;
+/// planes and infinite cylinders cut to the box around the walls.
 pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
-    meshes_of(&decode(scene), t, segments)
+    let walls = decode(scene);
+    let scene_box = scene_bounds(&walls, &[]);
+    meshes_of(&walls, t, segments, &scene_box)
 }
 
-/// [`wall_meshes`] of decoded walls.
-fn meshes_of(walls: &[Wall], t: f64, segments: usize) -> Vec<WallMesh> {
-    let scene_box = scene_bounds(walls);
+/// Every wall of `scene` at time `t`, with planes and infinite cylinders cut to
+/// `scene_box` (the box around the walls and particles of a picture, or of every frame
+/// of a movie, [`walls_geometry::scene_bounds_at`]).
+pub fn wall_meshes_in(
+    scene: &Scene,
+    t: f64,
+    segments: usize,
+    scene_box: &(Vec3, Vec3),
+) -> Vec<WallMesh> {
+    meshes_of(&decode(scene), t, segments, scene_box)
+}
+
+/// [`wall_meshes_in`] of decoded walls.
+fn meshes_of(walls: &[Wall], t: f64, segments: usize, scene_box: &(Vec3, Vec3)) -> Vec<WallMesh> {
     walls
         .iter()
         .enumerate()
@@ -66,7 +84,8 @@ fn meshes_of(walls: &[Wall], t: f64, segments: usize) -> Vec<WallMesh> {
                 rgb: palette::rgb(color),
                 opacity: (1.0 - wall.appearance.transparency).clamp(0.0, 1.0),
                 origin,
-                mesh: wall.shape.at(origin).tessellate(&scene_box, segments),
+                turn: nalgebra::Rotation3::identity(),
+                mesh: wall.shape.at(origin).tessellate(scene_box, segments),
             }
         })
         .collect()
@@ -161,5 +180,6 @@ pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
             *q = origin + turn * (*q - from);
         }
         m.origin = origin;
+        m.turn = turn * m.turn;
     }
 }

@@ -88,14 +88,15 @@ pub fn write(
     view: &View,
 ) -> io::Result<()> {
     let walls = decode(scene);
-    let (lo, hi) = scene_bounds(&walls);
+    let drawn_particles: Vec<Particle> = particles
+        .iter()
+        .filter(|p| drawn(p.color.into()))
+        .cloned()
+        .collect();
+    let (lo, hi) = scene_bounds(&walls, &drawn_particles);
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
-    let (mut vlo, mut vhi) = (lo, hi);
-    for p in particles.iter().filter(|p| drawn(p.color.into())) {
-        vlo = vlo.inf(&(p.pos - Vec3::repeat(p.radius)));
-        vhi = vhi.sup(&(p.pos + Vec3::repeat(p.radius)));
-    }
+    let (vlo, vhi) = (lo, hi);
 
     writeln!(
         out,

@@ -96,10 +96,12 @@ fn meshes_move_with_their_walls_and_take_ssdraw_colours() {
 
 #[test]
 fn a_plane_is_cut_to_the_scenes_box() {
-    // A floor under a disk of radius 1 at height 0.5: the box is x, y in [−1, 1] and z in
-    // [−0.5, 1.5]; the floor is the 2 × 2 square where it cuts it.
-    let s = scene("wall type plane\nwall type disk\n  origin 0 0 0.5\n  radius 1\n");
-    let (lo, hi) = scene_bounds(&decode(&s));
+    // A floor through an upright disk of radius 1 centred at height 0.5: the box is y in
+    // [−1, 1], z in [−0.5, 1.5] and x a hundredth of that around 0; the floor is the
+    // rectangle where it cuts it.
+    let s =
+        scene("wall type plane\nwall type disk\n  origin 0 0 0.5\n  orient 1 0 0\n  radius 1\n");
+    let (lo, hi) = scene_bounds(&decode(&s), &[]);
     let floor = &wall_meshes(&s, 0.0, 32)[0].mesh;
     let a = area(floor);
     assert!((a - (hi.x - lo.x) * (hi.y - lo.y)).abs() < 1e-9, "area {a}");
@@ -111,7 +113,7 @@ fn a_plane_is_cut_to_the_scenes_box() {
     }
     // A tilted plane through the box is cut to a polygon inside it, on the plane.
     let s = scene("wall type plane\n  orient 1 1 1\nwall type disk\n  radius 1\n");
-    let (lo, hi) = scene_bounds(&decode(&s));
+    let (lo, hi) = scene_bounds(&decode(&s), &[]);
     let tilted = &wall_meshes(&s, 0.0, 32)[0].mesh;
     assert!(tilted.positions.len() >= 3 && !tilted.triangles.is_empty());
     for p in &tilted.positions {

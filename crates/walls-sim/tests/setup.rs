@@ -11,7 +11,7 @@ use walls_test_support::scene;
 #[test]
 fn embedded_particles_fall_onto_the_scene_without_overlap_warnings() {
     let scene = scene("wall type plane\nwall type disk origin 0 0 0.5 radius 2\n");
-    let (lo, hi) = scene_bounds(&scene);
+    let (lo, hi) = scene_bounds(&scene, &[]);
     let particles = defaults::default_particles(&scene);
     assert_eq!(particles.len(), 9);
     assert_eq!(

@@ -27,7 +27,7 @@ pub fn ball(pos: [f64; 3], vel: [f64; 3]) -> Particle {
 /// same scene gives the same pack: a deterministic crowd for benchmarks and stress runs.
 /// Fewer than `n` when the box has no room.
 pub fn packed(walls: &[Wall], n: usize, r: f64) -> Vec<Particle> {
-    let (lo, hi) = scene_bounds(walls);
+    let (lo, hi) = scene_bounds(walls, &[]);
     let spacing = 2.2 * r;
     let count = |axis: usize| ((hi[axis] - lo[axis]) / spacing).floor().max(0.0) as usize;
     let (nx, ny, nz) = (count(0), count(1), count(2));

@@ -163,6 +163,11 @@ impl Shape {
         }
     }
 
+    /// Whether the shape is unbounded: a plane or an infinite cylinder.
+    pub fn is_infinite(&self) -> bool {
+        matches!(self, Shape::Plane(_) | Shape::InfiniteCylinder(_))
+    }
+
     /// The same shape with its origin moved to `origin` (its position at some time).
     pub fn at(&self, origin: Vec3) -> Shape {
         let mut moved = self.clone();

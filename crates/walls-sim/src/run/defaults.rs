@@ -21,13 +21,13 @@
 use crate::run::ParticleMaterial;
 use nalgebra::Vector3;
 use walls_geometry::Particle;
-use walls_geometry::{Wall, scene_bounds as bounds};
+use walls_geometry::{Wall, scene_bounds};
 
 type Vec3 = Vector3<f64>;
 
 /// The embedded particles for the scene of `walls`.
 pub fn default_particles(walls: &[Wall]) -> Vec<Particle> {
-    let (lo, hi) = bounds(walls);
+    let (lo, hi) = scene_bounds(walls, &[]);
     let size = (hi - lo).max();
     let r = 0.02 * size;
     let centre = (lo + hi) / 2.0;
@@ -63,7 +63,7 @@ pub fn default_material(k_n: f64) -> ParticleMaterial {
 /// A normal spring constant for which the fastest expected impact overlaps by 1 % of the
 /// smallest radius: k_n = m·(v/(0.01·r))².
 pub fn default_k_n(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
-    let (lo, hi) = bounds(walls);
+    let (lo, hi) = scene_bounds(walls, &[]);
     let span = particles
         .iter()
         .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()));
@@ -80,7 +80,7 @@ pub fn default_k_n(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f6
 
 /// How long to run when not told: three free falls (or crossings) over the scene.
 pub fn default_duration(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
-    let (lo, hi) = bounds(walls);
+    let (lo, hi) = scene_bounds(walls, &[]);
     let span = particles
         .iter()
         .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()))

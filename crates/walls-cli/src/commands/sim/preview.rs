@@ -99,9 +99,11 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
             }
         })
         .collect();
+    let bounds =
+        walls_geometry::scene_bounds_at(&walls_geometry::decode(scene), &particles, &times);
     let mut meshes: Vec<_> = times
         .iter()
-        .map(|t| walls_preview::wall_meshes(scene, *t, segments))
+        .map(|t| walls_preview::wall_meshes_in(scene, *t, segments, &bounds))
         .collect();
     if let Some(f) = &args.reactive {
         // Reactive walls where a run moved them: the last step of WALLSREACTviz.out.
@@ -119,7 +121,6 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
             particles: &particles,
         })
         .collect();
-    let bounds = walls_geometry::scene_bounds(&walls_geometry::decode(scene));
     let kind = args
         .out
         .as_ref()

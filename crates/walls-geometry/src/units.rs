@@ -1,0 +1,314 @@
+//! Units people read: pkdgrav's numbers shown in centimetres and seconds (or metres),
+//! for the previews, the run's summary and the pages (docs/units.md).
+//!
+//! pkdgrav works in units where G = 1: the astronomical unit, the Sun's mass, and the
+//! time unit √(AU³/GM☉) = 1/k days (k the Gaussian gravitational constant), about a
+//! year over 2π. A walls file that sets `lengthunit 6.68459e-14` speaks in centimetres.
+//! [`Readout::new`] picks what to show: with [`System::Auto`] pkdgrav's number and,
+//! when the file sets units, the same in the file's own (`2.927e-7 (1.47 s)`);
+//! otherwise only the system asked for. When a file's unit is within 1 % of the
+//! system's (`lengthunit 6.68445e-14` for the 6.68459e-14 of a centimetre), the file's
+//! factor is used, so that what the file says reads back as written (5.5 cm, not
+//! 5.49988 cm).
+
+use walls_model::Units;
+
+/// One astronomical unit in centimetres (IAU 2012, exact).
+pub const AU_CM: f64 = 1.495978707e13;
+/// The Sun's mass parameter GM☉ in cm³/s² (IAU 2015 nominal).
+pub const GM_SUN_CGS: f64 = 1.327_124_4e26;
+/// The gravitational constant in cgs (CODATA 2018).
+pub const G_CGS: f64 = 6.674_30e-8;
+/// The Sun's mass in grams: GM☉/G.
+pub const M_SUN_G: f64 = GM_SUN_CGS / G_CGS;
+/// pkdgrav's time unit in seconds: 1/k days, k = 0.01720209895 the Gaussian constant.
+pub const TIME_UNIT_S: f64 = 86_400.0 / 0.017_202_098_95;
+
+/// The systems of units a reader can ask for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum System {
+    /// pkdgrav's numbers, and beside them the file's units when it sets some.
+    #[default]
+    Auto,
+    /// pkdgrav's own units (AU, M☉, the time unit) alone.
+    Pkdgrav,
+    /// Centimetres, grams, seconds.
+    Cgs,
+    /// Metres, kilograms, seconds.
+    Si,
+}
+
+/// One quantity's unit: its name and how many of it make a pkdgrav unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unit {
+    /// As printed after a number (`cm`, `s`); empty for pkdgrav's.
+    pub name: &'static str,
+    /// This unit's value of one pkdgrav unit: shown = pkdgrav × `per_pkdgrav`.
+    pub per_pkdgrav: f64,
+}
+
+impl Unit {
+    const PKDGRAV: Unit = Unit {
+        name: "",
+        per_pkdgrav: 1.0,
+    };
+
+    /// `x` (pkdgrav units) in this unit.
+    pub fn of(&self, x: f64) -> f64 {
+        x * self.per_pkdgrav
+    }
+}
+
+/// Lengths, masses and times of one system.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scale {
+    /// Lengths.
+    pub length: Unit,
+    /// Masses.
+    pub mass: Unit,
+    /// Times.
+    pub time: Unit,
+}
+
+impl Scale {
+    /// pkdgrav's own units.
+    pub const PKDGRAV: Scale = Scale {
+        length: Unit::PKDGRAV,
+        mass: Unit::PKDGRAV,
+        time: Unit::PKDGRAV,
+    };
+
+    /// Centimetres, grams and seconds, or metres, kilograms and seconds (`si`), taking
+    /// the file's factor for a unit within 1 % of either system's.
+    fn physical(si: bool, file: &Units) -> Scale {
+        let base = cgs_base(file);
+        let (cm, g) = if si { (100.0, 1000.0) } else { (1.0, 1.0) };
+        Scale {
+            length: Unit {
+                name: if si { "m" } else { "cm" },
+                per_pkdgrav: 1.0 / (cm * base.length),
+            },
+            mass: Unit {
+                name: if si { "kg" } else { "g" },
+                per_pkdgrav: 1.0 / (g * base.mass),
+            },
+            time: Unit {
+                name: "s",
+                per_pkdgrav: 1.0 / base.time,
+            },
+        }
+    }
+
+    /// The file's own units, named after the unit of either system they are (within
+    /// 1 %), else "file units"; pkdgrav's (no name) for a unit the file leaves at 1.
+    fn of_file(file: &Units) -> Scale {
+        let base = cgs_base(file);
+        let name = |factor: f64, base: f64, names: [(&'static str, f64); 2]| {
+            let near = |x: f64| (factor / (x * base) - 1.0).abs() < 1e-12;
+            if factor == 1.0 {
+                ""
+            } else if near(names[0].1) {
+                names[0].0
+            } else if near(names[1].1) {
+                names[1].0
+            } else {
+                "file units"
+            }
+        };
+        Scale {
+            length: Unit {
+                name: name(file.length, base.length, [("cm", 1.0), ("m", 100.0)]),
+                per_pkdgrav: 1.0 / file.length,
+            },
+            mass: Unit {
+                name: name(file.mass, base.mass, [("g", 1.0), ("kg", 1000.0)]),
+                per_pkdgrav: 1.0 / file.mass,
+            },
+            time: Unit {
+                name: name(file.time, base.time, [("s", 1.0), ("s", 1.0)]),
+                per_pkdgrav: 1.0 / file.time,
+            },
+        }
+    }
+}
+
+/// pkdgrav units per centimetre, gram and second: from the constants, or the file's
+/// own factor where it is within 1 % of the centimetre or metre, gram or kilogram,
+/// second.
+fn cgs_base(file: &Units) -> Units {
+    let pick = |standard: f64, file: f64, larger: f64| {
+        if (file / standard - 1.0).abs() < 0.01 {
+            file
+        } else if (file / (larger * standard) - 1.0).abs() < 0.01 {
+            file / larger
+        } else {
+            standard
+        }
+    };
+    Units {
+        length: pick(1.0 / AU_CM, file.length, 100.0),
+        mass: pick(1.0 / M_SUN_G, file.mass, 1000.0),
+        time: pick(1.0 / TIME_UNIT_S, file.time, 1.0),
+    }
+}
+
+/// How numbers are shown: in one system, and maybe pkdgrav's beside it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Readout {
+    /// The units shown.
+    pub scale: Scale,
+    /// Whether pkdgrav's number comes first, with `scale`'s in brackets.
+    pub with_pkdgrav: bool,
+}
+
+impl Readout {
+    /// The readout of `system` for a file whose units are `file`.
+    pub fn new(system: System, file: &Units) -> Readout {
+        match system {
+            System::Auto if file.are_set() => Readout {
+                scale: Scale::of_file(file),
+                with_pkdgrav: true,
+            },
+            System::Auto | System::Pkdgrav => Readout {
+                scale: Scale::PKDGRAV,
+                with_pkdgrav: false,
+            },
+            System::Cgs => Readout {
+                scale: Scale::physical(false, file),
+                with_pkdgrav: false,
+            },
+            System::Si => Readout {
+                scale: Scale::physical(true, file),
+                with_pkdgrav: false,
+            },
+        }
+    }
+
+    /// A time `t` (pkdgrav units) as shown: `1.47 s`, `2.927e-7 (1.47 s)` or `2.927e-7`.
+    pub fn time(&self, t: f64) -> String {
+        self.show(t, &self.scale.time)
+    }
+
+    /// A length `x` (pkdgrav units) as shown.
+    pub fn length(&self, x: f64) -> String {
+        self.show(x, &self.scale.length)
+    }
+
+    /// A mass `m` (pkdgrav units) as shown.
+    pub fn mass(&self, m: f64) -> String {
+        self.show(m, &self.scale.mass)
+    }
+
+    fn show(&self, x: f64, unit: &Unit) -> String {
+        let own = if unit.name.is_empty() {
+            number(unit.of(x))
+        } else {
+            format!("{} {}", number(unit.of(x)), unit.name)
+        };
+        if self.with_pkdgrav && unit.name.is_empty() {
+            number(x)
+        } else if self.with_pkdgrav {
+            format!("{} ({own})", number(x))
+        } else {
+            own
+        }
+    }
+}
+
+/// `x` to four significant figures, as people write it: `1.47`, `5.5`, `0.0123`,
+/// `2.927e-7`, `1.2e6`.
+pub fn number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let exponent = x.abs().log10().floor() as i32;
+    if (-3..6).contains(&exponent) {
+        let decimals = (3 - exponent).max(0) as usize;
+        let s = format!("{x:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let s = format!("{x:.3e}");
+        let (m, e) = s.split_once('e').expect("an exponent");
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        format!("{m}e{e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// pkdgrav's own `tests/orientation/cylinder` units: centimetres, grams, seconds.
+    fn cgs_file() -> Units {
+        Units {
+            length: 6.68445e-14,
+            mass: 5.02739933e-34,
+            time: 1.99102e-7,
+        }
+    }
+
+    #[test]
+    fn numbers_read_as_people_write_them() {
+        for (x, s) in [
+            (1.47, "1.47"),
+            (5.5, "5.5"),
+            (0.012345, "0.01235"),
+            (2.9268e-7, "2.927e-7"),
+            (1_234_567.0, "1.235e6"),
+            (100.0, "100"),
+            (-3.0, "-3"),
+            (0.0, "0"),
+        ] {
+            assert_eq!(number(x), s, "{x}");
+        }
+    }
+
+    #[test]
+    fn a_centimetre_file_reads_back_as_written() {
+        let file = cgs_file();
+        let auto = Readout::new(System::Auto, &file);
+        assert_eq!(auto.length(5.5 * file.length), "3.676e-13 (5.5 cm)");
+        assert_eq!(auto.time(1.47 * file.time), "2.927e-7 (1.47 s)");
+        assert_eq!(auto.mass(2.0 * file.mass), "1.005e-33 (2 g)");
+        let cgs = Readout::new(System::Cgs, &file);
+        assert_eq!(cgs.length(5.5 * file.length), "5.5 cm");
+        let si = Readout::new(System::Si, &file);
+        assert_eq!(si.length(5.5 * file.length), "0.055 m");
+        assert_eq!(si.mass(2.0 * file.mass), "0.002 kg");
+        let pkdgrav = Readout::new(System::Pkdgrav, &file);
+        assert_eq!(pkdgrav.time(1.47 * file.time), "2.927e-7");
+    }
+
+    #[test]
+    fn pkdgrav_units_convert_by_the_constants() {
+        let none = Units::default();
+        assert_eq!(Readout::new(System::Auto, &none).length(1.0), "1");
+        // 1 AU is 1.496e13 cm; the time unit is 58.13 days.
+        assert_eq!(Readout::new(System::Cgs, &none).length(1.0), "1.496e13 cm");
+        assert_eq!(Readout::new(System::Si, &none).time(1.0), "5.023e6 s");
+        assert_eq!(Readout::new(System::Si, &none).mass(1.0), "1.988e30 kg");
+    }
+
+    #[test]
+    fn units_of_no_system_are_the_files() {
+        let odd = Units {
+            length: 1e-3,
+            ..Units::default()
+        };
+        let auto = Readout::new(System::Auto, &odd);
+        assert_eq!(auto.length(2e-3), "0.002 (2 file units)");
+        assert_eq!(
+            auto.time(2.0),
+            "2",
+            "the file leaves time in pkdgrav's unit"
+        );
+    }
+}
