@@ -9,6 +9,7 @@ pub mod mesh;
 pub mod movie;
 pub mod palette;
 pub mod pov;
+pub mod ssdraw;
 pub mod svg;
 pub mod vtk;
 
