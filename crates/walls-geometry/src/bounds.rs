@@ -1,10 +1,12 @@
 //! The scene's box: the size every preview frames, planes are cut to and the embedded
 //! particles are scaled by. It is the box around what has an extent, the finite walls
 //! (where they are at the times asked) and the particles, with no minimum size, so that
-//! a 5 cm tube in AU (`lengthunit 6.68e-14`) gives a box 3.7e-13 across. Planes and
-//! infinite cylinders are cut to it. Only a scene with nothing finite falls back on the
+//! a 5 cm tube in AU (`lengthunit 6.68e-14`) gives a box 3.7e-13 across. An infinite
+//! cylinder widens it to its cross-section there (it is usually the container); planes
+//! and infinite cylinders are cut to it along their extent. Only a scene with nothing finite falls back on the
 //! box around its infinite walls' origins, one of the file's length units across.
 
+use crate::shape::rim_bounds;
 use crate::{Particle, Wall};
 use nalgebra::Vector3;
 
@@ -74,6 +76,16 @@ pub fn scene_bounds_at(walls: &[Wall], particles: &[Particle], times: &[f64]) ->
         let centre = (b.lo + b.hi) / 2.0;
         let half = ((b.hi - b.lo) / 2.0).sup(&Vec3::repeat(unit / 2.0));
         return (centre - half, centre + half);
+    }
+    // An infinite cylinder around the scene (a container) widens the box to its cross
+    // section where its axis passes the box's centre; along its axis it is cut.
+    let centre = (b.lo + b.hi) / 2.0;
+    for w in walls {
+        if let crate::Shape::InfiniteCylinder(c) = w.shape.at(w.origin_at_start()) {
+            let along = (centre - c.origin).dot(&c.axis);
+            let (lo, hi) = rim_bounds(&(c.origin + along * c.axis), &c.axis, c.radius.abs());
+            b.add(lo, hi);
+        }
     }
     // A box flat along some axis (a floor of rectangles, one particle of radius 0) gets
     // a hundredth of its size there, so that the planes cut through it cleanly.

@@ -1,0 +1,82 @@
+//! The scene's box at pkdgrav's real scale: a tube written in centimetres and converted
+//! to AU (`lengthunit 6.68445e-14`) is framed as it is in centimetres, and at 1e+3; no
+//! minimum size; an infinite cylinder widens the box to its cross-section; a scene with
+//! nothing finite falls back on one of the file's length units.
+
+use nalgebra::Vector3;
+use walls_geometry::{Particle, scene_bounds, scene_bounds_at};
+use walls_test_support::scene;
+
+/// A floor and a finite tube of radius 1 and length 5.5 standing on it, in the file's
+/// units, scaled by `lengthunit`.
+fn tube(unit: f64) -> String {
+    format!(
+        "lengthunit {unit}\nwall type plane\nwall type cylinder-finite\n  origin 0 0 2.75\n  radius 1\n  length 5.5\n"
+    )
+}
+
+#[test]
+fn a_tube_is_framed_at_any_scale() {
+    for unit in [6.68445e-14, 1.0, 1e3] {
+        let walls = scene(&tube(unit));
+        let (lo, hi) = scene_bounds(&walls, &[]);
+        let expect_lo = Vector3::new(-1.0, -1.0, 0.0) * unit;
+        let expect_hi = Vector3::new(1.0, 1.0, 5.5) * unit;
+        assert!(
+            (lo - expect_lo).norm() < 1e-12 * unit && (hi - expect_hi).norm() < 1e-12 * unit,
+            "unit {unit}: {lo:?} {hi:?}"
+        );
+    }
+}
+
+#[test]
+fn particles_extend_the_box() {
+    let unit = 6.68445e-14;
+    let walls = scene(&tube(unit));
+    let mut p = Particle::at_rest(0.1 * unit, Vector3::new(0.0, 0.0, 8.0) * unit, 0);
+    p.pos.x = 3.0 * unit;
+    let (lo, hi) = scene_bounds(&walls, &[p]);
+    assert!((hi.x - 3.1 * unit).abs() < 1e-12 * unit, "{hi:?}");
+    assert!((hi.z - 8.1 * unit).abs() < 1e-12 * unit, "{hi:?}");
+    assert!((lo.z - 0.0).abs() < 1e-12 * unit, "{lo:?}");
+}
+
+#[test]
+fn an_infinite_cylinder_around_particles_is_the_container() {
+    // pkdgrav's cylinder_test: a floor at z = −5 cm and an infinite tube of radius 5.5 cm
+    // around particles within 1 cm of its axis.
+    let unit = 6.68445e-14;
+    let walls = scene(&format!(
+        "lengthunit {unit}\nwall type plane\n  origin 0 0 -5\nwall type cylinder-infinite\n  radius 5.5\n"
+    ));
+    let p = Particle::at_rest(0.5 * unit, Vector3::new(0.5, 0.0, -4.0) * unit, 0);
+    let (lo, hi) = scene_bounds(&walls, &[p]);
+    for k in 0..2 {
+        assert!((lo[k] + 5.5 * unit).abs() < 1e-9 * unit, "{lo:?}");
+        assert!((hi[k] - 5.5 * unit).abs() < 1e-9 * unit, "{hi:?}");
+    }
+    assert!((lo.z + 4.5 * unit).abs() < 1e-9 * unit && (hi.z + 3.5 * unit).abs() < 1e-9 * unit);
+}
+
+#[test]
+fn moving_walls_are_boxed_over_the_span() {
+    // A disk of radius 1 oscillating along x with amplitude 2 (period 2π): at t = π/2 it
+    // is 2 to the right.
+    let walls = scene("wall type disk\n  radius 1\n  osc-ampl 2\n  osc-freq 1\n  osc-vec 1 0 0\n");
+    let (lo, hi) = scene_bounds_at(&walls, &[], &[0.0, std::f64::consts::FRAC_PI_2]);
+    assert!(
+        (lo.x + 1.0).abs() < 1e-12 && (hi.x - 3.0).abs() < 1e-12,
+        "{lo:?} {hi:?}"
+    );
+}
+
+#[test]
+fn nothing_finite_is_one_file_unit_across() {
+    let walls = scene("lengthunit 6.68445e-14\nwall type plane\n  origin 0 0 -5\n");
+    let (lo, hi) = scene_bounds(&walls, &[]);
+    assert!(
+        ((hi - lo).max() - 6.68445e-14).abs() < 1e-27,
+        "{lo:?} {hi:?}"
+    );
+    assert!(((lo + hi).z / 2.0 + 5.0 * 6.68445e-14).abs() < 1e-27);
+}
