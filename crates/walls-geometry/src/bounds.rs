@@ -1,9 +1,10 @@
 //! The scene's box: the size every preview frames, planes are cut to and the embedded
 //! particles are scaled by. It is the box around what has an extent, the finite walls
 //! (where they are at the times asked) and the particles, with no minimum size, so that
-//! a 5 cm tube in AU (`lengthunit 6.68e-14`) gives a box 3.7e-13 across. An infinite
-//! cylinder widens it to its cross-section there (it is usually the container); planes
-//! and infinite cylinders are cut to it along their extent. Only a scene with nothing finite falls back on the
+//! a 5 cm tube in AU (`lengthunit 6.68e-14`) gives a box 3.7e-13 across. A plane within
+//! the box's size of its centre (a floor) stretches it to reach the plane; an infinite
+//! cylinder widens it to its cross-section there (it is usually the container). Planes
+//! and infinite cylinders are then cut to the box. Only a scene with nothing finite falls back on the
 //! box around its infinite walls' origins, one of the file's length units across.
 
 use crate::shape::rim_bounds;
@@ -76,6 +77,20 @@ pub fn scene_bounds_at(walls: &[Wall], particles: &[Particle], times: &[f64]) ->
         let centre = (b.lo + b.hi) / 2.0;
         let half = ((b.hi - b.lo) / 2.0).sup(&Vec3::repeat(unit / 2.0));
         return (centre - half, centre + half);
+    }
+    // A plane near the scene (the floor the particles rest on, within the box's size of
+    // its centre) reaches into the box: the box grows to the point of the plane under
+    // its centre. A distant plane (a catch-all death plane far below) does not.
+    let centre = (b.lo + b.hi) / 2.0;
+    let size = (b.hi - b.lo).max();
+    for w in walls {
+        if let crate::Shape::Plane(p) = w.shape.at(w.origin_at_start()) {
+            let height = p.normal.dot(&(centre - p.origin));
+            if height.abs() <= size {
+                let q = centre - p.normal * height;
+                b.add(q, q);
+            }
+        }
     }
     // An infinite cylinder around the scene (a container) widens the box to its cross
     // section where its axis passes the box's centre; along its axis it is cut.

@@ -1,6 +1,7 @@
 //! The scene's box at pkdgrav's real scale: a tube written in centimetres and converted
 //! to AU (`lengthunit 6.68445e-14`) is framed as it is in centimetres, and at 1e+3; no
-//! minimum size; an infinite cylinder widens the box to its cross-section; a scene with
+//! minimum size; a floor stretches the box to it and an infinite cylinder widens it to its
+//! cross-section; a distant plane does not; a scene with
 //! nothing finite falls back on one of the file's length units.
 
 use nalgebra::Vector3;
@@ -55,7 +56,18 @@ fn an_infinite_cylinder_around_particles_is_the_container() {
         assert!((lo[k] + 5.5 * unit).abs() < 1e-9 * unit, "{lo:?}");
         assert!((hi[k] - 5.5 * unit).abs() < 1e-9 * unit, "{hi:?}");
     }
-    assert!((lo.z + 4.5 * unit).abs() < 1e-9 * unit && (hi.z + 3.5 * unit).abs() < 1e-9 * unit);
+    // The floor is within the box's size of it: the box reaches down to it.
+    assert!((lo.z + 5.0 * unit).abs() < 1e-9 * unit && (hi.z + 3.5 * unit).abs() < 1e-9 * unit);
+}
+
+#[test]
+fn a_distant_plane_does_not_stretch_the_box() {
+    let walls = scene("wall type plane\n  origin 0 0 -100\nwall type disk\n  radius 1\n");
+    let (lo, hi) = scene_bounds(&walls, &[]);
+    assert!(
+        (lo.z + 0.01).abs() < 1e-12 && (hi.z - 0.01).abs() < 1e-12,
+        "{lo:?} {hi:?}"
+    );
 }
 
 #[test]

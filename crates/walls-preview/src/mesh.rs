@@ -8,8 +8,7 @@
 //! - a disk as a ring of `segments` quads between its hole and its rim (a fan without
 //!   a hole);
 //! - a finite cylinder as the open cone from radius R at −length/2 to R(1 − taper) at
-//!   +length/2; an infinite one as a tube twice the scene's size long, centred where the
-//!   scene's centre projects onto its axis;
+//!   +length/2; an infinite one as the tube cut to the scene's box along its axis;
 //! - a shell as a sphere without the cap within `open-angle` of its axis.
 //!
 //! Shapes of no area (zero radius, zero length, opening 180°) give empty meshes. Each

@@ -1,7 +1,7 @@
 //! The infinite cylinder: a tube of `radius` around the line through its origin along
 //! `orient` (a line when the radius is 0). Nearest point on its side; contact in the
-//! hard-sphere model from outside or inside; for previews a tube twice the scene's size
-//! long, centred where the scene's centre projects onto its axis. It has no box.
+//! hard-sphere model from outside or inside; for previews the tube cut to the scene's box
+//! along its axis. It has no box of its own.
 
 use super::{Earliest, Feature, Nearest, Ray, answer, any_perpendicular, around};
 use crate::impact::side_entry;
@@ -52,15 +52,25 @@ impl InfiniteCylinder {
         );
     }
 
-    /// A tube twice the scene's size long (nothing for radius 0).
+    /// The tube cut to the scene's box `bounds` along its axis: from the box's lowest
+    /// to its highest corner along the axis (nothing for radius 0).
     pub(crate) fn tessellate(&self, m: &mut Mesh, bounds: &(Vec3, Vec3), segments: usize) {
         let (o, axis, radius) = (&self.origin, &self.axis, self.radius);
         if radius > 0.0 {
-            let centre = (bounds.0 + bounds.1) / 2.0;
-            let size = (bounds.1 - bounds.0).max();
+            let (lo, hi) = bounds;
+            let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+            for k in 0..8 {
+                let corner = Vec3::new(
+                    if k & 1 == 0 { lo.x } else { hi.x },
+                    if k & 2 == 0 { lo.y } else { hi.y },
+                    if k & 4 == 0 { lo.z } else { hi.z },
+                );
+                let h = axis.dot(&(corner - o));
+                (low, high) = (low.min(h), high.max(h));
+            }
             let (u, v) = basis(axis);
-            let c = o + axis * axis.dot(&(centre - o));
-            tube(m, &c, axis, &u, &v, (radius, radius), 2.0 * size, segments);
+            let c = o + axis * ((low + high) / 2.0);
+            tube(m, &c, axis, &u, &v, (radius, radius), high - low, segments);
         }
     }
 }
