@@ -11,6 +11,9 @@
 //! - particles are spheres in their colour (0 not drawn);
 //! - a camera looking at the box around the walls and particles from a [`View`]'s
 //!   direction, a light over its shoulder, a dim one at the camera, and a background.
+//! - like ssdraw's "Renormalize?", every coordinate written as (p − centre)/size of
+//!   the scene's box, so that POV-Ray sees numbers near 1 at any scale (a 5 cm tube in
+//!   AU is 3.7e-13 long, below POV-Ray's tolerances); the scene's first comment says so.
 //!
 //! The styles are macros of an include file of our own, [`INCLUDE`] (`walls.inc`):
 //! `PlaneStyle(Colour, Transmit)`, … `ShellStyle`, all drawing `WallPlain` unless
@@ -94,9 +97,17 @@ pub fn write(
         .cloned()
         .collect();
     let (lo, hi) = scene_bounds(&walls, &drawn_particles);
+    // ssdraw's "Renormalize?": the scene is written in coordinates (p − centre)/size,
+    // so that POV-Ray sees numbers near 1 at any scale (a 5 cm tube in AU is 3.7e-13
+    // long, below POV-Ray's tolerances).
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
-    let (vlo, vhi) = (lo, hi);
+    let size = if size > 0.0 && size.is_finite() {
+        size
+    } else {
+        1.0
+    };
+    let unit = |p: &Vec3| (p - centre) / size;
 
     writeln!(
         out,
@@ -105,8 +116,16 @@ pub fn write(
     writeln!(out, "#version 3.7;")?;
     writeln!(out, "global_settings {{ assumed_gamma 1.0 }}")?;
     writeln!(out, "#include \"{INCLUDE_NAME}\"")?;
+    writeln!(
+        out,
+        "// Renormalised: coordinates are (x - <{}, {}, {}>) / {}.",
+        num(centre.x),
+        num(centre.y),
+        num(centre.z),
+        num(size)
+    )?;
     writeln!(out)?;
-    camera(out, (vlo + vhi) / 2.0, (vhi - vlo).norm() / 2.0, view)?;
+    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, view)?;
     writeln!(out)?;
     for (i, wall) in walls.iter().enumerate() {
         let color = wall.appearance.color;
@@ -118,7 +137,11 @@ pub fn write(
         let origin = wall.motion.position_or_origin(t);
         let transmit = wall.appearance.transparency.clamp(0.0, 1.0);
         writeln!(out, "// wall {i}: {kind}")?;
-        match primitive(&wall.shape.at(origin), &centre, size) {
+        match primitive(
+            &wall.shape.at(origin).renormalised(&centre, size),
+            &Vec3::zeros(),
+            1.0,
+        ) {
             Some((object, style)) => {
                 writeln!(out, "{object}\n  {style}({colour}, {})\n}}", num(transmit))?
             }
@@ -133,8 +156,8 @@ pub fn write(
             writeln!(
                 out,
                 "sphere {{ {}, {} ParticleStyle({colour}) }}",
-                vec(&p.pos),
-                num(p.radius)
+                vec(&unit(&p.pos)),
+                num(p.radius / size)
             )?;
         }
     }

@@ -249,3 +249,39 @@ fn colours_follow_ssdraw() {
         );
     }
 }
+
+#[test]
+fn the_picture_is_the_same_at_any_scale() {
+    // pkdgrav's files are in centimetres converted to AU: the same scene at 6.68445e-14
+    // and at 1e+3 length units renders as at 1 (the scene is renormalised), particles
+    // included.
+    let walls = |unit: f64| {
+        scene(&format!(
+            "lengthunit {unit}\n\
+             wall type plane\n  color 180\n\
+             wall type disk\n  origin 1 0 0.1\n  radius 0.6\n  color 2\n\
+             wall type disk\n  origin -1 0 0.1\n  radius 0.6\n  color 4\n"
+        ))
+    };
+    let green = |unit: f64| [particle(0.0, 0.0, 0.5 * unit, 0.3 * unit, 3)];
+    let is_green = |p: [u8; 3]| {
+        let [r, g, b] = p.map(u32::from);
+        g > 100 && g > 2 * r && g > 2 * b
+    };
+    let one = render(&walls(1.0), &green(1.0));
+    let (reds, blues, greens) = (one.find(red).0, one.find(blue).0, one.find(is_green).0);
+    assert!(
+        reds > 200 && blues > 200 && greens > 100,
+        "{reds} {blues} {greens}"
+    );
+    for unit in [6.68445e-14, 1e3] {
+        let scaled = render(&walls(unit), &green(unit));
+        let differ = (0..one.pixels.len())
+            .filter(|&i| !near(one.pixels[i], scaled.pixels[i]))
+            .count();
+        assert!(
+            differ < one.pixels.len() / 200,
+            "at {unit} length units {differ} pixels differ from the picture at 1"
+        );
+    }
+}
