@@ -75,14 +75,25 @@ fn the_page_is_self_contained_and_holds_each_drawn_wall_with_its_motion() {
     let times = d["times"].as_array().unwrap();
     assert_eq!(times.len(), 41);
     for w in walls {
-        assert_eq!(w["offsets"].as_array().unwrap().len(), 3 * 41);
+        assert_eq!(w["origins"].as_array().unwrap().len(), 3 * 41);
+        assert!(w["turns"].is_null(), "nothing turns");
     }
+    // Positions are about the scene's centre in units of its size (the floor is 6
+    // across, the disk oscillates by 1 inside it).
+    let size = d["size"].as_f64().unwrap();
+    let centre: Vec<f64> = (0..3).map(|i| d["centre"][i].as_f64().unwrap()).collect();
+    assert!((size - 6.0).abs() < 1e-9, "size {size}");
     // Frame 10 is t = 0.25: the disk is 1 along x, the floor where it was.
-    let offset = |w: usize, k: usize, i: usize| walls[w]["offsets"][3 * k + i].as_f64().unwrap();
+    let origin = |w: usize, k: usize, i: usize| {
+        walls[w]["origins"][3 * k + i].as_f64().unwrap() * size + centre[i]
+    };
     assert_eq!(times[10].as_f64().unwrap(), 0.25);
-    assert!((offset(0, 10, 0) - 1.0).abs() < 1e-6);
-    assert!(offset(0, 10, 1).abs() < 1e-6 && offset(0, 10, 2).abs() < 1e-6);
-    assert!((0..41).all(|k| (0..3).all(|i| offset(1, k, i) == 0.0)));
+    assert!((origin(0, 0, 0)).abs() < 1e-4);
+    assert!((origin(0, 10, 0) - 1.0).abs() < 1e-4);
+    assert!(origin(0, 10, 1).abs() < 1e-4 && origin(0, 10, 2).abs() < 1e-4);
+    assert!(
+        (0..41).all(|k| (0..3).all(|i| (origin(1, k, i) - [-3.0, -3.0, -1.0][i]).abs() < 1e-4))
+    );
     // The hover's tokens: the origin, then what the wall sets.
     let tokens: Vec<String> = walls[0]["tokens"]
         .as_array()
@@ -94,7 +105,13 @@ fn the_page_is_self_contained_and_holds_each_drawn_wall_with_its_motion() {
     assert!(tokens.contains(&"radius 1".to_string()), "{tokens:?}");
     assert!(tokens.contains(&"osc-vec 1 0 0".to_string()), "{tokens:?}");
     assert_eq!(d["particles"]["colors"][0], "#00ff00");
-    assert_eq!(d["particles"]["positions"][1][0], 2.0);
+    // The particle at t = 0.25, a quarter of the way from x = −2 to 2.
+    let x = d["particles"]["positions"][10][0].as_f64().unwrap() * size + centre[0];
+    assert!((x + 1.0).abs() < 1e-4, "x = {x}");
+    assert_eq!(
+        d["particles"]["radii"][0].as_f64().unwrap() as f32,
+        (0.3 / size) as f32
+    );
 }
 
 /// Debian's chromium, or the test fails saying how to install it.
@@ -286,5 +303,5 @@ fn chromium_shows_a_walls_parameters_on_hover_and_takes_the_time_from_the_url() 
 
     let dom = run_chromium(dir.path(), &file, "t=0.25", &["--dump-dom"]);
     assert!(dom.contains("data-time=\"0.25\""), "{dom:.2000}");
-    assert!(dom.contains("t = 0.2500 / 1.000"));
+    assert!(dom.contains("t = 0.25</span>"), "{dom:.3000}");
 }
