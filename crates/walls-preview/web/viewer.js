@@ -169,6 +169,9 @@ function main() {
   const colors = [];
   if (particleCount) {
     frames = p.positions.map((a) => Float32Array.from(a, (x) => (x === null ? NaN : x)));
+    // The parsed arrays (a number each, boxed where a frame lacks a particle) are no
+    // longer needed: the floats hold the frames in a quarter of the memory or less.
+    p.positions = null;
     spheres = new THREE.InstancedMesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshLambertMaterial(), particleCount);
     const white = new THREE.Color(0xdddddd);
     for (let i = 0; i < particleCount; i++) {
