@@ -1,29 +1,39 @@
-//! An interactive, self-contained HTML page of a scene (SPEC §2 `walls-sim preview`):
-//! three.js draws the walls in ssdraw's colours (colour 0 not drawn) and the particles as
-//! spheres; a slider and a play button move them through time, the mouse orbits the
-//! camera, and hovering a wall shows its type, index and tokens.
+//! An interactive, self-contained HTML page of a scene or a movie (SPEC §2 `walls-sim
+//! preview`): three.js draws the walls in ssdraw's colours (colour 0 not drawn) and the
+//! particles as spheres in their pkdgrav colours; a slider steps through the frames, a
+//! play button runs through them, the mouse orbits the camera, and hovering a wall shows
+//! its type, index and tokens.
 //!
 //! The page needs no network: the viewer, three.js and its OrbitControls come bundled in
 //! one script (`assets/viewer.bundle.js`, built by `web/bundle.sh` from the npm packages
-//! locked in `web/package-lock.json` and committed) and the scene is JSON in the page.
-//! Walls move rigidly (SPEC §1 "Motion"; spin never moves the drawn shape), so each wall
-//! is one mesh at t = 0 and its origin's offset at `frames` times over [0, t_end],
-//! interpolated linearly in between. Geometry and motion come from the typed walls
-//! (walls-geometry); the hover lists the tokens as the file set them, so it alone reads
-//! the resolved wall's settings.
+//! locked in `web/package-lock.json` and committed) and the movie is JSON in the page.
+//!
+//! [`write_movie`] writes frames ([`MovieFrame`]); [`write`] builds frames of a scene
+//! (walls where their motion puts them at evenly spaced times, particles from
+//! [`Particles`]) and writes them the same way. Every position is written relative to
+//! the centre of the box around the whole movie and in units of its size, so that the
+//! viewer works with numbers near 1 whatever the file's length unit (a scene in
+//! centimetres converted to AU is 1e-13 across; `f32` would lose a 1e-13 offset added
+//! to a 1e-13 centre). Walls are drawn from the first frame's meshes and moved in each
+//! frame rigidly: turned by `turn_k · turn_0ᵀ` about their first origin and moved to
+//! their origin then. Between frames the page interpolates positions linearly and takes
+//! each wall's turn from the nearest frame. Particles are matched across frames by
+//! [`Particle::index`]; one missing from a frame is not drawn in it.
 //!
 //! The URL's fragment sets the initial time (`page.html#t=0.25`) and can hover a point
 //! (`#hover=0.5,0.5`, as fractions of the canvas's width and height);
-//! `window.wallsPreview` offers `setTime(t)`, `time()`, `play()`, `pause()` and
-//! `hoverAt(x, y)` (client pixels) once `ready`, and `document.body.dataset` has `ready`
-//! and `time`, for tests and scripts.
+//! `window.wallsPreview` offers `setTime(t)`, `time()`, `setFrame(k)`, `frame()`,
+//! `frames`, `play()`, `pause()` and `hoverAt(x, y)` (client pixels) once `ready`, and
+//! `document.body.dataset` has `ready`, `time` and `frame`, for tests and scripts.
 
-use crate::mesh::wall_meshes;
-use crate::palette;
-use nalgebra::Vector3;
+use crate::mesh::wall_meshes_in;
+use crate::{MovieFrame, WallMesh, palette};
+use nalgebra::{Rotation3, UnitQuaternion, Vector3};
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io;
-use walls_geometry::{decode, scene_bounds};
+use walls_geometry::units::{Readout, System};
+use walls_geometry::{Particle, decode, scene_bounds_at};
 use walls_keywords::Keyword;
 use walls_model::{Scene, Value, Wall};
 
@@ -46,13 +56,27 @@ pub struct Particles {
     /// The time of each frame, increasing.
     pub times: Vec<f64>,
     /// Each frame's positions: `frames[k][i]` is particle i at `times[k]` (between frames
-    /// the page interpolates linearly).
+    /// the page interpolates linearly; a particle a frame lacks is not drawn in it).
     pub frames: Vec<Vec<Vec3>>,
 }
 
+/// How a movie is shown.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MovieOptions {
+    /// How times and lengths are labelled (the time label reads `t = ` and
+    /// [`Readout::time`]).
+    pub readout: Readout,
+    /// Draw the path of each particle over its last this many frames as a line.
+    pub trails: Option<usize>,
+    /// The page's title.
+    pub title: String,
+}
+
 /// Writes the page: the walls of `scene` (and `particles`, if given) over times 0 to
-/// `t_end`, with each wall's position computed at `frames` evenly spaced times (at least
-/// one; one frame, or `t_end` ≤ 0, shows t = 0 only).
+/// `t_end`, as a movie of `frames` evenly spaced frames (at least two; one frame, or
+/// `t_end` ≤ 0, shows t = 0 only), each wall where its motion puts it and each particle
+/// interpolated linearly between the times of `particles`. Times are labelled in the
+/// file's units beside pkdgrav's ([`System::Auto`]).
 pub fn write(
     out: &mut impl io::Write,
     scene: &Scene,
@@ -60,16 +84,122 @@ pub fn write(
     t_end: f64,
     frames: usize,
 ) -> io::Result<()> {
-    let json = data(scene, particles, t_end, frames);
+    let t_end = if t_end.is_finite() && t_end > 0.0 {
+        t_end
+    } else {
+        0.0
+    };
+    let n = if t_end > 0.0 { frames.max(2) } else { 1 };
+    let times: Vec<f64> = (0..n)
+        .map(|k| {
+            if n > 1 {
+                t_end * k as f64 / (n - 1) as f64
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    let at: Vec<Vec<Particle>> = times
+        .iter()
+        .map(|&t| particles.map_or_else(Vec::new, |p| particles_at(p, t)))
+        .collect();
+    let all: Vec<Particle> = at.iter().flatten().cloned().collect();
+    let scene_box = scene_bounds_at(&decode(scene), &all, &times);
+    let movie: Vec<MovieFrame> = times
+        .iter()
+        .zip(at)
+        .map(|(&t, particles)| MovieFrame {
+            t,
+            step: None,
+            walls: wall_meshes_in(scene, t, SEGMENTS, &scene_box),
+            particles,
+        })
+        .collect();
+    let options = MovieOptions {
+        readout: Readout::new(System::Auto, &scene.units),
+        trails: None,
+        title: "walls preview".to_string(),
+    };
+    write_movie(out, scene, &movie, &options)
+}
+
+/// The particles of `p` at time `t`: each interpolated linearly between the frames
+/// around `t` (the first or last frame outside them); one that either frame lacks is
+/// taken from the nearer frame, and left out if that frame lacks it too.
+fn particles_at(p: &Particles, t: f64) -> Vec<Particle> {
+    let n = p.frames.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let time = |k: usize| p.times.get(k).copied().unwrap_or(0.0);
+    // The frames k and k + 1 around t, and the fraction f of the way from one to the next.
+    let k = (0..n.saturating_sub(1))
+        .rfind(|&k| time(k) <= t)
+        .unwrap_or(0);
+    let next = (k + 1).min(n - 1);
+    let span = time(next) - time(k);
+    let f = if span > 0.0 {
+        ((t - time(k)) / span).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let count = p.frames.iter().map(Vec::len).max().unwrap_or(0);
+    (0..count)
+        .filter_map(|i| {
+            let pos = match (p.frames[k].get(i), p.frames[next].get(i)) {
+                (Some(a), Some(b)) => a + (b - a) * f,
+                (Some(a), None) if f < 0.5 => *a,
+                (None, Some(b)) if f >= 0.5 => *b,
+                _ => return None,
+            };
+            let radius = p.radii.get(i).copied().unwrap_or(0.0);
+            let mut particle = Particle::at_rest(radius, pos, i);
+            particle.color = p
+                .colors
+                .get(i)
+                .and_then(|&c| i32::try_from(c).ok())
+                .unwrap_or(0);
+            Some(particle)
+        })
+        .collect()
+}
+
+/// Writes the page of a movie: `frames` (in increasing time) of `scene`'s walls and the
+/// particles, shown as `options` says. No frames give a page of an empty scene.
+pub fn write_movie(
+    out: &mut impl io::Write,
+    scene: &Scene,
+    frames: &[MovieFrame],
+    options: &MovieOptions,
+) -> io::Result<()> {
+    let json = data(scene, frames, options);
     let bundle = script_safe(BUNDLE);
+    let mut title = String::new();
+    html_text(&mut title, &options.title);
     write!(
         out,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>walls preview</title>\n<style>{STYLE}</style>\n</head>\n<body>\n\
-         <script id=\"walls-data\" type=\"application/json\">{json}</script>\n\
-         <script>{bundle}</script>\n</body>\n</html>\n"
+         <title>{title}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n\
+         <script id=\"walls-data\" type=\"application/json\">"
+    )?;
+    out.write_all(json.as_bytes())?;
+    write!(
+        out,
+        "</script>\n<script>{bundle}</script>\n</body>\n</html>\n"
     )
+}
+
+/// `text` as HTML text: `&`, `<` and `>` escaped.
+fn html_text(s: &mut String, text: &str) {
+    for c in text.chars() {
+        match c {
+            '&' => s.push_str("&amp;"),
+            '<' => s.push_str("&lt;"),
+            '>' => s.push_str("&gt;"),
+            c => s.push(c),
+        }
+    }
 }
 
 const STYLE: &str = "html,body{margin:0;height:100%;overflow:hidden;background:#20232a;\
@@ -162,47 +292,149 @@ fn tokens(wall: &Wall) -> Vec<(&'static str, String)> {
     shown
 }
 
-/// The page's data (the format is described at the top of `web/viewer.js`).
-fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize) -> String {
-    let t_end = if t_end.is_finite() && t_end > 0.0 {
-        t_end
+/// A JSON number of full precision (`f64`'s shortest round-trip), 0 for values that are
+/// not finite.
+fn num64(s: &mut String, x: f64) {
+    if x.is_finite() {
+        let _ = write!(s, "{x:e}");
     } else {
-        0.0
-    };
-    let frames = if t_end > 0.0 { frames.max(2) } else { 1 };
-    let times: Vec<f64> = (0..frames)
-        .map(|k| {
-            if frames > 1 {
-                t_end * k as f64 / (frames - 1) as f64
-            } else {
-                0.0
+        s.push('0');
+    }
+}
+
+/// A coordinate in units of the scene's size, to five decimals (a hundred-thousandth of
+/// the scene, far below a pixel): `-0.12345`, `0.5`, `0`.
+fn coord(s: &mut String, x: f64) {
+    let q = (x * 1e5).round();
+    if !q.is_finite() || q == 0.0 || q.abs() > 1e15 {
+        s.push('0');
+        return;
+    }
+    let q = q as i64;
+    if q < 0 {
+        s.push('-');
+    }
+    let (whole, frac) = (q.unsigned_abs() / 100_000, q.unsigned_abs() % 100_000);
+    let _ = write!(s, "{whole}");
+    if frac > 0 {
+        let digits = format!("{frac:05}");
+        s.push('.');
+        s.push_str(digits.trim_end_matches('0'));
+    }
+}
+
+/// The points `xs` in units of the scene's size about its centre, to five decimals.
+fn coords(s: &mut String, xs: impl IntoIterator<Item = Vec3>, centre: &Vec3, size: f64) {
+    s.push('[');
+    for (i, x) in xs.into_iter().enumerate() {
+        for (j, c) in ((x - centre) / size).iter().enumerate() {
+            if i > 0 || j > 0 {
+                s.push(',');
             }
-        })
-        .collect();
-    let decoded = decode(scene);
-    let (mut lo, mut hi) = scene_bounds(&decoded, &[]);
-    if let Some(p) = particles {
-        for frame in &p.frames {
-            for (i, q) in frame.iter().enumerate() {
-                let r = Vec3::repeat(p.radii.get(i).copied().unwrap_or(0.0).abs());
-                (lo, hi) = (lo.inf(&(q - r)), hi.sup(&(q + r)));
-            }
+            coord(s, *c);
         }
     }
+    s.push(']');
+}
+/// The box around the movie: every drawn wall's mesh in every frame and every particle.
+/// Its centre and size (the longest side), a size of 1 for a box of none (a point or
+/// nothing).
+fn frame_box(frames: &[MovieFrame]) -> (Vec3, f64) {
+    let mut lo = Vec3::repeat(f64::INFINITY);
+    let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+    let mut add = |a: Vec3, b: Vec3| {
+        if a.iter().chain(b.iter()).all(|x| x.is_finite()) {
+            lo = lo.inf(&a);
+            hi = hi.sup(&b);
+        }
+    };
+    for frame in frames {
+        for wm in frame.walls.iter().filter(|wm| wm.rgb.is_some()) {
+            for q in &wm.mesh.positions {
+                add(*q, *q);
+            }
+        }
+        for p in &frame.particles {
+            let r = Vec3::repeat(p.radius.abs());
+            add(p.pos - r, p.pos + r);
+        }
+    }
+    if !lo.iter().all(|x| x.is_finite()) {
+        return (Vec3::zeros(), 1.0);
+    }
     let centre = (lo + hi) / 2.0;
+    let size = (hi - lo).max();
+    if size > 0.0 && size.is_finite() {
+        (centre, size)
+    } else if centre.norm() > 0.0 {
+        (centre, centre.norm())
+    } else {
+        (centre, 1.0)
+    }
+}
 
+/// One unit of a readout for the page: `[name, per pkdgrav unit]`.
+fn unit(s: &mut String, name: &str, per: f64) {
+    s.push('[');
+    string(s, name);
+    s.push(',');
+    num64(s, per);
+    s.push(']');
+}
+
+/// The page's data (the format is described at the top of `web/viewer.js`).
+fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String {
+    let (centre, size) = frame_box(frames);
+    let readout = &options.readout;
     let mut s = String::new();
-    s.push_str("{\"tEnd\":");
-    num(&mut s, t_end);
-    s.push_str(",\"times\":");
-    nums(&mut s, times.iter().copied());
-    s.push_str(",\"centre\":");
-    nums(&mut s, centre.iter().copied());
-    s.push_str(",\"size\":");
-    num(&mut s, (hi - lo).max());
+    s.push_str("{\"times\":[");
+    for (k, frame) in frames.iter().enumerate() {
+        if k > 0 {
+            s.push(',');
+        }
+        num64(&mut s, frame.t);
+    }
+    s.push_str("],\"steps\":[");
+    for (k, frame) in frames.iter().enumerate() {
+        if k > 0 {
+            s.push(',');
+        }
+        match frame.step {
+            Some(step) => {
+                let _ = write!(s, "{step}");
+            }
+            None => s.push_str("null"),
+        }
+    }
+    s.push_str("],\"readout\":{\"time\":");
+    unit(
+        &mut s,
+        readout.scale.time.name,
+        readout.scale.time.per_pkdgrav,
+    );
+    s.push_str(",\"length\":");
+    unit(
+        &mut s,
+        readout.scale.length.name,
+        readout.scale.length.per_pkdgrav,
+    );
+    let _ = write!(s, ",\"withPkdgrav\":{}}}", readout.with_pkdgrav);
+    s.push_str(",\"centre\":[");
+    for (i, c) in centre.iter().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        num64(&mut s, *c);
+    }
+    s.push_str("],\"size\":");
+    num64(&mut s, size);
+    s.push_str(",\"sizeLabel\":");
+    string(&mut s, &readout.length(size));
+    let _ = write!(s, ",\"trails\":{}", options.trails.unwrap_or(0));
     s.push_str(",\"walls\":[");
+    let first_walls = frames.first().map_or(&[][..], |f| &f.walls[..]);
     let mut first = true;
-    for wm in wall_meshes(scene, 0.0, SEGMENTS) {
+    for wm in first_walls {
         let Some(color) = palette::hex(wm.color) else {
             continue;
         };
@@ -210,86 +442,144 @@ fn data(scene: &Scene, particles: Option<&Particles>, t_end: f64, frames: usize)
             s.push(',');
         }
         first = false;
-        let wall = &scene.walls[wm.wall];
-        let motion = &decoded[wm.wall].motion;
-        let _ = write!(s, "{{\"index\":{},\"type\":", wm.wall);
-        string(&mut s, wm.wall_type.name());
-        s.push_str(",\"color\":");
-        string(&mut s, &color);
-        s.push_str(",\"opacity\":");
-        num(&mut s, wm.opacity);
-        s.push_str(",\"positions\":");
-        nums(
-            &mut s,
-            wm.mesh.positions.iter().flat_map(|p| p.iter().copied()),
-        );
-        s.push_str(",\"indices\":");
-        nums(
-            &mut s,
-            wm.mesh.triangles.iter().flatten().map(|&i| f64::from(i)),
-        );
-        s.push_str(",\"offsets\":");
-        nums(
-            &mut s,
-            times.iter().flat_map(|&t| {
-                let o = motion.position(t).unwrap_or(wm.origin);
-                (o - wm.origin).iter().copied().collect::<Vec<_>>()
-            }),
-        );
-        s.push_str(",\"tokens\":[");
-        for (i, (k, v)) in tokens(wall).into_iter().enumerate() {
+        wall(&mut s, scene, frames, wm, &color, (&centre, size));
+    }
+    s.push_str("],\"particles\":");
+    particles(&mut s, frames, &centre, size);
+    s.push('}');
+    s
+}
+
+/// One wall of the first frame, `wm`: its mesh about its origin, and where each frame
+/// has its origin and how it turns it (about the origin, from the first frame).
+fn wall(
+    s: &mut String,
+    scene: &Scene,
+    frames: &[MovieFrame],
+    wm: &WallMesh,
+    color: &str,
+    (centre, size): (&Vec3, f64),
+) {
+    let _ = write!(s, "{{\"index\":{},\"type\":", wm.wall);
+    string(s, wm.wall_type.name());
+    s.push_str(",\"color\":");
+    string(s, color);
+    s.push_str(",\"opacity\":");
+    num(s, wm.opacity);
+    s.push_str(",\"positions\":");
+    nums(
+        s,
+        wm.mesh
+            .positions
+            .iter()
+            .flat_map(|p| <[f64; 3]>::from((p - wm.origin) / size)),
+    );
+    s.push_str(",\"indices\":");
+    nums(s, wm.mesh.triangles.iter().flatten().map(|&i| f64::from(i)));
+    // Each frame's placement (a frame without the wall keeps the one before).
+    let mut placed = (wm.origin, wm.turn);
+    let placements: Vec<(Vec3, Rotation3<f64>)> = frames
+        .iter()
+        .map(|f| {
+            if let Some(m) = f.walls.iter().find(|m| m.wall == wm.wall) {
+                placed = (m.origin, m.turn);
+            }
+            placed
+        })
+        .collect();
+    s.push_str(",\"origins\":");
+    coords(s, placements.iter().map(|(o, _)| *o), centre, size);
+    s.push_str(",\"turns\":");
+    let turns: Vec<UnitQuaternion<f64>> = placements
+        .iter()
+        .map(|(_, turn)| UnitQuaternion::from_rotation_matrix(&(turn * wm.turn.inverse())))
+        .collect();
+    if turns.iter().all(|q| q.angle() < 1e-9) {
+        s.push_str("null");
+    } else {
+        nums(s, turns.iter().flat_map(|q| [q.i, q.j, q.k, q.w]));
+    }
+    s.push_str(",\"tokens\":[");
+    if let Some(w) = scene.walls.get(wm.wall) {
+        for (i, (k, v)) in tokens(w).into_iter().enumerate() {
             if i > 0 {
                 s.push(',');
             }
             s.push('[');
-            string(&mut s, k);
+            string(s, k);
             s.push(',');
-            string(&mut s, &v);
+            string(s, &v);
             s.push(']');
         }
-        s.push_str("]}");
     }
-    s.push_str("],\"particles\":");
-    match particles {
-        Some(p) if !p.radii.is_empty() && !p.frames.is_empty() => {
-            let n = p.radii.len();
-            s.push_str("{\"radii\":");
-            nums(&mut s, p.radii.iter().copied());
-            s.push_str(",\"colors\":[");
-            for i in 0..n {
-                if i > 0 {
-                    s.push(',');
-                }
-                match p.colors.get(i).and_then(|&c| palette::hex(c)) {
-                    Some(hex) => string(&mut s, &hex),
-                    None => s.push_str("null"),
-                }
-            }
-            s.push_str("],\"times\":");
-            nums(
-                &mut s,
-                (0..p.frames.len()).map(|k| p.times.get(k).copied().unwrap_or(0.0)),
-            );
-            s.push_str(",\"positions\":[");
-            for (k, frame) in p.frames.iter().enumerate() {
-                if k > 0 {
-                    s.push(',');
-                }
-                // Every frame has n positions: a missing particle stays at the origin.
-                nums(
-                    &mut s,
-                    (0..n).flat_map(|i| {
-                        let q = frame.get(i).copied().unwrap_or_else(Vec3::zeros);
-                        [q.x, q.y, q.z]
-                    }),
-                );
-            }
-            s.push_str("]}");
+    s.push_str("]}");
+}
+
+/// The particles of every frame, matched by their index: each one's index, radius (in
+/// units of the scene's size) and colour, and in each frame its position (`null`s for
+/// one the frame lacks); `null` for a movie without particles.
+fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
+    // Every particle's slot, by index, with its radius and colour where first seen.
+    let mut seen: BTreeMap<i32, (f64, i32)> = BTreeMap::new();
+    for p in frames.iter().flat_map(|f| &f.particles) {
+        seen.entry(p.index).or_insert((p.radius, p.color));
+    }
+    if seen.is_empty() {
+        s.push_str("null");
+        return;
+    }
+    let slot: BTreeMap<i32, usize> = seen.keys().enumerate().map(|(i, &k)| (k, i)).collect();
+    s.push_str("{\"ids\":[");
+    for (i, index) in seen.keys().enumerate() {
+        if i > 0 {
+            s.push(',');
         }
-        _ => s.push_str("null"),
+        let _ = write!(s, "{index}");
     }
-    s.push('}');
-    s
+    s.push_str("],\"radii\":");
+    nums(s, seen.values().map(|(r, _)| r.abs() / size));
+    s.push_str(",\"colors\":[");
+    for (i, (_, color)) in seen.values().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        match palette::hex(i64::from(*color)) {
+            Some(hex) => string(s, &hex),
+            None => s.push_str("null"),
+        }
+    }
+    s.push_str("],\"positions\":[");
+    let mut at: Vec<Option<Vec3>> = vec![None; seen.len()];
+    for (k, frame) in frames.iter().enumerate() {
+        if k > 0 {
+            s.push(',');
+        }
+        at.iter_mut().for_each(|q| *q = None);
+        for p in &frame.particles {
+            if let Some(&i) = slot.get(&p.index) {
+                at[i] = Some(p.pos);
+            }
+        }
+        s.push('[');
+        for (i, q) in at.iter().enumerate() {
+            if i > 0 {
+                s.push(',');
+            }
+            match q {
+                Some(q) => {
+                    for (j, c) in ((q - centre) / size).iter().enumerate() {
+                        if j > 0 {
+                            s.push(',');
+                        }
+                        coord(s, *c);
+                    }
+                }
+                None => s.push_str("null,null,null"),
+            }
+        }
+        s.push(']');
+    }
+    s.push_str("]}");
 }
 
 #[cfg(test)]

@@ -2,12 +2,20 @@
 //! installed by `scripts/install-test-tools`) with WebGL on SwiftShader: the walls and
 //! particles are drawn in their colours, a wall of colour 0 is not, the time in the URL's
 //! fragment moves the oscillating wall and the particle, and hovering a wall shows its
-//! parameters. The page's data and its self-containedness are checked without a browser.
+//! parameters; the same scene draws the same at lengthunit 6.68445e-14, 1 and 1e3; and a
+//! movie in centimetres steps through its frames (a particle moves, another is gone in
+//! the last frame, a reactive wall turns) with the time in seconds. The page's data and
+//! its self-containedness are checked without a browser.
 
+use nalgebra::{Rotation3, Vector3};
+use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use walls_geometry::Particle;
+use walls_geometry::units::{Readout, System};
 use walls_model::Scene;
-use walls_preview::html::{self, Particles};
+use walls_preview::html::{self, MovieOptions, Particles};
+use walls_preview::{MovieFrame, wall_meshes_in};
 
 /// A red disk oscillating along x (amplitude 1, period 1: at t = 0.25 it is 1 to the
 /// right), a blue floor that stays, and a grey plane of colour 0 above both that would
@@ -75,14 +83,25 @@ fn the_page_is_self_contained_and_holds_each_drawn_wall_with_its_motion() {
     let times = d["times"].as_array().unwrap();
     assert_eq!(times.len(), 41);
     for w in walls {
-        assert_eq!(w["offsets"].as_array().unwrap().len(), 3 * 41);
+        assert_eq!(w["origins"].as_array().unwrap().len(), 3 * 41);
+        assert!(w["turns"].is_null(), "nothing turns");
     }
+    // Positions are about the scene's centre in units of its size (the floor is 6
+    // across, the disk oscillates by 1 inside it).
+    let size = d["size"].as_f64().unwrap();
+    let centre: Vec<f64> = (0..3).map(|i| d["centre"][i].as_f64().unwrap()).collect();
+    assert!((size - 6.0).abs() < 1e-9, "size {size}");
     // Frame 10 is t = 0.25: the disk is 1 along x, the floor where it was.
-    let offset = |w: usize, k: usize, i: usize| walls[w]["offsets"][3 * k + i].as_f64().unwrap();
+    let origin = |w: usize, k: usize, i: usize| {
+        walls[w]["origins"][3 * k + i].as_f64().unwrap() * size + centre[i]
+    };
     assert_eq!(times[10].as_f64().unwrap(), 0.25);
-    assert!((offset(0, 10, 0) - 1.0).abs() < 1e-6);
-    assert!(offset(0, 10, 1).abs() < 1e-6 && offset(0, 10, 2).abs() < 1e-6);
-    assert!((0..41).all(|k| (0..3).all(|i| offset(1, k, i) == 0.0)));
+    assert!((origin(0, 0, 0)).abs() < 1e-4);
+    assert!((origin(0, 10, 0) - 1.0).abs() < 1e-4);
+    assert!(origin(0, 10, 1).abs() < 1e-4 && origin(0, 10, 2).abs() < 1e-4);
+    assert!(
+        (0..41).all(|k| (0..3).all(|i| (origin(1, k, i) - [-3.0, -3.0, -1.0][i]).abs() < 1e-4))
+    );
     // The hover's tokens: the origin, then what the wall sets.
     let tokens: Vec<String> = walls[0]["tokens"]
         .as_array()
@@ -94,7 +113,13 @@ fn the_page_is_self_contained_and_holds_each_drawn_wall_with_its_motion() {
     assert!(tokens.contains(&"radius 1".to_string()), "{tokens:?}");
     assert!(tokens.contains(&"osc-vec 1 0 0".to_string()), "{tokens:?}");
     assert_eq!(d["particles"]["colors"][0], "#00ff00");
-    assert_eq!(d["particles"]["positions"][1][0], 2.0);
+    // The particle at t = 0.25, a quarter of the way from x = −2 to 2.
+    let x = d["particles"]["positions"][10][0].as_f64().unwrap() * size + centre[0];
+    assert!((x + 1.0).abs() < 1e-4, "x = {x}");
+    assert_eq!(
+        d["particles"]["radii"][0].as_f64().unwrap() as f32,
+        (0.3 / size) as f32
+    );
 }
 
 /// Debian's chromium, or the test fails saying how to install it.
@@ -286,5 +311,253 @@ fn chromium_shows_a_walls_parameters_on_hover_and_takes_the_time_from_the_url() 
 
     let dom = run_chromium(dir.path(), &file, "t=0.25", &["--dump-dom"]);
     assert!(dom.contains("data-time=\"0.25\""), "{dom:.2000}");
-    assert!(dom.contains("t = 0.2500 / 1.000"));
+    assert!(dom.contains("t = 0.25</span>"), "{dom:.3000}");
+}
+
+fn magenta([r, g, b]: [u8; 3]) -> bool {
+    r > 150 && b > 150 && g < 80
+}
+
+/// The scene of [`SCENE`] written in a length unit `unit` (pkdgrav lengths per file
+/// length), with the particle of [`particles`] in the same unit.
+fn page_in(unit: f64) -> String {
+    let scene = walls_test_support::model_scene(&format!("lengthunit {unit:e}\n{SCENE}"));
+    let mut p = particles();
+    p.radii = p.radii.iter().map(|r| r * unit).collect();
+    for frame in &mut p.frames {
+        for q in frame.iter_mut() {
+            *q *= unit;
+        }
+    }
+    let mut out = Vec::new();
+    html::write(&mut out, &scene, Some(&p), 1.0, 5).unwrap();
+    String::from_utf8(out).unwrap()
+}
+
+#[test]
+fn chromium_draws_the_same_scene_at_any_length_unit() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut seen = Vec::new();
+    for (i, unit) in [6.68445e-14, 1.0, 1e3].into_iter().enumerate() {
+        let page = page_in(unit);
+        let d = data(&page);
+        let size = d["size"].as_f64().unwrap();
+        assert!(
+            (size / unit - 6.0).abs() < 1e-9,
+            "size {size} at unit {unit}"
+        );
+        let file = dir.path().join(format!("scene{i}.html"));
+        std::fs::write(&file, page).unwrap();
+        let shot = screenshot(dir.path(), &file, "t=0", &format!("unit{i}.png"));
+        let (drawn, _, _) = shot.region(|p| p != BACKGROUND);
+        let (reds, red_x, red_y) = shot.region(red);
+        let (blues, _, _) = shot.region(blue);
+        let (greens, green_x, green_y) = shot.region(green);
+        eprintln!(
+            "unit {unit:e}: drawn {drawn}, red {reds} at ({red_x:.0}, {red_y:.0}), \
+             blue {blues}, green {greens} at ({green_x:.0}, {green_y:.0})"
+        );
+        assert!(
+            drawn > 800 * 500 / 10,
+            "{drawn} pixels drawn at unit {unit}"
+        );
+        assert!(reds > 3000 && blues > 20000, "walls at unit {unit}");
+        assert!(greens > 300, "{greens} green pixels at unit {unit}");
+        seen.push((reds, red_x, red_y, greens, green_x, green_y));
+    }
+    // The same picture at every scale: the disk and the particle where they are at
+    // lengthunit 1, as large.
+    let (reds, red_x, red_y, greens, green_x, green_y) = seen[1];
+    for &(r, rx, ry, g, gx, gy) in &seen {
+        assert!((rx - red_x).abs() < 3.0 && (ry - red_y).abs() < 3.0);
+        assert!((gx - green_x).abs() < 3.0 && (gy - green_y).abs() < 3.0);
+        assert!((r as f64 / reds as f64 - 1.0).abs() < 0.05);
+        assert!((g as f64 / greens as f64 - 1.0).abs() < 0.05);
+    }
+}
+
+/// A three-frame movie of a file in centimetres (pkdgrav's cgs units): a blue floor 6 cm
+/// across; a red reactive bar, 4 cm by 0.5 cm along x, turned 90° about z in frame 2
+/// and 180° in frame 3 by the run; a green particle moving from x = −2 cm to 2 cm; a
+/// magenta particle at rest that frame 3 lacks (a death wall took it).
+const CGS: &str = "\
+lengthunit 6.68445e-14
+massunit 5.02739933e-34
+timeunit 1.99102e-7
+wall type rectangle
+  origin -3 -3 -1
+  vertex1 6 0 0
+  vertex2 0 6 0
+  color 4
+wall type rectangle
+  origin -2 -0.25 0
+  vertex1 4 0 0
+  vertex2 0 0.5 0
+  mass 1
+  color 2
+";
+
+const CM: f64 = 6.68445e-14;
+
+fn movie() -> (Scene, Vec<MovieFrame>, MovieOptions) {
+    use walls_preview::mesh::{Placement, place};
+    let scene = walls_test_support::model_scene(CGS);
+    let box_ = (
+        Vector3::new(-3.0, -3.0, -1.0) * CM,
+        Vector3::new(3.0, 3.0, 1.0) * CM,
+    );
+    let particle = |index: usize, color: i32, x: f64, y: f64| {
+        let mut p = Particle::at_rest(0.3 * CM, Vector3::new(x, y, 0.0) * CM, index);
+        p.color = color;
+        p
+    };
+    let frames = (0..3)
+        .map(|k| {
+            let mut walls = wall_meshes_in(&scene, 0.0, 64, &box_);
+            // The bar turned k quarter turns about z, about its centre (0, 0, 0).
+            let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), FRAC_PI_2 * k as f64);
+            let corner = Vector3::new(-2.0, -0.25, 0.0) * CM;
+            place(
+                &mut walls,
+                &scene,
+                &[Placement::Polygon {
+                    wall: 1,
+                    origin: turn * corner,
+                    vertex1: turn * Vector3::new(4.0, 0.0, 0.0) * CM,
+                    vertex2: turn * Vector3::new(0.0, 0.5, 0.0) * CM,
+                }],
+            );
+            let mut particles = vec![particle(7, 3, -2.0 + 2.0 * k as f64, 1.5)];
+            if k < 2 {
+                particles.push(particle(9, 6, 0.0, -1.5));
+            }
+            MovieFrame {
+                t: 1e-7 * k as f64,
+                step: Some(100 * k as u64),
+                walls,
+                particles,
+            }
+        })
+        .collect();
+    let options = MovieOptions {
+        readout: Readout::new(System::Auto, &scene.units),
+        trails: Some(2),
+        title: "a <movie>".to_string(),
+    };
+    (scene, frames, options)
+}
+
+fn movie_page() -> String {
+    let (scene, frames, options) = movie();
+    let mut out = Vec::new();
+    html::write_movie(&mut out, &scene, &frames, &options).unwrap();
+    String::from_utf8(out).unwrap()
+}
+
+#[test]
+fn a_movies_data_holds_each_frame_the_walls_turns_and_who_is_there() {
+    let page = movie_page();
+    assert!(page.contains("<title>a &lt;movie&gt;</title>"));
+    let d = data(&page);
+    assert_eq!(d["times"].as_array().unwrap().len(), 3);
+    assert_eq!(d["times"][2].as_f64().unwrap(), 2e-7);
+    assert_eq!(d["steps"][1], 100);
+    assert_eq!(d["trails"], 2);
+    let size = d["size"].as_f64().unwrap();
+    assert!((size / CM - 6.0).abs() < 1e-9, "size {size}");
+    assert_eq!(d["sizeLabel"], "4.011e-13 (6 cm)");
+    // The floor stays; the bar turns a quarter turn about z each frame, about its
+    // origin, which moves as the corner of the turned bar.
+    let walls = d["walls"].as_array().unwrap();
+    assert!(walls[0]["turns"].is_null());
+    let turns: Vec<f64> = walls[1]["turns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let expected = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, h, h, 0.0, 0.0, 1.0, 0.0];
+    assert_eq!(turns.len(), 12);
+    for (k, q) in turns.chunks(4).enumerate() {
+        let e = &expected[4 * k..4 * k + 4];
+        // q and −q are the same turn.
+        let sign = if q.iter().zip(e).map(|(a, b)| a * b).sum::<f64>() < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        assert!(
+            q.iter().zip(e).all(|(a, b)| (sign * a - b).abs() < 1e-6),
+            "frame {k}: {q:?}"
+        );
+    }
+    let origin = |k: usize, i: usize| walls[1]["origins"][3 * k + i].as_f64().unwrap() * 6.0;
+    assert!((origin(1, 0) - 0.25).abs() < 1e-4 && (origin(1, 1) + 2.0).abs() < 1e-4);
+    assert!((origin(2, 0) - 2.0).abs() < 1e-4 && (origin(2, 1) - 0.25).abs() < 1e-4);
+    // The particles by index; the magenta one is absent from frame 3.
+    let p = &d["particles"];
+    assert_eq!(p["ids"], serde_json::json!([7, 9]));
+    assert_eq!(p["colors"], serde_json::json!(["#00ff00", "#ff00ff"]));
+    let x = |k: usize, i: usize| p["positions"][k][i].as_f64();
+    assert_eq!(
+        x(0, 0),
+        Some(-2.0 / 6.0_f64).map(|v| (v * 1e5).round() / 1e5)
+    );
+    assert_eq!(
+        x(2, 0),
+        Some(2.0 / 6.0_f64).map(|v| (v * 1e5).round() / 1e5)
+    );
+    assert!(x(1, 3).is_some() && p["positions"][2][3].is_null());
+}
+
+#[test]
+fn chromium_plays_a_movie_frame_by_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("movie.html");
+    std::fs::write(&file, movie_page()).unwrap();
+    let first = screenshot(dir.path(), &file, "frame=0", "f0.png");
+    let last = screenshot(dir.path(), &file, "frame=2", "f2.png");
+    let (greens, green_x, _) = first.region(green);
+    let (greens_last, green_x_last, _) = last.region(green);
+    let (magentas, _, _) = first.region(magenta);
+    let (magentas_last, _, _) = last.region(magenta);
+    let (reds, _, _) = first.region(red);
+    let (reds_last, _, _) = last.region(red);
+    eprintln!(
+        "green {greens} at x {green_x:.0} -> {greens_last} at {green_x_last:.0}; \
+         magenta {magentas} -> {magentas_last}; red {reds} -> {reds_last}"
+    );
+    // The green particle at x = −2 cm (left of the centre), then 2 cm (right).
+    assert!(greens > 300 && greens_last > 300);
+    assert!(
+        green_x < 380.0 && green_x_last > 420.0,
+        "{green_x} -> {green_x_last}"
+    );
+    // The magenta particle is drawn in frame 1 and not in frame 3.
+    assert!(magentas > 300, "{magentas} magenta pixels in frame 1");
+    assert!(
+        magentas_last < 10,
+        "{magentas_last} magenta pixels in frame 3"
+    );
+    // The bar is drawn, and turned a quarter turn in frame 2 (half a turn, in frame 3,
+    // looks as it did in frame 1).
+    assert!(reds > 1000 && reds_last > 1000);
+    let turned = screenshot(dir.path(), &file, "frame=1", "f1.png");
+    let changed = (0..first.rgb.len())
+        .filter(|&i| red(first.rgb[i]) != red(turned.rgb[i]))
+        .count();
+    assert!(changed > 1000, "{changed} pixels changed redness");
+
+    // The time label reads the time in pkdgrav's units and the file's (seconds).
+    let (scene, _, _) = movie();
+    let readout = Readout::new(System::Auto, &scene.units);
+    let dom = run_chromium(dir.path(), &file, "frame=2", &["--dump-dom"]);
+    assert!(dom.contains("data-frame=\"2\""), "{dom:.2000}");
+    let label = format!(
+        "<span id=\"time-label\" title=\"frame 3 of 3, step 200\">t = {}</span>",
+        readout.time(2e-7)
+    );
+    assert!(label.contains("2e-7 (1.005 s)"), "{label}");
+    assert!(dom.contains(&label), "{label} not in {dom:.3000}");
 }

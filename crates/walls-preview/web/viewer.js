@@ -1,23 +1,30 @@
 // The viewer of walls-preview's interactive page (crates/walls-preview/src/html.rs).
 //
-// The page holds the scene as JSON in <script id="walls-data" type="application/json">:
+// The page holds a movie as JSON in <script id="walls-data" type="application/json">.
+// Every position is relative to the centre of the box around the whole movie and in
+// units of its size (the longest side), so the scene is about 1 across whatever the
+// file's length unit:
 //
-//   { tEnd, times: [t0, t1, ...],            // the walls' frames over [0, tEnd]
-//     centre: [x, y, z], size,               // the box around the walls
+//   { times: [t0, t1, ...], steps: [step or null, ...],   // the frames (pkdgrav units)
+//     readout: { time: [name, per], length: [name, per], withPkdgrav },  // labels
+//     centre: [x, y, z], size, sizeLabel,                // the box, in pkdgrav units
+//     trails,                                            // frames of path drawn, or 0
 //     walls: [{ index, type, color: "#rrggbb", opacity,
-//               positions: [x, y, z, ...],   // the mesh at t = 0
+//               positions: [x, y, z, ...],   // the first frame's mesh about its origin
 //               indices: [a, b, c, ...],     // its triangles
-//               offsets: [dx, dy, dz, ...],  // origin(t_k) − origin(0) for each frame k
+//               origins: [x, y, z, ...],     // its origin in each frame
+//               turns: null | [qx, qy, qz, qw, ...],  // its turn from frame 0 in each
 //               tokens: [[name, value], ...] }],
-//     particles: null | { radii: [...], colors: ["#rrggbb" or null, ...],
-//                         times: [...], positions: [[x, y, z, ...] for each frame] } }
+//     particles: null | { ids: [...], radii: [...], colors: ["#rrggbb" or null, ...],
+//                         positions: [[x, y, z, ...] for each frame, null for absent] } }
 //
-// It draws the walls (moved rigidly by their offsets, interpolated between frames), the
-// particles as instanced spheres, and axes; a slider and a play button set the time,
+// It draws the walls (moved rigidly: positions interpolated between frames, turns from
+// the nearest frame), the particles as instanced spheres (one a frame lacks hidden), their
+// trails, and axes; a slider steps through the frames and a play button runs the movie,
 // OrbitControls orbit the camera, and hovering a wall shows its parameters. The URL's
-// fragment sets the initial time (#t=0.25) and can hover a point (#hover=0.5,0.5, as
-// fractions of the canvas's width and height), for
-// tests; window.wallsPreview = { ready, setTime(t), time(), hoverAt(x, y), ... }.
+// fragment sets the initial time (#t=0.25) or frame (#frame=2, from 0) and can hover a point (#hover=0.5,0.5, as
+// fractions of the canvas's width and height), for tests; window.wallsPreview = { ready,
+// setTime(t), time(), setFrame(k), frame(), frames, hoverAt(x, y), ... }.
 //
 // bundle.sh bundles this file with three.js into ../assets/viewer.bundle.js.
 
@@ -63,11 +70,30 @@ function escapeHtml(s) {
   return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 }
 
+/** x to four significant figures, as walls_geometry::units::number writes it. */
+function number(x) {
+  if (x === 0 || !Number.isFinite(x)) return String(x);
+  const exponent = Math.floor(Math.log10(Math.abs(x)));
+  const trim = (m) => (m.includes('.') ? m.replace(/0+$/, '').replace(/\.$/, '') : m);
+  if (exponent >= -3 && exponent < 6) return trim(x.toFixed(Math.max(3 - exponent, 0)));
+  const [m, e] = x.toExponential(3).split('e');
+  return `${trim(m)}e${e.replace('+', '')}`;
+}
+
+/** x (pkdgrav units) as walls_geometry::units::Readout shows it in unit [name, per]. */
+function show(x, [name, per], withPkdgrav) {
+  const own = name ? `${number(x * per)} ${name}` : number(x * per);
+  if (withPkdgrav && !name) return number(x);
+  return withPkdgrav ? `${number(x)} (${own})` : own;
+}
+
 function main() {
   const data = JSON.parse(document.getElementById('walls-data').textContent);
-  const tEnd = data.tEnd;
-  const size = data.size > 0 ? data.size : 1;
-  const centre = new THREE.Vector3(...data.centre);
+  const times = data.times.length ? data.times : [0];
+  const frameCount = times.length;
+  const tStart = times[0];
+  const tEnd = times[frameCount - 1];
+  const readout = data.readout;
 
   // The page: the canvas, an info line, the time controls and the tooltip.
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -77,35 +103,39 @@ function main() {
   document.body.appendChild(renderer.domElement);
 
   const info = element('div', { id: 'info' }, document.body);
-  const particleCount = data.particles ? data.particles.radii.length : 0;
+  const p = data.particles;
+  const particleCount = p ? p.ids.length : 0;
+  const plural = (n, what) => `${n} ${what}${n === 1 ? '' : 's'}`;
   info.textContent =
-    `${data.walls.length} wall${data.walls.length === 1 ? '' : 's'}` +
-    (particleCount ? `, ${particleCount} particle${particleCount === 1 ? '' : 's'}` : '') +
+    plural(data.walls.length, 'wall') +
+    (particleCount ? `, ${plural(particleCount, 'particle')}` : '') +
+    (frameCount > 1 ? `, ${plural(frameCount, 'frame')}` : '') +
+    ` · scene ${data.sizeLabel} across, axes half that` +
     ' · drag to orbit, right-drag to pan, wheel to zoom, hover a wall for its parameters';
   const bar = element('div', { id: 'controls' }, document.body);
   const play = element('button', { id: 'play', type: 'button', textContent: '▶', title: 'play / pause' }, bar);
-  const slider = element('input', { id: 'time', type: 'range', min: '0', max: String(tEnd), step: 'any', value: '0' }, bar);
-  slider.disabled = !(tEnd > 0);
+  const slider = element('input', { id: 'time', type: 'range', min: '0', max: String(frameCount - 1), step: '1', value: '0' }, bar);
+  slider.disabled = frameCount < 2;
   const label = element('span', { id: 'time-label' }, bar);
   const tooltip = element('div', { id: 'tooltip', hidden: true }, document.body);
 
-  // The scene, with z up as in pkdgrav's frames.
+  // The scene, with z up as in pkdgrav's frames, about 1 across around the origin.
   const scene = new THREE.Scene();
-  const camera = new THREE.PerspectiveCamera(45, window.innerWidth / window.innerHeight, size * 1e-3, size * 100);
+  const camera = new THREE.PerspectiveCamera(45, window.innerWidth / window.innerHeight, 1e-3, 100);
   camera.up.set(0, 0, 1);
-  camera.position.copy(centre).add(new THREE.Vector3(1.6, -2.2, 1.4).multiplyScalar(size * 0.55));
+  camera.position.set(1.6, -2.2, 1.4).multiplyScalar(0.55);
   const controls = new OrbitControls(camera, renderer.domElement);
-  controls.target.copy(centre);
+  controls.minDistance = 0.01;
+  controls.maxDistance = 30;
   controls.update();
 
   scene.add(new THREE.AmbientLight(0xffffff, 1.2));
   const light = new THREE.DirectionalLight(0xffffff, 2.0);
   scene.add(light);
   scene.add(light.target);
-  const axes = new THREE.AxesHelper(size * 0.5);
-  scene.add(axes);
+  scene.add(new THREE.AxesHelper(0.5));
 
-  // The walls: each a mesh at t = 0, moved by its offset.
+  // The walls: each the first frame's mesh about its origin, placed in each frame.
   const walls = data.walls.map((w) => {
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.Float32BufferAttribute(w.positions, 3));
@@ -132,16 +162,41 @@ function main() {
     return mesh;
   });
 
-  // The particles: one instanced sphere each.
+  // The particles: one instanced sphere each; each frame's positions as floats, NaN
+  // where the frame lacks the particle.
   let spheres = null;
+  let frames = [];
+  const colors = [];
   if (particleCount) {
-    const p = data.particles;
+    frames = p.positions.map((a) => Float32Array.from(a, (x) => (x === null ? NaN : x)));
+    // The parsed arrays (a number each, boxed where a frame lacks a particle) are no
+    // longer needed: the floats hold the frames in a quarter of the memory or less.
+    p.positions = null;
     spheres = new THREE.InstancedMesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshLambertMaterial(), particleCount);
     const white = new THREE.Color(0xdddddd);
-    p.colors.forEach((c, i) => spheres.setColorAt(i, c ? new THREE.Color(c) : white));
-    for (let i = p.colors.length; i < particleCount; i++) spheres.setColorAt(i, white);
+    for (let i = 0; i < particleCount; i++) {
+      colors.push(p.colors[i] ? new THREE.Color(p.colors[i]) : white);
+      spheres.setColorAt(i, colors[i]);
+    }
     spheres.frustumCulled = false;
     scene.add(spheres);
+  }
+
+  // The trails: each particle's path over its last `trails` frames, as line segments.
+  const trailLength = particleCount && frameCount > 1 ? Math.max(0, Math.floor(data.trails || 0)) : 0;
+  let trails = null;
+  if (trailLength) {
+    const segments = particleCount * trailLength;
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(segments * 6), 3));
+    const rgb = new Float32Array(segments * 6);
+    for (let i = 0; i < particleCount; i++) {
+      for (let v = 0; v < 2 * trailLength; v++) colors[i].toArray(rgb, 3 * (2 * i * trailLength + v));
+    }
+    geometry.setAttribute('color', new THREE.BufferAttribute(rgb, 3));
+    trails = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ vertexColors: true }));
+    trails.frustumCulled = false;
+    scene.add(trails);
   }
 
   const render = () => {
@@ -151,58 +206,93 @@ function main() {
   };
 
   // Time.
-  let time = 0;
+  let time = tStart;
+  let nearest = 0;
   const scratch = new THREE.Vector3();
   const matrix = new THREE.Matrix4();
   const identity = new THREE.Quaternion();
   const scale = new THREE.Vector3();
+  const hidden = new THREE.Vector3(0, 0, 0);
+  /** Particle i's position at frame k + f into out, or null if it is not drawn then. */
+  function particleAt(i, k, f, out) {
+    const a = frames[k];
+    const b = frames[Math.min(k + 1, frameCount - 1)];
+    const j = 3 * i;
+    if (!Number.isNaN(a[j]) && !Number.isNaN(b[j])) {
+      return out.set(a[j] + (b[j] - a[j]) * f, a[j + 1] + (b[j + 1] - a[j + 1]) * f, a[j + 2] + (b[j + 2] - a[j + 2]) * f);
+    }
+    const c = f < 0.5 ? a : b;
+    return Number.isNaN(c[j]) ? null : out.set(c[j], c[j + 1], c[j + 2]);
+  }
   function setTime(t) {
     t = Number(t);
-    if (!Number.isFinite(t)) t = 0;
-    time = Math.min(Math.max(t, 0), Math.max(tEnd, 0));
-    const [k, f] = bracket(data.times, time);
-    for (const mesh of walls) lerp3(mesh.userData.wall.offsets, k, f, mesh.position);
+    if (!Number.isFinite(t)) t = tStart;
+    time = Math.min(Math.max(t, tStart), tEnd);
+    const [k, f] = bracket(times, time);
+    nearest = f < 0.5 ? k : Math.min(k + 1, frameCount - 1);
+    for (const mesh of walls) {
+      const w = mesh.userData.wall;
+      lerp3(w.origins, k, f, mesh.position);
+      if (w.turns) mesh.quaternion.fromArray(w.turns, 4 * nearest);
+    }
     if (spheres) {
-      const p = data.particles;
-      const [j, g] = bracket(p.times, time);
-      const a = p.positions[j];
-      const b = p.positions[Math.min(j + 1, p.positions.length - 1)];
       for (let i = 0; i < particleCount; i++) {
-        const r = p.radii[i];
-        scratch.set(
-          a[3 * i] + (b[3 * i] - a[3 * i]) * g,
-          a[3 * i + 1] + (b[3 * i + 1] - a[3 * i + 1]) * g,
-          a[3 * i + 2] + (b[3 * i + 2] - a[3 * i + 2]) * g,
-        );
-        matrix.compose(scratch, identity, scale.set(r, r, r));
+        const q = particleAt(i, k, f, scratch);
+        const r = q ? p.radii[i] : 0;
+        matrix.compose(q || hidden, identity, scale.set(r, r, r));
         spheres.setMatrixAt(i, matrix);
       }
       spheres.instanceMatrix.needsUpdate = true;
     }
-    slider.value = String(time);
-    label.textContent = `t = ${time.toPrecision(4)} / ${tEnd.toPrecision(4)}`;
+    if (trails) {
+      // Segments from frame max(0, k − n + 1) to k, then to the time shown; a segment
+      // with an end the frames lack is drawn as a point.
+      const out = trails.geometry.attributes.position.array;
+      const from = new THREE.Vector3();
+      const to = new THREE.Vector3();
+      for (let i = 0; i < particleCount; i++) {
+        let o = 6 * i * trailLength;
+        for (let s = 0; s < trailLength; s++, o += 6) {
+          const start = k - trailLength + 1 + s;
+          const a = start >= 0 ? particleAt(i, start, 0, from) : null;
+          const b = a ? (s === trailLength - 1 ? particleAt(i, k, f, to) : particleAt(i, start + 1, 0, to)) : null;
+          const e = b || a || hidden;
+          (a || e).toArray(out, o);
+          e.toArray(out, o + 3);
+        }
+      }
+      trails.geometry.attributes.position.needsUpdate = true;
+    }
+    slider.value = String(nearest);
+    label.textContent = `t = ${show(time, readout.time, readout.withPkdgrav)}`;
+    const step = data.steps ? data.steps[nearest] : null;
+    label.title = `frame ${nearest + 1} of ${frameCount}` + (step === null || step === undefined ? '' : `, step ${step}`);
     document.body.dataset.time = String(time);
+    document.body.dataset.frame = String(nearest);
     render();
   }
+  const setFrame = (k) => setTime(times[Math.min(Math.max(Math.round(Number(k)) || 0, 0), frameCount - 1)]);
 
-  // Play: the whole span in ten seconds, looping.
+  // Play: the whole span in ten seconds (at least a tenth of a second a frame), looping.
+  const span = tEnd - tStart;
+  const duration = Math.max(10, frameCount / 10);
   let playing = false;
   let last = 0;
   function setPlaying(on) {
-    playing = on && tEnd > 0;
+    playing = on && span > 0;
     play.textContent = playing ? '❚❚' : '▶';
     last = performance.now();
   }
   play.addEventListener('click', () => setPlaying(!playing));
   slider.addEventListener('input', () => {
     setPlaying(false);
-    setTime(slider.value);
+    setFrame(slider.value);
   });
   const tick = (now) => {
     if (playing) {
-      const t = time + ((now - last) / 1000) * (tEnd / 10);
+      const t = time + ((now - last) / 1000) * (span / duration);
       last = now;
-      setTime(t > tEnd ? 0 : t);
+      setTime(t > tEnd ? tStart : t);
     }
     requestAnimationFrame(tick);
   };
@@ -252,7 +342,8 @@ function main() {
   // The fragment: #t=TIME&hover=FX,FY, the point hovered as fractions of the canvas.
   function fromHash() {
     const params = new URLSearchParams(window.location.hash.slice(1));
-    setTime(params.has('t') ? params.get('t') : time);
+    if (params.has('frame')) setFrame(params.get('frame'));
+    else setTime(params.has('t') ? params.get('t') : time);
     if (params.has('hover')) {
       const [fx, fy] = params.get('hover').split(',').map(Number);
       const rect = renderer.domElement.getBoundingClientRect();
@@ -263,9 +354,13 @@ function main() {
 
   window.wallsPreview = {
     ready: true,
+    tStart,
     tEnd,
+    frames: frameCount,
     setTime,
     time: () => time,
+    setFrame,
+    frame: () => nearest,
     play: () => setPlaying(true),
     pause: () => setPlaying(false),
     hoverAt,
