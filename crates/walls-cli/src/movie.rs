@@ -228,8 +228,10 @@ pub fn frames(
     viz: Option<&VizSteps>,
     segments: usize,
 ) -> Movie {
-    let mut snapshots: Vec<(f64, Snapshot)> =
-        snapshots.into_iter().map(|s| (s.t.unwrap_or(t0), s)).collect();
+    let mut snapshots: Vec<(f64, Snapshot)> = snapshots
+        .into_iter()
+        .map(|s| (s.t.unwrap_or(t0), s))
+        .collect();
     snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
     let times: Vec<f64> = snapshots.iter().map(|(t, _)| *t).collect();
     let all: Vec<Particle> = snapshots

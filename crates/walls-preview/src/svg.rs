@@ -285,7 +285,9 @@ fn draw(camera: &Camera, frame: &Frame, readout: &Readout) -> String {
 
 /// `s` as SVG text.
 fn escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
 }
 
 /// The axes (bottom left) and a scale bar (bottom right) of a round length near a

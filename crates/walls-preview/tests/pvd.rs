@@ -89,11 +89,7 @@ fn movie() -> (walls_model::Scene, Vec<MovieFrame>) {
                 t,
                 step: Some(100 * k as u64),
                 walls: wall_meshes(&scene, t, 8),
-                particles: vec![Particle::at_rest(
-                    0.1,
-                    Vector3::new(0.0, 0.0, 1.0 - t),
-                    0,
-                )],
+                particles: vec![Particle::at_rest(0.1, Vector3::new(0.0, 0.0, 1.0 - t), 0)],
             }
         })
         .collect();

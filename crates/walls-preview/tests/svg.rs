@@ -3,8 +3,8 @@
 //! moving wall moves between frames, and the animation has its frames.
 
 use nalgebra::Vector3;
-use walls_model::Scene;
 use walls_geometry::units::{Readout, System};
+use walls_model::Scene;
 use walls_preview::svg::{Frame, View, write};
 use walls_preview::wall_meshes;
 use walls_test_support::model_scene as scene;
@@ -114,10 +114,7 @@ fn labels_are_in_the_units_asked_for() {
         particles: &[],
     }];
     let view = View::default();
-    let box_ = (
-        Vector3::new(-1.0, -1.0, 0.0),
-        Vector3::new(1.0, 1.0, 0.0),
-    );
+    let box_ = (Vector3::new(-1.0, -1.0, 0.0), Vector3::new(1.0, 1.0, 0.0));
     let label = |system| {
         let mut out = Vec::new();
         let readout = Readout::new(system, &scene.units);

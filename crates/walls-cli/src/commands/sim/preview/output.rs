@@ -4,10 +4,10 @@
 //! long series.
 
 use super::{PreviewArgs, UnitsArg};
+use crate::movie::Movie;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
 use walls_geometry::units::{Readout, Scale};
-use crate::movie::Movie;
 use walls_model::Scene;
 use walls_preview::MovieFrame;
 use walls_preview::html::Particles;
@@ -52,8 +52,9 @@ pub(super) fn write(
         }
         Some("svg") => {
             let save = |path: &Path, frames: &[MovieFrame]| {
-                let mut out =
-                    std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
+                let mut out = std::io::BufWriter::new(
+                    std::fs::File::create(path).map_err(|e| cannot(path, e))?,
+                );
                 svg(&mut out, args, movie, frames, &readout)
                     .and_then(|()| out.flush())
                     .map_err(|e| cannot(path, e))
@@ -310,5 +311,4 @@ mod tests {
         ];
         assert_eq!(frames(&rows), Err(4));
     }
-
 }
