@@ -269,7 +269,7 @@ pub fn frames(
         .collect();
     let warning = unmatched.first().map(|first| {
         format!(
-            "{} frame(s) have no {VIZ_FILE} line of their step (the first, step {first}): their reactive walls are where the last line before says",
+            "{} frame(s) have no {VIZ_FILE} line of their step (the first, step {first}): each takes the last line before its step, or the walls as the walls file places them when there is none",
             unmatched.len()
         )
     });

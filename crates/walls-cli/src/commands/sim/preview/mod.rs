@@ -108,11 +108,13 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .as_ref()
         .and_then(|p| p.extension())
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    if args.reactive.is_some() && !matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd")) {
+    let placed = matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd"));
+    if args.reactive.is_some() && !placed {
         return Err("--reactive is drawn in .svg, .vtp and .pvd pictures only".into());
     }
     let (snapshots, found_viz) = read_particles(&args.particles)?;
-    let viz_file = args.reactive.clone().or(found_viz);
+    // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.
+    let viz_file = args.reactive.clone().or(found_viz.filter(|_| placed));
     let viz = match &viz_file {
         Some(f) => {
             let text = std::fs::read_to_string(f)
