@@ -1,10 +1,11 @@
 //! Shared pieces of the walls command-line tools: reading inputs (files or standard
-//! input) and the contact model that `--mode` takes. The whole check of one file and the registry of
-//! diagnostic codes that `--explain` and SARIF read are `walls-ide`'s, re-exported here
-//! for the tools.
+//! input), a run's outputs as a movie's frames ([`movie`]) and the contact model that
+//! `--mode` takes. The whole check of one file and the registry of diagnostic codes that
+//! `--explain` and SARIF read are `walls-ide`'s, re-exported here for the tools.
 
 pub mod commands;
 pub mod input;
+pub mod movie;
 
 pub use walls_ide::{Checked, all_codes, check_bytes, find_code};
 

@@ -11,6 +11,7 @@ use nalgebra::Vector3;
 use std::fmt::Write as _;
 use std::io;
 use walls_geometry::Particle;
+use walls_geometry::units::{Readout, number};
 
 type Vec3 = Vector3<f64>;
 
@@ -227,7 +228,7 @@ fn shade(rgb: [f64; 3], light: f64) -> String {
 }
 
 /// The drawing of one frame's items, as SVG elements.
-fn draw(camera: &Camera, frame: &Frame) -> String {
+fn draw(camera: &Camera, frame: &Frame, readout: &Readout) -> String {
     let mut s = String::new();
     for (_, item) in items(camera, frame) {
         match item {
@@ -277,14 +278,21 @@ fn draw(camera: &Camera, frame: &Frame) -> String {
     let _ = writeln!(
         s,
         "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">t = {}</text>",
-        frame.t
+        escape(&readout.time(frame.t))
     );
     s
 }
 
+/// `s` as SVG text.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
 /// The axes (bottom left) and a scale bar (bottom right) of a round length near a
-/// fifth of the width.
-fn furniture(camera: &Camera) -> String {
+/// fifth of the width, round in `readout`'s length unit and labelled in it.
+fn furniture(camera: &Camera, readout: &Readout) -> String {
     let mut s = String::new();
     let (ox, oy) = (50.0, camera.size.1 - 50.0);
     for (axis, name, colour) in [
@@ -302,18 +310,26 @@ fn furniture(camera: &Camera) -> String {
             oy + dy * 1.25
         );
     }
-    let target = camera.size.0 / 5.0 / camera.scale;
+    let unit = &readout.scale.length;
+    let target = unit.of(camera.size.0 / 5.0 / camera.scale);
     let decade = 10f64.powf(target.log10().floor());
-    let length = [5.0, 2.0, 1.0]
+    let shown = [5.0, 2.0, 1.0]
         .iter()
         .map(|m| m * decade)
         .find(|l| *l <= target)
         .unwrap_or(decade);
+    // The bar's length in pkdgrav units, and its label.
+    let length = shown / unit.per_pkdgrav;
+    let label = escape(&if readout.with_pkdgrav && !unit.name.is_empty() {
+        format!("{} {}", number(shown), unit.name)
+    } else {
+        readout.length(length)
+    });
     let pixels = length * camera.scale;
     let (x1, y) = (camera.size.0 - 30.0, camera.size.1 - 30.0);
     let _ = writeln!(
         s,
-        "<g class=\"scale\"><line x1=\"{:.1}\" y1=\"{y}\" x2=\"{x1}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"3\"/><text x=\"{:.1}\" y=\"{:.1}\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\">{length}</text></g>",
+        "<g class=\"scale\"><line x1=\"{:.1}\" y1=\"{y}\" x2=\"{x1}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"3\"/><text x=\"{:.1}\" y=\"{:.1}\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\">{label}</text></g>",
         x1 - pixels,
         x1 - pixels / 2.0,
         y - 8.0
@@ -322,13 +338,15 @@ fn furniture(camera: &Camera) -> String {
 }
 
 /// Writes `frames` as one SVG: a still picture for one frame, an animation playing the
-/// frames in turn over `seconds` for several. The view fits the box `lo`–`hi`.
+/// frames in turn over `seconds` for several. The view fits the box `lo`–`hi`; times
+/// and the scale bar are shown as `readout` says.
 pub fn write(
     out: &mut impl io::Write,
     frames: &[Frame],
     view: &View,
     bounds: (Vec3, Vec3),
     seconds: f64,
+    readout: &Readout,
 ) -> io::Result<()> {
     let all: Vec<Particle> = frames.iter().flat_map(|f| f.particles.to_vec()).collect();
     let camera = Camera::new(view, &bounds.0, &bounds.1, &all);
@@ -341,7 +359,7 @@ pub fn write(
     );
     if let [frame] = frames {
         s.push_str("<g class=\"frame\">\n");
-        s.push_str(&draw(&camera, frame));
+        s.push_str(&draw(&camera, frame, readout));
         s.push_str("</g>\n");
     } else {
         let n = frames.len();
@@ -360,11 +378,11 @@ pub fn write(
                 values.join(";"),
                 times.join(";")
             );
-            s.push_str(&draw(&camera, frame));
+            s.push_str(&draw(&camera, frame, readout));
             s.push_str("</g>\n");
         }
     }
-    s.push_str(&furniture(&camera));
+    s.push_str(&furniture(&camera, readout));
     s.push_str("</svg>\n");
     out.write_all(s.as_bytes())
 }

@@ -31,6 +31,14 @@
 //! - `mass` (Float64): the particle's mass; 0 on walls.
 //! - `particle` (Int32): the particle's index in its original file; −1 on walls.
 //!
+//! Field data (one tuple each, for the whole file):
+//!
+//! - `TIME` (Float64): the time of the picture, as ParaView reads it.
+//! - `length_unit`, `mass_unit`, `time_unit` (String): the units of every number in the
+//!   file: `m`, `kg`, `s` (SI), `cm`, `g`, `s` (cgs), or pkdgrav's own `AU`, `Msun` and
+//!   `yr/2pi` (its time unit, 1/k days). Velocities are in length/time units and spin
+//!   in 1/time units.
+//!
 //! Numbers are written in Rust's shortest exponent form (`1.5e-3`; +0 as `0`), which
 //! reads back to the same `f64`; connectivity and offsets are Int64. Walls whose mesh
 //! is empty (shapes of no area) have no cells and no points.
@@ -38,10 +46,36 @@
 use crate::WallMesh;
 use std::io::{self, Write};
 use walls_geometry::Particle;
+use walls_geometry::units::Scale;
 
-/// Writes `walls` and `particles` to `out` as one VTK XML PolyData file (see the module
+/// The names written for `scale`'s length, mass and time units: its own, or pkdgrav's
+/// (AU, solar masses and 1/k days, a year over 2π) where it has none.
+pub fn unit_names(scale: &Scale) -> [&'static str; 3] {
+    let or = |name: &'static str, pkdgrav| if name.is_empty() { pkdgrav } else { name };
+    [
+        or(scale.length.name, "AU"),
+        or(scale.mass.name, "Msun"),
+        or(scale.time.name, "yr/2pi"),
+    ]
+}
+
+/// Writes `walls` and `particles` at time `t` (pkdgrav units) to `out` as one VTK XML
+/// PolyData file, every number converted to `scale`'s units (see the module
 /// documentation for the arrays and their order).
-pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -> io::Result<()> {
+pub fn write(
+    out: &mut impl Write,
+    walls: &[WallMesh],
+    particles: &[Particle],
+    t: f64,
+    scale: &Scale,
+) -> io::Result<()> {
+    let (length, mass, time) = (
+        scale.length.per_pkdgrav,
+        scale.mass.per_pkdgrav,
+        scale.time.per_pkdgrav,
+    );
+    let speed = length / time;
+    let rate = 1.0 / time;
     let wall_points: usize = walls.iter().map(|w| w.mesh.positions.len()).sum();
     let triangles: usize = walls.iter().map(|w| w.mesh.triangles.len()).sum();
     let points = particles.len() + wall_points;
@@ -52,6 +86,26 @@ pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -
         r#"<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" header_type="UInt64">"#
     )?;
     writeln!(out, "  <PolyData>")?;
+    writeln!(out, "    <FieldData>")?;
+    write!(
+        out,
+        r#"      <DataArray type="Float64" Name="TIME" NumberOfTuples="1" format="ascii"> "#
+    )?;
+    (t * time).ascii(out)?;
+    writeln!(out, " </DataArray>")?;
+    for (name, unit) in ["length_unit", "mass_unit", "time_unit"]
+        .iter()
+        .zip(unit_names(scale))
+    {
+        // VTK's ASCII strings: each character's code, then a 0.
+        let codes: Vec<String> = unit.bytes().chain([0]).map(|b| b.to_string()).collect();
+        writeln!(
+            out,
+            r#"      <DataArray type="String" Name="{name}" NumberOfTuples="1" format="ascii"> {} </DataArray>"#,
+            codes.join(" ")
+        )?;
+    }
+    writeln!(out, "    </FieldData>")?;
     writeln!(
         out,
         r#"    <Piece NumberOfPoints="{points}" NumberOfVerts="{}" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="{triangles}">"#,
@@ -70,14 +124,17 @@ pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -
         "Float64",
         "radius",
         1,
-        particles.iter().map(|p| p.radius).chain(zeros(wall_points)),
+        particles
+            .iter()
+            .map(|p| p.radius * length)
+            .chain(zeros(wall_points)),
     )?;
     array3(
         out,
         "velocity",
         particles
             .iter()
-            .map(|p| [p.vel.x, p.vel.y, p.vel.z])
+            .map(|p| (p.vel * speed).into())
             .chain(zero3(wall_points)),
     )?;
     array3(
@@ -85,7 +142,7 @@ pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -
         "spin",
         particles
             .iter()
-            .map(|p| [p.spin.x, p.spin.y, p.spin.z])
+            .map(|p| (p.spin * rate).into())
             .chain(zero3(wall_points)),
     )?;
     array(
@@ -93,7 +150,10 @@ pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -
         "Float64",
         "mass",
         1,
-        particles.iter().map(|p| p.mass).chain(zeros(wall_points)),
+        particles
+            .iter()
+            .map(|p| p.mass * mass)
+            .chain(zeros(wall_points)),
     )?;
     array(
         out,
@@ -148,10 +208,10 @@ pub fn write(out: &mut impl Write, walls: &[WallMesh], particles: &[Particle]) -
     array3(
         out,
         "Points",
-        particles.iter().map(|p| [p.pos.x, p.pos.y, p.pos.z]).chain(
+        particles.iter().map(|p| (p.pos * length).into()).chain(
             walls
                 .iter()
-                .flat_map(|w| w.mesh.positions.iter().map(|p| [p.x, p.y, p.z])),
+                .flat_map(|w| w.mesh.positions.iter().map(|p| (p * length).into())),
         ),
     )?;
     writeln!(out, "      </Points>")?;

@@ -3,6 +3,7 @@
 //! moving wall moves between frames, and the animation has its frames.
 
 use nalgebra::Vector3;
+use walls_geometry::units::{Readout, System};
 use walls_model::Scene;
 use walls_preview::svg::{Frame, View, write};
 use walls_preview::wall_meshes;
@@ -28,7 +29,8 @@ fn svg(scene: &Scene, ts: &[f64]) -> String {
     };
     let mut out = Vec::new();
     let box_ = (Vector3::new(-2.0, -2.0, -1.0), Vector3::new(2.0, 2.0, 1.0));
-    write(&mut out, &frames, &view, box_, 2.0).unwrap();
+    let readout = Readout::new(System::Pkdgrav, &scene.units);
+    write(&mut out, &frames, &view, box_, 2.0, &readout).unwrap();
     String::from_utf8(out).unwrap()
 }
 
@@ -96,4 +98,32 @@ fn a_moving_wall_moves_between_frames_and_the_animation_has_them_all() {
     // It is valid SVG that resvg renders (the first frame shows).
     let (first, _) = raster(&animated);
     assert!(red(&first, w).1 > 100);
+}
+
+/// The time label and the scale bar in the units asked for: seconds and centimetres for
+/// a file in centimetres read in cgs, both numbers with `auto`.
+#[test]
+fn labels_are_in_the_units_asked_for() {
+    let mut scene = scene("wall type disk\n  radius 0.5\n  color 2\n");
+    scene.units.length = 6.68459e-14;
+    scene.units.time = 1.99102e-7;
+    let meshes = wall_meshes(&scene, 0.0, 16);
+    let frames = [Frame {
+        t: 2.0 * scene.units.time,
+        walls: &meshes,
+        particles: &[],
+    }];
+    let view = View::default();
+    let box_ = (Vector3::new(-1.0, -1.0, 0.0), Vector3::new(1.0, 1.0, 0.0));
+    let label = |system| {
+        let mut out = Vec::new();
+        let readout = Readout::new(system, &scene.units);
+        write(&mut out, &frames, &view, box_, 1.0, &readout).unwrap();
+        String::from_utf8(out).unwrap()
+    };
+    let cgs = label(System::Cgs);
+    assert!(cgs.contains(">t = 2 s</text>"), "{cgs}");
+    assert!(cgs.contains(" cm</text></g>"), "{cgs}");
+    let auto = label(System::Auto);
+    assert!(auto.contains(">t = 3.982e-7 (2 s)</text>"), "{auto}");
 }

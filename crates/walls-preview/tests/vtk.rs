@@ -10,6 +10,7 @@ use serde_json::Value;
 use std::path::Path;
 use std::process::Command;
 use walls_geometry::Particle;
+use walls_geometry::units::Scale;
 use walls_model::{Options, analyze};
 use walls_preview::{vtk, wall_meshes};
 
@@ -131,7 +132,7 @@ fn vtkxmlpolydatareader_reads_back_the_walls_and_particles() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("sample.vtp");
     let mut bytes = Vec::new();
-    vtk::write(&mut bytes, &walls, &particles).unwrap();
+    vtk::write(&mut bytes, &walls, &particles, 0.0, &Scale::PKDGRAV).unwrap();
     std::fs::write(&path, &bytes).unwrap();
     let seen = read_back(&path);
 
@@ -264,7 +265,7 @@ fn walls_alone_and_nothing_at_all_are_read_back() {
     for (name, walls) in [("walls.vtp", &walls[..]), ("empty.vtp", &[][..])] {
         let path = dir.path().join(name);
         let mut bytes = Vec::new();
-        vtk::write(&mut bytes, walls, &[]).unwrap();
+        vtk::write(&mut bytes, walls, &[], 0.0, &Scale::PKDGRAV).unwrap();
         std::fs::write(&path, &bytes).unwrap();
         let seen = read_back(&path);
         let triangles = walls.len();

@@ -1,0 +1,207 @@
+//! `walls-sim preview`: draws the walls (and particles) at a time, their motion over a
+//! span, or a run's outputs as a movie: SVG, POV-Ray, VTK (a `.vtp`, or a ParaView
+//! collection `.pvd` of frames) or an interactive HTML page ([`walls_preview`]). The
+//! frames are built by [`crate::movie`]; [`output`] writes them in each format.
+
+mod output;
+
+use super::{error, exit_status, read_walls, ruled};
+use crate::ContactModel;
+use crate::movie::{self, Snapshot, VizSteps};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use walls_geometry::units::System;
+use walls_sim::io::par::Rule;
+
+/// `walls-sim preview`: pictures of the walls at a time, or over a span.
+#[derive(clap::Args)]
+pub struct PreviewArgs {
+    /// The walls file; `-` reads standard input.
+    #[arg(value_name = "FILE")]
+    pub file: String,
+    /// Where the walls are: at this time (pkdgrav units).
+    #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    pub time: f64,
+    /// The picture, by its extension: .svg (the default, on standard output without
+    /// --out), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for ParaView), .pvd
+    /// (a ParaView collection of one .vtp per frame, in a folder named after it) or
+    /// .html (an interactive page over [--time, --until]).
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Particles to draw too: a CSV or .ss file; or a run's outputs as a movie, one
+    /// frame per output: several .ss files (ss.00000 ss.00100…), a particles.csv of
+    /// `walls-sim run --out`, or such a folder (its particles.csv, else its .ss series,
+    /// and its WALLSREACTviz.out).
+    #[arg(long, value_name = "FILE", num_args = 1..)]
+    pub particles: Vec<PathBuf>,
+    /// Draw reactive walls where a run moved them: the WALLSREACTviz.out that
+    /// `walls-sim run --out` (or pkdgrav) wrote; each frame of a movie at the line of
+    /// its step, a single picture at the last line.
+    #[arg(long, value_name = "FILE")]
+    pub reactive: Option<PathBuf>,
+    /// The units shown (SVG's time and scale bar) and written (VTK): auto shows
+    /// pkdgrav's and the file's own; VTK in cgs or si is converted.
+    #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
+    pub units: UnitsArg,
+    /// HTML: particle trajectories to play, the particles.csv that `walls-sim run --out`
+    /// writes.
+    #[arg(long, value_name = "FILE")]
+    pub trajectory: Option<String>,
+    /// The direction to look from (towards the scene).
+    #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    pub view: Option<Vec<f64>>,
+    /// Which way is up in the picture.
+    #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    pub up: Option<Vec<f64>>,
+    /// The picture's size in pixels.
+    #[arg(long, num_args = 2, value_names = ["W", "H"], value_parser = clap::value_parser!(u32).range(16..=16384))]
+    pub size: Option<Vec<u32>>,
+    /// Frames from --time to --until: numbered pictures FILE-000.svg… and FILE.svg
+    /// animated.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=10000))]
+    pub frames: u64,
+    /// The end of the span the frames cover.
+    #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+    pub until: Option<f64>,
+    /// Seconds the animation takes to play once.
+    #[arg(long, value_name = "S", default_value_t = 4.0, value_parser = ruled(Rule::Positive))]
+    pub seconds: f64,
+    /// Segments around round shapes.
+    #[arg(long, value_name = "N", default_value_t = 48, value_parser = clap::value_parser!(u64).range(3..=4096))]
+    pub segments: u64,
+}
+
+/// `--units`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum UnitsArg {
+    /// pkdgrav's units, and the walls file's own beside them when it sets some.
+    Auto,
+    /// pkdgrav's units alone (AU, solar masses, 1/k days).
+    Pkdgrav,
+    /// Centimetres, grams, seconds.
+    Cgs,
+    /// Metres, kilograms, seconds.
+    Si,
+}
+
+impl From<UnitsArg> for System {
+    fn from(u: UnitsArg) -> System {
+        match u {
+            UnitsArg::Auto => System::Auto,
+            UnitsArg::Pkdgrav => System::Pkdgrav,
+            UnitsArg::Cgs => System::Cgs,
+            UnitsArg::Si => System::Si,
+        }
+    }
+}
+
+/// Draws what `args` ask for; the exit status.
+pub fn run(args: &PreviewArgs) -> ExitCode {
+    draw(args).unwrap_or_else(error)
+}
+
+fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
+    let (checked, errors) = read_walls(&args.file, ContactModel::Ssdem, "drawing")?;
+    let scene = &checked.scene;
+    let kind = args
+        .out
+        .as_ref()
+        .and_then(|p| p.extension())
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    let placed = matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd"));
+    if args.reactive.is_some() && !placed {
+        return Err("--reactive is drawn in .svg, .vtp and .pvd pictures only".into());
+    }
+    let (snapshots, found_viz) = read_particles(&args.particles)?;
+    // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.
+    let viz_file = args.reactive.clone().or(found_viz.filter(|_| placed));
+    let viz = match &viz_file {
+        Some(f) => {
+            let text = std::fs::read_to_string(f)
+                .map_err(|e| format!("cannot read {}: {e}", f.display()))?;
+            Some(VizSteps::parse(&text).map_err(|e| format!("{}: {e}", f.display()))?)
+        }
+        None => None,
+    };
+    let series = snapshots.len() > 1;
+    if series && (args.frames > 1 || args.until.is_some()) {
+        return Err(
+            "--frames and --until make the frames of one set of particles; a series of outputs makes its own"
+                .into(),
+        );
+    }
+    let snapshots = if series {
+        snapshots
+    } else {
+        // One picture, or --frames over [--time, --until], with the particles (if any)
+        // on every frame.
+        let particles = snapshots
+            .into_iter()
+            .next()
+            .map(|s| s.particles)
+            .unwrap_or_default();
+        times(args)
+            .into_iter()
+            .map(|t| Snapshot {
+                t: Some(t),
+                step: None,
+                particles: particles.clone(),
+            })
+            .collect()
+    };
+    let movie = movie::frames(
+        scene,
+        snapshots,
+        args.time,
+        viz.as_ref(),
+        args.segments as usize,
+    );
+    if let Some(w) = &movie.warning {
+        eprintln!("walls-sim: warning: {w}");
+    }
+    output::write(args, kind.as_deref(), scene, &movie, series)?;
+    Ok(exit_status(errors))
+}
+
+/// The times of --frames over [--time, --until].
+fn times(args: &PreviewArgs) -> Vec<f64> {
+    let n = args.frames as usize;
+    let until = args.until.unwrap_or(args.time);
+    (0..n)
+        .map(|k| {
+            if n == 1 {
+                args.time
+            } else {
+                args.time + (until - args.time) * k as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
+}
+
+/// The snapshots of the particle files and folders `paths`, in the order given, and
+/// the `WALLSREACTviz.out` of a folder among them; a progress bar for a long series.
+fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>), String> {
+    let mut files = Vec::new();
+    let mut viz = None;
+    for p in paths {
+        if p.is_dir() {
+            let folder = movie::run_folder(p)?;
+            files.extend(folder.particles);
+            viz = viz.or(folder.viz);
+        } else {
+            files.push(p.clone());
+        }
+    }
+    let bar = output::progress(files.len(), "read");
+    let mut snapshots = Vec::new();
+    for f in &files {
+        snapshots.extend(movie::read_snapshots(Path::new(f))?);
+        if let Some(bar) = &bar {
+            bar.inc(1);
+        }
+    }
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    Ok((snapshots, viz))
+}

@@ -1,0 +1,314 @@
+//! The pictures of `walls-sim preview`, by the extension of `--out`: an SVG (animated
+//! for several frames, with numbered stills), numbered POV-Ray scenes, one VTK
+//! PolyData, a ParaView collection of them, or the HTML page; and the progress bar of a
+//! long series.
+
+use super::{PreviewArgs, UnitsArg};
+use crate::movie::Movie;
+use std::io::{IsTerminal, Write};
+use std::path::Path;
+use walls_geometry::units::{Readout, Scale};
+use walls_model::Scene;
+use walls_preview::MovieFrame;
+use walls_preview::html::Particles;
+use walls_sim::io::trajectory::{ParticleRow, read_particles};
+
+/// Series longer than this show a progress bar (on a terminal).
+const LONG: usize = 20;
+
+/// A bar on standard error counting `len` files `done` ("read", "written"), for a
+/// series longer than [`LONG`] when standard error is a terminal.
+pub(super) fn progress(len: usize, done: &str) -> Option<indicatif::ProgressBar> {
+    if len <= LONG || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(len as u64);
+    let template = format!("walls-sim {{bar:40}} {{pos}}/{{len}} frames {done}, {{eta}} left");
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
+        bar.set_style(style);
+    }
+    Some(bar)
+}
+
+/// Writes `frames` as `kind` (the extension of --out; `None`: SVG on standard output).
+/// `series`: the frames are a run's outputs (not --frames of one picture).
+pub(super) fn write(
+    args: &PreviewArgs,
+    kind: Option<&str>,
+    scene: &Scene,
+    movie: &Movie,
+    series: bool,
+) -> Result<(), String> {
+    let frames = &movie.frames[..];
+    let readout = Readout::new(args.units.into(), &scene.units);
+    let cannot = |path: &Path, e: std::io::Error| format!("cannot write {}: {e}", path.display());
+    let path = args.out.as_deref().unwrap_or(Path::new("-"));
+    match kind {
+        None => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            svg(&mut out, args, movie, frames, &readout)
+                .and_then(|()| out.flush())
+                .map_err(|e| format!("cannot write the picture: {e}"))
+        }
+        Some("svg") => {
+            let save = |path: &Path, frames: &[MovieFrame]| {
+                let mut out = std::io::BufWriter::new(
+                    std::fs::File::create(path).map_err(|e| cannot(path, e))?,
+                );
+                svg(&mut out, args, movie, frames, &readout)
+                    .and_then(|()| out.flush())
+                    .map_err(|e| cannot(path, e))
+            };
+            save(path, frames)?;
+            if frames.len() > 1 {
+                let bar = progress(frames.len(), "written");
+                for (k, frame) in frames.iter().enumerate() {
+                    save(&numbered(path, k, "svg"), std::slice::from_ref(frame))?;
+                    if let Some(bar) = &bar {
+                        bar.inc(1);
+                    }
+                }
+                if let Some(bar) = bar {
+                    bar.finish_and_clear();
+                }
+            }
+            Ok(())
+        }
+        Some("pov") => {
+            let view = svg_view(args);
+            let pov_view = walls_preview::pov::View {
+                from: view.from,
+                aspect: f64::from(view.width) / f64::from(view.height),
+                ..walls_preview::pov::View::default()
+            };
+            // One scene, or numbered scenes FILE-000.pov…; walls from their motion.
+            let bar = progress(frames.len(), "written");
+            for (k, frame) in frames.iter().enumerate() {
+                let file = if frames.len() > 1 {
+                    numbered(path, k, "pov")
+                } else {
+                    path.to_path_buf()
+                };
+                walls_preview::pov::write_file(&file, scene, frame.t, &frame.particles, &pov_view)
+                    .map_err(|e| cannot(&file, e))?;
+                if let Some(bar) = &bar {
+                    bar.inc(1);
+                }
+            }
+            if let Some(bar) = bar {
+                bar.finish_and_clear();
+            }
+            Ok(())
+        }
+        Some("vtp") => {
+            let [frame] = frames else {
+                return Err(format!(
+                    "{} frames do not fit in one .vtp: write a ParaView collection, --out {}",
+                    frames.len(),
+                    path.with_extension("pvd").display()
+                ));
+            };
+            let mut out =
+                std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
+            walls_preview::vtk::write(
+                &mut out,
+                &frame.walls,
+                &frame.particles,
+                frame.t,
+                &vtk_scale(args.units, &readout),
+            )
+            .and_then(|()| out.flush())
+            .map_err(|e| cannot(path, e))
+        }
+        Some("pvd") => {
+            let bar = progress(frames.len(), "written");
+            walls_preview::pvd::write_file(path, frames, &vtk_scale(args.units, &readout), |_| {
+                if let Some(bar) = &bar {
+                    bar.inc(1);
+                }
+            })
+            .map_err(|e| cannot(path, e))?;
+            if let Some(bar) = bar {
+                bar.finish_and_clear();
+            }
+            Ok(())
+        }
+        Some("html") => {
+            let moving = match &args.trajectory {
+                Some(f) => Some(read_trajectory(f)?),
+                None => html_particles(frames),
+            };
+            let until = match (series, frames.last()) {
+                (true, Some(last)) => last.t,
+                _ => args.until.unwrap_or(args.time),
+            };
+            let samples = (args.frames as usize).max(frames.len()).max(101);
+            let mut out =
+                std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
+            walls_preview::html::write(&mut out, scene, moving.as_ref(), until, samples)
+                .and_then(|()| out.flush())
+                .map_err(|e| cannot(path, e))
+        }
+        Some(other) => Err(format!(
+            "cannot draw .{other} files: use .svg, .pov, .vtp, .pvd or .html (or no --out for SVG on standard output)"
+        )),
+    }
+}
+
+/// `path` numbered: `frame.svg` → `frame-007.svg`.
+fn numbered(path: &Path, k: usize, extension: &str) -> std::path::PathBuf {
+    let stem = path.with_extension("");
+    std::path::PathBuf::from(format!("{}-{k:03}.{extension}", stem.display()))
+}
+
+/// The SVG view of --view, --up and --size.
+fn svg_view(args: &PreviewArgs) -> walls_preview::svg::View {
+    use nalgebra::Vector3;
+    let v3 = |v: &Option<Vec<f64>>, default: Vector3<f64>| {
+        v.as_ref()
+            .map_or(default, |v| Vector3::new(v[0], v[1], v[2]))
+    };
+    let default = walls_preview::svg::View::default();
+    walls_preview::svg::View {
+        from: v3(&args.view, default.from),
+        up: v3(&args.up, default.up),
+        width: args.size.as_ref().map_or(default.width, |s| s[0]),
+        height: args.size.as_ref().map_or(default.height, |s| s[1]),
+    }
+}
+
+/// One SVG of `frames` of `movie` (animated when several), in the movie's box.
+fn svg(
+    out: &mut impl Write,
+    args: &PreviewArgs,
+    movie: &Movie,
+    frames: &[MovieFrame],
+    readout: &Readout,
+) -> std::io::Result<()> {
+    use walls_preview::svg::Frame;
+    let drawn: Vec<Frame> = frames
+        .iter()
+        .map(|f| Frame {
+            t: f.t,
+            walls: &f.walls,
+            particles: &f.particles,
+        })
+        .collect();
+    walls_preview::svg::write(
+        out,
+        &drawn,
+        &svg_view(args),
+        movie.bounds,
+        args.seconds,
+        readout,
+    )
+}
+
+/// The units VTK files are written in: SI or cgs converted, else pkdgrav's own.
+fn vtk_scale(units: UnitsArg, readout: &Readout) -> Scale {
+    match units {
+        UnitsArg::Si | UnitsArg::Cgs => readout.scale.clone(),
+        UnitsArg::Auto | UnitsArg::Pkdgrav => Scale::PKDGRAV,
+    }
+}
+
+/// The frames' particles as the HTML page plays them: radii and colours from the first
+/// frame, each frame's positions by particle (a particle missing from a frame stays
+/// where it was last); `None` without particles.
+fn html_particles(frames: &[MovieFrame]) -> Option<Particles> {
+    let first = frames.first().filter(|f| !f.particles.is_empty())?;
+    let mut at: Vec<_> = first.particles.iter().map(|p| p.pos).collect();
+    let mut out = Particles {
+        radii: first.particles.iter().map(|p| p.radius).collect(),
+        colors: first.particles.iter().map(|p| i64::from(p.color)).collect(),
+        ..Particles::default()
+    };
+    for f in frames {
+        for p in &f.particles {
+            if let Some(k) = first.particles.iter().position(|q| q.index == p.index) {
+                at[k] = p.pos;
+            }
+        }
+        out.times.push(f.t);
+        out.frames.push(at.clone());
+    }
+    Some(out)
+}
+
+/// Particle trajectories from the `particles.csv` of `walls-sim run --out`.
+fn read_trajectory(f: &str) -> Result<Particles, String> {
+    let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
+    let rows = read_particles(&text).map_err(|e| format!("{f}: {e}"))?;
+    frames(&rows).map_err(|line| format!("{f}: line {line}: particles out of order"))
+}
+
+/// The rows of a `particles.csv` as the frames the HTML page plays: one per output
+/// step, each particle's radius from the first (and the default colour); or the line of
+/// the first row whose particle is not the next of its step.
+fn frames(rows: &[ParticleRow]) -> Result<Particles, usize> {
+    let mut out = Particles::default();
+    for (k, row) in rows.iter().enumerate() {
+        if out.times.last() != Some(&row.t) {
+            out.times.push(row.t);
+            out.frames.push(Vec::new());
+        }
+        let frame = out.frames.last_mut().expect("pushed above");
+        if row.particle != frame.len() {
+            // Row k is on line k + 2, after the header.
+            return Err(k + 2);
+        }
+        frame.push(row.pos);
+        if out.frames.len() == 1 {
+            out.radii.push(row.radius);
+            out.colors.push(3);
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    fn row(t: f64, particle: usize, x: f64, radius: f64) -> ParticleRow {
+        ParticleRow {
+            step: 0,
+            t,
+            particle,
+            alive: true,
+            mass: 1.0,
+            radius,
+            pos: Vector3::new(x, 0.0, 0.0),
+            vel: Vector3::zeros(),
+            spin: Vector3::zeros(),
+        }
+    }
+
+    #[test]
+    fn rows_become_frames() {
+        let rows = [
+            row(0.0, 0, 1.0, 0.1),
+            row(0.0, 1, 2.0, 0.2),
+            row(0.5, 0, 3.0, 9.0),
+            row(0.5, 1, 4.0, 9.0),
+        ];
+        let x = |x: f64| Vector3::new(x, 0.0, 0.0);
+        assert_eq!(
+            frames(&rows),
+            Ok(Particles {
+                radii: vec![0.1, 0.2],
+                colors: vec![3, 3],
+                times: vec![0.0, 0.5],
+                frames: vec![vec![x(1.0), x(2.0)], vec![x(3.0), x(4.0)]],
+            })
+        );
+        // The third row (line 4) skips particle 1.
+        let rows = [
+            row(0.0, 0, 1.0, 0.1),
+            row(0.0, 1, 2.0, 0.1),
+            row(0.5, 1, 0.0, 0.1),
+        ];
+        assert_eq!(frames(&rows), Err(4));
+    }
+}

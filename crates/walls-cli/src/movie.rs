@@ -1,0 +1,389 @@
+//! A pkdgrav run's outputs as a movie (`walls-sim preview --particles`): the particles
+//! of a series of `.ss` files or of a `particles.csv` (or of a `walls-sim run --out`
+//! folder), one snapshot per output, and the frames built from them: the walls where
+//! they were at each snapshot's time, reactive walls placed from the run's
+//! `WALLSREACTviz.out` by step.
+
+use nalgebra::Vector3;
+use std::path::{Path, PathBuf};
+use walls_geometry::Particle;
+use walls_model::Scene;
+use walls_preview::MovieFrame;
+use walls_preview::mesh::Placement;
+use walls_sim::io::particles::{read_csv, read_ss};
+use walls_sim::io::trajectory::{PARTICLE_COLUMNS, read_particles};
+use walls_sim::io::wallsreact::{VIZ_FILE, VizWall, parse_viz_line};
+
+/// The particles of one output.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Snapshot {
+    /// The time (pkdgrav units), when the file says it (`.ss` headers and
+    /// `particles.csv` rows do; a particle CSV does not).
+    pub t: Option<f64>,
+    /// pkdgrav's step, when the file says it: a `.ss` file's name (`ss.00100`) or the
+    /// step column of a `particles.csv`.
+    pub step: Option<u64>,
+    /// The particles.
+    pub particles: Vec<Particle>,
+}
+
+/// What a `walls-sim run --out` folder (or pkdgrav's) holds for a movie.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunFolder {
+    /// The particle files: its `particles.csv`, else its `.ss` series (the files whose
+    /// extension is a number, `ss.00000`…), in name order.
+    pub particles: Vec<PathBuf>,
+    /// Its `WALLSREACTviz.out`, if it has one.
+    pub viz: Option<PathBuf>,
+}
+
+/// What the folder `dir` holds for a movie; an error when it has no particles.
+pub fn run_folder(dir: &Path) -> Result<RunFolder, String> {
+    let csv = dir.join("particles.csv");
+    let viz = Some(dir.join(VIZ_FILE)).filter(|p| p.is_file());
+    if csv.is_file() {
+        return Ok(RunFolder {
+            particles: vec![csv],
+            viz,
+        });
+    }
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
+    let mut series: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_file() && trailing_step(p).is_some())
+        .collect();
+    if series.is_empty() {
+        return Err(format!(
+            "{}: no particles.csv and no .ss outputs (ss.00000…)",
+            dir.display()
+        ));
+    }
+    series.sort();
+    Ok(RunFolder {
+        particles: series,
+        viz,
+    })
+}
+
+/// The step in a pkdgrav output's name: the digits after its last dot (`ss.00100`).
+pub fn trailing_step(path: &Path) -> Option<u64> {
+    let name = path.file_name()?.to_str()?;
+    let (_, digits) = name.rsplit_once('.')?;
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    digits.parse().ok()
+}
+
+/// The snapshots of the particle file at `path`: one for a `.ss` file or a particle CSV,
+/// one per output step for a `particles.csv` of `walls-sim run --out`. Errors name the
+/// file and the line or byte.
+pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
+    let name = path.display();
+    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {name}: {e}"))?;
+    let csv = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    if !csv {
+        let (t, particles) = read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?;
+        return Ok(vec![Snapshot {
+            t: Some(t),
+            step: trailing_step(path),
+            particles,
+        }]);
+    }
+    let text = String::from_utf8_lossy(&bytes);
+    if text.starts_with(&PARTICLE_COLUMNS[..3].join(",")) {
+        let rows = read_particles(&text).map_err(|e| format!("{name}: {e}"))?;
+        return Ok(trajectory_snapshots(&rows));
+    }
+    let particles = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
+    Ok(vec![Snapshot {
+        t: None,
+        step: None,
+        particles,
+    }])
+}
+
+/// The rows of a `particles.csv` as one snapshot per output step (consecutive rows of
+/// one step), with the particles still in the run; a row's particle is its index.
+fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<Snapshot> {
+    let mut out: Vec<Snapshot> = Vec::new();
+    for row in rows {
+        let same = out
+            .last()
+            .is_some_and(|s| s.step == Some(row.step) && s.t == Some(row.t));
+        if !same {
+            out.push(Snapshot {
+                t: Some(row.t),
+                step: Some(row.step),
+                particles: Vec::new(),
+            });
+        }
+        if row.alive {
+            let last = out.last_mut().expect("pushed above");
+            last.particles.push(Particle {
+                mass: row.mass,
+                radius: row.radius,
+                pos: row.pos,
+                vel: row.vel,
+                spin: row.spin,
+                color: 3,
+                index: i32::try_from(row.particle).unwrap_or(i32::MAX),
+            });
+        }
+    }
+    out
+}
+
+/// The steps of a `WALLSREACTviz.out`: each line's step label and its walls'
+/// placements, in file order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct VizSteps {
+    steps: Vec<(u64, Vec<Placement>)>,
+}
+
+impl VizSteps {
+    /// Reads the text of a `WALLSREACTviz.out`; the error says the line that is not a
+    /// viz line.
+    pub fn parse(text: &str) -> Result<VizSteps, String> {
+        let mut steps = Vec::new();
+        for (n, line) in text.lines().enumerate() {
+            if line.trim().is_empty() {
+                continue;
+            }
+            let (step, walls) = parse_viz_line(line)
+                .ok_or_else(|| format!("line {}: not a {VIZ_FILE} line", n + 1))?;
+            steps.push((step, walls.into_iter().map(placement).collect()));
+        }
+        if steps.is_empty() {
+            return Err("no steps".into());
+        }
+        Ok(VizSteps { steps })
+    }
+
+    /// The placements of the last line.
+    pub fn last(&self) -> &[Placement] {
+        self.steps.last().map_or(&[], |(_, p)| p)
+    }
+
+    /// The placements for `step`: the line labelled `step`, whether exactly; else the
+    /// last line whose label is at or before it (none when every label is after).
+    pub fn at(&self, step: u64) -> (Option<&[Placement]>, bool) {
+        if let Some((_, p)) = self.steps.iter().rev().find(|(s, _)| *s == step) {
+            return (Some(p), true);
+        }
+        let before = self
+            .steps
+            .iter()
+            .filter(|(s, _)| *s <= step)
+            .max_by_key(|(s, _)| *s);
+        (before.map(|(_, p)| p.as_slice()), false)
+    }
+}
+
+/// walls-preview's placement of a wall as the viz file gives it.
+pub fn placement(wall: VizWall) -> Placement {
+    match wall {
+        VizWall::Polygon {
+            id,
+            origin,
+            vertex1,
+            vertex2,
+        } => Placement::Polygon {
+            wall: id,
+            origin,
+            vertex1,
+            vertex2,
+        },
+        VizWall::Round { id, origin, orient } => Placement::Round {
+            wall: id,
+            origin,
+            orient,
+        },
+    }
+}
+
+/// A movie's frames, the box around them, and what to warn of.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Movie {
+    /// The frames, by time.
+    pub frames: Vec<MovieFrame>,
+    /// The one box around every frame's walls and particles, to which planes are cut
+    /// and which pictures fit.
+    pub bounds: (Vector3<f64>, Vector3<f64>),
+    /// Frames whose step has no line of the `WALLSREACTviz.out`, if any.
+    pub warning: Option<String>,
+}
+
+/// The frames of a movie of `scene` with `segments` around round shapes: one per
+/// snapshot, sorted by time (a snapshot without one at `t0`), every wall where its
+/// motion has it then, in one box around all the walls and particles of the movie;
+/// reactive walls placed from `viz` by step (a frame without a step: the last line).
+pub fn frames(
+    scene: &Scene,
+    snapshots: Vec<Snapshot>,
+    t0: f64,
+    viz: Option<&VizSteps>,
+    segments: usize,
+) -> Movie {
+    let mut snapshots: Vec<(f64, Snapshot)> = snapshots
+        .into_iter()
+        .map(|s| (s.t.unwrap_or(t0), s))
+        .collect();
+    snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
+    let times: Vec<f64> = snapshots.iter().map(|(t, _)| *t).collect();
+    let all: Vec<Particle> = snapshots
+        .iter()
+        .flat_map(|(_, s)| s.particles.iter().cloned())
+        .collect();
+    let bounds = walls_geometry::scene_bounds_at(&walls_geometry::decode(scene), &all, &times);
+    let mut unmatched: Vec<u64> = Vec::new();
+    let frames = snapshots
+        .into_iter()
+        .map(|(t, s)| {
+            let mut walls = walls_preview::wall_meshes_in(scene, t, segments, &bounds);
+            if let Some(viz) = viz {
+                let placed = match s.step {
+                    None => Some(viz.last()),
+                    Some(step) => {
+                        let (placed, exact) = viz.at(step);
+                        if !exact {
+                            unmatched.push(step);
+                        }
+                        placed
+                    }
+                };
+                if let Some(placed) = placed {
+                    walls_preview::mesh::place(&mut walls, scene, placed);
+                }
+            }
+            MovieFrame {
+                t,
+                step: s.step,
+                walls,
+                particles: s.particles,
+            }
+        })
+        .collect();
+    let warning = unmatched.first().map(|first| {
+        format!(
+            "{} frame(s) have no {VIZ_FILE} line of their step (the first, step {first}): each takes the last line before its step, or the walls as the walls file places them when there is none",
+            unmatched.len()
+        )
+    });
+    Movie {
+        frames,
+        bounds,
+        warning,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use walls_sim::io::particles::write_ss;
+    use walls_sim::io::wallsreact::viz_line;
+
+    fn scene(text: &str) -> Scene {
+        let options = walls_model::Options::default();
+        walls_model::analyze(&walls_syntax::parse(text).tree, &options).scene
+    }
+
+    #[test]
+    fn steps_come_from_names() {
+        assert_eq!(trailing_step(Path::new("out/ss.00100")), Some(100));
+        assert_eq!(trailing_step(Path::new("ss.ss")), None);
+        assert_eq!(trailing_step(Path::new("ss.")), None);
+    }
+
+    #[test]
+    fn a_series_reads_as_snapshots_sorted_by_time() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = |x: f64| Particle::at_rest(0.1, Vector3::new(x, 0.0, 0.0), 0);
+        // Written out of order: the frames follow the times in the headers.
+        std::fs::write(dir.path().join("ss.00010"), write_ss(0.5, &[p(2.0)])).unwrap();
+        std::fs::write(dir.path().join("ss.00000"), write_ss(0.0, &[p(1.0)])).unwrap();
+        std::fs::write(dir.path().join("notes.txt"), "not an output").unwrap();
+        let folder = run_folder(dir.path()).unwrap();
+        assert_eq!(folder.particles.len(), 2);
+        assert_eq!(folder.viz, None);
+        let mut snapshots = Vec::new();
+        for f in folder.particles.iter().rev() {
+            snapshots.extend(read_snapshots(f).unwrap());
+        }
+        let s = scene("wall type disk\n  radius 0.5\n  velocity 0 0 1\n");
+        let Movie {
+            frames, warning, ..
+        } = frames(&s, snapshots, 0.0, None, 8);
+        assert_eq!(warning, None);
+        let ts: Vec<f64> = frames.iter().map(|f| f.t).collect();
+        assert_eq!(ts, [0.0, 0.5]);
+        assert_eq!(frames[1].step, Some(10));
+        assert_eq!(frames[1].particles[0].pos.x, 2.0);
+        // The disk moves up at 1: at 0.5 its origin is 0.5 up.
+        assert_eq!(frames[1].walls[0].origin.z, 0.5);
+    }
+
+    #[test]
+    fn a_bad_file_is_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let bad = dir.path().join("ss.00100");
+        std::fs::write(&bad, [0u8; 20]).unwrap();
+        let e = read_snapshots(&bad).unwrap_err();
+        assert!(e.starts_with(&bad.display().to_string()), "{e}");
+    }
+
+    #[test]
+    fn reactive_walls_are_placed_by_step() {
+        let s = scene("wall type disk\n  radius 0.5\n");
+        let at = |z: f64| VizWall::Round {
+            id: 0,
+            origin: Vector3::new(0.0, 0.0, z),
+            orient: Vector3::z(),
+        };
+        let text = viz_line(0, &[at(1.0)]) + &viz_line(100, &[at(2.0)]);
+        let viz = VizSteps::parse(&text).unwrap();
+        let snapshot = |step| Snapshot {
+            t: Some(step as f64),
+            step: Some(step),
+            particles: Vec::new(),
+        };
+        let snapshots = vec![snapshot(0), snapshot(100), snapshot(150)];
+        let Movie {
+            frames, warning, ..
+        } = frames(&s, snapshots, 0.0, Some(&viz), 8);
+        let z: Vec<f64> = frames.iter().map(|f| f.walls[0].origin.z).collect();
+        // Step 150 has no line: the last before it (step 100) places it, with a warning.
+        assert_eq!(z, [1.0, 2.0, 2.0]);
+        let warning = warning.unwrap();
+        assert!(warning.starts_with("1 frame(s)"), "{warning}");
+        assert!(warning.contains("step 150"), "{warning}");
+        assert_eq!(
+            VizSteps::parse("0 1 2\nnot a line\n"),
+            Err(format!("line 1: not a {VIZ_FILE} line"))
+        );
+    }
+
+    #[test]
+    fn a_trajectory_reads_as_one_snapshot_per_step() {
+        let dir = tempfile::tempdir().unwrap();
+        let csv = dir.path().join("particles.csv");
+        let header = PARTICLE_COLUMNS.join(",");
+        std::fs::write(
+            &csv,
+            format!(
+                "{header}\n0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0\n0,0,1,1,1,0.1,1,0,0,0,0,0,0,0,0\n5,0.25,0,1,1,0.1,0,0,2,0,0,0,0,0,0\n5,0.25,1,0,1,0.1,1,0,0,0,0,0,0,0,0\n"
+            ),
+        )
+        .unwrap();
+        let snapshots = read_snapshots(&csv).unwrap();
+        assert_eq!(snapshots.len(), 2);
+        assert_eq!(snapshots[1].step, Some(5));
+        assert_eq!(snapshots[1].t, Some(0.25));
+        // Particle 1 has left the run by step 5.
+        assert_eq!(snapshots[1].particles.len(), 1);
+        assert_eq!(snapshots[1].particles[0].pos.z, 2.0);
+    }
+}
