@@ -47,6 +47,9 @@ pub struct PreviewArgs {
     /// writes.
     #[arg(long, value_name = "FILE")]
     pub trajectory: Option<String>,
+    /// HTML: draw each particle's path over its last N frames.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=100000))]
+    pub trails: Option<u64>,
     /// The direction to look from (towards the scene).
     #[arg(long, num_args = 3, value_names = ["X", "Y", "Z"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     pub view: Option<Vec<f64>>,
@@ -108,9 +111,9 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .as_ref()
         .and_then(|p| p.extension())
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let placed = matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd"));
+    let placed = matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd" | "html"));
     if args.reactive.is_some() && !placed {
-        return Err("--reactive is drawn in .svg, .vtp and .pvd pictures only".into());
+        return Err("--reactive is drawn in .svg, .vtp, .pvd and .html pictures only".into());
     }
     let (snapshots, found_viz) = read_particles(&args.particles)?;
     // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.

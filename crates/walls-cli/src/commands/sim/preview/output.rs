@@ -134,18 +134,27 @@ pub(super) fn write(
             Ok(())
         }
         Some("html") => {
-            let moving = match &args.trajectory {
-                Some(f) => Some(read_trajectory(f)?),
-                None => html_particles(frames),
-            };
-            let until = match (series, frames.last()) {
-                (true, Some(last)) => last.t,
-                _ => args.until.unwrap_or(args.time),
-            };
-            let samples = (args.frames as usize).max(frames.len()).max(101);
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            walls_preview::html::write(&mut out, scene, moving.as_ref(), until, samples)
+            let written = if series || args.trajectory.is_none() && frames.len() > 1 {
+                // A run's outputs (or --frames): the frames as they are, reactive walls
+                // placed, particles matched by index.
+                let options = walls_preview::html::MovieOptions {
+                    readout,
+                    trails: args.trails.map(|n| n as usize),
+                    title: format!("walls preview: {}", args.file),
+                };
+                walls_preview::html::write_movie(&mut out, scene, frames, &options)
+            } else {
+                // One picture: the walls' motion over [0, --until] (or a trajectory).
+                let moving = match &args.trajectory {
+                    Some(f) => Some(read_trajectory(f)?),
+                    None => html_particles(frames),
+                };
+                let until = args.until.unwrap_or(args.time);
+                walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
+            };
+            written
                 .and_then(|()| out.flush())
                 .map_err(|e| cannot(path, e))
         }
