@@ -241,9 +241,8 @@ pub fn resolve(
         ContactModel::Hsdem => defaults::default_hard_dt(scene, &particles, &gravity, t_end),
     };
     // A timestep of the run's own ends on the end time after a whole number of steps.
-    let dt_for = |t_end: f64| {
-        given_dt.unwrap_or_else(|| defaults::whole_steps(default_dt(t_end), t_end))
-    };
+    let dt_for =
+        |t_end: f64| given_dt.unwrap_or_else(|| defaults::whole_steps(default_dt(t_end), t_end));
     let (dt, t_end) = match (flags.t_end, last_step) {
         (Some(t_end), _) => (dt_for(t_end), t_end),
         (None, Some(last)) => {

@@ -28,7 +28,10 @@ fn embedded_inside_the_tube(walls: &[Wall], radius: f64, length: f64) {
     for p in &particles {
         let axial = Vec3::new(p.pos.x, p.pos.y, 0.0).norm();
         assert!(axial + p.radius < radius, "{p:?} inside the tube");
-        assert!(p.pos.z - p.radius > 0.0 && p.pos.z + p.radius < length, "{p:?}");
+        assert!(
+            p.pos.z - p.radius > 0.0 && p.pos.z + p.radius < length,
+            "{p:?}"
+        );
         // 2 % of the tube's length.
         assert!((p.radius / (0.02 * length) - 1.0).abs() < 1e-12, "{p:?}");
     }
@@ -166,7 +169,10 @@ fn a_given_timestep_that_does_not_divide_t_end_runs_past_it_and_says_so() {
         out.warnings[0].to_string(),
         "the end time 1 is not a whole number of timesteps: the run ends at step 4, t = 1.2, not at --t-end (give a timestep that divides it, or leave --dt out)"
     );
-    assert!(matches!(out.warnings[0], Warning::EndsAfterTEnd { step: 4, .. }));
+    assert!(matches!(
+        out.warnings[0],
+        Warning::EndsAfterTEnd { step: 4, .. }
+    ));
     // A timestep that divides it, up to round-off, does not warn and ends on it.
     let flags = Flags {
         dt: Some(0.1),
@@ -181,9 +187,8 @@ fn a_given_timestep_that_does_not_divide_t_end_runs_past_it_and_says_so() {
 
 #[test]
 fn the_walls_run_alone_for_two_oscillation_periods() {
-    let walls = scene(
-        "wall type disk radius 1 osc-ampl 0.1 osc-freq 6.283185307179586 osc-vec 0 0 1\n",
-    );
+    let walls =
+        scene("wall type disk radius 1 osc-ampl 0.1 osc-freq 6.283185307179586 osc-vec 0 0 1\n");
     let flags = Flags {
         no_particles: true,
         ..Flags::default()

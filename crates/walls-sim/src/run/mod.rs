@@ -181,7 +181,6 @@ impl Settings {
         self.start_step as f64 * self.dt
     }
 
-
     /// The number of the run's last step: `last_step`, else the first whose time
     /// reaches `t_end` (up to a billionth of the count: round-off, not a step).
     pub fn end_step(&self) -> u64 {
