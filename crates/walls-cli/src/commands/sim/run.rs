@@ -20,7 +20,8 @@ pub struct RunArgs {
     #[arg(value_name = "FILE")]
     pub file: Option<String>,
     /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
-    /// .ss file. Without it, nine particles are dropped onto the scene.
+    /// .ss file. Without it, nine particles are dropped inside the scene's container
+    /// (or onto the scene when it has none).
     #[allow(
         rustdoc::broken_intra_doc_links,
         reason = "the brackets are --help's optional columns"
@@ -51,7 +52,8 @@ pub struct RunArgs {
     /// end on --t-end).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub dt: Option<f64>,
-    /// When to stop (default: three free falls over the scene).
+    /// When to stop (default: three free falls over the scene; without particles, two
+    /// oscillation periods).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub t_end: Option<f64>,
     /// Uniform gravity.
