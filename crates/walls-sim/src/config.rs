@@ -5,7 +5,9 @@
 //! The walls file is the command line's, else the `.par` file's `achWallsFile`; the
 //! particles come from `--particles`, else from the `.par` file's `achInFile`; both
 //! `.par` paths are relative to the `.par` file's folder. Without particles from a file,
-//! nine particles are dropped onto the scene; gravity defaults to −z only for those.
+//! nine particles are dropped onto the scene (or, with `--no-particles`, none: the walls
+//! run alone); gravity defaults to −z only for those two. A particle file with no
+//! particles runs the walls alone too.
 //!
 //! A run from a `.par` file is pkdgrav's run (`reference/pkdgrav/physics.md` §3–4): a
 //! material key the file leaves out takes pkdgrav's default (ε 1, no friction,
@@ -19,7 +21,7 @@ use crate::build::Build;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
-use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings, default_dt};
+use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -31,6 +33,8 @@ type Vec3 = Vector3<f64>;
 pub struct Flags {
     /// `--particles`: a CSV or `.ss` file.
     pub particles: Option<String>,
+    /// `--no-particles`: the walls alone, instead of the embedded particles.
+    pub no_particles: bool,
     /// `--par`: a pkdgrav parameter file.
     pub par: Option<String>,
     /// `--method`.
@@ -90,8 +94,6 @@ pub enum ConfigError {
     /// The `.par` file or the particle file could not be read, or is wrong (the error
     /// names the file and the line or byte).
     File(FileError),
-    /// The particle file has no particles.
-    NoParticles,
 }
 
 impl From<FileError> for ConfigError {
@@ -104,7 +106,6 @@ impl std::fmt::Display for ConfigError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             ConfigError::File(e) => e.fmt(f),
-            ConfigError::NoParticles => write!(f, "no particles to run"),
         }
     }
 }
@@ -145,9 +146,13 @@ fn beside_par(flags: &Flags, name: &str) -> Option<String> {
     Some(par_dir.join(name).to_string_lossy().into_owned())
 }
 
-/// The particle file to read: `--particles`, else the `.par` file's `achInFile`, taken
-/// relative to the `.par` file's folder; `None` for the default particles.
+/// The particle file to read: `--particles`, else (unless `--no-particles`) the `.par`
+/// file's `achInFile`, taken relative to the `.par` file's folder; `None` for the
+/// default particles or none.
 pub fn particle_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
+    if flags.no_particles {
+        return flags.particles.clone();
+    }
     flags
         .particles
         .clone()
@@ -163,7 +168,12 @@ pub fn walls_file(file: Option<&str>, flags: &Flags, par: Option<&Params>) -> Op
 }
 
 /// The run's settings from `flags`, then `par`, then the defaults for `scene` and the
-/// `particles` read from the particle file (`None`: the default particles).
+/// `particles` read from the particle file (`None`: the default particles, or none with
+/// `--no-particles`).
+///
+/// A default timestep is shortened so that a whole number of steps ends on the end
+/// time ([`defaults::whole_steps`]); a given one is kept, and a run whose end time is
+/// not a whole number of them ends after it (W108).
 pub fn resolve(
     flags: &Flags,
     par: Option<&Params>,
@@ -171,12 +181,10 @@ pub fn resolve(
     particles: Option<Vec<Particle>>,
 ) -> Result<Run, ConfigError> {
     let (particles, embedded) = match particles {
+        _ if flags.no_particles && flags.particles.is_none() => (Vec::new(), true),
         Some(ps) => (ps, false),
         None => (defaults::default_particles(scene), true),
     };
-    if particles.is_empty() {
-        return Err(ConfigError::NoParticles);
-    }
     // pkdgrav's `bDoGravity = 0`: no forces at all, uniform gravity included.
     let forces = par.and_then(|p| p.do_gravity).unwrap_or(true);
     let gravity = match (flags.gravity, par.and_then(|p| p.gravity)) {
@@ -225,20 +233,23 @@ pub fn resolve(
     };
     // The timestep's default needs a spring: with dKn = 0, the scene's.
     let dt_k_n = if k_n > 0.0 { k_n } else { derived_k_n() };
-    let dt_for = |t_end: f64| {
-        flags
-            .dt
-            .or(from_par(|p| p.dt))
-            .unwrap_or_else(|| match method {
-                ContactModel::Ssdem => default_dt(&particles, dt_k_n),
-                ContactModel::Hsdem => defaults::default_hard_dt(&particles, &gravity, t_end),
-            })
+    let given_dt = flags.dt.or(from_par(|p| p.dt));
+    let default_dt = |t_end: f64| match method {
+        ContactModel::Ssdem => {
+            defaults::default_soft_dt(scene, &particles, &gravity, dt_k_n, t_end)
+        }
+        ContactModel::Hsdem => defaults::default_hard_dt(scene, &particles, &gravity, t_end),
     };
+    // A timestep of the run's own ends on the end time after a whole number of steps.
+    let dt_for =
+        |t_end: f64| given_dt.unwrap_or_else(|| defaults::whole_steps(default_dt(t_end), t_end));
     let (dt, t_end) = match (flags.t_end, last_step) {
         (Some(t_end), _) => (dt_for(t_end), t_end),
         (None, Some(last)) => {
             // pkdgrav's steps are counted; the time span follows from the timestep.
-            let dt = dt_for(defaults::default_duration(scene, &particles, &gravity));
+            let dt = given_dt.unwrap_or_else(|| {
+                default_dt(defaults::default_duration(scene, &particles, &gravity))
+            });
             (dt, last as f64 * dt)
         }
         (None, None) => {
@@ -272,6 +283,7 @@ pub fn resolve(
         planning: flags.planning,
         start_step,
         last_step,
+        dt_given: given_dt.is_some(),
         ..Settings::new(dt, t_end, material)
     };
     Ok(Run {

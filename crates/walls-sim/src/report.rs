@@ -1,11 +1,13 @@
 //! What a run reports: the parts of the model it used, its outcome as JSON
-//! (`walls-sim run --json`) and its one-line summary for people.
+//! (`walls-sim run --json`, in pkdgrav units) and its one-line summary for people (its
+//! times in the units a [`Readout`] shows).
 
 use crate::run::{ContactModel, EventKind, Outcome, Planning, Settings};
 use nalgebra::Vector3;
 use serde_json::{Value, json};
 use walls_geometry::Particle;
 use walls_geometry::Wall;
+use walls_geometry::units::Readout;
 
 /// The parts of the model a run used, for the JSON `model` field: the plan's (as the
 /// run saw it), plus sticky and death walls when a particle met one.
@@ -58,14 +60,14 @@ pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &O
     })
 }
 
-/// One line for people: the time reached, the steps, the particles, the events, the
-/// contacts and the energy.
-pub fn summary(settings: &Settings, out: &Outcome) -> String {
+/// One line for people: the time reached and the timestep (as `readout` shows times),
+/// the steps, the particles, the events, the contacts and the energy.
+pub fn summary(settings: &Settings, out: &Outcome, readout: &Readout) -> String {
     format!(
-        "t = {:.6} after {} steps of {:.3e}: {} particles ({} alive), {} wall events, {} particle contacts, energy {:.6e} → {:.6e}",
-        out.t,
+        "t = {} after {} steps of {}: {} particles ({} alive), {} wall events, {} particle contacts, energy {:.6e} → {:.6e}",
+        readout.time(out.t),
         out.steps,
-        settings.dt,
+        readout.time(settings.dt),
         out.particles.len(),
         out.particles.iter().filter(|s| s.alive).count(),
         out.events.len(),

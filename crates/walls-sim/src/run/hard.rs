@@ -554,7 +554,7 @@ impl<'a> HardStepper<'a> {
 
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
-        self.settings.due(self.steps, self.t)
+        self.settings.due(self.steps)
     }
 
     /// One step: kick, drift from collision to collision, kick.
@@ -639,8 +639,8 @@ impl<'a> HardStepper<'a> {
     /// kick of gravity, and those held by sticky walls move with them.
     fn closing_kick(&mut self) {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
-        self.t += dt;
         self.steps += 1;
+        self.t = self.settings.time_at(self.steps);
         for s in self.states.iter_mut() {
             if s.free() {
                 s.particle.vel += g * (dt / 2.0);

@@ -81,6 +81,11 @@ pub struct Settings {
     pub dt: f64,
     /// When to stop, unless `last_step` says.
     pub t_end: f64,
+    /// Whether the timestep is the user's (`--dt`, the `.par` file's `dDelta`) rather
+    /// than a default shortened to end on `t_end`: a run of time whose `t_end` is not a
+    /// whole number of such steps ends after it, and says so (W108). [`Settings::new`]
+    /// leaves it off.
+    pub dt_given: bool,
     /// The number of the step the run starts after: it starts at `start_step`·`dt`, and
     /// its steps are numbered from `start_step` + 1 (pkdgrav's `iStartStep`).
     pub start_step: u64,
@@ -147,6 +152,7 @@ impl Settings {
             build: crate::build::Build::default(),
             dt,
             t_end,
+            dt_given: false,
             start_step: 0,
             last_step: None,
             gravity: Vec3::zeros(),
@@ -175,12 +181,40 @@ impl Settings {
         self.start_step as f64 * self.dt
     }
 
-    /// Whether a run that has reached step number `step` at time `t` takes another.
-    fn due(&self, step: u64, t: f64) -> bool {
+    /// The number of the run's last step: `last_step`, else the first whose time
+    /// reaches `t_end` (up to a billionth of the count: round-off, not a step).
+    pub fn end_step(&self) -> u64 {
         match self.last_step {
-            Some(last) => step < last,
-            None => t < self.t_end - self.dt * 1e-9,
+            Some(last) => last,
+            None => {
+                let x = self.t_end / self.dt;
+                let n = (x - 1e-9 * x.max(1.0)).ceil().max(0.0);
+                if n.is_finite() { n as u64 } else { u64::MAX }
+            }
         }
+    }
+
+    /// Whether a run of time (no `last_step`) ends exactly on `t_end`: whether `t_end`
+    /// is a whole number of steps (to a billionth of the count).
+    fn ends_on_t_end(&self) -> bool {
+        let x = self.t_end / self.dt;
+        (self.end_step() as f64 - x).abs() <= 1e-9 * x.max(1.0)
+    }
+
+    /// The time after step number `step`: `step`·`dt`, the start time plus whole steps
+    /// with no accumulated round-off, and exactly `t_end` at the last step of a run
+    /// that ends on it.
+    pub fn time_at(&self, step: u64) -> f64 {
+        if self.last_step.is_none() && step == self.end_step() && self.ends_on_t_end() {
+            self.t_end
+        } else {
+            step as f64 * self.dt
+        }
+    }
+
+    /// Whether a run that has reached step number `step` takes another.
+    fn due(&self, step: u64) -> bool {
+        step < self.end_step()
     }
 }
 
@@ -351,6 +385,18 @@ pub fn run_observed(
             walls: walls.len(),
         });
     }
+    let step = settings.end_step();
+    if settings.dt_given
+        && settings.last_step.is_none()
+        && !settings.ends_on_t_end()
+        && settings.start_step + outcome.steps == step
+    {
+        first.push(Warning::EndsAfterTEnd {
+            step,
+            t: settings.time_at(step),
+            t_end: settings.t_end,
+        });
+    }
     outcome.warnings.splice(0..0, first);
     outcome
 }
@@ -418,7 +464,7 @@ fn energy(states: &[State], g: &Vec3) -> f64 {
             0.5 * p.mass * p.vel.norm_squared() + 0.5 * inertia * p.spin.norm_squared()
                 - p.mass * g.dot(&p.pos)
         })
-        .sum()
+        .fold(0.0, |e, x| e + x)
 }
 
 /// A wall as it stands at one time: where its origin is, its shape there, and how its

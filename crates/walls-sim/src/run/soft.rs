@@ -681,7 +681,7 @@ impl<'a> SoftStepper<'a> {
 
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
-        self.settings.due(self.steps, self.t)
+        self.settings.due(self.steps)
     }
 
     /// One step: kick and drift, the walls and assemblies moved on, the forces of the
@@ -774,8 +774,8 @@ impl<'a> SoftStepper<'a> {
                 self.origins.advance(self.scene, self.t, dt);
             }
         }
-        self.t += dt;
         self.steps += 1;
+        self.t = self.settings.time_at(self.steps);
         if self.plan.moving_walls {
             self.now = if pkdgrav {
                 // pkdgrav's walls move at the velocity of half a step later (§5).

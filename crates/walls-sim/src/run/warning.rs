@@ -215,6 +215,16 @@ pub enum Warning {
         /// How many walls the scene has.
         walls: usize,
     },
+    /// W108: the timestep given does not divide the end time: the run takes whole
+    /// steps, and its last ends after `--t-end`.
+    EndsAfterTEnd {
+        /// The number of the last step.
+        step: u64,
+        /// Its time, `step`·dt.
+        t: f64,
+        /// The end time asked for.
+        t_end: f64,
+    },
     /// W402: walls with a mass (and an assembly) in a soft-sphere run whose pkdgrav build
     /// lacks `DEM_WALLS_REACT`: pkdgrav then reads the masses and ignores them, and so
     /// does the run; the walls move as their motion tokens say.
@@ -274,6 +284,7 @@ impl Warning {
             Warning::TwoLayerTokensIgnored { .. } => "W502",
             Warning::MassesIgnored { .. } => "W402",
             Warning::StuckToNoWall { .. } => "W107",
+            Warning::EndsAfterTEnd { .. } => "W108",
             Warning::AggregatesIgnored { .. } => "W601",
             Warning::SingleMemberAggregate { .. } => "W602",
             Warning::AggregateHeld { .. } => "W603",
@@ -392,6 +403,10 @@ impl fmt::Display for Warning {
                 f,
                 "particles {particles:?} have a negative colour, which pkdgrav reads as stuck to wall -1 - colour, but the scene has {walls} walls: they run free"
             ),
+            Warning::EndsAfterTEnd { step, t, t_end } => write!(
+                f,
+                "the end time {t_end} is not a whole number of timesteps: the run ends at step {step}, t = {t}, not at --t-end (give a timestep that divides it, or leave --dt out)"
+            ),
             Warning::MassesIgnored { walls } => write!(
                 f,
                 "walls {walls:?} have a mass, but the pkdgrav build lacks DEM_WALLS_REACT: pkdgrav without it ignores wall masses, and so does this run (the walls move as their motion tokens say); add DEM_WALLS_REACT to --pkdgrav-build for reactive walls"
@@ -503,6 +518,11 @@ mod tests {
                 reason: "the build lacks DEM_TWOLAYERS".into(),
             },
             Warning::MassesIgnored { walls: vec![0, 2] },
+            Warning::EndsAfterTEnd {
+                step: 4,
+                t: 1.2,
+                t_end: 1.0,
+            },
             Warning::StuckToNoWall {
                 particles: vec![3],
                 walls: 2,

@@ -8,6 +8,7 @@ use crate::ContactModel;
 use std::io::IsTerminal;
 use std::process::ExitCode;
 use walls_geometry::Particle;
+use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
 use walls_sim::run::Settings;
@@ -19,13 +20,19 @@ pub struct RunArgs {
     #[arg(value_name = "FILE")]
     pub file: Option<String>,
     /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
-    /// .ss file. Without it, nine particles are dropped onto the scene.
+    /// .ss file. Without it, nine particles are dropped inside the scene's container
+    /// (or onto the scene when it has none).
     #[allow(
         rustdoc::broken_intra_doc_links,
         reason = "the brackets are --help's optional columns"
     )]
     #[arg(long, value_name = "FILE")]
     pub particles: Option<String>,
+    /// Run the walls alone, with no particles (instead of the nine dropped onto the
+    /// scene, or the --par file's achInFile): oscillating walls move, reactive walls
+    /// fall.
+    #[arg(long, conflicts_with = "particles")]
+    pub no_particles: bool,
     /// A pkdgrav parameter file: timestep, steps, output interval, material, gravity,
     /// and the walls file (achWallsFile) and particle file (achInFile) when not given
     /// here. Keys the evaluator does not follow are warned about.
@@ -40,10 +47,13 @@ pub struct RunArgs {
     /// on their physics.
     #[arg(long, value_name = "OPTIONS", value_parser = build_option, conflicts_with = "method")]
     pub pkdgrav_build: Option<walls_sim::build::Build>,
-    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle).
+    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle, no more than
+    /// lets anything move 2 % of the smallest radius, and shortened so that whole steps
+    /// end on --t-end).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub dt: Option<f64>,
-    /// When to stop (default: three free falls over the scene).
+    /// When to stop (default: three free falls over the scene; without particles, two
+    /// oscillation periods).
     #[arg(long, value_parser = ruled(Rule::Positive))]
     pub t_end: Option<f64>,
     /// Uniform gravity.
@@ -107,9 +117,26 @@ pub struct RunArgs {
     /// Steps between trajectory rows (default: the --par file's iOutInterval, else 100).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub every: Option<u64>,
-    /// Print the result as JSON on standard output.
+    /// Print the result as JSON on standard output (always in pkdgrav units).
     #[arg(long)]
     pub json: bool,
+    /// The units of the summary's times: pkdgrav's, with the walls file's own beside
+    /// them when it sets some (auto); pkdgrav's alone; centimetres-grams-seconds; or SI.
+    #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
+    pub units: UnitsArg,
+}
+
+/// The units a run's summary speaks in.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum UnitsArg {
+    /// pkdgrav's, and the walls file's own beside them when it sets units.
+    Auto,
+    /// pkdgrav's alone.
+    Pkdgrav,
+    /// Centimetres, grams, seconds.
+    Cgs,
+    /// Metres, kilograms, seconds.
+    Si,
 }
 
 /// `--pkdgrav-build`'s value.
@@ -159,6 +186,8 @@ pub struct Prepared {
     pub every: u64,
     /// The `.ss` outputs' base name and digits (`achOutName`, `nDigits`).
     pub ss_name: (String, usize),
+    /// How the summary shows times: `--units` for the walls file's units.
+    pub readout: walls_geometry::units::Readout,
 }
 
 /// Steps between outputs when neither `--every` nor the `.par` file says.
@@ -191,6 +220,15 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         .map_or(args.method, walls_sim::build::Build::contact_model);
     let (checked, errors) = read_walls(&file, model, "running")?;
     let walls = decode(&checked.scene);
+    let readout = walls_geometry::units::Readout::new(
+        match args.units {
+            UnitsArg::Auto => System::Auto,
+            UnitsArg::Pkdgrav => System::Pkdgrav,
+            UnitsArg::Cgs => System::Cgs,
+            UnitsArg::Si => System::Si,
+        },
+        &checked.scene.units,
+    );
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &args.par {
         for w in &run.warnings {
@@ -214,6 +252,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         errors,
         every,
         ss_name,
+        readout,
     })
 }
 
@@ -222,6 +261,7 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
     use walls_sim::run::{Integrator, Planning};
     walls_sim::config::Flags {
         particles: args.particles.clone(),
+        no_particles: args.no_particles,
         par: args.par.clone(),
         method: args.method,
         build: args.pkdgrav_build.clone(),
@@ -267,6 +307,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         errors,
         every,
         ss_name,
+        readout,
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
@@ -281,7 +322,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     let first = settings.start_step;
     let progress = progress_bar(match settings.last_step {
         Some(last) => last.saturating_sub(first),
-        None => ((settings.t_end - settings.t_start()) / settings.dt).ceil() as u64,
+        None => settings.end_step().saturating_sub(first),
     });
     let mut written: std::io::Result<()> = Ok(());
     if let Some(out) = &mut trajectory {
@@ -354,7 +395,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     } else {
         eprintln!(
             "walls-sim: {}",
-            walls_sim::report::summary(&settings, &outcome)
+            walls_sim::report::summary(&settings, &outcome, &readout)
         );
         for w in &outcome.warnings {
             eprintln!("walls-sim: warning: {w}");
@@ -376,7 +417,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         eprintln!(
             "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: {why}",
             first + outcome.steps,
-            outcome.t
+            readout.time(outcome.t)
         );
         return Ok(ExitCode::from(1));
     }
