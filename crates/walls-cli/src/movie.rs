@@ -220,12 +220,14 @@ pub struct Movie {
 
 /// The frames of a movie of `scene` with `segments` around round shapes: one per
 /// snapshot, sorted by time (a snapshot without one at `t0`), every wall where its
-/// motion has it then, in one box around all the walls and particles of the movie;
+/// motion has it `wall_offset` later (ssdraw's `Wall time offset`, usually 0), in one
+/// box around all the walls and particles of the movie;
 /// reactive walls placed from `viz` by step (a frame without a step: the last line).
 pub fn frames(
     scene: &Scene,
     snapshots: Vec<Snapshot>,
     t0: f64,
+    wall_offset: f64,
     viz: Option<&VizSteps>,
     segments: usize,
 ) -> Movie {
@@ -234,7 +236,7 @@ pub fn frames(
         .map(|s| (s.t.unwrap_or(t0), s))
         .collect();
     snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
-    let times: Vec<f64> = snapshots.iter().map(|(t, _)| *t).collect();
+    let times: Vec<f64> = snapshots.iter().map(|(t, _)| t + wall_offset).collect();
     let all: Vec<Particle> = snapshots
         .iter()
         .flat_map(|(_, s)| s.particles.iter().cloned())
@@ -244,7 +246,8 @@ pub fn frames(
     let frames = snapshots
         .into_iter()
         .map(|(t, s)| {
-            let mut walls = walls_preview::wall_meshes_in(scene, t, segments, &bounds);
+            let mut walls =
+                walls_preview::wall_meshes_in(scene, t + wall_offset, segments, &bounds);
             if let Some(viz) = viz {
                 let placed = match s.step {
                     None => Some(viz.last()),
@@ -317,7 +320,7 @@ mod tests {
         let s = scene("wall type disk\n  radius 0.5\n  velocity 0 0 1\n");
         let Movie {
             frames, warning, ..
-        } = frames(&s, snapshots, 0.0, None, 8);
+        } = frames(&s, snapshots, 0.0, 0.0, None, 8);
         assert_eq!(warning, None);
         let ts: Vec<f64> = frames.iter().map(|f| f.t).collect();
         assert_eq!(ts, [0.0, 0.5]);
@@ -354,7 +357,7 @@ mod tests {
         let snapshots = vec![snapshot(0), snapshot(100), snapshot(150)];
         let Movie {
             frames, warning, ..
-        } = frames(&s, snapshots, 0.0, Some(&viz), 8);
+        } = frames(&s, snapshots, 0.0, 0.0, Some(&viz), 8);
         let z: Vec<f64> = frames.iter().map(|f| f.walls[0].origin.z).collect();
         // Step 150 has no line: the last before it (step 100) places it, with a warning.
         assert_eq!(z, [1.0, 2.0, 2.0]);

@@ -435,7 +435,8 @@ fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String 
     let first_walls = frames.first().map_or(&[][..], |f| &f.walls[..]);
     let mut first = true;
     for wm in first_walls {
-        let Some(color) = palette::hex(wm.color) else {
+        // The mesh's colour: ssdraw's, or what an ssdraw.par made it.
+        let Some(color) = wm.rgb.map(palette::css) else {
             continue;
         };
         if !first {

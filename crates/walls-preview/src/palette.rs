@@ -55,7 +55,11 @@ pub fn rgb(index: i64) -> Option<[f64; 3]> {
 
 /// The colour `index` as a CSS hex colour (`#rrggbb`), or `None` as [`rgb`].
 pub fn hex(index: i64) -> Option<String> {
-    let [r, g, b] = rgb(index)?;
+    rgb(index).map(css)
+}
+
+/// Red, green and blue from 0 to 1 as a CSS colour, `#rrggbb`.
+pub fn css([r, g, b]: [f64; 3]) -> String {
     let byte = |x: f64| (x * 255.0).round().clamp(0.0, 255.0) as u8;
-    Some(format!("#{:02x}{:02x}{:02x}", byte(r), byte(g), byte(b)))
+    format!("#{:02x}{:02x}{:02x}", byte(r), byte(g), byte(b))
 }

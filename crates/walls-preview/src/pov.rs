@@ -50,6 +50,12 @@ pub struct View {
     pub aspect: f64,
     /// The background's red, green and blue from 0 to 1.
     pub background: [f64; 3],
+    /// Where the camera is and the point it looks at, in the scene's coordinates
+    /// (ssdraw's `Camera position` and `Camera look-at`); `None`: from `from`, far
+    /// enough to see the whole scene.
+    pub camera: Option<(Vec3, Vec3)>,
+    /// The picture's up (POV-Ray's `sky`); `None`: z, or y when looking along z.
+    pub sky: Option<Vec3>,
 }
 
 impl Default for View {
@@ -60,6 +66,8 @@ impl Default for View {
             angle: 40.0,
             aspect: 4.0 / 3.0,
             background: [0.12, 0.14, 0.18],
+            camera: None,
+            sky: None,
         }
     }
 }
@@ -125,7 +133,11 @@ pub fn write(
         num(size)
     )?;
     writeln!(out)?;
-    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, view)?;
+    let view = View {
+        camera: view.camera.map(|(at, to)| (unit(&at), unit(&to))),
+        ..view.clone()
+    };
+    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, &view)?;
     writeln!(out)?;
     for (i, wall) in walls.iter().enumerate() {
         let color = wall.appearance.color;
@@ -201,11 +213,15 @@ fn vec(v: &Vec3) -> String {
 /// The camera, looking at `centre` from `view.from` far enough for the sphere of
 /// `radius` around it to fit, and the lights.
 fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::Result<()> {
-    let dir = direction(&view.from).unwrap_or_else(|| View::default().from.normalize());
-    let sky = if dir.cross(&Vec3::z()).norm() > 1e-6 {
-        Vec3::z()
-    } else {
-        Vec3::y()
+    let dir = view
+        .camera
+        .and_then(|(at, to)| direction(&(at - to)))
+        .or_else(|| direction(&view.from))
+        .unwrap_or_else(|| View::default().from.normalize());
+    let sky = match view.sky.and_then(|s| direction(&s)) {
+        Some(s) => s,
+        None if dir.cross(&Vec3::z()).norm() > 1e-6 => Vec3::z(),
+        None => Vec3::y(),
     };
     let aspect = if view.aspect.is_finite() && view.aspect > 0.0 {
         view.aspect
@@ -220,7 +236,10 @@ fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::R
     let half_h = (angle / 2.0).to_radians();
     let half_v = (half_h.tan() / aspect).atan();
     let distance = 1.05 * radius.max(1e-9) / half_h.min(half_v).sin();
-    let location = centre + dir * distance;
+    let (location, centre) = match view.camera {
+        Some((at, to)) => (at, to),
+        None => (centre + dir * distance, centre),
+    };
     let [r, g, b] = view.background.map(|c| if c.is_finite() { c } else { 0.0 });
     // The picture's right: forward × sky, for a light over the camera's right shoulder.
     let right = direction(&(-dir).cross(&sky)).unwrap_or_else(Vec3::x);

@@ -640,7 +640,7 @@ impl<'a> HardStepper<'a> {
     fn closing_kick(&mut self) {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
         self.steps += 1;
-        self.t = self.settings.time_at(self.steps);
+        self.t = self.settings.next_time(self.t, self.steps);
         for s in self.states.iter_mut() {
             if s.free() {
                 s.particle.vel += g * (dt / 2.0);

@@ -212,6 +212,18 @@ impl Settings {
         }
     }
 
+    /// The time after step number `step`, the previous step's time being `previous`:
+    /// a pkdgrav run (its steps counted, `last_step`) adds `dt` to the time as pkdgrav
+    /// does, so that the times it writes (the `.ss` headers) are pkdgrav's to the last
+    /// bit; a run of time takes [`Settings::time_at`].
+    pub fn next_time(&self, previous: f64, step: u64) -> f64 {
+        if self.last_step.is_some() {
+            previous + self.dt
+        } else {
+            self.time_at(step)
+        }
+    }
+
     /// Whether a run that has reached step number `step` takes another.
     fn due(&self, step: u64) -> bool {
         step < self.end_step()

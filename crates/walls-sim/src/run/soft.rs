@@ -775,7 +775,7 @@ impl<'a> SoftStepper<'a> {
             }
         }
         self.steps += 1;
-        self.t = self.settings.time_at(self.steps);
+        self.t = self.settings.next_time(self.t, self.steps);
         if self.plan.moving_walls {
             self.now = if pkdgrav {
                 // pkdgrav's walls move at the velocity of half a step later (§5).

@@ -14,6 +14,7 @@ pub mod scene;
 use crate::{Checked, ContactModel, check_bytes, input};
 use std::process::ExitCode;
 use walls_diagnostics::Severity;
+use walls_geometry::units::System;
 use walls_model::Options;
 use walls_sim::io::par::Rule;
 
@@ -24,6 +25,30 @@ pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
             .parse::<f64>()
             .map_err(|_| format!("`{s}` is not a number"))?;
         rule.check(x).map_err(|says| format!("it must be {says}"))
+    }
+}
+
+/// `--units` of `run` and `preview` (docs/units.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum UnitsArg {
+    /// pkdgrav's units, and the walls file's own beside them when it sets some.
+    Auto,
+    /// pkdgrav's units alone (AU, solar masses, 1/k days).
+    Pkdgrav,
+    /// Centimetres, grams, seconds.
+    Cgs,
+    /// Metres, kilograms, seconds.
+    Si,
+}
+
+impl From<UnitsArg> for System {
+    fn from(u: UnitsArg) -> System {
+        match u {
+            UnitsArg::Auto => System::Auto,
+            UnitsArg::Pkdgrav => System::Pkdgrav,
+            UnitsArg::Cgs => System::Cgs,
+            UnitsArg::Si => System::Si,
+        }
     }
 }
 

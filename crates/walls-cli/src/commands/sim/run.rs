@@ -3,12 +3,11 @@
 //! the trajectory and pkdgrav's reactive-wall files. The settings come from
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
-use super::{error, exit_status, read_walls, ruled};
+use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
 use std::process::ExitCode;
 use walls_geometry::Particle;
-use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
 use walls_sim::run::Settings;
@@ -126,19 +125,6 @@ pub struct RunArgs {
     pub units: UnitsArg,
 }
 
-/// The units a run's summary speaks in.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum UnitsArg {
-    /// pkdgrav's, and the walls file's own beside them when it sets units.
-    Auto,
-    /// pkdgrav's alone.
-    Pkdgrav,
-    /// Centimetres, grams, seconds.
-    Cgs,
-    /// Metres, kilograms, seconds.
-    Si,
-}
-
 /// `--pkdgrav-build`'s value.
 fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
     walls_sim::build::Build::parse(text).map_err(|e| e.to_string())
@@ -220,15 +206,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         .map_or(args.method, walls_sim::build::Build::contact_model);
     let (checked, errors) = read_walls(&file, model, "running")?;
     let walls = decode(&checked.scene);
-    let readout = walls_geometry::units::Readout::new(
-        match args.units {
-            UnitsArg::Auto => System::Auto,
-            UnitsArg::Pkdgrav => System::Pkdgrav,
-            UnitsArg::Cgs => System::Cgs,
-            UnitsArg::Si => System::Si,
-        },
-        &checked.scene.units,
-    );
+    let readout = walls_geometry::units::Readout::new(args.units.into(), &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &args.par {
         for w in &run.warnings {

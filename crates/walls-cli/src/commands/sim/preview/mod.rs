@@ -5,20 +5,26 @@
 
 mod output;
 
-use super::{error, exit_status, read_walls, ruled};
+use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use crate::movie::{self, Snapshot, VizSteps};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use walls_geometry::units::System;
+use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
 
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
 pub struct PreviewArgs {
-    /// The walls file; `-` reads standard input.
-    #[arg(value_name = "FILE")]
-    pub file: String,
+    /// The walls file; `-` reads standard input. Without it, the `Wall data file` of
+    /// --ssdraw.
+    #[arg(value_name = "FILE", required_unless_present = "ssdraw")]
+    pub file: Option<String>,
+    /// ssdraw's view: an ssdraw.par whose camera position, look-at, up and sky, wall
+    /// time offset, walls file, aspect ratio, background and colours the pictures take
+    /// (--view, --up and --size win over it).
+    #[arg(long, value_name = "FILE")]
+    pub ssdraw: Option<PathBuf>,
     /// Where the walls are: at this time (pkdgrav units).
     #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     pub time: f64,
@@ -74,37 +80,15 @@ pub struct PreviewArgs {
     pub segments: u64,
 }
 
-/// `--units`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum UnitsArg {
-    /// pkdgrav's units, and the walls file's own beside them when it sets some.
-    Auto,
-    /// pkdgrav's units alone (AU, solar masses, 1/k days).
-    Pkdgrav,
-    /// Centimetres, grams, seconds.
-    Cgs,
-    /// Metres, kilograms, seconds.
-    Si,
-}
-
-impl From<UnitsArg> for System {
-    fn from(u: UnitsArg) -> System {
-        match u {
-            UnitsArg::Auto => System::Auto,
-            UnitsArg::Pkdgrav => System::Pkdgrav,
-            UnitsArg::Cgs => System::Cgs,
-            UnitsArg::Si => System::Si,
-        }
-    }
-}
-
 /// Draws what `args` ask for; the exit status.
 pub fn run(args: &PreviewArgs) -> ExitCode {
     draw(args).unwrap_or_else(error)
 }
 
 fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
-    let (checked, errors) = read_walls(&args.file, ContactModel::Ssdem, "drawing")?;
+    let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
+    let file = walls_file(args, ssdraw.as_ref())?;
+    let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
     let scene = &checked.scene;
     let kind = args
         .out
@@ -156,13 +140,36 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         scene,
         snapshots,
         args.time,
+        ssdraw
+            .as_ref()
+            .and_then(|s| s.wall_time_offset)
+            .unwrap_or(0.0),
         viz.as_ref(),
         args.segments as usize,
     );
+    let mut movie = movie;
+    if let Some(s) = &ssdraw {
+        // ssdraw's colour table, for the walls.
+        for frame in &mut movie.frames {
+            for w in &mut frame.walls {
+                if let Some(rgb) = u8::try_from(w.color).ok().and_then(|c| s.colours.get(&c)) {
+                    w.rgb = Some(*rgb);
+                }
+            }
+        }
+    }
     if let Some(w) = &movie.warning {
         eprintln!("walls-sim: warning: {w}");
     }
-    output::write(args, kind.as_deref(), scene, &movie, series)?;
+    output::write(
+        args,
+        &file,
+        ssdraw.as_ref(),
+        kind.as_deref(),
+        scene,
+        &movie,
+        series,
+    )?;
     Ok(exit_status(errors))
 }
 
@@ -207,4 +214,44 @@ fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>),
         bar.finish_and_clear();
     }
     Ok((snapshots, viz))
+}
+
+/// The `ssdraw.par` at `path`, its unused lines reported on standard error.
+fn read_ssdraw(path: &Path) -> Result<SsdrawView, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let view =
+        walls_preview::ssdraw::read(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    for (line, label) in &view.unused {
+        eprintln!(
+            "walls-sim: warning: {}:{line}: `{label}` is not used by walls-sim preview",
+            path.display()
+        );
+    }
+    if !view.colours.is_empty() {
+        eprintln!(
+            "walls-sim: note: {}: its colours are used for the walls; particles keep ssdraw's standard colours",
+            path.display()
+        );
+    }
+    Ok(view)
+}
+
+/// The walls file: the command line's, else the `Wall data file` of --ssdraw, taken
+/// relative to the ssdraw.par's folder.
+fn walls_file(args: &PreviewArgs, ssdraw: Option<&SsdrawView>) -> Result<String, String> {
+    if let Some(f) = &args.file {
+        return Ok(f.clone());
+    }
+    let named = ssdraw
+        .and_then(|s| s.walls_file.as_deref())
+        .ok_or_else(|| {
+            "no walls file: name one, or give an ssdraw.par that has a `Wall data file`".to_string()
+        })?;
+    let dir = args
+        .ssdraw
+        .as_deref()
+        .and_then(Path::parent)
+        .unwrap_or(Path::new(""));
+    Ok(dir.join(named).to_string_lossy().into_owned())
 }

@@ -3,7 +3,8 @@
 //! PolyData, a ParaView collection of them, or the HTML page; and the progress bar of a
 //! long series.
 
-use super::{PreviewArgs, UnitsArg};
+use super::PreviewArgs;
+use crate::commands::sim::UnitsArg;
 use crate::movie::Movie;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
@@ -11,6 +12,7 @@ use walls_geometry::units::{Readout, Scale};
 use walls_model::Scene;
 use walls_preview::MovieFrame;
 use walls_preview::html::Particles;
+use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::trajectory::{ParticleRow, read_particles};
 
 /// Series longer than this show a progress bar (on a terminal).
@@ -34,6 +36,8 @@ pub(super) fn progress(len: usize, done: &str) -> Option<indicatif::ProgressBar>
 /// `series`: the frames are a run's outputs (not --frames of one picture).
 pub(super) fn write(
     args: &PreviewArgs,
+    file: &str,
+    ssdraw: Option<&SsdrawView>,
     kind: Option<&str>,
     scene: &Scene,
     movie: &Movie,
@@ -43,10 +47,11 @@ pub(super) fn write(
     let readout = Readout::new(args.units.into(), &scene.units);
     let cannot = |path: &Path, e: std::io::Error| format!("cannot write {}: {e}", path.display());
     let path = args.out.as_deref().unwrap_or(Path::new("-"));
+    let view = svg_view(args, ssdraw, movie);
     match kind {
         None => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            svg(&mut out, args, movie, frames, &readout)
+            svg(&mut out, &view, args.seconds, movie, frames, &readout)
                 .and_then(|()| out.flush())
                 .map_err(|e| format!("cannot write the picture: {e}"))
         }
@@ -55,7 +60,7 @@ pub(super) fn write(
                 let mut out = std::io::BufWriter::new(
                     std::fs::File::create(path).map_err(|e| cannot(path, e))?,
                 );
-                svg(&mut out, args, movie, frames, &readout)
+                svg(&mut out, &view, args.seconds, movie, frames, &readout)
                     .and_then(|()| out.flush())
                     .map_err(|e| cannot(path, e))
             };
@@ -75,11 +80,26 @@ pub(super) fn write(
             Ok(())
         }
         Some("pov") => {
-            let view = svg_view(args);
+            let default = walls_preview::pov::View::default();
+            // ssdraw's camera where --view does not say otherwise, looking at its
+            // look-at point or the scene's centre.
+            let camera = ssdraw.filter(|_| args.view.is_none()).and_then(|s| {
+                let centre = (movie.bounds.0 + movie.bounds.1) / 2.0;
+                s.camera.map(|at| (at, s.look_at.unwrap_or(centre)))
+            });
             let pov_view = walls_preview::pov::View {
                 from: view.from,
                 aspect: f64::from(view.width) / f64::from(view.height),
-                ..walls_preview::pov::View::default()
+                background: ssdraw
+                    .and_then(|s| s.background)
+                    .unwrap_or(default.background),
+                camera,
+                sky: args
+                    .up
+                    .is_none()
+                    .then(|| ssdraw.and_then(|s| s.up))
+                    .flatten(),
+                ..default
             };
             // One scene, or numbered scenes FILE-000.pov…; walls from their motion.
             let bar = progress(frames.len(), "written");
@@ -142,7 +162,7 @@ pub(super) fn write(
                 let options = walls_preview::html::MovieOptions {
                     readout,
                     trails: args.trails.map(|n| n as usize),
-                    title: format!("walls preview: {}", args.file),
+                    title: format!("walls preview: {file}"),
                 };
                 walls_preview::html::write_movie(&mut out, scene, frames, &options)
             } else {
@@ -170,26 +190,40 @@ fn numbered(path: &Path, k: usize, extension: &str) -> std::path::PathBuf {
     std::path::PathBuf::from(format!("{}-{k:03}.{extension}", stem.display()))
 }
 
-/// The SVG view of --view, --up and --size.
-fn svg_view(args: &PreviewArgs) -> walls_preview::svg::View {
+/// The SVG view of --view, --up and --size, else of ssdraw's camera (the direction
+/// from its look-at point, or the scene's centre, to its position), up and aspect
+/// ratio, else the default.
+fn svg_view(
+    args: &PreviewArgs,
+    ssdraw: Option<&SsdrawView>,
+    movie: &Movie,
+) -> walls_preview::svg::View {
     use nalgebra::Vector3;
-    let v3 = |v: &Option<Vec<f64>>, default: Vector3<f64>| {
-        v.as_ref()
-            .map_or(default, |v| Vector3::new(v[0], v[1], v[2]))
-    };
+    let v3 = |v: &Option<Vec<f64>>| v.as_ref().map(|v| Vector3::new(v[0], v[1], v[2]));
     let default = walls_preview::svg::View::default();
+    let centre = (movie.bounds.0 + movie.bounds.1) / 2.0;
+    let from = ssdraw.and_then(|s| s.camera.map(|at| at - s.look_at.unwrap_or(centre)));
+    let width = args.size.as_ref().map_or(default.width, |s| s[0]);
+    let height = match (&args.size, ssdraw.and_then(|s| s.aspect)) {
+        (Some(s), _) => s[1],
+        (None, Some(aspect)) => ((f64::from(width) / aspect).round() as u32).clamp(16, 16384),
+        (None, None) => default.height,
+    };
     walls_preview::svg::View {
-        from: v3(&args.view, default.from),
-        up: v3(&args.up, default.up),
-        width: args.size.as_ref().map_or(default.width, |s| s[0]),
-        height: args.size.as_ref().map_or(default.height, |s| s[1]),
+        from: v3(&args.view).or(from).unwrap_or(default.from),
+        up: v3(&args.up)
+            .or(ssdraw.and_then(|s| s.up))
+            .unwrap_or(default.up),
+        width,
+        height,
     }
 }
 
 /// One SVG of `frames` of `movie` (animated when several), in the movie's box.
 fn svg(
     out: &mut impl Write,
-    args: &PreviewArgs,
+    view: &walls_preview::svg::View,
+    seconds: f64,
     movie: &Movie,
     frames: &[MovieFrame],
     readout: &Readout,
@@ -203,14 +237,7 @@ fn svg(
             particles: &f.particles,
         })
         .collect();
-    walls_preview::svg::write(
-        out,
-        &drawn,
-        &svg_view(args),
-        movie.bounds,
-        args.seconds,
-        readout,
-    )
+    walls_preview::svg::write(out, &drawn, view, movie.bounds, seconds, readout)
 }
 
 /// The units VTK files are written in: SI or cgs converted, else pkdgrav's own.
