@@ -156,23 +156,28 @@ pub(super) fn write(
         Some("html") => {
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            let written = if series || args.trajectory.is_none() && frames.len() > 1 {
-                // A run's outputs (or --frames): the frames as they are, reactive walls
-                // placed, particles matched by index.
-                let options = walls_preview::html::MovieOptions {
-                    readout,
-                    trails: args.trails.map(|n| n as usize),
-                    title: format!("walls preview: {file}"),
-                };
-                walls_preview::html::write_movie(&mut out, scene, frames, &options)
-            } else {
-                // One picture: the walls' motion over [0, --until] (or a trajectory).
-                let moving = match &args.trajectory {
-                    Some(f) => Some(read_trajectory(f)?),
-                    None => html_particles(frames),
-                };
-                let until = args.until.unwrap_or(args.time);
-                walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
+            let until = args.until.unwrap_or(args.time);
+            let written = match (&args.trajectory, frames) {
+                // A trajectory, or one set of particles with the walls' motion over
+                // [0, --until], sampled at 101 times.
+                (Some(f), _) => {
+                    let moving = read_trajectory(f)?;
+                    walls_preview::html::write(&mut out, scene, Some(&moving), until, 101)
+                }
+                (None, [frame]) if !series && args.until.is_some() => {
+                    let moving = html_particles(frame);
+                    walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
+                }
+                // A run's outputs, --frames, or a still: the frames as they are,
+                // reactive walls placed, particles matched by index.
+                _ => {
+                    let options = walls_preview::html::MovieOptions {
+                        readout,
+                        trails: args.trails.map(|n| n as usize),
+                        title: format!("walls preview: {file}"),
+                    };
+                    walls_preview::html::write_movie(&mut out, scene, frames, &options)
+                }
             };
             written
                 .and_then(|()| out.flush())
@@ -248,27 +253,15 @@ fn vtk_scale(units: UnitsArg, readout: &Readout) -> Scale {
     }
 }
 
-/// The frames' particles as the HTML page plays them: radii and colours from the first
-/// frame, each frame's positions by particle (a particle missing from a frame stays
-/// where it was last); `None` without particles.
-fn html_particles(frames: &[MovieFrame]) -> Option<Particles> {
-    let first = frames.first().filter(|f| !f.particles.is_empty())?;
-    let mut at: Vec<_> = first.particles.iter().map(|p| p.pos).collect();
-    let mut out = Particles {
-        radii: first.particles.iter().map(|p| p.radius).collect(),
-        colors: first.particles.iter().map(|p| i64::from(p.color)).collect(),
-        ..Particles::default()
-    };
-    for f in frames {
-        for p in &f.particles {
-            if let Some(k) = first.particles.iter().position(|q| q.index == p.index) {
-                at[k] = p.pos;
-            }
-        }
-        out.times.push(f.t);
-        out.frames.push(at.clone());
-    }
-    Some(out)
+/// One frame's particles as the HTML page plays them through the walls' motion;
+/// `None` without particles.
+fn html_particles(frame: &MovieFrame) -> Option<Particles> {
+    (!frame.particles.is_empty()).then(|| Particles {
+        radii: frame.particles.iter().map(|p| p.radius).collect(),
+        colors: frame.particles.iter().map(|p| i64::from(p.color)).collect(),
+        times: vec![frame.t],
+        frames: vec![frame.particles.iter().map(|p| p.pos).collect()],
+    })
 }
 
 /// Particle trajectories from the `particles.csv` of `walls-sim run --out`.
