@@ -188,7 +188,8 @@ fn items(camera: &Camera, frame: &Frame) -> Vec<(f64, Item)> {
             let depth = if plane {
                 f64::NEG_INFINITY
             } else {
-                camera.towards.dot(&((a + b) / 2.0)) + 1e-9
+                // A millionth of a pixel: in the scene's own length, whatever its scale.
+                camera.towards.dot(&((a + b) / 2.0)) + 1e-6 / camera.scale
             };
             out.push((
                 depth,
