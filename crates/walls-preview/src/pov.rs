@@ -88,6 +88,39 @@ pub fn write_file(
     std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
 }
 
+/// Writes one frame of a movie of `scene` to `path` (and `walls.inc` beside it): each
+/// wall where the frame places it (reactive walls as a run turned them), its particles,
+/// framed by `bounds` (the movie's box, the same for every frame).
+pub fn write_frame_file(
+    path: &Path,
+    scene: &Scene,
+    frame: &crate::MovieFrame,
+    bounds: (Vec3, Vec3),
+    view: &View,
+) -> io::Result<()> {
+    let walls = decode(scene);
+    let shapes = walls
+        .iter()
+        .map(|w| match frame.walls.iter().find(|m| m.wall == w.index) {
+            Some(m) => w.shape.turned(m.origin, &m.turn),
+            None => w.shape.at(w.motion.position_or_origin(frame.t)),
+        })
+        .collect();
+    let mut out = io::BufWriter::new(std::fs::File::create(path)?);
+    write_shapes(
+        &mut out,
+        &walls,
+        shapes,
+        frame.t,
+        &frame.particles,
+        Some(bounds),
+        view,
+    )?;
+    out.flush()?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
+}
+
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it
 /// includes `walls.inc` ([`INCLUDE`]), which must be beside it (or on POV-Ray's `+L`
 /// path) to render.
@@ -99,12 +132,31 @@ pub fn write(
     view: &View,
 ) -> io::Result<()> {
     let walls = decode(scene);
+    let shapes = walls
+        .iter()
+        .map(|w| w.shape.at(w.motion.position_or_origin(t)))
+        .collect();
+    write_shapes(out, &walls, shapes, t, particles, None, view)
+}
+
+/// Writes the scene of `walls` drawn as `shapes` (each wall's shape where it is) at `t`,
+/// with `particles`, framed by `bounds` (else the box around the walls and the drawn
+/// particles).
+fn write_shapes(
+    out: &mut impl Write,
+    walls: &[walls_geometry::Wall],
+    shapes: Vec<Shape>,
+    t: f64,
+    particles: &[Particle],
+    bounds: Option<(Vec3, Vec3)>,
+    view: &View,
+) -> io::Result<()> {
     let drawn_particles: Vec<Particle> = particles
         .iter()
         .filter(|p| drawn(p.color.into()))
         .cloned()
         .collect();
-    let (lo, hi) = scene_bounds(&walls, &drawn_particles);
+    let (lo, hi) = bounds.unwrap_or_else(|| scene_bounds(walls, &drawn_particles));
     // ssdraw's "Renormalize?": the scene is written in coordinates (p − centre)/size,
     // so that POV-Ray sees numbers near 1 at any scale (a 5 cm tube in AU is 3.7e-13
     // long, below POV-Ray's tolerances).
@@ -139,21 +191,16 @@ pub fn write(
     };
     camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, &view)?;
     writeln!(out)?;
-    for (i, wall) in walls.iter().enumerate() {
+    for (i, (wall, shape)) in walls.iter().zip(&shapes).enumerate() {
         let color = wall.appearance.color;
         let kind = wall.shape.wall_type().name();
         let Some(colour) = colour(color) else {
             writeln!(out, "// wall {i}: {kind}, colour {color}: not drawn")?;
             continue;
         };
-        let origin = wall.motion.position_or_origin(t);
         let transmit = wall.appearance.transparency.clamp(0.0, 1.0);
         writeln!(out, "// wall {i}: {kind}")?;
-        match primitive(
-            &wall.shape.at(origin).renormalised(&centre, size),
-            &Vec3::zeros(),
-            1.0,
-        ) {
+        match primitive(&shape.renormalised(&centre, size), &Vec3::zeros(), 1.0) {
             Some((object, style)) => {
                 writeln!(out, "{object}\n  {style}({colour}, {})\n}}", num(transmit))?
             }

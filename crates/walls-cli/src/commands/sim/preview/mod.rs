@@ -95,9 +95,12 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .as_ref()
         .and_then(|p| p.extension())
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let placed = matches!(kind.as_deref(), None | Some("svg" | "vtp" | "pvd" | "html"));
+    let placed = matches!(
+        kind.as_deref(),
+        None | Some("svg" | "vtp" | "pvd" | "html" | "pov")
+    );
     if args.reactive.is_some() && !placed {
-        return Err("--reactive is drawn in .svg, .vtp, .pvd and .html pictures only".into());
+        return Err("--reactive is drawn in .svg, .pov, .vtp, .pvd and .html pictures".into());
     }
     let (snapshots, found_viz) = read_particles(&args.particles)?;
     // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.

@@ -101,7 +101,8 @@ pub(super) fn write(
                     .flatten(),
                 ..default
             };
-            // One scene, or numbered scenes FILE-000.pov…; walls from their motion.
+            // One scene, or numbered scenes FILE-000.pov…, each wall where the frame
+            // places it, in the movie's box.
             let bar = progress(frames.len(), "written");
             for (k, frame) in frames.iter().enumerate() {
                 let file = if frames.len() > 1 {
@@ -109,7 +110,7 @@ pub(super) fn write(
                 } else {
                     path.to_path_buf()
                 };
-                walls_preview::pov::write_file(&file, scene, frame.t, &frame.particles, &pov_view)
+                walls_preview::pov::write_frame_file(&file, scene, frame, movie.bounds, &pov_view)
                     .map_err(|e| cannot(&file, e))?;
                 if let Some(bar) = &bar {
                     bar.inc(1);
