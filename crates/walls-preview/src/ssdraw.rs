@@ -67,17 +67,6 @@ impl std::fmt::Display for SsdrawError {
 
 impl std::error::Error for SsdrawError {}
 
-/// The labels read that take a vector, in canonical form (lower case, single spaces,
-/// `color`).
-const VECTORS: [&str; 6] = [
-    "camera position",
-    "camera look-at",
-    "look-at point",
-    "camera up",
-    "camera sky",
-    "background color",
-];
-
 /// The label's canonical form: lower case, words separated by one space, `colour`
 /// spelt `color`.
 fn canonical(label: &str) -> String {
@@ -113,35 +102,35 @@ pub fn read(text: &str) -> Result<SsdrawView, SsdrawError> {
                 ))),
             }
         };
-        let vector = |v: Vec<f64>| Vec3::new(v[0], v[1], v[2]);
-        if VECTORS.contains(&name.as_str()) {
-            let v = numbers(3)?;
-            match name.as_str() {
-                "camera position" => view.camera = Some(vector(v)),
-                "camera look-at" | "look-at point" => view.look_at = Some(vector(v)),
-                "camera up" => view.up = Some(vector(v)),
-                "camera sky" => sky = Some(vector(v)),
-                _ => view.background = Some(rgb(&v).map_err(err)?),
+        let vector = || numbers(3).map(|v| Vec3::new(v[0], v[1], v[2]));
+        match name.as_str() {
+            "camera position" => view.camera = Some(vector()?),
+            "camera look-at" | "look-at point" => view.look_at = Some(vector()?),
+            "camera up" => view.up = Some(vector()?),
+            "camera sky" => sky = Some(vector()?),
+            "background color" => view.background = Some(rgb(&numbers(3)?).map_err(err)?),
+            "wall time offset" => view.wall_time_offset = Some(numbers(1)?[0]),
+            "aspect ratio" => {
+                let a = numbers(1)?[0];
+                if a <= 0.0 {
+                    return Err(err(format!("`{label}` must be above 0, not {a}")));
+                }
+                view.aspect = Some(a);
             }
-        } else if name == "wall time offset" {
-            view.wall_time_offset = Some(numbers(1)?[0]);
-        } else if name == "aspect ratio" {
-            let a = numbers(1)?[0];
-            if a <= 0.0 {
-                return Err(err(format!("`{label}` must be above 0, not {a}")));
+            "wall data file" => {
+                if values.is_empty() {
+                    return Err(err(format!("`{label}` names no file")));
+                }
+                view.walls_file = Some(values.to_string());
             }
-            view.aspect = Some(a);
-        } else if name == "wall data file" {
-            if values.is_empty() {
-                return Err(err(format!("`{label}` names no file")));
-            }
-            view.walls_file = Some(values.to_string());
-        } else if let Some(index) = colour_index(&name) {
-            let index = index.map_err(err)?;
-            let v = numbers(3)?;
-            view.colours.insert(index, rgb(&v).map_err(err)?);
-        } else {
-            view.unused.push((line, label.to_string()));
+            _ => match colour_index(&name) {
+                Some(index) => {
+                    let index = index.map_err(err)?;
+                    let rgb = rgb(&numbers(3)?).map_err(err)?;
+                    view.colours.insert(index, rgb);
+                }
+                None => view.unused.push((line, label.to_string())),
+            },
         }
     }
     if sky.is_some() {
@@ -150,7 +139,8 @@ pub fn read(text: &str) -> Result<SsdrawView, SsdrawError> {
     Ok(view)
 }
 
-/// The labels read without a colour index, in canonical form.
+/// The labels read without a colour index, in canonical form (lower case, single
+/// spaces, `color`); `read` matches these.
 const LABELS: [&str; 9] = [
     "camera position",
     "camera look-at",

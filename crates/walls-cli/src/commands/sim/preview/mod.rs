@@ -49,10 +49,10 @@ pub struct PreviewArgs {
     /// pkdgrav's and the file's own; VTK in cgs or si is converted.
     #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
     pub units: UnitsArg,
-    /// HTML: particle trajectories to play, the particles.csv that `walls-sim run --out`
-    /// writes.
+    /// The particles.csv that `walls-sim run --out` writes, as a movie: the same as
+    /// giving it to --particles (kept for earlier scripts).
     #[arg(long, value_name = "FILE")]
-    pub trajectory: Option<String>,
+    pub trajectory: Option<PathBuf>,
     /// HTML: draw each particle's path over its last N frames.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=100000))]
     pub trails: Option<u64>,
@@ -102,7 +102,13 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
     if args.reactive.is_some() && !placed {
         return Err("--reactive is drawn in .svg, .pov, .vtp, .pvd and .html pictures".into());
     }
-    let (snapshots, found_viz) = read_particles(&args.particles)?;
+    let inputs: Vec<PathBuf> = args
+        .particles
+        .iter()
+        .chain(&args.trajectory)
+        .cloned()
+        .collect();
+    let (snapshots, found_viz) = read_particles(&inputs)?;
     // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.
     let viz_file = args.reactive.clone().or(found_viz.filter(|_| placed));
     let viz = match &viz_file {
@@ -139,7 +145,7 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
             })
             .collect()
     };
-    let movie = movie::frames(
+    let mut movie = movie::frames(
         scene,
         snapshots,
         args.time,
@@ -150,7 +156,6 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         viz.as_ref(),
         args.segments as usize,
     );
-    let mut movie = movie;
     if let Some(s) = &ssdraw {
         // ssdraw's colour table, for the walls.
         for frame in &mut movie.frames {

@@ -13,7 +13,6 @@ use walls_model::Scene;
 use walls_preview::MovieFrame;
 use walls_preview::html::Particles;
 use walls_preview::ssdraw::SsdrawView;
-use walls_sim::io::trajectory::{ParticleRow, read_particles};
 
 /// Series longer than this show a progress bar (on a terminal).
 const LONG: usize = 20;
@@ -158,14 +157,10 @@ pub(super) fn write(
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
             let until = args.until.unwrap_or(args.time);
-            let written = match (&args.trajectory, frames) {
-                // A trajectory, or one set of particles with the walls' motion over
-                // [0, --until], sampled at 101 times.
-                (Some(f), _) => {
-                    let moving = read_trajectory(f)?;
-                    walls_preview::html::write(&mut out, scene, Some(&moving), until, 101)
-                }
-                (None, [frame]) if !series && args.until.is_some() => {
+            let written = match frames {
+                // One set of particles with the walls' motion over [0, --until],
+                // sampled at 101 times.
+                [frame] if !series && args.until.is_some() => {
                     let moving = html_particles(frame);
                     walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
                 }
@@ -263,82 +258,4 @@ fn html_particles(frame: &MovieFrame) -> Option<Particles> {
         times: vec![frame.t],
         frames: vec![frame.particles.iter().map(|p| p.pos).collect()],
     })
-}
-
-/// Particle trajectories from the `particles.csv` of `walls-sim run --out`.
-fn read_trajectory(f: &str) -> Result<Particles, String> {
-    let text = std::fs::read_to_string(f).map_err(|e| format!("cannot read {f}: {e}"))?;
-    let rows = read_particles(&text).map_err(|e| format!("{f}: {e}"))?;
-    frames(&rows).map_err(|line| format!("{f}: line {line}: particles out of order"))
-}
-
-/// The rows of a `particles.csv` as the frames the HTML page plays: one per output
-/// step, each particle's radius from the first (and the default colour); or the line of
-/// the first row whose particle is not the next of its step.
-fn frames(rows: &[ParticleRow]) -> Result<Particles, usize> {
-    let mut out = Particles::default();
-    for (k, row) in rows.iter().enumerate() {
-        if out.times.last() != Some(&row.t) {
-            out.times.push(row.t);
-            out.frames.push(Vec::new());
-        }
-        let frame = out.frames.last_mut().expect("pushed above");
-        if row.particle != frame.len() {
-            // Row k is on line k + 2, after the header.
-            return Err(k + 2);
-        }
-        frame.push(row.pos);
-        if out.frames.len() == 1 {
-            out.radii.push(row.radius);
-            out.colors.push(3);
-        }
-    }
-    Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::Vector3;
-
-    fn row(t: f64, particle: usize, x: f64, radius: f64) -> ParticleRow {
-        ParticleRow {
-            step: 0,
-            t,
-            particle,
-            alive: true,
-            mass: 1.0,
-            radius,
-            pos: Vector3::new(x, 0.0, 0.0),
-            vel: Vector3::zeros(),
-            spin: Vector3::zeros(),
-        }
-    }
-
-    #[test]
-    fn rows_become_frames() {
-        let rows = [
-            row(0.0, 0, 1.0, 0.1),
-            row(0.0, 1, 2.0, 0.2),
-            row(0.5, 0, 3.0, 9.0),
-            row(0.5, 1, 4.0, 9.0),
-        ];
-        let x = |x: f64| Vector3::new(x, 0.0, 0.0);
-        assert_eq!(
-            frames(&rows),
-            Ok(Particles {
-                radii: vec![0.1, 0.2],
-                colors: vec![3, 3],
-                times: vec![0.0, 0.5],
-                frames: vec![vec![x(1.0), x(2.0)], vec![x(3.0), x(4.0)]],
-            })
-        );
-        // The third row (line 4) skips particle 1.
-        let rows = [
-            row(0.0, 0, 1.0, 0.1),
-            row(0.0, 1, 2.0, 0.1),
-            row(0.5, 1, 0.0, 0.1),
-        ];
-        assert_eq!(frames(&rows), Err(4));
-    }
 }
