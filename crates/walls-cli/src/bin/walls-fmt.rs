@@ -1,6 +1,8 @@
 //! `walls-fmt`: rewrite walls files in the canonical layout (docs/formatting.md;
 //! [`walls_cli::commands::fmt`]).
 
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 use clap::Parser;
 use std::process::ExitCode;
 use walls_cli::commands::fmt::{FmtArgs, run};

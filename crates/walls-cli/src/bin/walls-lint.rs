@@ -1,6 +1,8 @@
 //! `walls-lint`: check walls files for everything pkdgrav would reject or misread
 //! ([`walls_cli::commands::lint`]).
 
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 use clap::Parser;
 use std::process::ExitCode;
 use walls_cli::commands::lint::{LintArgs, run};

@@ -6,6 +6,8 @@
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
 //! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
 
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 use walls_cli::ContactModel;

@@ -10,7 +10,7 @@
 use crate::input;
 use clap::Parser;
 use rayon::prelude::*;
-use std::io::{IsTerminal, Read, Write};
+use std::io::{Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
 use walls_diagnostics::render::{self, FileReport};
@@ -65,7 +65,7 @@ pub fn run(args: &FmtArgs) -> ExitCode {
         .par_iter()
         .map(|f| (display(f), format_one(f, args)))
         .collect();
-    let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
+    let color = crate::console::color_stderr();
     let mut err = std::io::BufWriter::new(std::io::stderr().lock());
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let (mut changed, mut unchanged, mut broken, mut failed) = (0, 0, 0, 0);

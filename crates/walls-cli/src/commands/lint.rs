@@ -7,7 +7,7 @@
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::process::ExitCode;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
@@ -93,7 +93,7 @@ pub fn run(args: &LintArgs) -> ExitCode {
     let mut io_failed = false;
     for c in &checked {
         if let Err(e) = &c.outcome {
-            eprintln!("walls-lint: error: {e}");
+            crate::errln!("walls-lint: error: {e}");
             io_failed = true;
         }
     }
@@ -111,7 +111,7 @@ pub fn run(args: &LintArgs) -> ExitCode {
     let summary = render::summarize(&reports);
     if let Err(e) = write_reports(args, &reports) {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
-            eprintln!("walls-lint: error: cannot write output: {e}");
+            crate::errln!("walls-lint: error: cannot write output: {e}");
         }
         return ExitCode::from(2);
     }
@@ -152,9 +152,7 @@ fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()>
             let color = match args.color {
                 Color::Always => true,
                 Color::Never => false,
-                Color::Auto => {
-                    std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none()
-                }
+                Color::Auto => crate::console::color_stderr(),
             };
             // Standard error is unbuffered: ariadne writes a character at a time.
             let mut err = std::io::BufWriter::new(std::io::stderr().lock());
@@ -202,15 +200,15 @@ fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()>
 
 fn explain(query: &str) -> ExitCode {
     if let Some(code) = find_code(query) {
-        println!("{}", walls_ide::explain_code(code));
+        crate::outln!("{}", walls_ide::explain_code(code));
         return ExitCode::SUCCESS;
     }
     if let Some(keyword) = walls_keywords::keyword(query) {
-        print!("{}", keyword.markdown());
+        crate::out!("{}", keyword.markdown());
         return ExitCode::SUCCESS;
     }
     let known: Vec<&str> = all_codes().map(|c| c.id).collect();
-    eprintln!(
+    crate::errln!(
         "walls-lint: error: `{query}` is neither a diagnostic code ({}) nor a keyword of the language",
         known.join(", ")
     );

@@ -117,7 +117,7 @@ pub fn run(args: &AdviseArgs) -> ExitCode {
     let advice = match advise::advise(&inputs) {
         Ok(a) => a,
         Err(e) => {
-            eprintln!("walls-sim: error: --{e}");
+            crate::errln!("walls-sim: error: --{e}");
             return ExitCode::from(2);
         }
     };
@@ -130,13 +130,13 @@ pub fn run(args: &AdviseArgs) -> ExitCode {
     let mut out = std::io::stdout().lock();
     if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
-            eprintln!("walls-sim: error: cannot write output: {e}");
+            crate::errln!("walls-sim: error: cannot write output: {e}");
         }
         return ExitCode::from(2);
     }
     if !args.json {
         for w in &advice.warnings {
-            eprintln!("walls-sim: warning: {w}");
+            crate::errln!("walls-sim: warning: {w}");
         }
     }
     ExitCode::SUCCESS

@@ -54,7 +54,7 @@ impl From<UnitsArg> for System {
 
 /// Reports `e` as an error and gives exit status 2.
 fn error(e: impl std::fmt::Display) -> ExitCode {
-    eprintln!("walls-sim: error: {e}");
+    crate::errln!("walls-sim: error: {e}");
     ExitCode::from(2)
 }
 
@@ -82,7 +82,7 @@ fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, u
         .filter(|d| d.severity == Severity::Error)
         .count();
     if errors > 0 {
-        eprintln!(
+        crate::errln!(
             "walls-sim: {path}: {errors} error(s); {doing} what could be resolved (see walls-lint)"
         );
     }

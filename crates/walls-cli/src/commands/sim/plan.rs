@@ -35,11 +35,11 @@ pub fn run(args: &RunArgs) -> ExitCode {
             .iter()
             .map(|p| serde_json::json!({"part": p.name, "used": p.used, "reason": p.reason}))
             .collect();
-        println!("{}", serde_json::json!({ "plan": list }));
+        crate::outln!("{}", serde_json::json!({ "plan": list }));
     } else {
         for p in &parts {
             let mark = if p.used { "uses" } else { "skips" };
-            println!("{mark:5} {}: {}", p.name, p.reason);
+            crate::outln!("{mark:5} {}: {}", p.name, p.reason);
         }
     }
     exit_status(prepared.errors)

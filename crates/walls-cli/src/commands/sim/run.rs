@@ -188,7 +188,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     let par = config::read_par(&flags).map_err(|e| e.to_string())?;
     if let (Some(path), Some(p)) = (&args.par, &par) {
         for w in &p.warnings {
-            eprintln!("walls-sim: warning: {path}: {w}");
+            crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
     let file =
@@ -210,7 +210,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &args.par {
         for w in &run.warnings {
-            eprintln!("walls-sim: warning: {path}: {w}");
+            crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
     let every = args
@@ -366,17 +366,17 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     }
     if args.json {
         let report = walls_sim::report::json(scene, &particles, &settings, &outcome);
-        println!(
+        crate::outln!(
             "{}",
             serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
         );
     } else {
-        eprintln!(
+        crate::errln!(
             "walls-sim: {}",
             walls_sim::report::summary(&settings, &outcome, &readout)
         );
         for w in &outcome.warnings {
-            eprintln!("walls-sim: warning: {w}");
+            crate::errln!("walls-sim: warning: {w}");
         }
     }
     // Where pkdgrav would abort, the run stopped: say so, and exit 1.
@@ -392,7 +392,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         }
     });
     if let Some(why) = stop {
-        eprintln!(
+        crate::errln!(
             "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: {why}",
             first + outcome.steps,
             readout.time(outcome.t)

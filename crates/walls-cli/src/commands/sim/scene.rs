@@ -3,7 +3,7 @@
 
 use super::error;
 use crate::{ContactModel, check_bytes, input};
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::process::ExitCode;
 use walls_diagnostics::Severity;
 use walls_diagnostics::render::{self, FileReport};
@@ -27,7 +27,7 @@ pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
         .and_then(|()| out.flush());
     if let Err(e) = written {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
-            eprintln!("walls-sim: error: cannot write output: {e}");
+            crate::errln!("walls-sim: error: cannot write output: {e}");
         }
         return ExitCode::from(2);
     }
@@ -36,7 +36,7 @@ pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
         source: &checked.text,
         diagnostics: &checked.diagnostics,
     };
-    let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
+    let color = crate::console::color_stderr();
     let mut err = std::io::BufWriter::new(std::io::stderr().lock());
     // Standard error is only for people here; if it is gone there is nobody to tell.
     let _ = render::human(&mut err, &report, color).and_then(|()| err.flush());

@@ -167,7 +167,7 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         }
     }
     if let Some(w) = &movie.warning {
-        eprintln!("walls-sim: warning: {w}");
+        crate::errln!("walls-sim: warning: {w}");
     }
     output::write(
         args,
@@ -231,13 +231,13 @@ fn read_ssdraw(path: &Path) -> Result<SsdrawView, String> {
     let view =
         walls_preview::ssdraw::read(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     for (line, label) in &view.unused {
-        eprintln!(
+        crate::errln!(
             "walls-sim: warning: {}:{line}: `{label}` is not used by walls-sim preview",
             path.display()
         );
     }
     if !view.colours.is_empty() {
-        eprintln!(
+        crate::errln!(
             "walls-sim: note: {}: its colours are used for the walls; particles keep ssdraw's standard colours",
             path.display()
         );

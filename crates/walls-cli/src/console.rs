@@ -1,0 +1,67 @@
+//! Writing to the terminal without panicking. `println!` and `eprintln!` panic when their
+//! stream is closed (`walls-sim run 2>&1 | head -1`); the tools print through [`outln!`]
+//! and [`errln!`] instead (clippy's `print_stdout` and `print_stderr` are denied in this
+//! crate):
+//!
+//! * standard output closed by its reader (a broken pipe) ends the process quietly with
+//!   status 0, as `head` expects: nobody is left to read the rest;
+//! * a failed write to standard error is dropped: the warning is lost, the command goes on
+//!   and still writes its results.
+//!
+//! [`color`] decides whether to colour a stream, following <https://no-color.org>: only a
+//! non-empty `NO_COLOR` turns colour off.
+
+use std::fmt::Arguments;
+use std::io::{ErrorKind, IsTerminal, Write};
+
+/// Writes to standard output; see the module documentation for what a closed stream does.
+pub fn out(args: Arguments<'_>) {
+    let mut stdout = std::io::stdout().lock();
+    if let Err(e) = stdout.write_fmt(args).and_then(|()| stdout.flush()) {
+        if e.kind() == ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        // Any other failure of standard output (a full disk behind a redirect) is for the
+        // user to see; standard error may still be open.
+        let _ = writeln!(
+            std::io::stderr(),
+            "error: cannot write to standard output: {e}"
+        );
+        std::process::exit(2);
+    }
+}
+
+/// Writes to standard error, dropping the text if it cannot be written.
+pub fn err(args: Arguments<'_>) {
+    let _ = std::io::stderr().lock().write_fmt(args);
+}
+
+/// Whether to colour output to a stream that is (or is not) a terminal: on a terminal,
+/// unless `NO_COLOR` is set to a non-empty value.
+pub fn color(is_terminal: bool) -> bool {
+    is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
+
+/// [`color`] for standard error, where the tools write diagnostics.
+pub fn color_stderr() -> bool {
+    color(std::io::stderr().is_terminal())
+}
+
+/// `println!` that never panics: see [`out`].
+#[macro_export]
+macro_rules! outln {
+    () => { $crate::console::out(format_args!("\n")) };
+    ($($arg:tt)*) => { $crate::console::out(format_args!("{}\n", format_args!($($arg)*))) };
+}
+
+/// `print!` that never panics: see [`out`].
+#[macro_export]
+macro_rules! out {
+    ($($arg:tt)*) => { $crate::console::out(format_args!($($arg)*)) };
+}
+
+/// `eprintln!` that never panics: see [`err`].
+#[macro_export]
+macro_rules! errln {
+    ($($arg:tt)*) => { $crate::console::err(format_args!("{}\n", format_args!($($arg)*))) };
+}
