@@ -1,5 +1,5 @@
 //! Shared pieces of the walls command-line tools: printing that never panics
-//! ([`console`]), reading inputs (files or standard input), a run's outputs as a movie's frames ([`movie`]) and the contact model that
+//! ([`console`]), Ctrl-C without leftovers ([`interrupt`]), reading inputs (files or standard input), a run's outputs as a movie's frames ([`movie`]) and the contact model that
 //! `--mode` takes. The whole check of one file and the registry of diagnostic codes that
 //! `--explain` and SARIF read are `walls-ide`'s, re-exported here for the tools.
 
@@ -8,6 +8,7 @@
 pub mod commands;
 pub mod console;
 pub mod input;
+pub mod interrupt;
 pub mod movie;
 
 pub use walls_ide::{Checked, all_codes, check_bytes, find_code};
