@@ -186,6 +186,11 @@ fn the_cohesion_files_errors_name_the_file_and_the_line() {
         err("2\n1\n0 1e-3\n1 abc\n"),
         "line 4: the coefficient of colour 1 is `abc`, not a finite number"
     );
+    // A huge announced count is an error about the file, not memory reserved for it.
+    assert_eq!(
+        err("4444444444 0 444444444 0 444444444"),
+        "line 1: the file ends where the coefficient of colour 444444444 should be"
+    );
     assert_eq!(
         err("2\n1\n0 1e-3\n"),
         "line 3: the file ends where colour 2 of 2 should be"

@@ -47,7 +47,10 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
                 ),
             )
         })?;
-    let mut coefficients: Vec<(i32, f64)> = Vec::with_capacity(count);
+    // The count is the file's word, not memory to reserve: a file of a few bytes may
+    // announce 10¹⁰ colours, and is then short of them.
+    let mut coefficients: Vec<(i32, f64)> = Vec::with_capacity(count.min(words.len() / 2));
+    let mut listed = std::collections::HashSet::new();
     for k in 1..=count {
         let (c_line, c_word) = take(&format!("colour {k} of {count}"))?;
         let colour: i32 = c_word.parse().map_err(|_| {
@@ -69,7 +72,7 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
                     ),
                 )
             })?;
-        if coefficients.iter().any(|(c, _)| *c == colour) {
+        if !listed.insert(colour) {
             return Err(error(
                 format!("line {c_line}"),
                 format!("colour {colour} is listed twice"),
