@@ -165,6 +165,41 @@ fn hard_links_are_refused_not_parted() {
 }
 
 #[test]
+fn a_pipe_is_read_but_not_replaced() {
+    for (flag, code, message) in [
+        (
+            None,
+            2,
+            "walls-fmt: error: not writing /dev/stdin: it is not a regular file\n\
+             0 files reformatted, 0 unchanged, 1 not written\n",
+        ),
+        (
+            Some("--check"),
+            1,
+            "would reformat /dev/stdin\n1 file would be reformatted, 0 unchanged\n",
+        ),
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
+            .args(flag)
+            .arg("/dev/stdin")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(MESSY.as_bytes())
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(code), "{flag:?}");
+        assert_eq!(stderr(&out), message);
+    }
+}
+
+#[test]
 fn the_same_file_named_three_ways_is_formatted_once() {
     let dir = tempfile::tempdir().unwrap();
     write(&dir.path().join("a.walls"), MESSY, 0o644);
@@ -403,13 +438,15 @@ fn root_keeps_the_owner_group_and_mode() {
     require_root();
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("theirs.walls");
-    write(&path, MESSY, 0o640);
+    std::fs::write(&path, MESSY).unwrap();
     std::os::unix::fs::chown(&path, Some(NOBODY), Some(NOBODY)).unwrap();
+    // Set-group-id too, which a chown after the chmod would clear.
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o2640)).unwrap();
     let out = walls_fmt(dir.path(), &["theirs.walls"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let meta = std::fs::metadata(&path).unwrap();
     assert_eq!((meta.uid(), meta.gid()), (NOBODY, NOBODY));
-    assert_eq!(meta.mode() & 0o7777, 0o640);
+    assert_eq!(meta.mode() & 0o7777, 0o2640);
     assert_eq!(std::fs::read_to_string(&path).unwrap(), CLEAN);
 }
 
@@ -434,24 +471,35 @@ fn nobody_may_not_rewrite_roots_file_in_an_open_folder() {
 }
 
 #[test]
-fn nobody_may_not_take_roots_writable_file() {
+fn nobody_may_not_take_roots_writable_file_nor_change_a_group() {
     require_root();
     let dir = open_folder();
     write(&dir.path().join("shared.walls"), MESSY, 0o666);
     write(&dir.path().join("own.walls"), MESSY, 0o644);
     std::os::unix::fs::chown(dir.path().join("own.walls"), Some(NOBODY), Some(NOBODY)).unwrap();
-    let out = walls_fmt_as_nobody(dir.path(), &["shared.walls", "own.walls"]);
+    // Nobody's file in root's group, which nobody is not in.
+    write(&dir.path().join("group.walls"), MESSY, 0o664);
+    std::os::unix::fs::chown(dir.path().join("group.walls"), Some(NOBODY), Some(0)).unwrap();
+    let out = walls_fmt_as_nobody(dir.path(), &["shared.walls", "group.walls", "own.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         stderr(&out),
-        "walls-fmt: error: not writing shared.walls: its owner and group (uid 0, gid 0) \
-         cannot be kept: a rewrite by you would make the file yours; format it as its \
-         owner\n1 file reformatted, 0 unchanged, 1 not written\n"
+        "walls-fmt: error: not writing shared.walls: a rewrite would change its owner or \
+         group (uid 0, gid 0), which you cannot keep; format it as its owner\n\
+         walls-fmt: error: not writing group.walls: a rewrite would change its owner or \
+         group (uid 65534, gid 0), which you cannot keep; format it as its owner\n\
+         1 file reformatted, 0 unchanged, 2 not written\n"
     );
     let shared = std::fs::metadata(dir.path().join("shared.walls")).unwrap();
     assert_eq!((shared.uid(), shared.gid()), (0, 0));
     assert_eq!(
         std::fs::read_to_string(dir.path().join("shared.walls")).unwrap(),
+        MESSY
+    );
+    let group = std::fs::metadata(dir.path().join("group.walls")).unwrap();
+    assert_eq!((group.uid(), group.gid()), (NOBODY, 0));
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("group.walls")).unwrap(),
         MESSY
     );
     let own = std::fs::metadata(dir.path().join("own.walls")).unwrap();

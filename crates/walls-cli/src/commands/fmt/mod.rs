@@ -27,7 +27,7 @@ use walls_format::{FormatOptions, discover};
     name = "walls-fmt",
     version,
     about = "Rewrite pkdgrav walls files in the canonical layout, keeping every comment and number.",
-    after_help = "Options come from the nearest .walls-fmt.toml above each file (for -, above the current directory); flags override it.\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error."
+    after_help = "Options come from the nearest .walls-fmt.toml above each file (for -, above the current directory); flags override it.\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error, or a file not written (read-only, not yours, hard-linked or changed meanwhile: see docs/formatting.md)."
 )]
 pub struct FmtArgs {
     /// Files to format in place; `-` formats standard input to standard output.

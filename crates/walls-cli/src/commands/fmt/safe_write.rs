@@ -110,8 +110,8 @@ impl fmt::Display for Refusal {
             ),
             Refusal::Owner { uid, gid } => write!(
                 f,
-                "its owner and group (uid {uid}, gid {gid}) cannot be kept: a rewrite by you \
-                 would make the file yours; format it as its owner"
+                "a rewrite would change its owner or group (uid {uid}, gid {gid}), which you \
+                 cannot keep; format it as its owner"
             ),
             Refusal::Changed => write!(
                 f,
@@ -192,9 +192,12 @@ pub struct Original {
 /// error): the file and its bytes, or a message saying why it could not be read.
 pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
     let fail = |e: io::Error| format!("cannot read {}: {e}", path.display());
-    let real = std::fs::canonicalize(path).map_err(fail)?;
-    let file = File::open(&real).map_err(fail)?;
+    let file = File::open(path).map_err(fail)?;
     let stamp = Stamp::from(&file.metadata().map_err(fail)?);
+    // A path that does not resolve to a name (`/dev/stdin` on a pipe) is not a regular
+    // file, which `check` refuses to replace; if a link changed meanwhile, the identity
+    // differs.
+    let real = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
     let mut bytes = Vec::new();
     file.take(limit + 1).read_to_end(&mut bytes).map_err(fail)?;
     if bytes.len() as u64 > limit {
