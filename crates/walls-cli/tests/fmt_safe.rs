@@ -143,6 +143,26 @@ fn a_read_only_file_is_refused() {
 }
 
 #[test]
+fn extended_attributes_are_kept() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("a.walls");
+    write(&path, MESSY, 0o644);
+    rustix::fs::setxattr(
+        &path,
+        "user.walls.note",
+        b"checked by hand",
+        rustix::fs::XattrFlags::empty(),
+    )
+    .expect("the temporary folder's filesystem takes user extended attributes");
+    let out = walls_fmt(dir.path(), &["a.walls"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), CLEAN);
+    let mut value = [0; 64];
+    let len = rustix::fs::getxattr(&path, "user.walls.note", &mut value[..]).unwrap();
+    assert_eq!(&value[..len], b"checked by hand");
+}
+
+#[test]
 fn hard_links_are_refused_not_parted() {
     let dir = tempfile::tempdir().unwrap();
     let (a, b) = (dir.path().join("a.walls"), dir.path().join("b.walls"));

@@ -11,8 +11,8 @@
 //! 2. writes the text to a new file in the same folder: an unnamed one (`O_TMPFILE`),
 //!    which vanishes with the process whatever kills it, or, where the filesystem lacks
 //!    those, a named `.walls-fmtXXXXXX` that a SIGINT, SIGTERM or SIGHUP removes
-//!    ([`crate::interrupt`]); gives it the original's owner and group (a refusal if they
-//!    cannot be kept) and mode, and flushes it to disk;
+//!    ([`crate::interrupt`]); gives it the original's owner and group, extended
+//!    attributes (a refusal if these cannot be kept) and mode, and flushes it to disk;
 //! 3. checks that the file has not changed meanwhile ([`unchanged`]) and renames the new
 //!    file over it (an unnamed file is first linked under a temporary name).
 //!
@@ -66,7 +66,7 @@ impl From<&Metadata> for Stamp {
 }
 
 /// Why a file is not replaced; each is a reason the user can act on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Refusal {
     /// Not a regular file (a pipe, a device): replacing it would turn it into one.
     NotRegular,
@@ -88,6 +88,12 @@ pub enum Refusal {
         uid: u32,
         /// The original's group.
         gid: u32,
+    },
+    /// An extended attribute (an ACL, a security label, a user's own) could not be given
+    /// to the new file.
+    Attribute {
+        /// The attribute's name.
+        name: String,
     },
     /// The file changed (or was replaced or removed) since it was read.
     Changed,
@@ -112,6 +118,11 @@ impl fmt::Display for Refusal {
                 f,
                 "a rewrite would change its owner or group (uid {uid}, gid {gid}), which you \
                  cannot keep; format it as its owner"
+            ),
+            Refusal::Attribute { name } => write!(
+                f,
+                "its extended attribute {name} cannot be kept (it may be an ACL or a \
+                 security label that only root can set)"
             ),
             Refusal::Changed => write!(
                 f,
@@ -237,6 +248,7 @@ impl Original {
                 gid: self.stamp.gid,
             },
         )?;
+        copy_attributes(&self.path, file)?;
         // After the chown, which clears set-user-id and set-group-id bits.
         file.set_permissions(std::fs::Permissions::from_mode(self.stamp.mode & 0o7777))?;
         write(file)?;
@@ -266,6 +278,29 @@ impl Original {
             Err(e) => Err(e.into()),
         }
     }
+}
+
+/// The most an extended attribute's value, and the list of their names, can hold (Linux).
+const XATTR_MAX: usize = 1 << 16;
+
+/// Gives `new` the extended attributes of the file at `path`, if its filesystem has any.
+fn copy_attributes(path: &Path, new: &File) -> Result<(), WriteError> {
+    let mut names = vec![0; XATTR_MAX];
+    let len = match rustix::fs::listxattr(path, &mut names[..]) {
+        Ok(len) => len,
+        Err(rustix::io::Errno::NOTSUP) => return Ok(()),
+        Err(e) => return Err(io::Error::from(e).into()),
+    };
+    let mut value = vec![0; XATTR_MAX];
+    for name in names[..len].split(|&b| b == 0).filter(|n| !n.is_empty()) {
+        let len = rustix::fs::getxattr(path, name, &mut value[..]).map_err(io::Error::from)?;
+        rustix::fs::fsetxattr(new, name, &value[..len], rustix::fs::XattrFlags::empty()).map_err(
+            |_| Refusal::Attribute {
+                name: String::from_utf8_lossy(name).into_owned(),
+            },
+        )?;
+    }
+    Ok(())
 }
 
 /// The kind of new file the text is written to before it replaces the original.
