@@ -529,3 +529,25 @@ fn nobody_may_not_take_roots_writable_file_nor_change_a_group() {
         CLEAN
     );
 }
+
+#[test]
+fn a_folder_nobody_may_write_is_named() {
+    require_root();
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
+    let path = dir.path().join("mine.walls");
+    write(&path, MESSY, 0o644);
+    std::os::unix::fs::chown(&path, Some(NOBODY), Some(NOBODY)).unwrap();
+    let out = walls_fmt_as_nobody(dir.path(), &["mine.walls"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        stderr(&out),
+        format!(
+            "walls-fmt: error: cannot write mine.walls: cannot make a new file in {} to put \
+             in its place (Permission denied (os error 13)): walls-fmt needs to write its \
+             folder too\n0 files reformatted, 0 unchanged, 1 not written\n",
+            dir.path().canonicalize().unwrap().display()
+        )
+    );
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), MESSY);
+}

@@ -240,7 +240,16 @@ impl Original {
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
             .unwrap_or(Path::new("."));
-        let mut new = NewFile::create(dir, temporary)?;
+        let mut new = NewFile::create(dir, temporary).map_err(|e| {
+            io::Error::new(
+                e.kind(),
+                format!(
+                    "cannot make a new file in {} to put in its place ({e}): walls-fmt needs \
+                     to write its folder too",
+                    dir.display()
+                ),
+            )
+        })?;
         let file = new.file();
         std::os::unix::fs::fchown(&*file, Some(self.stamp.uid), Some(self.stamp.gid)).map_err(
             |_| Refusal::Owner {
