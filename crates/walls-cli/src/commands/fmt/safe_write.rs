@@ -221,8 +221,8 @@ pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
 }
 
 impl Original {
-    /// Replaces the file with `text` if [`check`] allows it, keeping its owner, group and
-    /// mode; see the module documentation for the steps.
+    /// Replaces the file with `text` if [`check`] allows it, keeping its owner, group,
+    /// extended attributes and mode; see the module documentation for the steps.
     pub fn replace(&self, text: &[u8]) -> Result<(), WriteError> {
         self.replace_with(Temporary::Unnamed, |file| file.write_all(text))
     }
