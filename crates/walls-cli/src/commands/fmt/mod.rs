@@ -1,16 +1,21 @@
 //! `walls-fmt`: rewrite walls files in the canonical layout (docs/formatting.md).
 //!
-//! Files are rewritten in place, atomically (a temporary file beside the original,
-//! given the original's permissions, then renamed over it): a crash or a kill mid-write
-//! leaves the original. `-` formats standard input to standard output. `--check` lists
-//! the files that would change and `--diff` shows how, without writing. Exit status: 0
-//! success, 1 a file would change (`--check`, `--diff`) or has syntax errors that
-//! prevent formatting, 2 usage or I/O error.
+//! Files are rewritten in place by [`safe_write`]: only files the user may write, keeping
+//! owner, group, mode and hard links, never over an edit made meanwhile, and atomically (a
+//! crash or a kill mid-write leaves the original). A file named twice (by any path) is
+//! formatted once. `-` formats standard input to standard output. `--check` lists the
+//! files that would change and `--diff` shows how, without writing. Exit status: 0
+//! success, 1 a file would change (`--check`, `--diff`) or has syntax errors that prevent
+//! formatting, 2 usage or I/O error, or a file not written.
+
+pub mod safe_write;
 
 use crate::input;
 use clap::Parser;
 use rayon::prelude::*;
+use std::collections::HashSet;
 use std::io::{Read, Write};
+use std::os::unix::fs::MetadataExt;
 use std::path::Path;
 use std::process::ExitCode;
 use walls_diagnostics::render::{self, FileReport};
@@ -22,7 +27,7 @@ use walls_format::{FormatOptions, discover};
     name = "walls-fmt",
     version,
     about = "Rewrite pkdgrav walls files in the canonical layout, keeping every comment and number.",
-    after_help = "Options come from the nearest .walls-fmt.toml above each file (for -, above the current directory); flags override it.\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error."
+    after_help = "Options come from the nearest .walls-fmt.toml above each file (for -, above the current directory); flags override it.\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error, or a file not written (read-only, not yours, hard-linked or changed meanwhile: see docs/formatting.md)."
 )]
 pub struct FmtArgs {
     /// Files to format in place; `-` formats standard input to standard output.
@@ -55,20 +60,23 @@ enum Outcome {
         text: String,
         report: Vec<walls_diagnostics::Diagnostic>,
     },
-    Failed(String),
+    /// The file (or its `.walls-fmt.toml`) could not be read.
+    Unreadable(String),
+    /// The file was formatted but not written: refused, or the write failed.
+    NotWritten(String),
 }
 
 /// Formats the files `args` name and reports on them; the exit status.
 pub fn run(args: &FmtArgs) -> ExitCode {
-    let outcomes: Vec<(String, Outcome)> = args
-        .files
+    let outcomes: Vec<(String, Outcome)> = distinct(&args.files)
         .par_iter()
         .map(|f| (display(f), format_one(f, args)))
         .collect();
     let color = crate::console::color_stderr();
     let mut err = std::io::BufWriter::new(std::io::stderr().lock());
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    let (mut changed, mut unchanged, mut broken, mut failed) = (0, 0, 0, 0);
+    let (mut changed, mut unchanged, mut broken) = (0, 0, 0);
+    let (mut unreadable, mut unwritten) = (0, 0);
     for (name, outcome) in &outcomes {
         // Standard error is for people: if it is gone there is nobody to tell.
         let _ = match outcome {
@@ -95,8 +103,12 @@ pub fn run(args: &FmtArgs) -> ExitCode {
                     writeln!(err, "walls-fmt: {name} has syntax errors: not formatted")
                 })
             }
-            Outcome::Failed(e) => {
-                failed += 1;
+            Outcome::Unreadable(e) => {
+                unreadable += 1;
+                writeln!(err, "walls-fmt: error: {e}")
+            }
+            Outcome::NotWritten(e) => {
+                unwritten += 1;
                 writeln!(err, "walls-fmt: error: {e}")
             }
         };
@@ -106,26 +118,48 @@ pub fn run(args: &FmtArgs) -> ExitCode {
     } else {
         "reformatted"
     };
-    let _ = writeln!(
-        err,
-        "{changed} file{} {verb}, {unchanged} unchanged{}",
-        if changed == 1 { "" } else { "s" },
-        if broken > 0 {
-            format!(", {broken} not formatted")
-        } else {
-            String::new()
-        }
+    let mut summary = format!(
+        "{changed} file{} {verb}, {unchanged} unchanged",
+        if changed == 1 { "" } else { "s" }
     );
+    for (n, what) in [
+        (broken, "not formatted"),
+        (unreadable, "could not be read"),
+        (unwritten, "not written"),
+    ] {
+        if n > 0 {
+            summary.push_str(&format!(", {n} {what}"));
+        }
+    }
+    let _ = writeln!(err, "{summary}");
     if out.flush().is_err() || err.flush().is_err() {
         return ExitCode::from(2);
     }
-    if failed > 0 {
+    if unreadable + unwritten > 0 {
         ExitCode::from(2)
     } else if broken > 0 || ((args.check || args.diff) && changed > 0) {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
     }
+}
+
+/// The files of `files` with duplicates left out: the same file named twice, by any path
+/// (`a.walls`, `./a.walls`, a symbolic link to it), is formatted and counted once, under
+/// its first name. Files that cannot be looked at stay, to be reported.
+fn distinct(files: &[String]) -> Vec<&String> {
+    let mut seen = HashSet::new();
+    files
+        .iter()
+        .filter(|f| {
+            let identity = if *f == "-" {
+                Some(None)
+            } else {
+                std::fs::metadata(f).ok().map(|m| Some((m.dev(), m.ino())))
+            };
+            identity.is_none_or(|id| seen.insert(id))
+        })
+        .collect()
 }
 
 fn display(path: &str) -> String {
@@ -154,7 +188,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     };
     let options = match discover(&dir) {
         Ok((options, _)) => override_with(options, args),
-        Err(e) => return Outcome::Failed(e.to_string()),
+        Err(e) => return Outcome::Unreadable(e.to_string()),
     };
     let read = if stdin {
         let mut bytes = Vec::new();
@@ -162,14 +196,14 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
             .lock()
             .take(input::MAX_FILE_BYTES + 1)
             .read_to_end(&mut bytes)
-            .map(|_| bytes)
+            .map(|_| (None, bytes))
             .map_err(|e| format!("cannot read standard input: {e}"))
     } else {
-        input::read(path).bytes
+        safe_write::read(Path::new(path), input::MAX_FILE_BYTES).map(|(o, b)| (Some(o), b))
     };
-    let bytes = match read {
-        Ok(b) => b,
-        Err(e) => return Outcome::Failed(e),
+    let (original, bytes) = match read {
+        Ok(read) => read,
+        Err(e) => return Outcome::Unreadable(e),
     };
     let text = match walls_syntax::decode(bytes) {
         Ok(t) => t,
@@ -190,21 +224,8 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
             };
         }
     };
-    if stdin && !args.check && !args.diff {
-        let mut out = std::io::stdout().lock();
-        return match out
-            .write_all(formatted.as_bytes())
-            .and_then(|()| out.flush())
-        {
-            Ok(()) if formatted == text => Outcome::Unchanged,
-            Ok(()) => Outcome::Changed { diff: None },
-            Err(e) => Outcome::Failed(format!("cannot write standard output: {e}")),
-        };
-    }
-    if formatted == text {
-        return Outcome::Unchanged;
-    }
-    if args.diff {
+    let changed = formatted != text;
+    if args.diff && changed {
         let name = display(path);
         let diff = similar::TextDiff::from_lines(&text, &formatted)
             .unified_diff()
@@ -212,12 +233,35 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
             .to_string();
         return Outcome::Changed { diff: Some(diff) };
     }
-    if args.check {
-        return Outcome::Changed { diff: None };
+    let done = if changed {
+        Outcome::Changed { diff: None }
+    } else {
+        Outcome::Unchanged
+    };
+    if args.check || args.diff {
+        return done;
     }
-    match write_atomically(Path::new(path), &formatted) {
-        Ok(()) => Outcome::Changed { diff: None },
-        Err(e) => Outcome::Failed(format!("cannot write {path}: {e}")),
+    let Some(original) = original else {
+        let mut out = std::io::stdout().lock();
+        return match out
+            .write_all(formatted.as_bytes())
+            .and_then(|()| out.flush())
+        {
+            Ok(()) => done,
+            Err(e) => Outcome::NotWritten(format!("cannot write standard output: {e}")),
+        };
+    };
+    if !changed {
+        return done;
+    }
+    match original.replace(formatted.as_bytes()) {
+        Ok(()) => done,
+        Err(safe_write::WriteError::Refused(why)) => {
+            Outcome::NotWritten(format!("not writing {path}: {why}"))
+        }
+        Err(safe_write::WriteError::Io(e)) => {
+            Outcome::NotWritten(format!("cannot write {path}: {e}"))
+        }
     }
 }
 
@@ -232,24 +276,4 @@ fn override_with(mut options: FormatOptions, args: &FmtArgs) -> FormatOptions {
         options.keep_blank_lines = b;
     }
     options
-}
-
-/// Replaces `path` with `text`: a temporary file in the same folder, with the original's
-/// permissions, renamed over it, so that the original survives any failure before that.
-/// A symbolic link is followed: its target is rewritten and the link stays.
-fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
-    let path = &std::fs::canonicalize(path)?;
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let permissions = std::fs::metadata(path)?.permissions();
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".walls-fmt")
-        .tempfile_in(dir)?;
-    tmp.write_all(text.as_bytes())?;
-    tmp.as_file().sync_all()?;
-    tmp.as_file().set_permissions(permissions)?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
 }
