@@ -1205,8 +1205,9 @@ impl<'a> SoftStepper<'a> {
         }
     }
 
-    /// What the run came to.
-    fn outcome(self) -> Outcome {
+    /// What the run came to, and why it `stopped` early (besides pkdgrav's aborts,
+    /// which the warnings say).
+    fn outcome(self, stopped: Option<super::Stop>) -> Outcome {
         let g = self.settings.gravity;
         let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
         Outcome {
@@ -1218,6 +1219,7 @@ impl<'a> SoftStepper<'a> {
             pair_contacts: self.pair_contacts,
             energy: (self.initial, last),
             warnings: self.warnings,
+            stopped,
         }
     }
 }
@@ -1228,21 +1230,25 @@ pub(super) fn run(
     settings: &Settings,
     plan: &Plan,
     observe: Observer,
+    interrupted: &dyn Fn() -> bool,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
     if run.halted {
-        return run.outcome();
+        return run.outcome(None);
     }
     if settings.integrator == Integrator::Pkdgrav && run.start() == Flow::Stop {
-        return run.outcome();
+        return run.outcome(None);
     }
     while run.running() {
         if run.step() == Flow::Stop {
             break;
         }
         observe(run.steps, run.t, &run.states, &run.assemblies);
+        if let Some(stop) = super::halt(&run.states, interrupted) {
+            return run.outcome(Some(stop));
+        }
     }
-    run.outcome()
+    run.outcome(None)
 }
 
 /// pkdgrav's aggregates of the particles (physics.md §9), when the run follows them: an
