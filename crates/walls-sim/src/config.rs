@@ -343,7 +343,7 @@ fn check(
     };
     if !(s.dt > 0.0 && s.dt.is_finite()) {
         return fail(format!(
-            "the timestep comes to {:e} ({dt_from}, with k_n = {:e}): it must be a positive finite number; give --dt",
+            "the timestep comes to {:e} ({dt_from}, with k_n = {:e} from {k_from}): it must be a positive finite number; give --dt",
             s.dt, m.k_n
         ));
     }

@@ -493,7 +493,7 @@ impl<'a> Lines<'a> {
                 let x = super::number(l.value).map_err(|why| {
                     error(
                         format!("line {}", l.n),
-                        format!("`{key}` is `{}`: {why}", l.value),
+                        format!("`{key}` is `{}`, {why}", l.value),
                     )
                 })?;
                 Ok((l.n, x))

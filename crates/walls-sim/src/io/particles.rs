@@ -56,7 +56,7 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
             };
             let field = record.get(i).unwrap_or("");
             super::number(field)
-                .map_err(|why| error(line.clone(), format!("`{name}` is `{field}`: {why}")))
+                .map_err(|why| error(line.clone(), format!("`{name}` is `{field}`, {why}")))
         };
         let particle = Particle {
             mass: number("mass")?,
