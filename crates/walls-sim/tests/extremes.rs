@@ -206,3 +206,54 @@ fn an_interrupted_run_stops_after_the_step_it_is_in() {
     assert_eq!((out.steps, out.stopped), (5, Some(Stop::Interrupted)));
     assert_eq!(seen, 5);
 }
+
+/// A ball dropped on the floor with ε_n = 1 under the run's own defaults, and its
+/// outcome.
+fn elastic_drop(dt: Option<f64>, z: f64) -> walls_sim::run::Outcome {
+    let flags = Flags {
+        eps_n: Some(1.0),
+        gravity: Some(Vector3::new(0.0, 0.0, -1.0)),
+        k_n: dt.map(|_| 1e4),
+        dt,
+        t_end: Some(1.0),
+        ..Flags::default()
+    };
+    let walls = scene(FLOOR);
+    let r = resolve(
+        &flags,
+        None,
+        &walls,
+        Some(vec![ball([0.0, 0.0, z], [0.0, 0.0, -1.0])]),
+    )
+    .unwrap();
+    run(&walls, r.particles, &r.settings)
+}
+
+fn energy_gained(out: &walls_sim::run::Outcome) -> bool {
+    out.warnings
+        .iter()
+        .any(|w| matches!(w, walls_sim::run::Warning::EnergyGain { .. }))
+}
+
+#[test]
+fn the_leapfrog_error_at_the_default_timestep_is_no_energy_gain() {
+    let mut faster = 0;
+    for k in 0..12 {
+        let out = elastic_drop(None, 0.3 + 0.05 * f64::from(k));
+        // Some rebounds are a little faster, as the integrator's error allows ...
+        faster += out
+            .events
+            .iter()
+            .filter(|e| e.vn_out > e.vn_in * (1.0 + 1e-9))
+            .count();
+        // ... which is not a warning.
+        assert!(!energy_gained(&out), "{:?}", out.warnings);
+    }
+    assert!(faster > 0);
+}
+
+#[test]
+fn a_real_gain_of_energy_is_a_warning() {
+    // dt at the stability limit 2/ω₀ of k_n = 10⁴, m = 1: the rebound triples.
+    assert!(energy_gained(&elastic_drop(Some(0.02), 0.5)));
+}

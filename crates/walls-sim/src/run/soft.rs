@@ -1123,7 +1123,14 @@ impl<'a> SoftStepper<'a> {
             }
             for e in &report.events {
                 if e.kind == EventKind::Bounce
-                    && e.vn_out > e.vn_in * (1.0 + 1e-9)
+                    && e.vn_out
+                        > e.vn_in
+                            * (1.0
+                                + gain_tolerance(
+                                    self.materials[e.wall].k_n,
+                                    self.states[i].particle.mass,
+                                    self.settings.dt,
+                                ))
                     && !self.oscillating[e.wall]
                     && !self.once.gain
                 {
@@ -1221,6 +1228,20 @@ impl<'a> SoftStepper<'a> {
             warnings: self.warnings,
             stopped,
         }
+    }
+}
+
+/// How much faster than it came a particle may leave a wall before W106 calls it a
+/// gain of energy: the rebound error the integrator is expected to make at this
+/// timestep, 1.2/N for N = π/(ω₀·dt) steps per contact (ω₀ = √(k_n/m); W202,
+/// docs/run-warnings.md), and no less than round-off (10⁻⁹).
+fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
+    let omega_dt = (k_n / mass).sqrt() * dt;
+    let tolerance = 1.2 * omega_dt / std::f64::consts::PI;
+    if tolerance.is_finite() {
+        tolerance.max(1e-9)
+    } else {
+        1e-9
     }
 }
 
