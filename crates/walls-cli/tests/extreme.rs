@@ -69,8 +69,12 @@ fn run_in(dir: &Path, args: &[String]) -> Result<(i32, String), String> {
     Ok((status.code().unwrap_or(-1), text))
 }
 
-/// Every row of the table: the command line and the files it needs.
-fn table() -> Vec<(Vec<String>, Vec<(&'static str, Vec<u8>)>)> {
+/// A row of the table: the command line (the binary first) and the files it needs,
+/// each a name and its bytes.
+type Row = (Vec<String>, Vec<(&'static str, Vec<u8>)>);
+
+/// Every row of the table.
+fn table() -> Vec<Row> {
     let mut rows = Vec::new();
     let s = |words: &str| -> Vec<String> { words.split_whitespace().map(String::from).collect() };
     let floor = b"wall type plane\n".to_vec();
@@ -108,7 +112,7 @@ fn table() -> Vec<(Vec<String>, Vec<(&'static str, Vec<u8>)>)> {
     ];
     for column in 0..8 {
         for v in VALUES {
-            let mut row = vec!["1", "0.1", "0", "0", "0.3", "0", "0", "-2"];
+            let mut row = ["1", "0.1", "0", "0", "0.3", "0", "0", "-2"];
             row[column] = v;
             let text = format!("mass,radius,x,y,z,vx,vy,vz\n{}\n", row.join(",")).into_bytes();
             for cmd in particle_commands {

@@ -3,7 +3,8 @@
 //! the walls file, and the exit statuses.
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
-//! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
+//! from what parsed, with exit status 1, as does a run that stopped early; exit status
+//! 2 is a usage or I/O error, or input a run cannot use.
 
 pub mod advise;
 pub mod plan;
