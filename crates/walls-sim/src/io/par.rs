@@ -340,6 +340,10 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iOverlapOption", Use::NotYet(HARD_OPTION)),
 ];
 
+/// The integer keys the run reads as counts: a value that is not a whole number is an
+/// error ([`Lines::count`]), not pkdgrav's `%d` reading.
+const COUNTS: [&str; 4] = ["nSteps", "iStartStep", "iOutInterval", "nDigits"];
+
 /// The most digits `nDigits` may ask for: a 64-bit step number has at most 20.
 pub const MAX_DIGITS: usize = 20;
 
@@ -525,26 +529,9 @@ impl<'a> Lines<'a> {
     }
 
     /// A pkdgrav switch (an integer, any value but 0 on) as pkdgrav reads it
-    /// ([`Lines::integer`]), warning when pkdgrav reads less than the text says.
-    fn switch(
-        &self,
-        key: &str,
-        warn: &mut impl FnMut(Option<usize>, &str, String),
-    ) -> Result<Option<bool>, InputError> {
-        Ok(self.integer(key)?.map(|(n, x, whole)| {
-            if !whole {
-                warn(
-                    Some(n),
-                    key,
-                    format!(
-                        "`{}` is not a whole number: pkdgrav reads it with C's %d as {x}, so the switch is {}; the run does the same (write {x})",
-                        self.by_key[key].value,
-                        if x != 0 { "on" } else { "off" }
-                    ),
-                );
-            }
-            x != 0
-        }))
+    /// ([`Lines::integer`]).
+    fn switch(&self, key: &str) -> Result<Option<bool>, InputError> {
+        Ok(self.integer(key)?.map(|(_, x, _)| x != 0))
     }
 
     /// `key`'s value if it obeys `rule`.
@@ -633,6 +620,22 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             );
             continue;
         }
+        // pkdgrav's integers (`b…` switches, `i…` options) are read with C's %d; the
+        // counts the run reads as whole numbers are errors instead ([`Lines::count`]).
+        if key.starts_with(['b', 'i'])
+            && !COUNTS.contains(&key)
+            && use_of(key).is_some()
+            && let Some((_, x, false)) = lines.integer(key)?
+        {
+            warn(
+                Some(n),
+                key,
+                format!(
+                    "`{}` is not a whole number: pkdgrav reads it with C's %d as {x}; the run does the same (write {x})",
+                    lines.by_key[key].value
+                ),
+            );
+        }
         match use_of(key) {
             None => warn(
                 Some(n),
@@ -699,10 +702,6 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             "read as a comment, as in walls files; pkdgrav's parameter files take `#` comments: write `#` so that pkdgrav reads the line as the run does".into(),
         );
     }
-    let edge_detect = lines.switch("bWallsEdgeDetect", &mut warn)?;
-    let contact_radius = lines.switch("bUseContactRadius", &mut warn)?;
-    let legacy_roll = lines.switch("bUseLegacyRoll", &mut warn)?;
-    let do_gravity = lines.switch("bDoGravity", &mut warn)?;
     let k_n = lines.checked("dKn", Rule::NonNegative)?;
     match (k_n, lines.line("dKn")) {
         (None, _) => warn(
@@ -729,10 +728,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         })
         .collect();
     optional_keys.sort_by_key(|k| k.line);
-    let cohesion_model = match lines.real("iCohesionModel")? {
+    let cohesion_model = match lines.integer("iCohesionModel")? {
         None => None,
-        Some((_, x)) if x == 0.0 || x == 1.0 => Some(x as i64),
-        Some((n, _)) => {
+        Some((_, x, _)) if x == 0 || x == 1 => Some(x),
+        Some((n, _, _)) => {
             return Err(error(
                 format!("line {n}"),
                 format!(
@@ -772,10 +771,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 g[2].unwrap_or(0.0),
             )
         }),
-        edge_detect,
-        contact_radius,
-        legacy_roll,
-        do_gravity,
+        edge_detect: lines.switch("bWallsEdgeDetect")?,
+        contact_radius: lines.switch("bUseContactRadius")?,
+        legacy_roll: lines.switch("bUseLegacyRoll")?,
+        do_gravity: lines.switch("bDoGravity")?,
         acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
         two_layer,
         cohesion_model,
