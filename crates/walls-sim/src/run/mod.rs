@@ -392,7 +392,7 @@ impl std::fmt::Display for Stop {
                 f,
                 "particle {i}'s position, velocity or spin became infinite or NaN (the values outgrew a double: shorten the timestep or check the input's scale)"
             ),
-            Stop::Interrupted => write!(f, "interrupted"),
+            Stop::Interrupted => write!(f, "interrupted (Ctrl-C, SIGTERM or SIGHUP)"),
             Stop::Timestep => write!(f, "the timestep is not a positive finite number"),
         }
     }
