@@ -77,16 +77,21 @@ pub fn trailing_step(path: &Path) -> Option<u64> {
     digits.parse().ok()
 }
 
-/// The snapshots of the particle file at `path`: one for a `.ss` file or a particle CSV,
-/// one per output step for a `particles.csv` of `walls-sim run --out`. Errors name the
-/// file and the line or byte.
+/// The snapshots of the particle file at `path` (`-`: standard input; the format by its
+/// extension, else its content): one for a `.ss` file or a particle CSV, one per output
+/// step for a `particles.csv` of `walls-sim run --out`. Errors name the file and the
+/// line or byte.
 pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
+    use walls_sim::io::particles::{Format, format_of, read_input};
     let name = path.display();
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {name}: {e}"))?;
-    let csv = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-    if !csv {
+    let given = path.to_string_lossy();
+    let bytes = read_input(&given).map_err(|e| e.to_string())?;
+    let format = format_of(&given, &bytes).ok_or_else(|| {
+        format!(
+            "{name}: neither a particle CSV (a text header row) nor a pkdgrav .ss file (a binary header with the magic number -1 or -10101 at byte 12)"
+        )
+    })?;
+    if format == Format::Ss {
         let (t, particles) = read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?;
         return Ok(vec![Snapshot {
             t: Some(t),

@@ -290,15 +290,26 @@ pub struct InvalidInput {
     pub value: f64,
     /// What it must be.
     pub must_be: &'static str,
+    /// Whether it is not an input but a value the inputs give (k_n, dDelta, …), which
+    /// came out as 0, infinite or NaN: the inputs' scale is beyond a double's.
+    pub derived: bool,
 }
 
 impl fmt::Display for InvalidInput {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} is {}; it must be {}",
-            self.name, self.value, self.must_be
-        )
+        if self.derived {
+            write!(
+                f,
+                "these inputs give {} = {:e}; it must be {}: check their scale and units (a double holds about 1e-308 to 1e308)",
+                self.name, self.value, self.must_be
+            )
+        } else {
+            write!(
+                f,
+                "{} is {}; it must be {}",
+                self.name, self.value, self.must_be
+            )
+        }
     }
 }
 
@@ -393,6 +404,7 @@ fn check(
             name,
             value: x,
             must_be,
+            derived: false,
         })
     }
 }
@@ -489,6 +501,29 @@ pub fn advise(inputs: &Inputs) -> Result<Advice, InvalidInput> {
             significant(c.free_fall_speed.si, 5),
             significant(v, 5),
         ));
+    }
+    // Every value advised, in SI and in pkdgrav units, must be a positive finite number:
+    // never NaN, 0 or infinity on a .par line.
+    let derived = [
+        ("the mass", m, Mass),
+        ("the density", rho, Density),
+        ("the allowed overlap", x, Length),
+        ("dKn", k, Stiffness),
+        ("the contact time", t_pair, Time),
+        ("dDelta", dt, Time),
+    ];
+    for (name, value, dimension) in derived {
+        let pkdgrav = q(value, dimension).pkdgrav;
+        for x in [value, pkdgrav] {
+            if !(x.is_finite() && x > 0.0) {
+                return Err(InvalidInput {
+                    name,
+                    value: x,
+                    must_be: "a positive finite number, in SI and in pkdgrav units",
+                    derived: true,
+                });
+            }
+        }
     }
     Ok(Advice {
         mass: q(m, Mass),
@@ -1072,6 +1107,25 @@ mod tests {
             e.to_string()
                 .starts_with("overlap is 0.7; it must be above 0 and below 0.5")
         );
+    }
+
+    #[test]
+    fn extreme_inputs_give_no_nan_zero_or_infinite_advice() {
+        for (mass, radius, speed) in [
+            (1e-300, 1e300, 1.0),
+            (1e300, 1e-300, 1e300),
+            (1.0, 1e-300, 1e-300),
+        ] {
+            let e = advise(&Inputs {
+                amount: Amount::Mass(mass),
+                radius,
+                speed,
+                ..demparams()
+            })
+            .unwrap_err();
+            assert!(e.derived, "{e}");
+            assert!(e.to_string().starts_with("these inputs give "), "{e}");
+        }
     }
 
     #[test]

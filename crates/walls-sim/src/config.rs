@@ -72,7 +72,14 @@ pub struct Flags {
     pub integrator: Integrator,
     /// `--all-parts`.
     pub planning: Planning,
+    /// `--max-steps` (default [`MAX_STEPS`]).
+    pub max_steps: Option<u64>,
 }
+
+/// The most steps a run takes unless `--max-steps` says more: a hundred million, a few
+/// minutes for a few particles, past which a mistyped timestep or end time is likelier
+/// than a wanted run (docs/evaluator.md).
+pub const MAX_STEPS: u64 = 100_000_000;
 
 /// A run's particles and settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -94,6 +101,10 @@ pub enum ConfigError {
     /// The `.par` file or the particle file could not be read, or is wrong (the error
     /// names the file and the line or byte).
     File(FileError),
+    /// The values read are each fine, but the run they make cannot be computed (its
+    /// timestep or spring overflows, or it would take more steps than allowed): what,
+    /// and what to give instead.
+    Unusable(String),
 }
 
 impl From<FileError> for ConfigError {
@@ -106,6 +117,7 @@ impl std::fmt::Display for ConfigError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             ConfigError::File(e) => e.fmt(f),
+            ConfigError::Unusable(why) => f.write_str(why),
         }
     }
 }
@@ -286,11 +298,93 @@ pub fn resolve(
         dt_given: given_dt.is_some(),
         ..Settings::new(dt, t_end, material)
     };
-    Ok(Run {
+    let run = Run {
         particles,
         settings,
         warnings,
-    })
+    };
+    check(flags, par, &run, embedded)?;
+    Ok(run)
+}
+
+/// Whether the run can be computed in doubles: a finite spring, a positive finite
+/// timestep and end time, no more steps than `--max-steps` (else [`MAX_STEPS`]), and,
+/// for each particle, a spring force, acceleration and change of speed in one step
+/// (k_n·r, k_n·r/m, k_n·r/m·dt) and a gravitational energy that are finite. The
+/// messages name where the value came from and what to give instead.
+fn check(
+    flags: &Flags,
+    par: Option<&Params>,
+    run: &Run,
+    embedded: bool,
+) -> Result<(), ConfigError> {
+    let s = &run.settings;
+    let m = &s.material;
+    let fail = |why: String| Err(ConfigError::Unusable(why));
+    let k_from = if flags.k_n.is_some() {
+        "--k-n"
+    } else if par.is_some_and(|p| p.k_n.is_some()) {
+        "the .par file's dKn"
+    } else {
+        "derived from the particles' size and speed"
+    };
+    if !(m.k_n.is_finite() && m.k_t.is_finite()) {
+        return fail(format!(
+            "the spring constant k_n comes to {:e} ({k_from}), beyond what a double holds: give a smaller --k-n",
+            m.k_n
+        ));
+    }
+    let dt_from = if flags.dt.is_some() {
+        "--dt"
+    } else if par.is_some_and(|p| p.dt.is_some()) {
+        "the .par file's dDelta"
+    } else {
+        "the default, from k_n and the particles' mass, size and speed"
+    };
+    if !(s.dt > 0.0 && s.dt.is_finite()) {
+        return fail(format!(
+            "the timestep comes to {:e} ({dt_from}, with k_n = {:e} from {k_from}): it must be a positive finite number; give --dt",
+            s.dt, m.k_n
+        ));
+    }
+    if !(s.t_end.is_finite() && s.t_end >= 0.0) {
+        return fail(format!("the end time comes to {:e}: give --t-end", s.t_end));
+    }
+    let limit = flags.max_steps.unwrap_or(MAX_STEPS);
+    let steps = s.end_step().saturating_sub(s.start_step);
+    if steps > limit {
+        let count = if steps == u64::MAX {
+            format!("{:e} ", (s.t_end - s.t_start()) / s.dt)
+        } else {
+            format!("{steps} ")
+        };
+        return fail(format!(
+            "the run would take {count}steps of {:e} ({dt_from}) to t = {:e}, more than the limit of {limit}: give a longer --dt or a shorter --t-end, or raise the limit with --max-steps",
+            s.dt, s.t_end
+        ));
+    }
+    let g = s.gravity.norm();
+    for (i, p) in run.particles.iter().enumerate() {
+        let which = if embedded {
+            format!("default particle {i} (sized to the scene)")
+        } else {
+            format!("particle {i}")
+        };
+        if embedded && let Err(says) = particles::check(p) {
+            return fail(format!("{which}: {says}"));
+        }
+        let force = m.k_n * p.radius;
+        let acc = force / p.mass;
+        let kick = acc * s.dt;
+        let potential = p.mass * g * p.pos.norm();
+        if ![force, acc, kick, potential].iter().all(|x| x.is_finite()) {
+            return fail(format!(
+                "{which}: with k_n = {:e} ({k_from}), dt = {:e} and |g| = {g:e}, its contact force k_n·r = {force:e}, acceleration k_n·r/m = {acc:e}, change of speed in a step {kick:e} or gravitational energy {potential:e} is beyond what a double holds: check the values' scale (pkdgrav units)",
+                m.k_n, s.dt
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The `.par` keys of optional builds (cohesion, two-layer contacts) that a run with

@@ -29,8 +29,8 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
 }
 
 /// The outcome as JSON: the time and steps, each particle's state, the wall events, the
-/// particle contacts, the energy, the parts of the model used, the pkdgrav build and the
-/// warnings.
+/// particle contacts, the energy, the parts of the model used, the pkdgrav build, the
+/// warnings, and why the run stopped early (`stopped`: null when it ran to its end).
 pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &Outcome) -> Value {
     let kind = |k: EventKind| match k {
         EventKind::Bounce => "bounce",
@@ -57,6 +57,7 @@ pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &O
         "model": model(scene, particles, settings),
         "build": settings.build.names(),
         "warnings": out.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
+        "stopped": out.stopped.map(crate::run::Stop::code),
     })
 }
 

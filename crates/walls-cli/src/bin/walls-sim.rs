@@ -4,7 +4,8 @@
 //! command is a module of [`walls_cli::commands::sim`]; this file parses and dispatches.
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
-//! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
+//! from what parsed, with exit status 1, as does a run that stopped early; exit status
+//! 2 is a usage or I/O error, or input a run cannot use.
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
@@ -26,7 +27,7 @@ static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
     name = "walls-sim",
     version,
     about = "Evaluate pkdgrav walls files: the resolved scene, wall motion, runs, and advice for pkdgrav's k_n and timestep.",
-    after_help = "Exit status: 0 success, 1 the file has errors (the output is what could be resolved), 2 usage or I/O error."
+    after_help = "Exit status: 0 success; 1 findings (the walls file has errors: the output is what could be resolved) or a run that stopped early (its JSON says why in \"stopped\"); 2 usage or I/O error, or input a run cannot use."
 )]
 struct Args {
     #[command(subcommand)]

@@ -14,6 +14,30 @@ pub mod particles;
 pub mod trajectory;
 pub mod wallsreact;
 
+/// A decimal number as the tools read it: a finite double, and not one that a number
+/// written with a non-zero digit rounds to 0 (`1e-400`: C's `atof`, and so pkdgrav,
+/// would read 0 without a word). The error says what is wrong.
+pub fn number(text: &str) -> Result<f64, String> {
+    let x: f64 = text.parse().map_err(|_| "not a number".to_string())?;
+    if x.is_nan() || (x.is_infinite() && !text.chars().any(|c| c.is_ascii_digit())) {
+        return Err("not a finite number".into());
+    }
+    if x.is_infinite() {
+        return Err(
+            "beyond the largest double (about 1.8e308): C's atof, and so pkdgrav, would read infinity"
+                .into(),
+        );
+    }
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    if x == 0.0 && mantissa.chars().any(|c| ('1'..='9').contains(&c)) {
+        return Err(
+            "below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+                .into(),
+        );
+    }
+    Ok(x)
+}
+
 /// Why an input could not be read, and where.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct InputError {

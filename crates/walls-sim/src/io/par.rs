@@ -340,6 +340,10 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iOverlapOption", Use::NotYet(HARD_OPTION)),
 ];
 
+/// The integer keys the run reads as counts: a value that is not a whole number is an
+/// error ([`Lines::count`]), not pkdgrav's `%d` reading.
+const COUNTS: [&str; 4] = ["nSteps", "iStartStep", "iOutInterval", "nDigits"];
+
 /// The most digits `nDigits` may ask for: a 64-bit step number has at most 20.
 pub const MAX_DIGITS: usize = 20;
 
@@ -426,6 +430,8 @@ struct Line<'a> {
 struct Lines<'a> {
     by_key: HashMap<&'a str, Line<'a>>,
     order: Vec<(usize, &'a str)>,
+    /// The lines with a comment begun by `!` rather than `#`.
+    bangs: Vec<usize>,
 }
 
 impl<'a> Lines<'a> {
@@ -433,6 +439,7 @@ impl<'a> Lines<'a> {
     fn split(text: &'a str) -> Result<Lines<'a>, InputError> {
         let mut by_key = HashMap::new();
         let mut order = Vec::new();
+        let mut bangs = Vec::new();
         for (i, raw) in text.split('\n').enumerate() {
             let n = i + 1;
             if raw.len() > LINE_LIMIT {
@@ -444,7 +451,15 @@ impl<'a> Lines<'a> {
                     ),
                 ));
             }
-            let line = raw.split('#').next().unwrap_or("").trim();
+            let line = raw.split('#').next().unwrap_or("");
+            let line = match line.split_once('!') {
+                Some((before, _)) => {
+                    bangs.push(n);
+                    before
+                }
+                None => line,
+            }
+            .trim();
             if line.is_empty() {
                 continue;
             }
@@ -458,7 +473,11 @@ impl<'a> Lines<'a> {
             by_key.insert(name, Line { n, value });
             order.push((n, name));
         }
-        Ok(Lines { by_key, order })
+        Ok(Lines {
+            by_key,
+            order,
+            bangs,
+        })
     }
 
     /// The line of `key`, if given.
@@ -475,15 +494,44 @@ impl<'a> Lines<'a> {
         self.by_key
             .get(key)
             .map(|l| {
-                let x = l.value.parse::<f64>().map_err(|_| {
+                let x = super::number(l.value).map_err(|why| {
                     error(
                         format!("line {}", l.n),
-                        format!("`{key}` is `{}`, not a number", l.value),
+                        format!("`{key}` is `{}`, {why}", l.value),
                     )
                 })?;
                 Ok((l.n, x))
             })
             .transpose()
+    }
+
+    /// `key`'s value as pkdgrav's integer parameters read it (C's `%d`: an optional
+    /// sign and the digits that follow, the rest of the text ignored), with its line and
+    /// whether that was the whole text (`0.5` reads as 0, `1e3` as 1).
+    fn integer(&self, key: &str) -> Result<Option<(usize, i64, bool)>, InputError> {
+        self.by_key
+            .get(key)
+            .map(|l| {
+                let text = l.value;
+                let sign = usize::from(text.starts_with(['-', '+']));
+                let digits = text[sign..]
+                    .find(|c: char| !c.is_ascii_digit())
+                    .map_or(text.len(), |k| k + sign);
+                let x = text[..digits].parse::<i64>().map_err(|_| {
+                    error(
+                        format!("line {}", l.n),
+                        format!("`{key}` is `{text}`; pkdgrav reads a whole number here"),
+                    )
+                })?;
+                Ok((l.n, x, digits == text.len()))
+            })
+            .transpose()
+    }
+
+    /// A pkdgrav switch (an integer, any value but 0 on) as pkdgrav reads it
+    /// ([`Lines::integer`]).
+    fn switch(&self, key: &str) -> Result<Option<bool>, InputError> {
+        Ok(self.integer(key)?.map(|(_, x, _)| x != 0))
     }
 
     /// `key`'s value if it obeys `rule`.
@@ -572,6 +620,22 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             );
             continue;
         }
+        // pkdgrav's integers (`b…` switches, `i…` options) are read with C's %d; the
+        // counts the run reads as whole numbers are errors instead ([`Lines::count`]).
+        if key.starts_with(['b', 'i'])
+            && !COUNTS.contains(&key)
+            && use_of(key).is_some()
+            && let Some((_, x, false)) = lines.integer(key)?
+        {
+            warn(
+                Some(n),
+                key,
+                format!(
+                    "`{}` is not a whole number: pkdgrav reads it with C's %d as {x}; the run does the same (write {x})",
+                    lines.by_key[key].value
+                ),
+            );
+        }
         match use_of(key) {
             None => warn(
                 Some(n),
@@ -585,7 +649,13 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             ),
             Some(Use::NotYet(why)) => warn(Some(n), key, why.to_string()),
             Some(Use::Only { value, why, .. }) => {
-                // pkdgrav's switches (`b…`) are C ints: any value but 0 is on.
+                // pkdgrav's switches (`b…`) and integers (`i…`) are C ints read with
+                // %d: any value but 0 is on.
+                let x = if key.starts_with(['b', 'i']) {
+                    lines.integer(key)?.map(|(_, x, _)| x as f64)
+                } else {
+                    lines.real(key)?.map(|(_, x)| x)
+                };
                 let same = |x: f64| {
                     if key.starts_with('b') {
                         (x != 0.0) == (value != 0.0)
@@ -593,15 +663,15 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                         x == value
                     }
                 };
-                if let Some((_, x)) = lines.real(key)?
+                if let Some(x) = x
                     && !same(x)
                 {
                     warn(Some(n), key, format!("{x} is not modelled: {why}"));
                 }
             }
             Some(Use::Read) if key == "bDoGravity" => {
-                if let Some((_, x)) = lines.real(key)?
-                    && x == 0.0
+                if let Some((_, x, _)) = lines.integer(key)?
+                    && x == 0
                 {
                     warn(
                         Some(n),
@@ -624,6 +694,13 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         {
             warn(None, key, format!("pkdgrav's default is {default}: {why}"));
         }
+    }
+    for &n in &lines.bangs {
+        warn(
+            Some(n),
+            "!",
+            "read as a comment, as in walls files; pkdgrav's parameter files take `#` comments: write `#` so that pkdgrav reads the line as the run does".into(),
+        );
     }
     let k_n = lines.checked("dKn", Rule::NonNegative)?;
     match (k_n, lines.line("dKn")) {
@@ -651,10 +728,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         })
         .collect();
     optional_keys.sort_by_key(|k| k.line);
-    let cohesion_model = match lines.real("iCohesionModel")? {
+    let cohesion_model = match lines.integer("iCohesionModel")? {
         None => None,
-        Some((_, x)) if x == 0.0 || x == 1.0 => Some(x as i64),
-        Some((n, _)) => {
+        Some((_, x, _)) if x == 0 || x == 1 => Some(x),
+        Some((n, _, _)) => {
             return Err(error(
                 format!("line {n}"),
                 format!(
@@ -694,10 +771,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 g[2].unwrap_or(0.0),
             )
         }),
-        edge_detect: lines.real("bWallsEdgeDetect")?.map(|(_, x)| x != 0.0),
-        contact_radius: lines.real("bUseContactRadius")?.map(|(_, x)| x != 0.0),
-        legacy_roll: lines.real("bUseLegacyRoll")?.map(|(_, x)| x != 0.0),
-        do_gravity: lines.real("bDoGravity")?.map(|(_, x)| x != 0.0),
+        edge_detect: lines.switch("bWallsEdgeDetect")?,
+        contact_radius: lines.switch("bUseContactRadius")?,
+        legacy_roll: lines.switch("bUseLegacyRoll")?,
+        do_gravity: lines.switch("bDoGravity")?,
         acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
         two_layer,
         cohesion_model,

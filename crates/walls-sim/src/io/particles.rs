@@ -55,16 +55,8 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
                 return Ok(0.0);
             };
             let field = record.get(i).unwrap_or("");
-            field
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    error(
-                        line.clone(),
-                        format!("`{name}` is `{field}`, not a finite number"),
-                    )
-                })
+            super::number(field)
+                .map_err(|why| error(line.clone(), format!("`{name}` is `{field}`, {why}")))
         };
         let particle = Particle {
             mass: number("mass")?,
@@ -92,23 +84,55 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
     Ok(out)
 }
 
-/// Whether a run can use particle `p`: a positive mass and radius, finite values.
-fn check(p: &Particle) -> Result<(), &'static str> {
+/// Whether a run can use particle `p`: a positive mass and radius, finite values, and
+/// the squares a run takes of them (its moment of inertia 0.4·m·r², its kinetic energy
+/// ½m|v|² and ⅕m·r²|ω|², the squared distance |x|²) neither overflowing nor, for the
+/// inertia, underflowing to 0; a `color` pkdgrav's tools can draw.
+pub fn check(p: &Particle) -> Result<(), String> {
     if !(p.mass > 0.0 && p.radius > 0.0) {
-        return Err("mass and radius must be positive");
+        return Err("mass and radius must be positive".into());
     }
     let values = [p.mass, p.radius];
     let vectors = [p.pos, p.vel, p.spin];
-    if values
+    if !values
         .iter()
         .chain(vectors.iter().flatten())
         .all(|x| x.is_finite())
     {
-        Ok(())
-    } else {
-        Err("its values must be finite numbers")
+        return Err("its values must be finite numbers".into());
     }
+    let inertia = 0.4 * p.mass * p.radius * p.radius;
+    if !(inertia > 0.0 && inertia.is_finite()) {
+        return Err(format!(
+            "its moment of inertia 0.4·m·r² (m = {:e}, r = {:e}) is {inertia:e}, outside what a double holds: check the values' scale (pkdgrav units)",
+            p.mass, p.radius
+        ));
+    }
+    let squares = [
+        ("kinetic energy ½m|v|²", 0.5 * p.mass * p.vel.norm_squared()),
+        ("spin energy ½I|ω|²", 0.5 * inertia * p.spin.norm_squared()),
+        (
+            "squared distance from the origin |x|²",
+            p.pos.norm_squared(),
+        ),
+    ];
+    if let Some((what, x)) = squares.iter().find(|(_, x)| !x.is_finite()) {
+        return Err(format!(
+            "its {what} is {x}, beyond what a double holds: check the values' scale (pkdgrav units)"
+        ));
+    }
+    if p.color > COLOR_MAX {
+        return Err(format!(
+            "`color` is {}; pkdgrav's colours are 0 to {COLOR_MAX} (negative: stuck to wall −1 − color)",
+            p.color
+        ));
+    }
+    Ok(())
 }
+
+/// The largest colour pkdgrav's tools draw (SPEC §1: 0 to 255; a negative colour means
+/// stuck to a wall).
+const COLOR_MAX: i32 = 255;
 
 /// A cursor over big-endian XDR data that reports the byte offset of a short read.
 struct Xdr<'a> {
@@ -149,6 +173,12 @@ const REDUCED: i32 = -10101;
 pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
     let mut x = Xdr { bytes, at: 0 };
     let time = x.f64()?;
+    if !time.is_finite() {
+        return Err(error(
+            "byte 0",
+            format!("the header's time is {time}, not a finite number"),
+        ));
+    }
     let count = x.i32()?;
     let magic = x.i32()?;
     let record = match magic {
@@ -239,17 +269,71 @@ pub fn ss_file_name(name: &str, digits: usize, step: u64) -> String {
     format!("{name}.{step:0digits$}")
 }
 
-/// Particles from the file at `path`: CSV (by its extension, in any case) or a pkdgrav
-/// `.ss` file.
-pub fn read_file(path: &str) -> Result<Vec<Particle>, FileError> {
-    let bytes = std::fs::read(path).map_err(|e| FileError::read(path, e))?;
-    let csv = std::path::Path::new(path)
+/// The two particle file formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// CSV text with a header row ([`read_csv`]).
+    Csv,
+    /// A pkdgrav `.ss` file ([`read_ss`]).
+    Ss,
+}
+
+/// The format of the particle file `name` holding `bytes`: its extension when it is
+/// `.csv` or `.ss` (in any case); otherwise (pkdgrav's `ss.00100`, a `.txt`, standard
+/// input) its content: a `.ss` file's 16-byte binary header ends with the magic number
+/// −1 or −10101, a CSV is text whose first line has commas. `None` when neither fits.
+pub fn format_of(name: &str, bytes: &[u8]) -> Option<Format> {
+    let extension = std::path::Path::new(name)
         .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-    if csv {
-        read_csv(&String::from_utf8_lossy(&bytes))
-    } else {
-        read_ss(&bytes).map(|(_, ps)| ps)
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("csv") => return Some(Format::Csv),
+        Some("ss") => return Some(Format::Ss),
+        _ => {}
     }
-    .map_err(|e| FileError::input(path, e))
+    let magic = bytes
+        .get(12..16)
+        .and_then(|b| <[u8; 4]>::try_from(b).ok())
+        .map(i32::from_be_bytes);
+    if matches!(magic, Some(STANDARD | REDUCED)) {
+        return Some(Format::Ss);
+    }
+    let first = bytes.split(|&b| b == b'\n').next().unwrap_or_default();
+    let text = std::str::from_utf8(first).ok()?;
+    text.contains(',').then_some(Format::Csv)
+}
+
+/// Particles from `bytes`, the contents of the particle file `name`, in the format
+/// [`format_of`] finds.
+pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Vec<Particle>, InputError> {
+    match format_of(name, bytes) {
+        Some(Format::Csv) => read_csv(&String::from_utf8_lossy(bytes)),
+        Some(Format::Ss) => read_ss(bytes).map(|(_, ps)| ps),
+        None => Err(error(
+            "byte 0",
+            "neither a particle CSV (a text header row: mass,radius,x,y,z,vx,vy,vz) nor a pkdgrav .ss file (a binary header with the magic number -1 or -10101 at byte 12)",
+        )),
+    }
+}
+
+/// Reads the file at `path`, or standard input when it is `-`.
+pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
+    if path == "-" {
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::stdin().lock(), &mut bytes)
+            .map_err(|e| FileError::read("standard input", e))?;
+        return Ok(bytes);
+    }
+    std::fs::read(path).map_err(|e| FileError::read(path, e))
+}
+
+/// Particles from the file at `path` (`-`: standard input), CSV or a pkdgrav `.ss`
+/// file ([`format_of`]).
+pub fn read_file(path: &str) -> Result<Vec<Particle>, FileError> {
+    let bytes = read_input(path)?;
+    read_bytes(path, &bytes).map_err(|e| {
+        let name = if path == "-" { "<stdin>" } else { path };
+        FileError::input(name, e)
+    })
 }

@@ -656,8 +656,8 @@ impl<'a> HardStepper<'a> {
         }
     }
 
-    /// What the run came to.
-    fn outcome(self) -> Outcome {
+    /// What the run came to, and why it `stopped` early.
+    fn outcome(self, stopped: Option<super::Stop>) -> Outcome {
         let last = energy(&self.states, &self.settings.gravity);
         Outcome {
             t: self.t,
@@ -668,6 +668,7 @@ impl<'a> HardStepper<'a> {
             pair_contacts: self.pair_contacts,
             energy: (self.initial, last),
             warnings: self.warnings,
+            stopped,
         }
     }
 }
@@ -678,13 +679,17 @@ pub(super) fn run(
     settings: &Settings,
     plan: &Plan,
     observe: Observer,
+    interrupted: &dyn Fn() -> bool,
 ) -> Outcome {
     let mut run = HardStepper::new(scene, states, settings, plan);
     while run.running() {
         run.step();
         observe(run.steps, run.t, &run.states, &[]);
+        if let Some(stop) = super::halt(&run.states, interrupted) {
+            return run.outcome(Some(stop));
+        }
     }
-    run.outcome()
+    run.outcome(None)
 }
 
 /// The particles each particle could meet within a step: those whose spheres, swollen

@@ -341,6 +341,81 @@ pub struct Outcome {
     pub energy: (f64, f64),
     /// Warnings, in the order they arose; each prints as pkdgrav users read it.
     pub warnings: Vec<Warning>,
+    /// Why the run stopped before its end, if it did.
+    pub stopped: Option<Stop>,
+}
+
+/// Why a run stopped before its last step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// An overlap above half a radius, where pkdgrav aborts (W103).
+    Overlap,
+    /// An aggregate of a single member, where pkdgrav aborts.
+    SingleMemberAggregate,
+    /// A member of an aggregate at a sticky or death wall, where pkdgrav aborts.
+    AggregateHeld,
+    /// A particle's position, velocity or spin became infinite or NaN (the particle's
+    /// index): the numbers outgrew what a double holds.
+    NotFinite(usize),
+    /// The caller asked the run to stop (an interrupt).
+    Interrupted,
+    /// The timestep is not a positive finite number: the run could not start.
+    Timestep,
+}
+
+impl Stop {
+    /// A short name for machines (the JSON `stopped` field).
+    pub fn code(self) -> &'static str {
+        match self {
+            Stop::Overlap => "overlap",
+            Stop::SingleMemberAggregate => "single-member-aggregate",
+            Stop::AggregateHeld => "aggregate-held",
+            Stop::NotFinite(_) => "not-finite",
+            Stop::Interrupted => "interrupted",
+            Stop::Timestep => "timestep",
+        }
+    }
+}
+
+impl std::fmt::Display for Stop {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Stop::Overlap => write!(f, "an overlap above half a radius, where pkdgrav aborts"),
+            Stop::SingleMemberAggregate => {
+                write!(f, "an aggregate of a single member, where pkdgrav aborts")
+            }
+            Stop::AggregateHeld => write!(
+                f,
+                "a member of an aggregate at a sticky or death wall, where pkdgrav aborts"
+            ),
+            Stop::NotFinite(i) => write!(
+                f,
+                "particle {i}'s position, velocity or spin became infinite or NaN (the values outgrew a double: shorten the timestep or check the input's scale)"
+            ),
+            Stop::Interrupted => write!(f, "interrupted (Ctrl-C, SIGTERM or SIGHUP)"),
+            Stop::Timestep => write!(f, "the timestep is not a positive finite number"),
+        }
+    }
+}
+
+/// The first particle still in the run whose position, velocity or spin is not finite.
+fn first_not_finite(states: &[State]) -> Option<usize> {
+    states.iter().position(|s| {
+        s.alive
+            && !(s.particle.pos.iter())
+                .chain(s.particle.vel.iter())
+                .chain(s.particle.spin.iter())
+                .all(|x| x.is_finite())
+    })
+}
+
+/// How a stepper asks whether to go on after a step: [`Stop::NotFinite`] when a
+/// particle's numbers overflowed, [`Stop::Interrupted`] when `interrupted` says so.
+fn halt(states: &[State], interrupted: &dyn Fn() -> bool) -> Option<Stop> {
+    if let Some(i) = first_not_finite(states) {
+        return Some(Stop::NotFinite(i));
+    }
+    interrupted().then_some(Stop::Interrupted)
 }
 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
@@ -350,21 +425,46 @@ pub type Observer<'a> =
     &'a mut dyn FnMut(u64, f64, &[State], &[crate::dynamics::reactive::Assembly]);
 
 /// Runs `particles` against `walls` (and each other), calling `observe` after every
-/// step with the step number, the time and the particles.
-///
-/// # Panics
-///
-/// If the timestep is not a positive finite number: the run would never end. Callers
-/// check it first ([`crate::io::par::Rule::Positive`]).
+/// step with the step number, the time and the particles ([`run_watched`] never
+/// interrupted).
 pub fn run_observed(
     walls: &[Wall],
     particles: Vec<Particle>,
     settings: &Settings,
     observe: Observer,
 ) -> Outcome {
+    run_watched(walls, particles, settings, observe, &|| false)
+}
+
+/// [`run_observed`], asking `interrupted` after every step whether to stop there
+/// ([`Stop::Interrupted`]). A run also stops when a particle's numbers stop being
+/// finite ([`Stop::NotFinite`]), and does not start when the timestep is not a
+/// positive finite number ([`Stop::Timestep`]; callers check it first with
+/// [`crate::config::check`]).
+pub fn run_watched(
+    walls: &[Wall],
+    particles: Vec<Particle>,
+    settings: &Settings,
+    observe: Observer,
+    interrupted: &dyn Fn() -> bool,
+) -> Outcome {
     let dt = settings.dt;
-    assert!(dt > 0.0 && dt.is_finite(), "timestep {dt}");
     let t0 = settings.t_start();
+    if !(dt > 0.0 && dt.is_finite()) {
+        let states: Vec<State> = particles.iter().map(State::new).collect();
+        let e = energy(&states, &settings.gravity);
+        return Outcome {
+            t: t0,
+            steps: 0,
+            particles: states,
+            events: Vec::new(),
+            assemblies: Vec::new(),
+            pair_contacts: 0,
+            energy: (e, e),
+            warnings: Vec::new(),
+            stopped: Some(Stop::Timestep),
+        };
+    }
     let states: Vec<State> = particles
         .iter()
         .map(|p| State {
@@ -379,9 +479,18 @@ pub fn run_observed(
         Planning::Exactly(plan) => plan,
     };
     let mut outcome = match settings.method() {
-        ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe),
-        ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe),
+        ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe, interrupted),
+        ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe, interrupted),
     };
+    // Where pkdgrav would abort, the run stopped.
+    if outcome.stopped.is_none() {
+        outcome.stopped = outcome.warnings.iter().find_map(|w| match w {
+            Warning::OverlapStop { .. } => Some(Stop::Overlap),
+            Warning::SingleMemberAggregate { .. } => Some(Stop::SingleMemberAggregate),
+            Warning::AggregateHeld { .. } => Some(Stop::AggregateHeld),
+            _ => None,
+        });
+    }
     // Walls' tokens the build (or the integrator) does not follow come first, then
     // negative colours naming no wall.
     let mut first = optional::token_warnings(walls, settings);

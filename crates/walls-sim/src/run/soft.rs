@@ -1123,7 +1123,14 @@ impl<'a> SoftStepper<'a> {
             }
             for e in &report.events {
                 if e.kind == EventKind::Bounce
-                    && e.vn_out > e.vn_in * (1.0 + 1e-9)
+                    && e.vn_out
+                        > e.vn_in
+                            * (1.0
+                                + gain_tolerance(
+                                    self.materials[e.wall].k_n,
+                                    self.states[i].particle.mass,
+                                    self.settings.dt,
+                                ))
                     && !self.oscillating[e.wall]
                     && !self.once.gain
                 {
@@ -1205,8 +1212,9 @@ impl<'a> SoftStepper<'a> {
         }
     }
 
-    /// What the run came to.
-    fn outcome(self) -> Outcome {
+    /// What the run came to, and why it `stopped` early (besides pkdgrav's aborts,
+    /// which the warnings say).
+    fn outcome(self, stopped: Option<super::Stop>) -> Outcome {
         let g = self.settings.gravity;
         let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
         Outcome {
@@ -1218,7 +1226,22 @@ impl<'a> SoftStepper<'a> {
             pair_contacts: self.pair_contacts,
             energy: (self.initial, last),
             warnings: self.warnings,
+            stopped,
         }
+    }
+}
+
+/// How much faster than it came a particle may leave a wall before W106 calls it a
+/// gain of energy: the rebound error the integrator is expected to make at this
+/// timestep, 1.2/N for N = π/(ω₀·dt) steps per contact (ω₀ = √(k_n/m); W202,
+/// docs/run-warnings.md), and no less than round-off (10⁻⁹).
+fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
+    let omega_dt = (k_n / mass).sqrt() * dt;
+    let tolerance = 1.2 * omega_dt / std::f64::consts::PI;
+    if tolerance.is_finite() {
+        tolerance.max(1e-9)
+    } else {
+        1e-9
     }
 }
 
@@ -1228,21 +1251,25 @@ pub(super) fn run(
     settings: &Settings,
     plan: &Plan,
     observe: Observer,
+    interrupted: &dyn Fn() -> bool,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
     if run.halted {
-        return run.outcome();
+        return run.outcome(None);
     }
     if settings.integrator == Integrator::Pkdgrav && run.start() == Flow::Stop {
-        return run.outcome();
+        return run.outcome(None);
     }
     while run.running() {
         if run.step() == Flow::Stop {
             break;
         }
         observe(run.steps, run.t, &run.states, &run.assemblies);
+        if let Some(stop) = super::halt(&run.states, interrupted) {
+            return run.outcome(Some(stop));
+        }
     }
-    run.outcome()
+    run.outcome(None)
 }
 
 /// pkdgrav's aggregates of the particles (physics.md §9), when the run follows them: an

@@ -116,6 +116,10 @@ pub fn run(args: &AdviseArgs) -> ExitCode {
     };
     let advice = match advise::advise(&inputs) {
         Ok(a) => a,
+        Err(e) if e.derived => {
+            crate::errln!("walls-sim: error: {e}");
+            return ExitCode::from(2);
+        }
         Err(e) => {
             crate::errln!("walls-sim: error: --{e}");
             return ExitCode::from(2);

@@ -3,7 +3,8 @@
 //! the walls file, and the exit statuses.
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
-//! from what parsed, with exit status 1; exit status 2 is a usage or I/O error.
+//! from what parsed, with exit status 1, as does a run that stopped early; exit status
+//! 2 is a usage or I/O error, or input a run cannot use.
 
 pub mod advise;
 pub mod plan;
@@ -21,9 +22,7 @@ use walls_sim::io::par::Rule;
 /// A value parser for a number that must obey `rule`, as the `.par` file's values must.
 pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |s| {
-        let x = s
-            .parse::<f64>()
-            .map_err(|_| format!("`{s}` is not a number"))?;
+        let x = walls_sim::io::number(s).map_err(|why| format!("`{s}` is {why}"))?;
         rule.check(x).map_err(|says| format!("it must be {says}"))
     }
 }
@@ -75,16 +74,34 @@ fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, u
         mode,
         ..Options::default()
     };
-    let checked = check_bytes(input::read(path).bytes?, &options);
-    let errors = checked
+    let read = input::read(path);
+    let checked = check_bytes(read.bytes?, &options);
+    let errors: Vec<_> = checked
         .diagnostics
         .iter()
         .filter(|d| d.severity == Severity::Error)
-        .count();
-    if errors > 0 {
+        .cloned()
+        .collect();
+    if !errors.is_empty() {
+        // The errors themselves, located, as walls-lint shows them in this mode.
+        let report = walls_diagnostics::render::FileReport {
+            path: &read.name,
+            source: &checked.text,
+            diagnostics: &errors,
+        };
+        let color = crate::console::color_stderr();
+        let mut err = std::io::BufWriter::new(std::io::stderr().lock());
+        // Standard error is only for people here; if it is gone there is nobody to tell.
+        let _ = walls_diagnostics::render::human(&mut err, &report, color)
+            .and_then(|()| std::io::Write::flush(&mut err));
+        let mode = match mode {
+            ContactModel::Ssdem => "ssdem",
+            ContactModel::Hsdem => "hsdem",
+        };
         crate::errln!(
-            "walls-sim: {path}: {errors} error(s); {doing} what could be resolved (see walls-lint)"
+            "walls-sim: {path}: {} error(s) for a {mode} run (`walls-lint --mode {mode} {path}` shows them); {doing} what could be resolved",
+            errors.len()
         );
     }
-    Ok((checked, errors))
+    Ok((checked, errors.len()))
 }

@@ -19,7 +19,8 @@ pub struct RunArgs {
     #[arg(value_name = "FILE")]
     pub file: Option<String>,
     /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
-    /// .ss file. Without it, nine particles are dropped inside the scene's container
+    /// .ss file (by the extension .csv or .ss, else by the content); `-` reads standard
+    /// input. Without it, nine particles are dropped inside the scene's container
     /// (or onto the scene when it has none).
     #[allow(
         rustdoc::broken_intra_doc_links,
@@ -113,6 +114,10 @@ pub struct RunArgs {
     /// than appending to them as pkdgrav does.
     #[arg(long)]
     pub fresh: bool,
+    /// The most steps the run may take: a run that would take more is refused before it
+    /// starts (a mistyped --dt or --t-end), saying how many it needs.
+    #[arg(long, value_name = "N", default_value_t = walls_sim::config::MAX_STEPS)]
+    pub max_steps: u64,
     /// Steps between trajectory rows (default: the --par file's iOutInterval, else 100).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub every: Option<u64>,
@@ -273,11 +278,12 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
         } else {
             Planning::Needed
         },
+        max_steps: Some(args.max_steps),
     }
 }
 
 fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
-    use walls_sim::run::run_observed;
+    use walls_sim::run::run_watched;
     let Prepared {
         walls,
         particles,
@@ -320,7 +326,10 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         ),
         _ => None,
     };
-    let outcome = run_observed(
+    // Ctrl-C (or SIGTERM, SIGHUP) stops the run after the step it is in, so that every
+    // output ends on whole rows.
+    crate::interrupt::install_graceful();
+    let outcome = run_watched(
         scene,
         particles.clone(),
         &settings,
@@ -348,6 +357,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
                 written = write_ss(dir, &ss_name, step, t, states);
             }
         },
+        &crate::interrupt::stop_requested,
     );
     if let Some(bar) = progress {
         bar.finish_and_clear();
@@ -359,13 +369,25 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         written = written.and_then(|()| out.finish());
     }
     if let (Err(e), Some(dir)) = (written, &args.out) {
+        // A failed write may have cut a row: the trajectory's files go.
+        for name in ["particles.csv", "walls.csv"] {
+            let _ = std::fs::remove_file(dir.join(name));
+        }
+        let appended = if reactive {
+            "; WALLSREACTdata.out and WALLSREACTviz.out, appended to, may end mid-row"
+        } else {
+            ""
+        };
         return Err(format!(
-            "cannot write the trajectory to {}: {e}",
+            "cannot write the trajectory to {}: {e}; particles.csv and walls.csv removed (they may have ended mid-row){appended}",
             dir.display()
         ));
     }
     if args.json {
-        let report = walls_sim::report::json(scene, &particles, &settings, &outcome);
+        let mut report = walls_sim::report::json(scene, &particles, &settings, &outcome);
+        if let Some(dir) = &args.out {
+            report["outputs"] = serde_json::json!(output_files(dir, args.ss_output, reactive));
+        }
         crate::outln!(
             "{}",
             serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
@@ -379,27 +401,44 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
             crate::errln!("walls-sim: warning: {w}");
         }
     }
-    // Where pkdgrav would abort, the run stopped: say so, and exit 1.
-    let stop = outcome.warnings.iter().find_map(|w| {
-        use walls_sim::run::Warning;
-        match w {
-            Warning::OverlapStop { .. } => Some("an overlap above half a radius"),
-            Warning::SingleMemberAggregate { .. } => Some("an aggregate of a single member"),
-            Warning::AggregateHeld { .. } => {
-                Some("a member of an aggregate at a sticky or death wall")
-            }
-            _ => None,
-        }
-    });
-    if let Some(why) = stop {
+    let Some(why) = outcome.stopped else {
+        return Ok(exit_status(errors));
+    };
+    let end = readout.time(outcome.t);
+    crate::errln!(
+        "walls-sim: error: the run stopped early, after step {} (t = {end}): {why}",
+        first + outcome.steps,
+    );
+    if let Some(dir) = &args.out {
         crate::errln!(
-            "walls-sim: error: the run stopped early, after step {} (t = {}), where pkdgrav would abort: {why}",
-            first + outcome.steps,
-            readout.time(outcome.t)
+            "walls-sim: the outputs in {} end at t = {end}, in whole rows: {}",
+            dir.display(),
+            output_files(dir, args.ss_output, reactive).join(", ")
         );
-        return Ok(ExitCode::from(1));
     }
-    Ok(exit_status(errors))
+    Ok(ExitCode::from(1))
+}
+
+/// The output files a run with `--out dir` writes: the trajectory's, the `.ss` outputs
+/// (as a pattern) and pkdgrav's reactive-wall files.
+fn output_files(dir: &std::path::Path, ss: bool, reactive: bool) -> Vec<String> {
+    let mut names = vec!["particles.csv", "walls.csv"];
+    if ss {
+        names.push("the .ss outputs");
+    }
+    if reactive {
+        names.extend(["WALLSREACTdata.out", "WALLSREACTviz.out"]);
+    }
+    names
+        .into_iter()
+        .map(|n| {
+            if n.starts_with("the ") {
+                n.to_string()
+            } else {
+                dir.join(n).display().to_string()
+            }
+        })
+        .collect()
 }
 
 /// pkdgrav's output after `step`: the living particles, in input order, as pkdgrav

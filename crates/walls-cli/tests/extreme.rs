@@ -1,0 +1,363 @@
+//! No panic, no hang, meaningful exits: every command (walls-lint, walls-fmt --check and
+//! in place, walls-sim scene/run/plan/advise/preview) over a table of extreme values in
+//! walls files, particle files and options (1e-300, 1e300, 1e308, -1e308, 1e-400, 1e999,
+//! nan, inf, -0, 0, huge counts, empty files), each killed after a time limit: the exit
+//! status must be 0, 1 or 2 and standard error must not say "panicked". Then the
+//! interrupt of a run writing its outputs (whole rows, exit 1, `"stopped":
+//! "interrupted"`), and a run with its standard streams closed.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// The longest any one command may take before it counts as a hang.
+const LIMIT: Duration = Duration::from_secs(20);
+
+const VALUES: [&str; 11] = [
+    "1e-300",
+    "1e300",
+    "1e308",
+    "-1e308",
+    "1e-400",
+    "1e999",
+    "nan",
+    "inf",
+    "-0",
+    "0",
+    "99999999999999999999",
+];
+
+fn bin(name: &str) -> PathBuf {
+    match name {
+        "walls-lint" => env!("CARGO_BIN_EXE_walls-lint").into(),
+        "walls-fmt" => env!("CARGO_BIN_EXE_walls-fmt").into(),
+        _ => env!("CARGO_BIN_EXE_walls-sim").into(),
+    }
+}
+
+/// Runs `args` (the binary first) in `dir`, killed after [`LIMIT`]; its exit status
+/// and standard error, or why it failed the test.
+fn run_in(dir: &Path, args: &[String]) -> Result<(i32, String), String> {
+    let mut child = Command::new(bin(&args[0]))
+        .args(&args[1..])
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| e.to_string())?;
+    let mut stderr = child.stderr.take().ok_or("no stderr")?;
+    let reader = std::thread::spawn(move || {
+        let mut text = String::new();
+        let _ = stderr.read_to_string(&mut text);
+        text
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
+            break status;
+        }
+        if start.elapsed() > LIMIT {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(format!("hung: killed after {LIMIT:?}"));
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let text = reader.join().unwrap_or_default();
+    Ok((status.code().unwrap_or(-1), text))
+}
+
+/// A row of the table: the command line (the binary first) and the files it needs,
+/// each a name and its bytes.
+type Row = (Vec<String>, Vec<(&'static str, Vec<u8>)>);
+
+/// Every row of the table.
+fn table() -> Vec<Row> {
+    let mut rows = Vec::new();
+    let s = |words: &str| -> Vec<String> { words.split_whitespace().map(String::from).collect() };
+    let floor = b"wall type plane\n".to_vec();
+    let ball = b"mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0.3,0,0,-2\n".to_vec();
+    let walls_commands = [
+        "walls-lint w.walls",
+        "walls-fmt --check w.walls",
+        "walls-fmt w.walls",
+        "walls-sim scene w.walls",
+        "walls-sim run w.walls --t-end 0.01 --max-steps 20000",
+        "walls-sim plan w.walls",
+        "walls-sim preview w.walls --out x.svg",
+    ];
+    let walls_templates = [
+        "wall type plane origin 0 0 {v}\n",
+        "wall type disk radius {v}\n",
+        "wall type plane\n  velocity {v} 0 0\n",
+        "wall type plane\n  epsn {v}\n",
+        "wall type plane\n  color {v}\n",
+    ];
+    for template in walls_templates {
+        for v in VALUES {
+            let text = template.replace("{v}", v).into_bytes();
+            for cmd in walls_commands {
+                rows.push((s(cmd), vec![("w.walls", text.clone())]));
+            }
+        }
+    }
+    for cmd in walls_commands {
+        rows.push((s(cmd), vec![("w.walls", Vec::new())]));
+    }
+    let particle_commands = [
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000",
+        "walls-sim preview w.walls --particles p.csv --out x.svg",
+    ];
+    for column in 0..8 {
+        for v in VALUES {
+            let mut row = ["1", "0.1", "0", "0", "0.3", "0", "0", "-2"];
+            row[column] = v;
+            let text = format!("mass,radius,x,y,z,vx,vy,vz\n{}\n", row.join(",")).into_bytes();
+            for cmd in particle_commands {
+                rows.push((
+                    s(cmd),
+                    vec![("w.walls", floor.clone()), ("p.csv", text.clone())],
+                ));
+            }
+        }
+    }
+    // Empty particle files, and a .ss file claiming 2³¹ − 1 particles.
+    let mut huge = 0f64.to_be_bytes().to_vec();
+    huge.extend(i32::MAX.to_be_bytes());
+    huge.extend((-1i32).to_be_bytes());
+    for particles in [Vec::new(), b"mass,radius,x,y,z,vx,vy,vz\n".to_vec(), huge] {
+        for cmd in particle_commands {
+            rows.push((
+                s(cmd),
+                vec![("w.walls", floor.clone()), ("p.csv", particles.clone())],
+            ));
+        }
+    }
+    let option_commands = [
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --dt {v}",
+        "walls-sim run w.walls --particles p.csv --max-steps 20000 --t-end {v}",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --k-n {v}",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --gravity {v} 0 0",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --epsn {v}",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --mu-s {v}",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps {v}",
+        "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000 --every {v}",
+        "walls-sim plan w.walls --particles p.csv --dt {v}",
+        "walls-sim scene w.walls --time {v}",
+        "walls-sim preview w.walls --out x.svg --time {v}",
+        "walls-sim preview w.walls --out x.svg --frames {v}",
+        "walls-sim advise --mass {v} --radius 1 --speed 1",
+        "walls-sim advise --mass 1 --radius {v} --speed 1",
+        "walls-sim advise --mass 1 --radius 1 --speed {v}",
+    ];
+    for cmd in option_commands {
+        for v in VALUES {
+            rows.push((
+                s(&cmd.replace("{v}", v)),
+                vec![("w.walls", floor.clone()), ("p.csv", ball.clone())],
+            ));
+        }
+    }
+    // .par files: empty, and extreme values of its keys.
+    for key in ["dDelta", "dKn", "nSteps", "bWallsEdgeDetect", "dzUnifGrav"] {
+        for v in VALUES {
+            let par = format!("achInFile = p.csv\ndDelta = 1e-4\nnSteps = 100\n{key} = {v}\n");
+            rows.push((
+                s("walls-sim run w.walls --par run.par --max-steps 20000"),
+                vec![
+                    ("w.walls", floor.clone()),
+                    ("p.csv", ball.clone()),
+                    ("run.par", par.into_bytes()),
+                ],
+            ));
+        }
+    }
+    rows.push((
+        s("walls-sim run w.walls --par run.par --max-steps 20000 --t-end 0.01"),
+        vec![("w.walls", floor.clone()), ("run.par", Vec::new())],
+    ));
+    rows
+}
+
+#[test]
+fn every_command_over_extreme_values_exits_0_1_or_2_without_panic_or_hang() {
+    let rows = table();
+    let mut failures = Vec::new();
+    for (args, files) in &rows {
+        let dir = tempfile::tempdir().unwrap();
+        for (name, bytes) in files {
+            std::fs::write(dir.path().join(name), bytes).unwrap();
+        }
+        let line = args.join(" ");
+        let contents = files
+            .iter()
+            .map(|(n, b)| format!("{n}: {:?}", String::from_utf8_lossy(&b[..b.len().min(80)])))
+            .collect::<Vec<_>>()
+            .join("; ");
+        match run_in(dir.path(), args) {
+            Ok((code, stderr)) if (0..=2).contains(&code) && !stderr.contains("panicked") => {}
+            Ok((code, stderr)) => failures.push(format!(
+                "{line} [{contents}]: exit {code}: {}",
+                stderr
+                    .lines()
+                    .find(|l| l.contains("panicked"))
+                    .unwrap_or("")
+            )),
+            Err(why) => failures.push(format!("{line} [{contents}]: {why}")),
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} rows failed:\n{}",
+        failures.len(),
+        rows.len(),
+        failures.join("\n")
+    );
+}
+
+/// A floor and a ball bouncing on it for a long time, every step written.
+fn long_run(dir: &Path) -> Command {
+    std::fs::write(dir.join("w.walls"), "wall type plane\n").unwrap();
+    std::fs::write(
+        dir.join("p.csv"),
+        "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0.3,0,0,-2\n1,0.1,1,0,0.3,0,0,-1\n",
+    )
+    .unwrap();
+    let mut cmd = Command::new(bin("walls-sim"));
+    cmd.current_dir(dir).args([
+        "run",
+        "w.walls",
+        "--particles",
+        "p.csv",
+        "--dt",
+        "1e-4",
+        "--t-end",
+        "5000",
+        "--every",
+        "1",
+        "--out",
+        "out",
+    ]);
+    cmd
+}
+
+/// Every line of `path` has `columns` fields; the number of rows.
+fn whole_rows(path: &Path, columns: usize) -> usize {
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.ends_with('\n'), "{} ends mid-row", path.display());
+    for (n, line) in text.lines().enumerate() {
+        assert_eq!(
+            line.split(',').count(),
+            columns,
+            "{} line {}: {line}",
+            path.display(),
+            n + 1
+        );
+    }
+    text.lines().count()
+}
+
+#[test]
+fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = long_run(dir.path())
+        .arg("--json")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let csv = dir.path().join("out/particles.csv");
+    let start = Instant::now();
+    while std::fs::metadata(&csv).map_or(0, |m| m.len()) < 200_000 {
+        assert!(start.elapsed() < LIMIT, "no output");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let mut stdout = String::new();
+    let mut stderr = String::new();
+    child
+        .stdout
+        .take()
+        .unwrap()
+        .read_to_string(&mut stdout)
+        .unwrap();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(1), "{stderr}");
+    assert!(stdout.contains("\"stopped\": \"interrupted\""), "{stdout}");
+    assert!(stderr.contains("the run stopped early"), "{stderr}");
+    assert!(stderr.contains(": interrupted"), "{stderr}");
+    assert!(stderr.contains("end at t = "), "{stderr}");
+    assert!(
+        stderr.contains("particles.csv") && stderr.contains("walls.csv"),
+        "{stderr}"
+    );
+    assert!(whole_rows(&csv, 15) > 100);
+    whole_rows(&dir.path().join("out/walls.csv"), 6);
+}
+
+#[test]
+fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let sim = bin("walls-sim");
+    // Closed outright (`2>&- >&-`).
+    let status = Command::new("sh")
+        .current_dir(dir.path())
+        .arg("-c")
+        .arg(format!(
+            "printf 'wall type plane\\n' > w.walls; printf 'mass,radius,x,y,z,vx,vy,vz\\n1,0.1,0,0,0.3,0,0,-2\\n' > p.csv; exec '{}' run w.walls --particles p.csv --t-end 0.2 --epsn 1.5 --out out 2>&- >&-",
+            sim.display()
+        ))
+        .status()
+        .unwrap();
+    // --epsn 1.5 is a usage error, reported to nobody: exit 2, not a panic's 101.
+    assert_eq!(status.code(), Some(2));
+    let status = Command::new("sh")
+        .current_dir(dir.path())
+        .arg("-c")
+        .arg(format!(
+            "exec '{}' run w.walls --particles p.csv --t-end 0.2 --dt 1e-3 --gravity 1 0 0 --out out 2>&- >&-",
+            sim.display()
+        ))
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(0));
+    assert_eq!(whole_rows(&out.join("particles.csv"), 15), 1 + 3);
+    // A pipe whose reader has gone: every warning write fails.
+    std::fs::remove_dir_all(&out).unwrap();
+    let mut child = Command::new(&sim)
+        .current_dir(dir.path())
+        .args([
+            "run",
+            "w.walls",
+            "--particles",
+            "p.csv",
+            "--t-end",
+            "0.2",
+            "--dt",
+            "1e-3",
+        ])
+        .args(["--k-n", "10", "--out", "out", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    drop(child.stderr.take());
+    let status = child.wait().unwrap();
+    // The overlap stop is exit 1; stdout gone ends quietly (0); never 101.
+    assert!(matches!(status.code(), Some(0 | 1)), "{status:?}");
+    assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
+}

@@ -1,0 +1,263 @@
+//! Inputs at the edges of what a double holds: values that underflow or overflow are
+//! errors with their location, runs whose numbers would overflow or whose steps are too
+//! many are refused before they start with the value's source, and a run whose state
+//! stops being finite stops with a reason instead of panicking.
+
+use nalgebra::Vector3;
+use walls_sim::config::{ConfigError, Flags, MAX_STEPS, resolve};
+use walls_sim::io::par::read_par;
+use walls_sim::io::particles::{Format, format_of, read_bytes, read_csv, read_ss, write_ss};
+use walls_sim::run::{Settings, Stop, run, run_watched};
+use walls_test_support::{ball, scene};
+
+const FLOOR: &str = "wall type plane origin 0 0 0\n";
+
+fn one(row: &str) -> String {
+    read_csv(&format!("mass,radius,x,y,z,vx,vy,vz\n{row}\n"))
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn particle_values_that_a_double_cannot_hold_are_located_errors() {
+    assert_eq!(
+        one("1,1e-400,0,0,1,0,0,0"),
+        "line 2: `radius` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+    );
+    assert!(
+        one("1,0.1,0,0,1e999,0,0,0")
+            .starts_with("line 2: `z` is `1e999`, beyond the largest double")
+    );
+    assert!(one("1,1e-300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
+    assert!(one("1,1e300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
+    assert!(one("1,0.1,0,0,1,1e200,0,0").starts_with("line 2: its kinetic energy ½m|v|² is inf"));
+    assert_eq!(
+        read_csv("mass,radius,x,y,z,vx,vy,vz,color\n1,0.1,0,0,1,0,0,0,300\n")
+            .unwrap_err()
+            .to_string(),
+        "line 2: `color` is 300; pkdgrav's colours are 0 to 255 (negative: stuck to wall −1 − color)"
+    );
+}
+
+#[test]
+fn a_nan_ss_time_is_an_error() {
+    let bytes = write_ss(f64::NAN, &[ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert_eq!(
+        read_ss(&bytes).unwrap_err().to_string(),
+        "byte 0: the header's time is NaN, not a finite number"
+    );
+}
+
+#[test]
+fn the_format_follows_the_content_when_the_extension_does_not_say() {
+    let csv = b"mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,0\n";
+    let ss = write_ss(0.0, &[ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert_eq!(format_of("p.txt", csv), Some(Format::Csv));
+    assert_eq!(format_of("-", csv), Some(Format::Csv));
+    assert_eq!(format_of("ss.00100", &ss), Some(Format::Ss));
+    assert_eq!(format_of("p.CSV", &ss), Some(Format::Csv));
+    assert_eq!(read_bytes("p.txt", csv).unwrap().len(), 1);
+    assert_eq!(read_bytes("-", &ss).unwrap().len(), 1);
+    assert!(
+        read_bytes("p.txt", b"hello\n")
+            .unwrap_err()
+            .to_string()
+            .starts_with("byte 0: neither a particle CSV")
+    );
+}
+
+#[test]
+fn par_values_that_underflow_are_errors() {
+    assert_eq!(
+        read_par("dKn = 1e-400\n").unwrap_err().to_string(),
+        "line 1: `dKn` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+    );
+}
+
+#[test]
+fn par_switches_read_as_pkdgrav_reads_integers() {
+    let p = read_par("bWallsEdgeDetect = 0.5\nbDoGravity = 1e3\niCohesionModel = 1.9\n").unwrap();
+    assert_eq!(p.edge_detect, Some(false));
+    assert_eq!(p.do_gravity, Some(true));
+    assert_eq!(p.cohesion_model, Some(1));
+    let says: Vec<String> = p.warnings.iter().map(ToString::to_string).collect();
+    assert!(says[0].starts_with(
+        "line 1: `bWallsEdgeDetect`: `0.5` is not a whole number: pkdgrav reads it with C's %d as 0; the run does the same (write 0)"
+    ));
+    assert!(says[1].starts_with("line 2: `bDoGravity`: `1e3` is not a whole number"));
+    assert!(says[2].starts_with(
+        "line 3: `iCohesionModel`: `1.9` is not a whole number: pkdgrav reads it with C's %d as 1"
+    ));
+}
+
+#[test]
+fn bang_comments_are_read_and_reported() {
+    let p = read_par("dDelta = 1e-5 ! the step\n! a note\n").unwrap();
+    assert_eq!(p.dt, Some(1e-5));
+    let lines: Vec<Option<usize>> = p.warnings.iter().map(|w| w.line).collect();
+    assert_eq!(lines[..2], [Some(1), Some(2)]);
+    assert!(p.warnings[0].message.contains("write `#`"));
+}
+
+#[test]
+fn unknown_and_duplicate_par_keys_are_reported() {
+    let p = read_par("dDelta = 1e-5\ndDelta = 2e-5\nbWallEdgeDetect = 1\n").unwrap();
+    assert_eq!(p.dt, Some(2e-5));
+    let says: Vec<String> = p.warnings.iter().map(ToString::to_string).collect();
+    assert!(
+        says.iter()
+            .any(|w| w.starts_with("line 1: `dDelta`: given again on line 2"))
+    );
+    assert!(
+        says.iter()
+            .any(|w| w.starts_with("line 3: `bWallEdgeDetect`: not a pkdgrav parameter"))
+    );
+}
+
+fn refusal(flags: &Flags, particles: Vec<walls_geometry::Particle>) -> String {
+    match resolve(flags, None, &scene(FLOOR), Some(particles)) {
+        Err(ConfigError::Unusable(why)) => why,
+        other => panic!("not refused: {other:?}"),
+    }
+}
+
+#[test]
+fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
+    let balls = || vec![ball([0.0, 0.0, 1.0], [0.0; 3])];
+    let k = refusal(
+        &Flags {
+            k_n: Some(1e308),
+            ..Flags::default()
+        },
+        balls(),
+    );
+    assert!(
+        k.starts_with("the timestep comes to 0e0") && k.contains("from --k-n"),
+        "{k}"
+    );
+    let g = refusal(
+        &Flags {
+            gravity: Some(Vector3::new(1e308, 0.0, 0.0)),
+            ..Flags::default()
+        },
+        balls(),
+    );
+    assert!(
+        g.starts_with("the spring constant k_n comes to inf (derived"),
+        "{g}"
+    );
+}
+
+#[test]
+fn runs_beyond_the_step_limit_are_refused_with_the_count() {
+    let flags = Flags {
+        dt: Some(1e-300),
+        t_end: Some(1.0),
+        ..Flags::default()
+    };
+    let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert!(
+        why.starts_with("the run would take 9.999999999999999e299 steps of 1e-300 (--dt)"),
+        "{why}"
+    );
+    assert!(why.contains(&format!("the limit of {MAX_STEPS}")) && why.contains("--max-steps"));
+    let flags = Flags {
+        dt: Some(0.01),
+        t_end: Some(1.0),
+        max_steps: Some(99),
+        ..Flags::default()
+    };
+    assert!(
+        refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])])
+            .starts_with("the run would take 100 steps")
+    );
+}
+
+#[test]
+fn a_bad_timestep_stops_before_the_first_step_instead_of_panicking() {
+    let walls = scene(FLOOR);
+    let settings = Settings::new(0.0, 1.0, walls_sim::config::pkdgrav_material(1e5));
+    let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
+    assert_eq!((out.steps, out.stopped), (0, Some(Stop::Timestep)));
+}
+
+#[test]
+fn a_state_that_overflows_stops_the_run_with_a_reason() {
+    let walls = scene(FLOOR);
+    let mut settings = Settings::new(1.0, 100.0, walls_sim::config::pkdgrav_material(1e5));
+    settings.gravity = Vector3::new(1e307, 0.0, 0.0);
+    let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
+    assert_eq!(out.stopped, Some(Stop::NotFinite(0)));
+    assert!(out.steps < 100);
+}
+
+#[test]
+fn an_interrupted_run_stops_after_the_step_it_is_in() {
+    let walls = scene(FLOOR);
+    let settings = Settings::new(0.01, 1.0, walls_sim::config::pkdgrav_material(1e5));
+    let mut seen = 0;
+    let count = std::cell::Cell::new(0);
+    let out = run_watched(
+        &walls,
+        vec![ball([0.0, 0.0, 1.0], [0.0; 3])],
+        &settings,
+        &mut |_, _, _, _| seen += 1,
+        &|| {
+            count.set(count.get() + 1);
+            count.get() >= 5
+        },
+    );
+    assert_eq!((out.steps, out.stopped), (5, Some(Stop::Interrupted)));
+    assert_eq!(seen, 5);
+}
+
+/// A ball dropped on the floor with ε_n = 1 under the run's own defaults, and its
+/// outcome.
+fn elastic_drop(dt: Option<f64>, z: f64) -> walls_sim::run::Outcome {
+    let flags = Flags {
+        eps_n: Some(1.0),
+        gravity: Some(Vector3::new(0.0, 0.0, -1.0)),
+        k_n: dt.map(|_| 1e4),
+        dt,
+        t_end: Some(1.0),
+        ..Flags::default()
+    };
+    let walls = scene(FLOOR);
+    let r = resolve(
+        &flags,
+        None,
+        &walls,
+        Some(vec![ball([0.0, 0.0, z], [0.0, 0.0, -1.0])]),
+    )
+    .unwrap();
+    run(&walls, r.particles, &r.settings)
+}
+
+fn energy_gained(out: &walls_sim::run::Outcome) -> bool {
+    out.warnings
+        .iter()
+        .any(|w| matches!(w, walls_sim::run::Warning::EnergyGain { .. }))
+}
+
+#[test]
+fn the_leapfrog_error_at_the_default_timestep_is_no_energy_gain() {
+    let mut faster = 0;
+    for k in 0..12 {
+        let out = elastic_drop(None, 0.3 + 0.05 * f64::from(k));
+        // Some rebounds are a little faster, as the integrator's error allows ...
+        faster += out
+            .events
+            .iter()
+            .filter(|e| e.vn_out > e.vn_in * (1.0 + 1e-9))
+            .count();
+        // ... which is not a warning.
+        assert!(!energy_gained(&out), "{:?}", out.warnings);
+    }
+    assert!(faster > 0);
+}
+
+#[test]
+fn a_real_gain_of_energy_is_a_warning() {
+    // dt at the stability limit 2/ω₀ of k_n = 10⁴, m = 1: the rebound triples.
+    assert!(energy_gained(&elastic_drop(Some(0.02), 0.5)));
+}
