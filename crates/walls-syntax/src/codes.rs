@@ -137,6 +137,32 @@ wall type disk
 ",
 };
 
+/// A number that is not zero as written but that a double cannot hold.
+pub static NUMBER_UNDERFLOW: Code = Code {
+    id: "S110",
+    name: "number-underflow",
+    summary: "a non-zero number too small for a double",
+    explanation: "pkdgrav reads numbers with C's `atof`, which turns a number too small for a \
+double, such as `1e-400`, into 0 without a word (it only sets `errno`, which pkdgrav does \
+not look at): `epsn 1e-400` becomes a sticky wall, `radius 1e-400` a wall of no size. \
+This is an error. A number below the smallest normal double (about 2.2e-308), such as \
+`1e-310`, is read as a subnormal double with fewer significant digits (again with only \
+`errno` set): a warning. Write 0 if you mean 0, or choose units that keep values in range.
+
+Bad:
+```walls
+wall type plane
+  epsn 1e-400
+```
+
+Good:
+```walls
+wall type plane
+  epsn 0
+```
+",
+};
+
 /// Fewer values than the keyword takes.
 pub static MISSING_VALUE: Code = Code {
     id: "S103",
@@ -314,4 +340,5 @@ pub static ALL: &[&Code] = &[
     &VALUE_ON_OTHER_LINE,
     &OUTSIDE_BLOCK,
     &TYPE_NAME_WITHOUT_TYPE,
+    &NUMBER_UNDERFLOW,
 ];

@@ -250,6 +250,39 @@ impl<'t> Validator<'t> {
             && self.keyword_like(text).is_some()
     }
 
+    /// A real number that is not zero as written but reads as 0, or as a subnormal.
+    fn underflow(&mut self, tok: TokenId) {
+        let text = self.text(tok);
+        let negative_exponent = text.contains("e-") || text.contains("E-");
+        if !negative_exponent && text.len() < 300 {
+            // At least 300 digits are needed to write a number below 1e-300 without one.
+            return;
+        }
+        let Ok(x) = text.parse::<f64>() else { return };
+        let mantissa = text.split(['e', 'E']).next().unwrap_or_default();
+        let zero_as_written = !mantissa.bytes().any(|b| matches!(b, b'1'..=b'9'));
+        let d = if x == 0.0 && !zero_as_written {
+            Diagnostic::error(
+                &codes::NUMBER_UNDERFLOW,
+                self.span(tok),
+                format!("`{text}` is too small for a double: pkdgrav reads it as 0"),
+            )
+            .with_help("C's atof underflows to 0 silently; write 0 if you mean 0, or use units that keep the value above about 2.2e-308")
+        } else if x != 0.0 && x.abs() < f64::MIN_POSITIVE {
+            Diagnostic::warning(
+                &codes::NUMBER_UNDERFLOW,
+                self.span(tok),
+                format!(
+                    "`{text}` is below the smallest normal double: pkdgrav reads it as {x:e}, with fewer significant digits"
+                ),
+            )
+            .with_help("use units that keep the value above about 2.2e-308")
+        } else {
+            return;
+        };
+        self.out.push(d);
+    }
+
     /// Whether `tok` is a good value for a slot of `shape`.
     fn fits(&self, shape: ValueShape, tok: TokenId) -> bool {
         match (shape, self.tree.kind(tok)) {
@@ -261,6 +294,11 @@ impl<'t> Validator<'t> {
     }
 
     fn slot(&mut self, keyword: Keyword, shape: ValueShape, tok: TokenId, index: usize) {
+        if matches!(shape, ValueShape::Number | ValueShape::Vector)
+            && self.tree.kind(tok) == TokenKind::Number
+        {
+            self.underflow(tok);
+        }
         if self.fits(shape, tok) {
             return;
         }
