@@ -87,6 +87,29 @@ wall type plane # floor
 ",
 };
 
+/// A UTF-8 byte-order mark.
+pub static BYTE_ORDER_MARK: Code = Code {
+    id: "S005",
+    name: "byte-order-mark",
+    summary: "a UTF-8 byte-order mark, which pkdgrav reads as part of a word",
+    explanation: "Some editors start UTF-8 files with a byte-order mark (the bytes EF BB BF, \
+invisible in most editors). pkdgrav does not know it: it reads the mark as the first \
+bytes of the word after it, so the file's first `wall` is an unknown word and pkdgrav \
+stops. The fix (safe) removes the mark; the rest of the file is checked as if it were \
+gone. Save the file as UTF-8 without BOM.
+
+Bad (the file starts with a byte-order mark):
+```walls
+\u{feff}wall type plane
+```
+
+Good:
+```walls
+wall type plane
+```
+",
+};
+
 /// A word that is no keyword of the language.
 pub static UNKNOWN_WORD: Code = Code {
     id: "S101",
@@ -331,6 +354,7 @@ pub static ALL: &[&Code] = &[
     &MISSING_FINAL_NEWLINE,
     &LINE_TOO_LONG,
     &GLUED_COMMENT,
+    &BYTE_ORDER_MARK,
     &UNKNOWN_WORD,
     &INVALID_NUMBER,
     &MISSING_VALUE,

@@ -84,10 +84,38 @@ impl<'t> Validator<'t> {
                     line_start = self.span(id).end;
                 }
                 TokenKind::GluedComment => self.glued_comment(TokenId(i as u32)),
+                TokenKind::Whitespace => {
+                    let id = TokenId(i as u32);
+                    if self.text(id).starts_with('\u{feff}') {
+                        self.byte_order_mark(id);
+                    }
+                }
                 _ => {}
             }
         }
         self.line_length(line_start, text.len());
+    }
+
+    /// A byte-order mark, which pkdgrav reads as part of the word after it.
+    fn byte_order_mark(&mut self, id: TokenId) {
+        let span = self.span(id);
+        let message = if span.start == 0 {
+            "the file starts with a UTF-8 byte-order mark, which pkdgrav reads as part of the first word"
+        } else {
+            "a UTF-8 byte-order mark, which pkdgrav reads as part of a word"
+        };
+        self.out.push(
+            Diagnostic::error(&codes::BYTE_ORDER_MARK, span.clone(), message)
+                .with_help("save the file as UTF-8 without a byte-order mark")
+                .with_fix(
+                    Applicability::Safe,
+                    "remove the byte-order mark",
+                    vec![Edit {
+                        span,
+                        replacement: String::new(),
+                    }],
+                ),
+        );
     }
 
     /// pkdgrav's line buffer holds `MAX_LINE_BYTES` before the newline.
