@@ -61,16 +61,18 @@ fn renderers() -> [(&'static str, Renderer); 4] {
                 render::human(out, f, true).unwrap();
             }
         }),
-        ("json", |out, files| render::json(out, files).unwrap()),
+        ("json", |out, files| render::json(out, files, &[]).unwrap()),
         ("sarif", |out, files| {
             let tool = ToolInfo {
                 name: "walls-lint",
                 version: "0",
                 information_uri: None,
             };
-            render::sarif(out, files, &tool, &[&CODE]).unwrap()
+            render::sarif(out, files, &[], &tool, &[&CODE]).unwrap()
         }),
-        ("github", |out, files| render::github(out, files).unwrap()),
+        ("github", |out, files| {
+            render::github(out, files, &[]).unwrap()
+        }),
     ]
 }
 
