@@ -51,9 +51,10 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
                 )
             })
             .collect();
+        // Every line ariadne would print: those of each label (no more than it walks).
         let touches_long_line = lines
             .iter()
-            .flat_map(|&(first, last)| [first, last])
+            .flat_map(|&(first, last)| first..=last)
             .any(|line| line_len(&index, file.source, line) > LONG_LINE);
         if touches_long_line {
             long::write(out, file, &index, d, &labels, color)?;
