@@ -85,8 +85,10 @@ const TYPES = [
 module.exports = grammar({
   name: 'walls',
 
-  // Separators: space, tab, newline, and `,` and `=`, which pkdgrav reads as spaces.
-  extras: ($) => [/[ \t\r\n,=]+/, $.comment],
+  // Separators: C's white space (space, tab, newline, vertical tab, form feed, carriage
+  // return), and `,` and `=`, which pkdgrav reads as spaces. A byte-order mark is an
+  // error to the toolkit (S005), read as if absent.
+  extras: ($) => [/[ \t\r\n\v\f,=\uFEFF]+/, $.comment],
 
   rules: {
     source_file: ($) => repeat(choice($.wall_block, $.defaults_block, $.general_statement, $.property, $.value)),
@@ -112,7 +114,7 @@ module.exports = grammar({
     number: (_) => token(/[+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?/),
 
     // Anything else between separators: unknown words, malformed numbers.
-    word: (_) => token(/[^ \t\r\n,=#!]+/),
+    word: (_) => token(/[^ \t\r\n\v\f,=#!\uFEFF]+/),
 
     // A comment from `#` or `!` to the end of the line.
     comment: (_) => token(seq(/[#!]/, /[^\r\n]*/)),

@@ -81,6 +81,36 @@ fn codes_are_unique_and_found_by_id_or_name() {
     }
 }
 
+/// What `docs/diagnostics.md` says about `walls-lint`'s inputs and exit statuses.
+const LINT_COMMAND: &str = "
+## Files, folders and exit statuses
+
+`walls-lint PATH…` checks files and folders (`-` is standard input). A folder is walked
+with `.gitignore`, `.ignore` and hidden files skipped (a `.gitignore` counts outside a git
+repository too); in it, walls-lint checks every file matching an `--include` glob
+(default `*.walls`; repeat the option for several, which replace the default) and every
+walls file that a `.par` file of the tree names with `achWallsFile` (relative to the
+`.par`), whatever its name. `--exclude GLOB` (repeatable) skips matching files and whole
+folders. Globs are gitignore-style, relative to the folder named. Each file is checked
+once. A folder with no walls file, a `.par` that cannot be read or names a missing walls
+file, and a file that cannot be read are I/O errors.
+
+Every format reports I/O errors: human output on standard error; `--format json` as a
+file entry `{\"path\", \"error\": \"why\", \"diagnostics\": []}` after the files read;
+`--format sarif` as `toolExecutionNotifications` of the run's invocation (with
+`executionSuccessful: false`); `--format github` as an `::error file=PATH,title=walls-lint::why`
+line.
+
+| status | meaning |
+|---|---|
+| 0 | every file was read and has no error (warnings and infos allowed, unless `--deny-warnings`) |
+| 1 | every file was read and some have errors (or warnings, with `--deny-warnings`) |
+| 2 | usage error (bad option or glob), or an I/O error: a file, folder or `.par` that could not be read, or output that could not be written |
+
+An I/O error wins: one unreadable file makes the status 2 even when other files have
+errors, so that a script never takes a partial check for a complete one.
+";
+
 #[test]
 fn docs_list_every_code() {
     let mut doc = String::from(
@@ -97,6 +127,7 @@ fn docs_list_every_code() {
             c.summary
         ));
     }
+    doc.push_str(LINT_COMMAND);
     for c in all_codes() {
         doc.push_str(&format!(
             "\n## {}\n\n`{}`: {}.\n\n{}",

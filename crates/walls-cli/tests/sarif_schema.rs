@@ -51,6 +51,17 @@ fn sarif_output_is_valid_against_the_schema() {
             logs.push(log);
         }
     }
+    // A file that cannot be read: a tool execution notification, exit status 2.
+    let out = Command::new(env!("CARGO_BIN_EXE_walls-lint"))
+        .args(["--format", "sarif", "absent.walls"])
+        .arg(root.join("tests/lint/lint-unreadable-sarif/bad.walls"))
+        .current_dir(out_dir.path())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let log = out_dir.path().join("unreadable.sarif");
+    std::fs::write(&log, &out.stdout).unwrap();
+    logs.push(log);
     assert!(logs.len() >= 20, "too few SARIF logs: {}", logs.len());
     let check = Command::new("python3")
         .arg(root.join("tests/tools/validate_sarif.py"))

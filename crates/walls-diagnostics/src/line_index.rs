@@ -2,6 +2,10 @@
 //!
 //! Lines are split at `\n`. Columns count Unicode scalar values (characters), as the
 //! command-line contract asks; [`LineIndex::utf16_col`] serves the LSP.
+//!
+//! Every query costs at most one block of [`BLOCK`] bytes, however long the line: the
+//! index keeps the number of characters before each block, so that a hundred thousand
+//! diagnostics on one 10 MB line take linear time, not the line's length each.
 
 /// A 1-based line and 1-based character column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -12,10 +16,15 @@ pub struct LineCol {
     pub column: usize,
 }
 
-/// The start offset of every line of a text.
+/// The bytes per block of the character-count table.
+const BLOCK: usize = 4096;
+
+/// The start offset of every line of a text, and the number of characters before every
+/// block of [`BLOCK`] bytes.
 #[derive(Debug, Clone)]
 pub struct LineIndex {
     starts: Vec<usize>,
+    chars_before_block: Vec<usize>,
 }
 
 impl LineIndex {
@@ -23,7 +32,28 @@ impl LineIndex {
     pub fn new(text: &str) -> Self {
         let mut starts = vec![0];
         starts.extend(memchr_newlines(text.as_bytes()));
-        LineIndex { starts }
+        let mut chars_before_block = Vec::with_capacity(text.len() / BLOCK + 1);
+        let mut chars = 0;
+        for block in text.as_bytes().chunks(BLOCK) {
+            chars_before_block.push(chars);
+            chars += count_chars(block);
+        }
+        LineIndex {
+            starts,
+            chars_before_block,
+        }
+    }
+
+    /// The number of characters of `text` before byte `offset` (at most the text's length).
+    fn chars_before(&self, text: &str, offset: usize) -> usize {
+        let block = offset / BLOCK;
+        match self.chars_before_block.get(block) {
+            Some(&before) => before + count_chars(&text.as_bytes()[block * BLOCK..offset]),
+            None => {
+                self.chars_before_block.last().copied().unwrap_or(0)
+                    + count_chars(&text.as_bytes()[(block.max(1) - 1) * BLOCK..offset])
+            }
+        }
     }
 
     /// The 0-based line holding byte `offset` (offsets past the end map to the last line).
@@ -47,10 +77,7 @@ impl LineIndex {
         let offset = offset.min(text.len());
         let line = self.line_of(offset);
         let start = self.starts[line];
-        let column = text.as_bytes()[start..offset]
-            .iter()
-            .filter(|&&b| (b as i8) >= -0x40) // count bytes that start a character
-            .count();
+        let column = self.chars_before(text, offset) - self.chars_before(text, start);
         LineCol {
             line: line + 1,
             column: column + 1,
@@ -65,6 +92,11 @@ impl LineIndex {
         let prefix = text.get(start..offset).unwrap_or_default();
         (line, prefix.encode_utf16().count())
     }
+}
+
+/// The number of bytes of `bytes` that start a character.
+fn count_chars(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| (b as i8) >= -0x40).count()
 }
 
 fn memchr_newlines(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
@@ -89,5 +121,27 @@ mod tests {
         assert_eq!(idx.line_col(text, 7), LineCol { line: 3, column: 1 });
         assert_eq!(idx.line_col(text, 99), LineCol { line: 3, column: 1 });
         assert_eq!(idx.utf16_col(text, 5), (1, 1));
+    }
+
+    #[test]
+    fn columns_across_blocks() {
+        let text = format!("x\n{}{}", "μ".repeat(BLOCK), "ab".repeat(BLOCK));
+        let idx = LineIndex::new(&text);
+        for offset in [
+            0,
+            1,
+            2,
+            4,
+            BLOCK,
+            BLOCK + 2,
+            2 * BLOCK + 2,
+            text.len() - 1,
+            text.len(),
+        ] {
+            let naive = text.as_bytes()[..offset].iter().rposition(|&b| b == b'\n');
+            let start = naive.map_or(0, |i| i + 1);
+            let expected = count_chars(&text.as_bytes()[start..offset]) + 1;
+            assert_eq!(idx.line_col(&text, offset).column, expected, "at {offset}");
+        }
     }
 }

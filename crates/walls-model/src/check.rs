@@ -9,9 +9,9 @@
 use crate::rules::{
     assembly_without_mass, axes_not_orthogonal, degenerate_triangle, hole_not_inside,
     hsdem_particle_value::AtNinetyNine, ignored_by_type, k_t_before_k_n, lone_oscillation,
-    mass_without_assembly, no_walls, not_in_hsdem, osc_vec_not_following_orient, reactive_spinning,
-    reactive_type, rectangle_not_rectangular, repeated_token, sticky_wall_order::StickyOrder,
-    taper_on_ring, too_many_walls, unused_default, wall_too_fast,
+    mass_without_assembly::NoAssembly, no_walls, not_in_hsdem, osc_vec_not_following_orient,
+    reactive_spinning, reactive_type, rectangle_not_rectangular, repeated_token,
+    sticky_wall_order::StickyOrder, taper_on_ring, too_many_walls, unused_default, wall_too_fast,
 };
 use crate::scene::{Scene, Wall};
 use crate::{ContactModel, Options};
@@ -106,6 +106,7 @@ impl Checker<'_> {
     fn walls(&mut self, scene: &Scene) {
         let mut sticky = StickyOrder::default();
         let mut at_99 = AtNinetyNine::default();
+        let mut no_assembly = NoAssembly::default();
         for wall in &scene.walls {
             let t = wall.wall_type();
             ignored_by_type::check(self, wall, t);
@@ -122,7 +123,7 @@ impl Checker<'_> {
                 if wall.is_reactive() {
                     reactive_type::check(self, wall, t);
                     reactive_spinning::check(self, wall);
-                    mass_without_assembly::check(self, wall);
+                    no_assembly.note(wall);
                     axes_not_orthogonal::check(self, wall);
                 } else {
                     assembly_without_mass::check(self, wall);
@@ -134,6 +135,7 @@ impl Checker<'_> {
             sticky.check(self, wall);
         }
         at_99.report(self);
+        no_assembly.report(self);
     }
 
     /// Where the wall sets `k`, if it or its defaults do.

@@ -87,6 +87,29 @@ wall type plane # floor
 ",
 };
 
+/// A UTF-8 byte-order mark.
+pub static BYTE_ORDER_MARK: Code = Code {
+    id: "S005",
+    name: "byte-order-mark",
+    summary: "a UTF-8 byte-order mark, which pkdgrav reads as part of a word",
+    explanation: "Some editors start UTF-8 files with a byte-order mark (the bytes EF BB BF, \
+invisible in most editors). pkdgrav does not know it: it reads the mark as the first \
+bytes of the word after it, so the file's first `wall` is an unknown word and pkdgrav \
+stops. The fix (safe) removes the mark; the rest of the file is checked as if it were \
+gone. Save the file as UTF-8 without BOM.
+
+Bad (the file starts with a byte-order mark):
+```walls
+\u{feff}wall type plane
+```
+
+Good:
+```walls
+wall type plane
+```
+",
+};
+
 /// A word that is no keyword of the language.
 pub static UNKNOWN_WORD: Code = Code {
     id: "S101",
@@ -133,6 +156,32 @@ Good:
 ```walls
 wall type disk
   radius 0.51
+```
+",
+};
+
+/// A number that is not zero as written but that a double cannot hold.
+pub static NUMBER_UNDERFLOW: Code = Code {
+    id: "S110",
+    name: "number-underflow",
+    summary: "a non-zero number too small for a double",
+    explanation: "pkdgrav reads numbers with C's `atof`, which turns a number too small for a \
+double, such as `1e-400`, into 0 without a word (it only sets `errno`, which pkdgrav does \
+not look at): `epsn 1e-400` becomes a sticky wall, `radius 1e-400` a wall of no size. \
+This is an error. A number below the smallest normal double (about 2.2e-308), such as \
+`1e-310`, is read as a subnormal double with fewer significant digits (again with only \
+`errno` set): a warning. Write 0 if you mean 0, or choose units that keep values in range.
+
+Bad:
+```walls
+wall type plane
+  epsn 1e-400
+```
+
+Good:
+```walls
+wall type plane
+  epsn 0
 ```
 ",
 };
@@ -305,6 +354,7 @@ pub static ALL: &[&Code] = &[
     &MISSING_FINAL_NEWLINE,
     &LINE_TOO_LONG,
     &GLUED_COMMENT,
+    &BYTE_ORDER_MARK,
     &UNKNOWN_WORD,
     &INVALID_NUMBER,
     &MISSING_VALUE,
@@ -314,4 +364,5 @@ pub static ALL: &[&Code] = &[
     &VALUE_ON_OTHER_LINE,
     &OUTSIDE_BLOCK,
     &TYPE_NAME_WITHOUT_TYPE,
+    &NUMBER_UNDERFLOW,
 ];

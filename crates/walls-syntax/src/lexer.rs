@@ -2,7 +2,8 @@
 //!
 //! Every byte of the input belongs to exactly one token, trivia included (spaces,
 //! separators, newlines, comments), so concatenating the tokens gives back the input.
-//! Words are split at pkdgrav's separators (space, tab, newline, `,`, `=`); a word is a
+//! Words are split at pkdgrav's separators (C's white space: space, tab, newline,
+//! vertical tab, form feed, carriage return; and `,`, `=`); a word is a
 //! keyword, a wall type name, a number, or an unknown word. A `#` or `!` at the start
 //! of a word begins a comment to the end of the line; one glued to the end of a word is
 //! a [`TokenKind::GluedComment`], which pkdgrav does not treat as a comment at all.
@@ -13,7 +14,9 @@ use walls_keywords::{Keyword, WallType};
 /// What a token is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum TokenKind {
-    /// Spaces, tabs and carriage returns.
+    /// Spaces, tabs, vertical tabs, form feeds and carriage returns; also a UTF-8
+    /// byte-order mark, which pkdgrav reads as part of a word (the syntax check reports
+    /// it as `S005`, so that the word after it is still read as the author meant).
     Whitespace,
     /// A run of `,` and `=`, which pkdgrav also reads as whitespace.
     Separator,
@@ -108,8 +111,10 @@ impl Tokens {
 /// every row lexes to itself).
 #[derive(Logos, Debug, Clone, Copy, PartialEq, Eq)]
 enum Raw {
-    #[regex(r"[ \t\r]+")]
+    #[regex(r"[ \t\r\x0B\x0C]+")]
     Whitespace,
+    #[regex("\u{FEFF}+")]
+    ByteOrderMark,
     #[regex(r"[,=]+")]
     Separator,
     #[regex(r"\r?\n")]
@@ -120,7 +125,7 @@ enum Raw {
     Comment,
     #[regex(r"[+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?", priority = 5)]
     Number,
-    #[regex(r"[^ \t\r\n,=#!]+", priority = 1)]
+    #[regex(r"[^ \t\r\n\x0B\x0C,=#!\u{FEFF}]+", priority = 1)]
     Word,
     #[token("time", |_| Keyword::Time, ignore(case))]
     #[token("lengthunit", |_| Keyword::LengthUnit, ignore(case))]
@@ -195,7 +200,7 @@ pub fn lex(text: &str) -> Tokens {
     while let Some(raw) = lexer.next() {
         let span = lexer.span();
         let kind = match raw {
-            Ok(Raw::Whitespace) => TokenKind::Whitespace,
+            Ok(Raw::Whitespace | Raw::ByteOrderMark) => TokenKind::Whitespace,
             Ok(Raw::Separator) => TokenKind::Separator,
             Ok(Raw::Newline) => TokenKind::Newline,
             Ok(Raw::Comment) if prev_end_of_word == Some(span.start) => TokenKind::GluedComment,

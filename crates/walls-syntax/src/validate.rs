@@ -84,10 +84,38 @@ impl<'t> Validator<'t> {
                     line_start = self.span(id).end;
                 }
                 TokenKind::GluedComment => self.glued_comment(TokenId(i as u32)),
+                TokenKind::Whitespace => {
+                    let id = TokenId(i as u32);
+                    if self.text(id).starts_with('\u{feff}') {
+                        self.byte_order_mark(id);
+                    }
+                }
                 _ => {}
             }
         }
         self.line_length(line_start, text.len());
+    }
+
+    /// A byte-order mark, which pkdgrav reads as part of the word after it.
+    fn byte_order_mark(&mut self, id: TokenId) {
+        let span = self.span(id);
+        let message = if span.start == 0 {
+            "the file starts with a UTF-8 byte-order mark, which pkdgrav reads as part of the first word"
+        } else {
+            "a UTF-8 byte-order mark, which pkdgrav reads as part of a word"
+        };
+        self.out.push(
+            Diagnostic::error(&codes::BYTE_ORDER_MARK, span.clone(), message)
+                .with_help("save the file as UTF-8 without a byte-order mark")
+                .with_fix(
+                    Applicability::Safe,
+                    "remove the byte-order mark",
+                    vec![Edit {
+                        span,
+                        replacement: String::new(),
+                    }],
+                ),
+        );
     }
 
     /// pkdgrav's line buffer holds `MAX_LINE_BYTES` before the newline.
@@ -250,6 +278,39 @@ impl<'t> Validator<'t> {
             && self.keyword_like(text).is_some()
     }
 
+    /// A real number that is not zero as written but reads as 0, or as a subnormal.
+    fn underflow(&mut self, tok: TokenId) {
+        let text = self.text(tok);
+        let negative_exponent = text.contains("e-") || text.contains("E-");
+        if !negative_exponent && text.len() < 300 {
+            // At least 300 digits are needed to write a number below 1e-300 without one.
+            return;
+        }
+        let Ok(x) = text.parse::<f64>() else { return };
+        let mantissa = text.split(['e', 'E']).next().unwrap_or_default();
+        let zero_as_written = !mantissa.bytes().any(|b| matches!(b, b'1'..=b'9'));
+        let d = if x == 0.0 && !zero_as_written {
+            Diagnostic::error(
+                &codes::NUMBER_UNDERFLOW,
+                self.span(tok),
+                format!("`{text}` is too small for a double: pkdgrav reads it as 0"),
+            )
+            .with_help("C's atof underflows to 0 silently; write 0 if you mean 0, or use units that keep the value above about 2.2e-308")
+        } else if x != 0.0 && x.abs() < f64::MIN_POSITIVE {
+            Diagnostic::warning(
+                &codes::NUMBER_UNDERFLOW,
+                self.span(tok),
+                format!(
+                    "`{text}` is below the smallest normal double: pkdgrav reads it as {x:e}, with fewer significant digits"
+                ),
+            )
+            .with_help("use units that keep the value above about 2.2e-308")
+        } else {
+            return;
+        };
+        self.out.push(d);
+    }
+
     /// Whether `tok` is a good value for a slot of `shape`.
     fn fits(&self, shape: ValueShape, tok: TokenId) -> bool {
         match (shape, self.tree.kind(tok)) {
@@ -261,6 +322,11 @@ impl<'t> Validator<'t> {
     }
 
     fn slot(&mut self, keyword: Keyword, shape: ValueShape, tok: TokenId, index: usize) {
+        if matches!(shape, ValueShape::Number | ValueShape::Vector)
+            && self.tree.kind(tok) == TokenKind::Number
+        {
+            self.underflow(tok);
+        }
         if self.fits(shape, tok) {
             return;
         }

@@ -238,12 +238,11 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
         'W', 33,
         'w', 33,
       );
-      if (lookahead == '\t' ||
-          lookahead == '\n' ||
-          lookahead == '\r' ||
+      if (('\t' <= lookahead && lookahead <= '\r') ||
           lookahead == ' ' ||
           lookahead == ',' ||
-          lookahead == '=') SKIP(0);
+          lookahead == '=' ||
+          lookahead == 0xfeff) SKIP(0);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(10);
       if (lookahead != 0) ADVANCE(210);
       END_STATE();
@@ -253,103 +252,95 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
     case 2:
       ACCEPT_TOKEN(sym_wall_keyword);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 3:
       ACCEPT_TOKEN(sym_defaults_keyword);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 4:
       ACCEPT_TOKEN(sym_general_keyword);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(144);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 5:
       ACCEPT_TOKEN(sym_general_keyword);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 6:
       ACCEPT_TOKEN(sym_property_name);
       if (lookahead == '_') ADVANCE(103);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 7:
       ACCEPT_TOKEN(sym_property_name);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(144);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 8:
       ACCEPT_TOKEN(sym_property_name);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 9:
       ACCEPT_TOKEN(sym_type_name);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 10:
       ACCEPT_TOKEN(sym_number);
@@ -358,14 +349,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
           lookahead == 'e') ADVANCE(27);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(10);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 11:
       ACCEPT_TOKEN(sym_number);
@@ -373,216 +363,200 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
           lookahead == 'e') ADVANCE(27);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(11);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 12:
       ACCEPT_TOKEN(sym_number);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(12);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 13:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(200);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 14:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(34);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 15:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(87);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 16:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(169);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 17:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(184);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 18:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '-') ADVANCE(43);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
           lookahead != '-' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 19:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '.') ADVANCE(208);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(10);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 20:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(129);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 21:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(207);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 22:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(44);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 23:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(154);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 24:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(124);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 25:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(50);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 26:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '_') ADVANCE(174);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 27:
       ACCEPT_TOKEN(sym_word);
@@ -590,14 +564,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
           lookahead == '-') ADVANCE(209);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(12);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           (lookahead < '+' || '-' < lookahead) &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 28:
       ACCEPT_TOKEN(sym_word);
@@ -608,42 +581,39 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(189);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 29:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(53);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 30:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(196);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 31:
       ACCEPT_TOKEN(sym_word);
@@ -658,42 +628,39 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
         'y', 162,
       );
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 32:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(26);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 33:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(115);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 34:
       ACCEPT_TOKEN(sym_word);
@@ -708,14 +675,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
         'v', 73,
       );
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 35:
       ACCEPT_TOKEN(sym_word);
@@ -724,14 +690,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(21);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 36:
       ACCEPT_TOKEN(sym_word);
@@ -740,308 +705,286 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(39);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 37:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(158);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 38:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(173);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 39:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(133);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 40:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(167);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 41:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(183);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 42:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(143);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 43:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'A' ||
           lookahead == 'a') ADVANCE(146);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 44:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'B' ||
           lookahead == 'b') ADVANCE(151);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 45:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'B' ||
           lookahead == 'b') ADVANCE(111);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 46:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 47:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(203);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 48:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(14);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 49:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(101);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 50:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(153);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 51:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'C' ||
           lookahead == 'c') ADVANCE(191);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 52:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'D' ||
           lookahead == 'd') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 53:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'D' ||
           lookahead == 'd') ADVANCE(99);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 54:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'D' ||
           lookahead == 'd') ADVANCE(40);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 55:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'D' ||
           lookahead == 'd') ADVANCE(75);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 56:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'D' ||
           lookahead == 'd') ADVANCE(80);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 57:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(190);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 58:
       ACCEPT_TOKEN(sym_word);
@@ -1050,266 +993,247 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(175);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 59:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(114);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 60:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 61:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(166);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 62:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(9);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 63:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(4);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 64:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(202);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 65:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(165);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 66:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(130);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 67:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(122);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 68:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(168);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 69:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(156);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 70:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(86);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 71:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(137);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 72:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(52);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 73:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(46);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 74:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(16);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 75:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(170);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 76:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(25);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 77:
       ACCEPT_TOKEN(sym_word);
@@ -1318,140 +1242,130 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'G' ||
           lookahead == 'g') ADVANCE(104);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 78:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(180);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 79:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(171);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 80:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(108);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 81:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(139);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 82:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(72);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 83:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'E' ||
           lookahead == 'e') ADVANCE(116);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 84:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'F' ||
           lookahead == 'f') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 85:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'F' ||
           lookahead == 'f') ADVANCE(30);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 86:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'F' ||
           lookahead == 'f') ADVANCE(84);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 87:
       ACCEPT_TOKEN(sym_word);
@@ -1460,42 +1374,39 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(131);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 88:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'F' ||
           lookahead == 'f') ADVANCE(105);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 89:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'G' ||
           lookahead == 'g') ADVANCE(17);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 90:
       ACCEPT_TOKEN(sym_word);
@@ -1506,70 +1417,65 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(148);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 91:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'G' ||
           lookahead == 'g') ADVANCE(186);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 92:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'G' ||
           lookahead == 'g') ADVANCE(121);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 93:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'G' ||
           lookahead == 'g') ADVANCE(120);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 94:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'H' ||
           lookahead == 'h') ADVANCE(7);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 95:
       ACCEPT_TOKEN(sym_word);
@@ -1578,112 +1484,104 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(69);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 96:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'H' ||
           lookahead == 'h') ADVANCE(41);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 97:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(77);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 98:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(152);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 99:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(197);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 100:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(132);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 101:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(187);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 102:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(188);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 103:
       ACCEPT_TOKEN(sym_word);
@@ -1692,126 +1590,117 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(199);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 104:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(128);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 105:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(138);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 106:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'I' ||
           lookahead == 'i') ADVANCE(194);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 107:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'J' ||
           lookahead == 'j') ADVANCE(13);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 108:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 109:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(9);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 110:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(2);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 111:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(203);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 112:
       ACCEPT_TOKEN(sym_word);
@@ -1826,28 +1715,26 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
         'z', 107,
       );
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 113:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(100);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 114:
       ACCEPT_TOKEN(sym_word);
@@ -1856,168 +1743,156 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(195);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 115:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(110);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 116:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(109);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 117:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(193);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 118:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(74);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 119:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(37);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 120:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(60);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 121:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'L' ||
           lookahead == 'l') ADVANCE(62);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 122:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'M' ||
           lookahead == 'm') ADVANCE(45);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 123:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'M' ||
           lookahead == 'm') ADVANCE(160);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 124:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'M' ||
           lookahead == 'm') ADVANCE(155);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 125:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'M' ||
           lookahead == 'm') ADVANCE(63);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 126:
       ACCEPT_TOKEN(sym_word);
@@ -2026,14 +1901,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(182);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 127:
       ACCEPT_TOKEN(sym_word);
@@ -2048,28 +1922,26 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
         'z', 107,
       );
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 128:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 129:
       ACCEPT_TOKEN(sym_word);
@@ -2078,252 +1950,234 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(6);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 130:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(91);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 131:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(88);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 132:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(55);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 133:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(92);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 134:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(54);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 135:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(24);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 136:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(185);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 137:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(18);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 138:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(106);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 139:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(47);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 140:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(179);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 141:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(68);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 142:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(61);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 143:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(62);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 144:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(102);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 145:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(142);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 146:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'N' ||
           lookahead == 'n') ADVANCE(93);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 147:
       ACCEPT_TOKEN(sym_word);
@@ -2332,70 +2186,65 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'Y' ||
           lookahead == 'y') ADVANCE(113);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 148:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(166);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 149:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(118);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 150:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(49);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 151:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(198);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 152:
       ACCEPT_TOKEN(sym_word);
@@ -2404,168 +2253,156 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'V' ||
           lookahead == 'v') ADVANCE(76);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 153:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(70);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 154:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(201);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 155:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'O' ||
           lookahead == 'o') ADVANCE(56);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 156:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 157:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(176);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 158:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(22);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 159:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(38);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 160:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(108);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 161:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(61);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 162:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(60);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 163:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'P' ||
           lookahead == 'p') ADVANCE(82);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 164:
       ACCEPT_TOKEN(sym_word);
@@ -2576,574 +2413,533 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(48);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 165:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'Q' ||
           lookahead == 'q') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 166:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 167:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(203);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 168:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(23);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 169:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(29);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 170:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(15);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 171:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(119);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 172:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(65);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 173:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'R' ||
           lookahead == 'r') ADVANCE(81);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 174:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 175:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(205);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 176:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(206);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 177:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(7);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 178:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(3);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 179:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(159);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 180:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(98);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 181:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(177);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 182:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(67);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 183:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(60);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 184:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'S' ||
           lookahead == 's') ADVANCE(163);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 185:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 186:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(94);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 187:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(203);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 188:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(5);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 189:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(13);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 190:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(32);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 191:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(39);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 192:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(61);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 193:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(178);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 194:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(62);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 195:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'T' ||
           lookahead == 't') ADVANCE(64);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 196:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(117);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 197:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(174);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 198:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(134);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 199:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'U' ||
           lookahead == 'u') ADVANCE(192);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 200:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'V' ||
           lookahead == 'v') ADVANCE(73);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 201:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'V' ||
           lookahead == 'v') ADVANCE(79);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 202:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'X' ||
           lookahead == 'x') ADVANCE(204);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 203:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == 'Y' ||
           lookahead == 'y') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 204:
       ACCEPT_TOKEN(sym_word);
       if (lookahead == '1' ||
           lookahead == '2') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 205:
       ACCEPT_TOKEN(sym_word);
@@ -3152,14 +2948,13 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
           lookahead == 'c' ||
           lookahead == 'k') ADVANCE(9);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 206:
       ACCEPT_TOKEN(sym_word);
@@ -3168,66 +2963,61 @@ static bool ts_lex(TSLexer *lexer, TSStateId state) {
           lookahead == 'n' ||
           lookahead == 't') ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 207:
       ACCEPT_TOKEN(sym_word);
       if (('R' <= lookahead && lookahead <= 'T') ||
           ('r' <= lookahead && lookahead <= 't')) ADVANCE(8);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 208:
       ACCEPT_TOKEN(sym_word);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(11);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 209:
       ACCEPT_TOKEN(sym_word);
       if (('0' <= lookahead && lookahead <= '9')) ADVANCE(12);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 210:
       ACCEPT_TOKEN(sym_word);
       if (lookahead != 0 &&
-          lookahead != '\t' &&
-          lookahead != '\n' &&
-          lookahead != '\r' &&
+          (lookahead < '\t' || '\r' < lookahead) &&
           lookahead != ' ' &&
           lookahead != '!' &&
           lookahead != '#' &&
           lookahead != ',' &&
-          lookahead != '=') ADVANCE(210);
+          lookahead != '=' &&
+          lookahead != 0xfeff) ADVANCE(210);
       END_STATE();
     case 211:
       ACCEPT_TOKEN(sym_comment);

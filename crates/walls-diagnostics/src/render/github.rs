@@ -4,16 +4,22 @@
 //! ::error file=PATH,line=L,col=C,endLine=EL,endColumn=EC,title=walls-lint (CODE)::MESSAGE
 //! ```
 //!
-//! Warnings use `::warning` and infos `::notice`. `col` and `endColumn` are left out
+//! A file that could not be read is one `::error file=PATH,title=walls-lint::WHY` line,
+//! after the diagnostics. Warnings use `::warning` and infos `::notice`. `col` and `endColumn` are left out
 //! when the span covers several lines, which Actions rejects. Message data escapes
 //! `%`, `\r` and `\n`; property values also escape `:` and `,`.
 
-use super::{FileReport, Region, message_with_help};
+use super::{FileReport, Region, Unreadable, message_with_help};
 use crate::{LineIndex, Severity};
 use std::io::{self, Write};
 
-/// Writes one workflow command line per diagnostic of every file.
-pub fn github(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
+/// Writes one workflow command line per diagnostic of every file, then one per file
+/// that could not be read.
+pub fn github(
+    out: &mut dyn Write,
+    files: &[FileReport],
+    unreadable: &[Unreadable],
+) -> io::Result<()> {
     for file in files {
         let index = LineIndex::new(file.source);
         for d in file.diagnostics {
@@ -39,6 +45,14 @@ pub fn github(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
                 escape_data(&message_with_help(d))
             )?;
         }
+    }
+    for u in unreadable {
+        writeln!(
+            out,
+            "::error file={},title=walls-lint::{}",
+            escape_property(u.path),
+            escape_data(u.error)
+        )?;
     }
     Ok(())
 }
@@ -68,7 +82,7 @@ mod tests {
             source: SOURCE,
             diagnostics: diags,
         };
-        github(&mut out, &[file]).unwrap();
+        github(&mut out, &[file], &[]).unwrap();
         String::from_utf8(out).unwrap()
     }
 
@@ -107,6 +121,20 @@ mod tests {
         let text = render("x.walls", &d);
         assert!(text.ends_with("::a%0D%0Ab\n"), "{text}");
         assert_eq!(text.lines().count(), 1);
+    }
+
+    #[test]
+    fn unreadable_files_are_errors() {
+        let mut out = Vec::new();
+        let u = Unreadable {
+            path: "a,b.walls",
+            error: "cannot read a,b.walls: Permission denied",
+        };
+        github(&mut out, &[], &[u]).unwrap();
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "::error file=a%2Cb.walls,title=walls-lint::cannot read a,b.walls: Permission denied\n"
+        );
     }
 
     #[test]

@@ -4,12 +4,29 @@
 //! message, the primary span labelled with the message, every secondary label, the
 //! help, and the fix's description as a note. Spans are byte offsets
 //! ([`ariadne::IndexType::Byte`]), clamped to the text before drawing.
+//!
+//! Time is linear in the text plus the output. The text is indexed once per file, and
+//! a report draws only the lines near its labels: labels more than [`GAP`] lines apart
+//! are drawn as separate sections of the report (each with its own `file:line:column`),
+//! so a label on the first wall does not make every report walk the whole file. A
+//! line longer than [`LONG_LINE`] bytes is never printed whole: a report that touches
+//! one shows, for each label, a window of its line around the span with `…` where text
+//! is cut ([`long`]), so a 10 MB line prints a few hundred bytes per diagnostic.
 
 use super::{FileReport, clamp_span};
-use crate::{Diagnostic, Severity};
-use ariadne::{Color, Config, IndexType, Label, Report, ReportKind, Source};
+use crate::{Diagnostic, LineIndex, Severity};
+use ariadne::{Cache, Color, Config, IndexType, Label, Report, ReportKind, Source};
+use std::fmt;
 use std::io::{self, Write};
 use std::ops::Range;
+
+mod long;
+
+/// Labels at most this many lines apart share one section of a report.
+const GAP: usize = 8;
+
+/// Lines longer than this many bytes are shown as a window around each span.
+pub(crate) const LONG_LINE: usize = 400;
 
 /// Writes every diagnostic of `file` as an ariadne report, with ANSI colours when
 /// `color` is set.
@@ -18,39 +35,125 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
         // Indexing the lines of a large clean file would cost more than linting it.
         return Ok(());
     }
-    let source = Source::from(file.source);
+    let mut cache = Shared {
+        path: file.path,
+        source: Source::from(file.source),
+    };
+    let index = LineIndex::new(file.source);
     for d in file.diagnostics {
-        report(file, d, color).write((file.path, &source), &mut *out)?;
+        let labels = labels(file.source, d);
+        let lines: Vec<(usize, usize)> = labels
+            .iter()
+            .map(|l| {
+                (
+                    index.line_of(l.span.start),
+                    index.line_of(l.span.end.saturating_sub(1).max(l.span.start)),
+                )
+            })
+            .collect();
+        // Every line ariadne would print: those of each label (no more than it walks).
+        let touches_long_line = lines
+            .iter()
+            .flat_map(|&(first, last)| first..=last)
+            .any(|line| line_len(&index, file.source, line) > LONG_LINE);
+        if touches_long_line {
+            long::write(out, file, &index, d, &labels, color)?;
+        } else {
+            report(d, &labels, &lines, color).write(&mut cache, &mut *out)?;
+        }
     }
     Ok(())
 }
 
-fn report<'a>(
-    file: &FileReport<'a>,
-    d: &Diagnostic,
-    color: bool,
-) -> Report<'static, (&'a str, Range<usize>)> {
-    let (kind, kind_color) = match d.severity {
-        Severity::Error => (ReportKind::Error, Color::Red),
-        Severity::Warning => (ReportKind::Warning, Color::Yellow),
-        Severity::Info => (ReportKind::Advice, Color::Fixed(147)),
+/// The length in bytes of 0-based `line`, without its line end.
+fn line_len(index: &LineIndex, source: &str, line: usize) -> usize {
+    let start = index.line_start(line);
+    let end = if line + 1 < index.line_count() {
+        index.line_start(line + 1) - 1
+    } else {
+        source.len()
     };
-    let span = display_span(file.source, &d.span);
+    end - start
+}
 
-    // ariadne groups labels in the order given; give them in source order so that
-    // one file's labels share one snippet.
-    let mut labels: Vec<(Range<usize>, &str, Color)> = Vec::with_capacity(1 + d.labels.len());
-    labels.push((span.clone(), d.message.as_str(), kind_color));
-    labels.extend(d.labels.iter().map(|l| {
-        (
-            display_span(file.source, &l.span),
-            l.message.as_str(),
-            Color::Blue,
-        )
+/// One label to draw: its span (as shown), its message and its colour.
+pub(crate) struct Shown<'d> {
+    pub span: Range<usize>,
+    pub message: &'d str,
+    pub color: Color,
+    pub primary: bool,
+}
+
+/// The primary span and the secondary labels of `d`, in source order (ariadne groups
+/// labels in the order given; in source order they share one snippet).
+fn labels<'d>(source: &str, d: &'d Diagnostic) -> Vec<Shown<'d>> {
+    let kind_color = match d.severity {
+        Severity::Error => Color::Red,
+        Severity::Warning => Color::Yellow,
+        Severity::Info => Color::Fixed(147),
+    };
+    let mut labels: Vec<Shown> = Vec::with_capacity(1 + d.labels.len());
+    labels.push(Shown {
+        span: display_span(source, &d.span),
+        message: d.message.as_str(),
+        color: kind_color,
+        primary: true,
+    });
+    labels.extend(d.labels.iter().map(|l| Shown {
+        span: display_span(source, &l.span),
+        message: l.message.as_str(),
+        color: Color::Blue,
+        primary: false,
     }));
-    labels.sort_by_key(|(s, _, _)| (s.start, s.end));
+    labels.sort_by_key(|l| (l.span.start, l.span.end));
+    labels
+}
 
-    let mut builder = Report::build(kind, (file.path, span))
+/// The one indexed text of a file, served for every section of a report: a section
+/// is a source id (a number) that ariadne draws on its own, over its own lines only.
+struct Shared<'a> {
+    path: &'a str,
+    source: Source<&'a str>,
+}
+
+impl<'a> Cache<usize> for Shared<'a> {
+    type Storage = &'a str;
+
+    fn fetch(&mut self, _: &usize) -> Result<&Source<Self::Storage>, impl fmt::Debug> {
+        Ok::<_, ()>(&self.source)
+    }
+
+    fn display<'b>(&self, _: &'b usize) -> Option<impl fmt::Display + 'b> {
+        Some(self.path.to_owned())
+    }
+}
+/// The ariadne report of `d`, whose `labels` (in source order) span the 0-based
+/// `lines` (first, last): a label more than [`GAP`] lines after the current section's
+/// last line opens a new section.
+fn report(
+    d: &Diagnostic,
+    labels: &[Shown],
+    lines: &[(usize, usize)],
+    color: bool,
+) -> Report<'static, (usize, Range<usize>)> {
+    let kind = match d.severity {
+        Severity::Error => ReportKind::Error,
+        Severity::Warning => ReportKind::Warning,
+        Severity::Info => ReportKind::Advice,
+    };
+    let mut sections = Vec::with_capacity(labels.len());
+    let mut section = 0;
+    let mut section_end: Option<usize> = None;
+    for &(first, last) in lines {
+        if section_end.is_some_and(|end| first > end + GAP) {
+            section += 1;
+            section_end = None;
+        }
+        section_end = Some(section_end.map_or(last, |end| end.max(last)));
+        sections.push(section);
+    }
+    let primary = labels.iter().position(|l| l.primary).unwrap_or(0);
+    let mut builder = Report::build(kind, (sections[primary], labels[primary].span.clone()))
         .with_config(
             Config::default()
                 .with_index_type(IndexType::Byte)
@@ -58,10 +161,14 @@ fn report<'a>(
         )
         .with_code(d.code.id)
         .with_message(&d.message)
-        .with_labels(labels.into_iter().map(|(s, msg, c)| {
-            let label = Label::new((file.path, s)).with_message(msg);
+        .with_labels(labels.iter().zip(&sections).map(|(l, &section)| {
+            let label = Label::new((section, l.span.clone())).with_message(l.message);
             // ariadne colours labels even with colour off; only ask when wanted.
-            if color { label.with_color(c) } else { label }
+            if color {
+                label.with_color(l.color)
+            } else {
+                label
+            }
         }));
     if let Some(help) = &d.help {
         builder = builder.with_help(help);
@@ -179,5 +286,48 @@ mod tests {
         assert_eq!(display_span("a\r\n", &(3..3)), 1..1);
         assert_eq!(display_span("a\n", &(1..2)), 1..2);
         assert_eq!(display_span("", &(0..0)), 0..0);
+    }
+
+    #[test]
+    fn far_labels_are_separate_sections_with_their_own_lines() {
+        let source: String = (1..=40).map(|i| format!("wall type plane {i}\n")).collect();
+        let at = source.find("plane 30").unwrap();
+        let d =
+            Diagnostic::error(&UNKNOWN_WORD, at..at + 5, "late").with_label(10..15, "first wall");
+        let text = render(&source, &[d]);
+        println!("{text}");
+        assert!(text.contains("scene.walls:30:11"), "{text}");
+        assert!(text.contains("scene.walls:1:11"), "{text}");
+        assert!(text.contains(" 30 │ wall type plane 30"), "{text}");
+        assert!(text.contains("  1 │ wall type plane 1"), "{text}");
+        assert!(
+            !text.contains("plane 2\n") && !text.contains("plane 29"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_long_line_shows_a_window_around_the_span() {
+        let source = format!("{} colr {}\n", "a".repeat(1_000_000), "b".repeat(1_000_000));
+        let at = source.find("colr").unwrap();
+        let d = Diagnostic::error(&UNKNOWN_WORD, at..at + 4, "unknown word `colr`")
+            .with_label(0..1, "line starts here")
+            .with_help("did you mean `color`?");
+        let text = render(&source, &[d]);
+        println!("{text}");
+        assert!(text.len() < 1000, "{} bytes", text.len());
+        assert_eq!(
+            text,
+            format!(
+                "[S101] Error: unknown word `colr`\n   ╭─[ scene.walls:1:1000002 ]\n   │\n \
+                 1 │ {a41}…\n   │ ─ line starts here\n \
+                 1 │ …{a40} colr {b39}…\n   │ {s41}──── unknown word `colr`\n   │ \n   \
+                 │ Help: did you mean `color`?\n───╯\n",
+                a41 = "a".repeat(41),
+                a40 = "a".repeat(39),
+                b39 = "b".repeat(39),
+                s41 = " ".repeat(41),
+            )
+        );
     }
 }

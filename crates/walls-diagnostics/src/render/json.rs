@@ -10,22 +10,39 @@
 //! `{"message", "applicability": "safe"|"unsafe", "edits": [{"line", "column",
 //! "end_line", "end_column", "content"}]}`.
 //!
+//! A file that could not be read comes after the others as
+//! `{"path", "error": "why", "diagnostics": []}`.
+//!
 //! The object is serialized from borrowing structs straight to the writer, one
 //! diagnostic at a time, with the keys in the order above.
 
-use super::{FileReport, Region, summarize};
+use super::{FileReport, Region, Unreadable, summarize};
 use crate::{Diagnostic, Fix, LineIndex};
 use serde::{Serialize, Serializer};
 use std::io::{self, Write};
 
-/// Writes the `--format json` object of all `files`, pretty-printed with the keys in
-/// contract order and followed by a newline.
+/// Writes the `--format json` object of all `files` and the `unreadable` ones,
+/// pretty-printed with the keys in contract order and followed by a newline.
 ///
 /// The JSON goes out in many small writes: pass a buffered writer.
-pub fn json(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
+pub fn json(
+    out: &mut dyn Write,
+    files: &[FileReport],
+    unreadable: &[Unreadable],
+) -> io::Result<()> {
     let summary = summarize(files);
     let output = Output {
-        files: files.iter().map(|report| File { report }).collect(),
+        files: files
+            .iter()
+            .map(|report| Entry::Read(File { report }))
+            .chain(unreadable.iter().map(|u| {
+                Entry::Unreadable(NotRead {
+                    path: u.path,
+                    error: u.error,
+                    diagnostics: [],
+                })
+            }))
+            .collect(),
         summary: Counts {
             errors: summary.errors,
             warnings: summary.warnings,
@@ -38,8 +55,24 @@ pub fn json(out: &mut dyn Write, files: &[FileReport]) -> io::Result<()> {
 /// The whole output object.
 #[derive(Serialize)]
 struct Output<'a> {
-    files: Vec<File<'a>>,
+    files: Vec<Entry<'a>>,
     summary: Counts,
+}
+
+/// One entry of `files`.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum Entry<'a> {
+    Read(File<'a>),
+    Unreadable(NotRead<'a>),
+}
+
+/// A file that could not be read.
+#[derive(Serialize)]
+struct NotRead<'a> {
+    path: &'a str,
+    error: &'a str,
+    diagnostics: [(); 0],
 }
 
 /// One file: `{"path", "diagnostics"}`, its items produced one by one while
@@ -177,7 +210,7 @@ mod tests {
     /// The bytes `json` writes for `files`.
     fn write(files: &[FileReport]) -> Vec<u8> {
         let mut out = Vec::new();
-        super::json(&mut out, files).unwrap();
+        super::json(&mut out, files, &[]).unwrap();
         out
     }
 
@@ -246,6 +279,27 @@ mod tests {
             v["summary"],
             serde_json::json!({"errors": 2, "warnings": 1})
         );
+    }
+
+    #[test]
+    fn unreadable_files_have_an_error() {
+        let diags = diagnostics();
+        let u = Unreadable {
+            path: "gone.walls",
+            error: "cannot read gone.walls: No such file or directory (os error 2)",
+        };
+        let mut out = Vec::new();
+        super::json(&mut out, &[report(&diags)], &[u]).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(
+            v["files"][1],
+            serde_json::json!({
+                "path": "gone.walls",
+                "error": "cannot read gone.walls: No such file or directory (os error 2)",
+                "diagnostics": []
+            })
+        );
+        assert_eq!(v["files"][0]["path"], "scene.walls");
     }
 
     #[test]

@@ -8,6 +8,8 @@
 //! * [`sarif`]: a SARIF 2.1.0 log for code-scanning services;
 //! * [`github`]: GitHub Actions workflow commands (`::error file=…::…`).
 //!
+//! The machine formats also report the files that could not be read ([`Unreadable`]).
+//!
 //! The machine formats ([`json`], [`sarif`], [`github`]) write straight to a
 //! [`std::io::Write`] as they go, without building the whole output in memory first;
 //! give them a buffered writer.
@@ -39,6 +41,16 @@ pub struct FileReport<'a> {
     pub source: &'a str,
     /// The findings, in the order they should be shown.
     pub diagnostics: &'a [Diagnostic],
+}
+
+/// A file that could not be read: the machine formats report it (JSON: a file entry
+/// with an `error`; SARIF: a tool execution notification; GitHub: an `::error` line).
+#[derive(Debug, Clone, Copy)]
+pub struct Unreadable<'a> {
+    /// The path as the user gave it.
+    pub path: &'a str,
+    /// Why it could not be read, for people.
+    pub error: &'a str,
 }
 
 /// Name, version and docs address of the tool, for SARIF.

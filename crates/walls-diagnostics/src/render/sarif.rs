@@ -6,12 +6,16 @@
 //! SARIF `fix` with `artifactChanges`. Regions use 1-based lines and columns counted
 //! in Unicode code points (`columnKind: "unicodeCodePoints"`), `endColumn` exclusive.
 //!
+//! Files that could not be read are `toolExecutionNotifications` (level `error`, with
+//! the file's URI) of the run's one invocation, whose `executionSuccessful` is then
+//! false; with every file read, the run has no `invocations`.
+//!
 //! The log is serialized from borrowing structs straight to the writer: results and
 //! related locations are produced one at a time while writing, so memory stays flat
 //! however many diagnostics there are. Every object's fields are declared in sorted
 //! key order, the order the output has always had.
 
-use super::{FileReport, Region, ToolInfo, message_with_help};
+use super::{FileReport, Region, ToolInfo, Unreadable, message_with_help};
 use crate::{Code, Diagnostic, Label, LineIndex, Severity};
 use serde::Serialize;
 use serde::ser::{SerializeSeq, Serializer};
@@ -27,6 +31,7 @@ use std::ops::Range;
 pub fn sarif(
     out: &mut dyn Write,
     files: &[FileReport],
+    unreadable: &[Unreadable],
     tool: &ToolInfo,
     rules: &[&'static Code],
 ) -> io::Result<()> {
@@ -41,6 +46,25 @@ pub fn sarif(
                 })
                 .collect(),
             column_kind: "unicodeCodePoints",
+            invocations: (!unreadable.is_empty()).then(|| {
+                [Invocation {
+                    execution_successful: false,
+                    tool_execution_notifications: unreadable
+                        .iter()
+                        .map(|u| Notification {
+                            level: "error",
+                            locations: [NotificationLocation {
+                                physical_location: NotificationPlace {
+                                    artifact_location: ArtifactUri {
+                                        uri: path_to_uri(u.path),
+                                    },
+                                },
+                            }],
+                            message: Text::from(u.error),
+                        })
+                        .collect(),
+                }]
+            }),
             results: Results {
                 files,
                 uris: &uris,
@@ -76,20 +100,51 @@ struct Log<'a> {
 struct Run<'a> {
     artifacts: Vec<Artifact<'a>>,
     column_kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    invocations: Option<[Invocation<'a>; 1]>,
     results: Results<'a>,
     tool: Tool<'a>,
+}
+
+/// The one invocation, listed only to report the files that could not be read.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Invocation<'a> {
+    execution_successful: bool,
+    tool_execution_notifications: Vec<Notification<'a>>,
+}
+
+/// A file that could not be read.
+#[derive(Serialize)]
+struct Notification<'a> {
+    level: &'static str,
+    locations: [NotificationLocation; 1],
+    message: Text<'a>,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct NotificationLocation {
+    physical_location: NotificationPlace,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct NotificationPlace {
+    artifact_location: ArtifactUri<String>,
 }
 
 /// One entry of `artifacts`, per file in order.
 #[derive(Serialize)]
 struct Artifact<'a> {
-    location: ArtifactUri<'a>,
+    location: ArtifactUri<&'a str>,
 }
 
-/// An artifact location without an index (in the `artifacts` table itself).
+/// An artifact location without an index (in the `artifacts` table itself, and for
+/// files that could not be read).
 #[derive(Serialize)]
-struct ArtifactUri<'a> {
-    uri: &'a str,
+struct ArtifactUri<U> {
+    uri: U,
 }
 
 #[derive(Serialize)]
@@ -390,7 +445,7 @@ mod tests {
     /// The bytes `sarif` writes for `files`.
     fn write(files: &[FileReport], tool: &ToolInfo, rules: &[&'static Code]) -> Vec<u8> {
         let mut out = Vec::new();
-        sarif(&mut out, files, tool, rules).unwrap();
+        sarif(&mut out, files, &[], tool, rules).unwrap();
         out
     }
 
@@ -413,6 +468,33 @@ mod tests {
     fn as_value_would_print(bytes: &[u8]) -> String {
         let v: Value = serde_json::from_slice(bytes).unwrap();
         serde_json::to_string_pretty(&v).unwrap() + "\n"
+    }
+
+    #[test]
+    fn unreadable_files_are_tool_execution_notifications() {
+        let u = Unreadable {
+            path: "dir/gone one.walls",
+            error: "cannot read dir/gone one.walls: No such file or directory (os error 2)",
+        };
+        let mut out = Vec::new();
+        sarif(&mut out, &[], &[u], &TOOL, &[]).unwrap();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(
+            v["runs"][0]["invocations"],
+            json!([{
+                "executionSuccessful": false,
+                "toolExecutionNotifications": [{
+                    "level": "error",
+                    "locations": [{"physicalLocation": {"artifactLocation": {"uri": "dir/gone%20one.walls"}}}],
+                    "message": {"text": "cannot read dir/gone one.walls: No such file or directory (os error 2)"}
+                }]
+            }])
+        );
+        assert_eq!(
+            String::from_utf8(out.clone()).unwrap(),
+            as_value_would_print(&out)
+        );
+        assert!(log()["runs"][0].get("invocations").is_none());
     }
 
     #[test]

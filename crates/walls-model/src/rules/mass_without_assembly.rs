@@ -1,10 +1,14 @@
-//! C304 `mass-without-assembly`: a wall has a mass but no assembly.
+//! C304 `mass-without-assembly`: a wall has a mass but no assembly (an error).
 //!
-//! Checked per reactive wall in SSDEM.
+//! Checked over the reactive walls in SSDEM: walls are gathered by the token that gave
+//! them their mass, and each token is reported once, after every wall. A mass from a
+//! `defaults` line is reported on that line, with the walls it reaches as labels (the
+//! first [`MAX_LABELS`]; the message gives their count).
 
 use crate::check::Checker;
-use crate::scene::Wall;
-use walls_diagnostics::{Code, Diagnostic};
+use crate::scene::{Place, Source, Wall};
+use std::collections::HashMap;
+use walls_diagnostics::{Applicability, Code, Diagnostic, Edit, MAX_LABELS};
 use walls_keywords::Keyword;
 
 /// A wall has a mass but no assembly.
@@ -12,7 +16,13 @@ pub static MASS_WITHOUT_ASSEMBLY: Code = Code {
     id: "C304",
     name: "mass-without-assembly",
     summary: "a wall has a mass but no assembly",
-    explanation: "The document asks every inertial wall to be given an assembly, 0 or 1.
+    explanation: "A wall with a mass reacts to the particles that hit it, and pkdgrav keeps the
+motion of reactive walls per assembly. A wall with a mass but no `assembly` keeps the
+assembly −1, and pkdgrav then writes its per-assembly arrays at index −1, memory it does
+not own: the run is silently corrupted. Give every inertial wall an assembly, 0 or 1. A
+`mass` on a `defaults` line reaches every later wall that does not set its own: the
+diagnostic is on that line and lists the walls. The fix (unsafe: check that the walls
+belong together) adds `assembly 0` after the `mass`.
 
 Bad:
 ```walls
@@ -29,17 +39,87 @@ wall type disk
 ",
 };
 
-/// Reports a reactive wall in no assembly.
-pub(crate) fn check(cx: &mut Checker, wall: &Wall) {
-    if !wall.is_reactive() || wall.integer(Keyword::Assembly) >= 0 {
-        return;
+/// The reactive walls with no assembly, by the start of the `mass` values that gave
+/// them their mass.
+#[derive(Default)]
+pub(crate) struct NoAssembly<'w>(HashMap<usize, Vec<&'w Wall>>);
+
+impl<'w> NoAssembly<'w> {
+    /// Notes `wall`, a reactive wall, if it has no assembly.
+    pub(crate) fn note(&mut self, wall: &'w Wall) {
+        if wall.integer(Keyword::Assembly) >= 0 {
+            return;
+        }
+        let key = wall
+            .setting(Keyword::Mass)
+            .and_then(|s| s.source.span())
+            .map_or(wall.span.start, |s| s.start);
+        self.0.entry(key).or_default().push(wall);
     }
-    cx.push(
-        Diagnostic::warning(
-            &MASS_WITHOUT_ASSEMBLY,
-            cx.mass_span(wall),
-            format!("wall {} has a mass but no assembly", wall.index),
-        )
-        .with_help("give every inertial wall an assembly, 0 or 1"),
+
+    /// Reports each `mass` token, in the order of its first wall.
+    pub(crate) fn report(self, cx: &mut Checker) {
+        let mut groups: Vec<_> = self.0.into_values().collect();
+        groups.sort_by_key(|walls| walls[0].index);
+        for walls in groups {
+            report(cx, &walls);
+        }
+    }
+}
+
+/// One error for the `mass` token that gave `walls` their mass.
+fn report(cx: &mut Checker, walls: &[&Wall]) {
+    let first = walls[0];
+    let setting = first.setting(Keyword::Mass);
+    let from_defaults = matches!(
+        setting.as_ref().map(|s| &s.source),
+        Some(Source::Set {
+            place: Place::Defaults,
+            ..
+        })
     );
+    let span = cx.mass_span(first);
+    let mut d = if from_defaults {
+        let mut ids: Vec<String> = walls
+            .iter()
+            .take(MAX_LABELS)
+            .map(|w| w.index.to_string())
+            .collect();
+        if walls.len() > MAX_LABELS {
+            ids.push("…".into());
+        }
+        let which = match walls.len() {
+            1 => format!("wall {}", first.index),
+            n => format!("{n} walls ({})", ids.join(", ")),
+        };
+        let mut d = Diagnostic::error(
+            &MASS_WITHOUT_ASSEMBLY,
+            span.clone(),
+            format!("this `defaults` mass gives {which} a mass but no assembly"),
+        );
+        for w in walls.iter().take(MAX_LABELS) {
+            d = d.with_label(w.span.clone(), format!("wall {} has this mass", w.index));
+        }
+        d
+    } else {
+        Diagnostic::error(
+            &MASS_WITHOUT_ASSEMBLY,
+            span.clone(),
+            format!("wall {} has a mass but no assembly", first.index),
+        )
+    };
+    d = d.with_help(
+        "pkdgrav would index its per-assembly arrays at -1 and corrupt the run: give every inertial wall an assembly, 0 or 1",
+    );
+    if setting.is_some() {
+        d = d.with_fix(
+            Applicability::Unsafe,
+            "add `assembly 0` after the mass",
+            vec![Edit {
+                span: span.end..span.end,
+                replacement: " assembly 0".into(),
+            }],
+        );
+    }
+    cx.push_about(d, Some(Keyword::Mass));
 }

@@ -1,8 +1,12 @@
 //! `walls-lint`: check walls files for everything pkdgrav would reject or misread.
 //!
 //! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
-//! or I/O error. Human output goes to standard error, machine output (json, sarif,
-//! github) to standard output.
+//! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
+//! file, or a `.par` naming a missing one) makes the status 2 even when other files have
+//! findings, and every format reports it. Human output goes to standard error, machine
+//! output (json, sarif, github) to standard output. Folders are walked as [`walk`] says.
+
+mod walk;
 
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
@@ -11,7 +15,7 @@ use std::io::Write;
 use std::process::ExitCode;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
-use walls_diagnostics::render::{self, FileReport, ToolInfo};
+use walls_diagnostics::render::{self, FileReport, ToolInfo, Unreadable};
 use walls_model::Options;
 
 /// The command line of `walls-lint`.
@@ -20,12 +24,20 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error.\nHuman output goes to standard error; json, sarif and github to standard output."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile)."
 )]
 pub struct LintArgs {
-    /// Files to check; `-` reads standard input.
-    #[arg(required_unless_present = "explain", value_name = "FILE")]
+    /// Files or folders to check; `-` reads standard input.
+    #[arg(required_unless_present = "explain", value_name = "PATH")]
     pub files: Vec<String>,
+    /// In folders, check the files matching this gitignore-style glob (repeatable;
+    /// default `*.walls`).
+    #[arg(long, value_name = "GLOB")]
+    pub include: Vec<String>,
+    /// In folders, skip the files and folders matching this gitignore-style glob
+    /// (repeatable).
+    #[arg(long, value_name = "GLOB")]
+    pub exclude: Vec<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
@@ -88,15 +100,35 @@ pub fn run(args: &LintArgs) -> ExitCode {
         min_radius: args.min_radius,
         dt: args.dt,
     };
-    let checked: Vec<Linted> = args.files.par_iter().map(|p| lint(p, &options)).collect();
+    let targets = match walk::expand(&args.files, &args.include, &args.exclude) {
+        Ok(targets) => targets,
+        Err(e) => {
+            crate::errln!("walls-lint: error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let checked: Vec<Linted> = targets
+        .files
+        .par_iter()
+        .map(|p| lint(p, &options))
+        .collect();
 
-    let mut io_failed = false;
+    let mut unreadable: Vec<Unreadable> = Vec::new();
     for c in &checked {
         if let Err(e) = &c.outcome {
-            crate::errln!("walls-lint: error: {e}");
-            io_failed = true;
+            unreadable.push(Unreadable {
+                path: &c.name,
+                error: e,
+            });
         }
     }
+    for (path, e) in &targets.errors {
+        unreadable.push(Unreadable { path, error: e });
+    }
+    for u in &unreadable {
+        crate::errln!("walls-lint: error: {}", u.error);
+    }
+    let io_failed = !unreadable.is_empty();
     let reports: Vec<FileReport> = checked
         .iter()
         .filter_map(|c| {
@@ -109,7 +141,7 @@ pub fn run(args: &LintArgs) -> ExitCode {
         })
         .collect();
     let summary = render::summarize(&reports);
-    if let Err(e) = write_reports(args, &reports) {
+    if let Err(e) = write_reports(args, &reports, &unreadable) {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-lint: error: cannot write output: {e}");
         }
@@ -146,7 +178,11 @@ fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
-fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()> {
+fn write_reports(
+    args: &LintArgs,
+    reports: &[FileReport],
+    unreadable: &[Unreadable],
+) -> std::io::Result<()> {
     match args.format {
         Format::Human => {
             let color = match args.color {
@@ -176,7 +212,7 @@ fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()>
         }
         Format::Json => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            render::json(&mut out, reports)?;
+            render::json(&mut out, reports, unreadable)?;
             out.flush()
         }
         Format::Sarif => {
@@ -187,12 +223,12 @@ fn write_reports(args: &LintArgs, reports: &[FileReport]) -> std::io::Result<()>
             };
             let rules: Vec<_> = all_codes().collect();
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            render::sarif(&mut out, reports, &tool, &rules)?;
+            render::sarif(&mut out, reports, unreadable, &tool, &rules)?;
             out.flush()
         }
         Format::Github => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            render::github(&mut out, reports)?;
+            render::github(&mut out, reports, unreadable)?;
             out.flush()
         }
     }
