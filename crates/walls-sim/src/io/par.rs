@@ -508,7 +508,7 @@ impl<'a> Lines<'a> {
     /// `key`'s value as pkdgrav's integer parameters read it (C's `%d`: an optional
     /// sign and the digits that follow, the rest of the text ignored), with its line and
     /// whether that was the whole text (`0.5` reads as 0, `1e3` as 1).
-    fn integer(&self, key: &str) -> Result<Option<(usize, i64, bool)>, InputError> {
+    fn percent_d(&self, key: &str) -> Result<Option<(usize, i64, bool)>, InputError> {
         self.by_key
             .get(key)
             .map(|l| {
@@ -531,7 +531,7 @@ impl<'a> Lines<'a> {
     /// A pkdgrav switch (an integer, any value but 0 on) as pkdgrav reads it
     /// ([`Lines::integer`]).
     fn switch(&self, key: &str) -> Result<Option<bool>, InputError> {
-        Ok(self.integer(key)?.map(|(_, x, _)| x != 0))
+        Ok(self.percent_d(key)?.map(|(_, x, _)| x != 0))
     }
 
     /// `key`'s value if it obeys `rule`.
@@ -625,7 +625,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         if key.starts_with(['b', 'i'])
             && !COUNTS.contains(&key)
             && use_of(key).is_some()
-            && let Some((_, x, false)) = lines.integer(key)?
+            && let Some((_, x, false)) = lines.percent_d(key)?
         {
             warn(
                 Some(n),
@@ -652,7 +652,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 // pkdgrav's switches (`b…`) and integers (`i…`) are C ints read with
                 // %d: any value but 0 is on.
                 let x = if key.starts_with(['b', 'i']) {
-                    lines.integer(key)?.map(|(_, x, _)| x as f64)
+                    lines.percent_d(key)?.map(|(_, x, _)| x as f64)
                 } else {
                     lines.real(key)?.map(|(_, x)| x)
                 };
@@ -670,7 +670,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
                 }
             }
             Some(Use::Read) if key == "bDoGravity" => {
-                if let Some((_, x, _)) = lines.integer(key)?
+                if let Some((_, x, _)) = lines.percent_d(key)?
                     && x == 0
                 {
                     warn(
@@ -728,7 +728,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         })
         .collect();
     optional_keys.sort_by_key(|k| k.line);
-    let cohesion_model = match lines.integer("iCohesionModel")? {
+    let cohesion_model = match lines.percent_d("iCohesionModel")? {
         None => None,
         Some((_, x, _)) if x == 0 || x == 1 => Some(x),
         Some((n, _, _)) => {
