@@ -23,13 +23,14 @@
 mod document;
 mod features;
 pub mod position;
+mod transport;
 
 use document::Document;
 use std::collections::HashMap;
 use std::sync::Mutex;
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::*;
-use tower_lsp_server::{Client, LanguageServer, LspService, Server};
+use tower_lsp_server::{Client, LanguageServer, LspService};
 use walls_model::{ContactModel, Options};
 
 /// The server's state: the open documents and the checker's options.
@@ -61,12 +62,17 @@ pub struct ExplainParams {
     pub query: String,
 }
 
-/// Serves LSP over standard input and output until the client exits.
-pub async fn serve_stdio() {
-    let (service, socket) = service();
-    Server::new(tokio::io::stdin(), tokio::io::stdout(), socket)
-        .serve(service)
-        .await;
+pub use transport::serve;
+
+/// Serves LSP over standard input and output until the client exits (or closes the
+/// input). Does not wait for a read of standard input still under way.
+pub fn serve_stdio() -> std::io::Result<()> {
+    let runtime = tokio::runtime::Runtime::new()?;
+    runtime.block_on(serve(tokio::io::stdin(), tokio::io::stdout()));
+    // Standard input is read by a blocking thread that nothing can stop: a client that
+    // keeps it open after `exit` must not keep the server alive.
+    runtime.shutdown_background();
+    Ok(())
 }
 
 /// Reads `{"mode": "hsdem", "maxWalls": 30}` (initialization options, or the `walls`
