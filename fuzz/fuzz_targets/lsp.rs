@@ -18,8 +18,14 @@ fuzz_target!(|data: &[u8]| {
     let input = match data.strip_prefix(b"F") {
         Some(bodies) => {
             let mut input = Vec::new();
-            frame(&mut input, br#"{"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}}"#);
-            frame(&mut input, br#"{"jsonrpc":"2.0","method":"initialized","params":{}}"#);
+            frame(
+                &mut input,
+                br#"{"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}}"#,
+            );
+            frame(
+                &mut input,
+                br#"{"jsonrpc":"2.0","method":"initialized","params":{}}"#,
+            );
             for body in bodies.split(|&b| b == b'\n') {
                 frame(&mut input, body);
             }
