@@ -96,17 +96,16 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
 }
 
 /// The formatting options for a document: from the `.walls-fmt.toml` above its file, as
-/// `walls-fmt` would find them (defaults for other URIs or a broken configuration).
-fn format_options(uri: &Uri) -> FormatOptions {
+/// `walls-fmt` would find them (defaults for other URIs), or why that file is unusable.
+pub fn format_options(uri: &Uri) -> Result<FormatOptions, walls_format::ConfigError> {
     let path = uri
         .as_str()
         .strip_prefix("file://")
         .map(|p| std::path::PathBuf::from(percent_decode(p)));
-    path.as_deref()
-        .and_then(std::path::Path::parent)
-        .and_then(|dir| walls_format::discover(dir).ok())
-        .map(|(options, _)| options)
-        .unwrap_or_default()
+    match path.as_deref().and_then(std::path::Path::parent) {
+        Some(dir) => walls_format::discover(dir).map(|(options, _)| options),
+        None => Ok(FormatOptions::default()),
+    }
 }
 
 /// `%xx` escapes of a URI path decoded (UTF-8 assumed; anything else kept as written).
@@ -135,15 +134,15 @@ fn percent_decode(s: &str) -> String {
 }
 
 /// The edit that formats the whole document, if it changes anything.
-pub fn format(uri: &Uri, doc: &Document) -> Option<Vec<TextEdit>> {
-    let formatted = walls_ide::format(&doc.analysis, &format_options(uri))?;
+pub fn format(doc: &Document, options: &FormatOptions) -> Option<Vec<TextEdit>> {
+    let formatted = walls_ide::format(&doc.analysis, options)?;
     Some(vec![whole(&doc.analysis, formatted)])
 }
 
 /// The edit that formats the items a range touches.
-pub fn format_range(uri: &Uri, doc: &Document, r: Range) -> Option<Vec<TextEdit>> {
+pub fn format_range(doc: &Document, r: Range, options: &FormatOptions) -> Option<Vec<TextEdit>> {
     let a = &doc.analysis;
-    let edit = walls_ide::format_range(a, byte_range(a, r), &format_options(uri))?;
+    let edit = walls_ide::format_range(a, byte_range(a, r), options)?;
     Some(vec![TextEdit::new(
         lsp_range(a, &edit.span),
         edit.replacement,

@@ -6,7 +6,8 @@
 //! - diagnostics come from the syntax check and the checker;
 //! - hovers show the keyword's documentation and its effective value;
 //! - formatting and range formatting use `walls-format` (options from the
-//!   `.walls-fmt.toml` above the document's file);
+//!   `.walls-fmt.toml` above the document's file; an unusable one is named in a
+//!   message to the user, and the defaults are used);
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
 //! - the outline shows walls and defaults blocks;
 //! - folding covers blocks;
@@ -17,19 +18,27 @@
 //!   keyword) answers the explanation `walls-lint --explain` prints, in Markdown, or
 //!   `null`, so that editors can explain the code of a diagnostic.
 //!
+//! Settings (initialization options, or the `walls` section of the configuration) with a
+//! bad value or an unknown key are named in one message to the user; the rest apply.
+//!
+//! The stream is framed by [`serve`] before tower-lsp's server sees it, so that a bad
+//! message is answered and skipped, never the end of the server.
+//!
 //! Edits are applied under one lock, and a document's diagnostics are published with
 //! its version, and only if no newer version has arrived meanwhile.
 
 mod document;
 mod features;
 pub mod position;
+mod transport;
 
 use document::Document;
 use std::collections::HashMap;
 use std::sync::Mutex;
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::*;
-use tower_lsp_server::{Client, LanguageServer, LspService, Server};
+use tower_lsp_server::{Client, LanguageServer, LspService};
+use walls_format::FormatOptions;
 use walls_model::{ContactModel, Options};
 
 /// The server's state: the open documents and the checker's options.
@@ -42,6 +51,8 @@ pub struct Backend {
 struct State {
     documents: HashMap<Uri, Document>,
     options: Options,
+    /// What was wrong with the initialization options, told once initialized.
+    init_problems: Vec<String>,
 }
 
 /// The service and the socket its notifications to the client go through.
@@ -61,26 +72,64 @@ pub struct ExplainParams {
     pub query: String,
 }
 
-/// Serves LSP over standard input and output until the client exits.
-pub async fn serve_stdio() {
-    let (service, socket) = service();
-    Server::new(tokio::io::stdin(), tokio::io::stdout(), socket)
-        .serve(service)
-        .await;
+pub use transport::serve;
+
+/// Serves LSP over standard input and output until the client exits (or closes the
+/// input). Does not wait for a read of standard input still under way.
+pub fn serve_stdio() -> std::io::Result<()> {
+    let runtime = tokio::runtime::Runtime::new()?;
+    runtime.block_on(serve(tokio::io::stdin(), tokio::io::stdout()));
+    // Standard input is read by a blocking thread that nothing can stop: a client that
+    // keeps it open after `exit` must not keep the server alive.
+    runtime.shutdown_background();
+    Ok(())
 }
 
 /// Reads `{"mode": "hsdem", "maxWalls": 30}` (initialization options, or the `walls`
-/// section of the settings) into the checker's options.
-fn options_from(value: &serde_json::Value, mut options: Options) -> Options {
-    match value.get("mode").and_then(|m| m.as_str()) {
-        Some("hsdem") => options.mode = ContactModel::Hsdem,
-        Some("ssdem") => options.mode = ContactModel::Ssdem,
-        _ => {}
+/// section of the settings) into the checker's options. A bad value keeps the option as
+/// it was, and an unknown key is ignored; each gives a sentence for the user, naming the
+/// key and the value.
+fn options_from(value: &serde_json::Value, mut options: Options) -> (Options, Vec<String>) {
+    let mut problems = Vec::new();
+    let Some(settings) = value.as_object() else {
+        if !value.is_null() {
+            problems.push(format!("the settings are {value}, not an object: ignored"));
+        }
+        return (options, problems);
+    };
+    for (key, value) in settings {
+        match key.as_str() {
+            "mode" => match value.as_str() {
+                Some("hsdem") => options.mode = ContactModel::Hsdem,
+                Some("ssdem") => options.mode = ContactModel::Ssdem,
+                _ => problems.push(format!(
+                    "setting `mode` is {value}, not \"ssdem\" or \"hsdem\": keeping \"{}\"",
+                    match options.mode {
+                        ContactModel::Ssdem => "ssdem",
+                        ContactModel::Hsdem => "hsdem",
+                    }
+                )),
+            },
+            "maxWalls" => match value.as_u64().and_then(|n| usize::try_from(n).ok()) {
+                Some(n) if n >= 1 => options.max_walls = n,
+                _ => problems.push(format!(
+                    "setting `maxWalls` is {value}, not a whole number of at least 1: keeping {}",
+                    options.max_walls
+                )),
+            },
+            // The VS Code client's own settings, sent with the section.
+            "server" | "trace" => {}
+            _ => problems.push(format!(
+                "unknown setting `{key}` (= {value}) ignored; the settings are `mode` and `maxWalls`"
+            )),
+        }
     }
-    if let Some(n) = value.get("maxWalls").and_then(|n| n.as_u64()) {
-        options.max_walls = n as usize;
-    }
-    options
+    (options, problems)
+}
+
+/// The message that tells the user about bad settings, if there are any.
+fn settings_message(problems: &[String]) -> Option<String> {
+    (!problems.is_empty()).then(|| format!("walls: {}.", problems.join("; ")))
 }
 
 impl Backend {
@@ -109,6 +158,21 @@ impl Backend {
         Ok(walls_ide::explain(&params.query))
     }
 
+    /// The formatting options of `uri`'s project; the defaults, and a message to the
+    /// user naming the file and what is wrong, if its `.walls-fmt.toml` is unusable.
+    async fn format_options(&self, uri: &Uri) -> FormatOptions {
+        match features::format_options(uri) {
+            Ok(options) => options,
+            Err(e) => {
+                let message = format!("walls: {e}; formatting with the default options");
+                self.client
+                    .show_message(MessageType::WARNING, message)
+                    .await;
+                FormatOptions::default()
+            }
+        }
+    }
+
     fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {
         self.lock().documents.get(uri).map(f)
     }
@@ -118,7 +182,7 @@ impl LanguageServer for Backend {
     async fn initialize(&self, params: InitializeParams) -> Result<InitializeResult> {
         if let Some(init) = &params.initialization_options {
             let mut state = self.lock();
-            state.options = options_from(init, state.options.clone());
+            (state.options, state.init_problems) = options_from(init, state.options.clone());
         }
         Ok(InitializeResult {
             capabilities: ServerCapabilities {
@@ -157,6 +221,15 @@ impl LanguageServer for Backend {
             }),
             ..InitializeResult::default()
         })
+    }
+
+    async fn initialized(&self, _: InitializedParams) {
+        let problems = std::mem::take(&mut self.lock().init_problems);
+        if let Some(message) = settings_message(&problems) {
+            self.client
+                .show_message(MessageType::WARNING, message)
+                .await;
+        }
     }
 
     async fn shutdown(&self) -> Result<()> {
@@ -207,12 +280,14 @@ impl LanguageServer for Backend {
             .get("walls")
             .unwrap_or(&params.settings)
             .clone();
-        let versions: Vec<(Uri, i32)> = {
+        let (versions, problems): (Vec<(Uri, i32)>, _) = {
             let mut state = self.lock();
-            state.options = options_from(&section, state.options.clone());
+            let (options, problems) = options_from(&section, state.options.clone());
+            state.options = options;
             let options = state.options.clone();
             let uris: Vec<Uri> = state.documents.keys().cloned().collect();
-            uris.into_iter()
+            let versions = uris
+                .into_iter()
                 .filter_map(|uri| {
                     let doc = state.documents.remove(&uri)?;
                     let version = doc.version;
@@ -222,8 +297,14 @@ impl LanguageServer for Backend {
                         .insert(uri.clone(), Document::new(version, text, &options));
                     Some((uri, version))
                 })
-                .collect()
+                .collect();
+            (versions, problems)
         };
+        if let Some(message) = settings_message(&problems) {
+            self.client
+                .show_message(MessageType::WARNING, message)
+                .await;
+        }
         for (uri, version) in versions {
             self.publish(uri, version).await;
         }
@@ -238,8 +319,9 @@ impl LanguageServer for Backend {
 
     async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
         let uri = params.text_document.uri;
+        let options = self.format_options(&uri).await;
         Ok(self
-            .with_document(&uri, |doc| features::format(&uri, doc))
+            .with_document(&uri, |doc| features::format(doc, &options))
             .flatten())
     }
 
@@ -248,8 +330,11 @@ impl LanguageServer for Backend {
         params: DocumentRangeFormattingParams,
     ) -> Result<Option<Vec<TextEdit>>> {
         let uri = params.text_document.uri;
+        let options = self.format_options(&uri).await;
         Ok(self
-            .with_document(&uri, |doc| features::format_range(&uri, doc, params.range))
+            .with_document(&uri, |doc| {
+                features::format_range(doc, params.range, &options)
+            })
             .flatten())
     }
 

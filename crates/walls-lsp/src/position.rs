@@ -6,17 +6,18 @@ use tower_lsp_server::ls_types::{Position, Range};
 pub use walls_ide::Lines;
 
 /// The LSP position of byte `offset` in `text` (an offset inside a character counts as
-/// that character's start).
+/// that character's start). Reads at most a mark's worth of the line
+/// (256 bytes), however long the line.
 pub fn position(lines: &Lines, text: &str, offset: usize) -> Position {
     let offset = offset.min(text.len());
     let line = lines.line_of(offset);
-    let start = lines.line_start(line).unwrap_or_default();
-    let column: usize = text[start..]
+    let mark = lines.mark_before(offset);
+    let column: usize = text[mark.offset..]
         .char_indices()
-        .take_while(|&(i, _)| start + i < offset)
+        .take_while(|&(i, _)| mark.offset + i < offset)
         .map(|(_, c)| c.len_utf16())
         .sum();
-    Position::new(line as u32, column as u32)
+    Position::new(line as u32, (mark.utf16_column + column) as u32)
 }
 
 /// The LSP range of a byte range.
@@ -28,17 +29,17 @@ pub fn range(lines: &Lines, text: &str, span: &std::ops::Range<usize>) -> Range 
 }
 
 /// The byte offset of an LSP position; positions past a line's end or the text's end
-/// are clamped to them.
+/// are clamped to them. Reads at most a mark's worth of the line.
 pub fn offset(lines: &Lines, text: &str, p: Position) -> usize {
     let line = p.line as usize;
-    let Some(start) = lines.line_start(line) else {
+    let Some(mark) = lines.mark_at_column(line, p.character as usize) else {
         return text.len();
     };
     let end = lines.line_start(line + 1).unwrap_or(text.len());
-    let mut units = 0;
-    for (i, c) in text[start..end].char_indices() {
+    let mut units = mark.utf16_column;
+    for (i, c) in text[mark.offset..end].char_indices() {
         if units >= p.character as usize || c == '\n' || c == '\r' {
-            return start + i;
+            return mark.offset + i;
         }
         units += c.len_utf16();
     }

@@ -72,6 +72,104 @@ fn speaks_lsp_over_stdio() {
     assert!(server.wait().unwrap().success());
 }
 
+fn start() -> (
+    std::process::Child,
+    std::process::ChildStdin,
+    BufReader<std::process::ChildStdout>,
+) {
+    let mut server = Command::new(env!("CARGO_BIN_EXE_walls-lsp"))
+        .arg("--stdio")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let input = server.stdin.take().unwrap();
+    let output = BufReader::new(server.stdout.take().unwrap());
+    // A server that hangs is killed, so that the test reading its output fails.
+    let pid = server.id().to_string();
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs(30));
+        let _ = Command::new("kill").arg(pid).status();
+    });
+    (server, input, output)
+}
+
+/// Waits for the process to end, for at most ten seconds.
+fn wait(server: &mut std::process::Child) -> std::process::ExitStatus {
+    for _ in 0..1000 {
+        if let Some(status) = server.try_wait().unwrap() {
+            return status;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    server.kill().unwrap();
+    panic!("the server did not end");
+}
+
+#[test]
+fn bad_frames_are_answered_and_the_server_keeps_serving() {
+    let (mut server, mut input, mut output) = start();
+    let error = |code: i64| json!({"jsonrpc": "2.0", "error": {"code": code, "message": if code == -32700 { "Parse error" } else { "Invalid request" }}, "id": null});
+    // Not JSON, JSON but no request, a missing length, a length that is no number (each
+    // bad header skipped to the next `Content-Length`).
+    for (bad, code) in [
+        (&b"Content-Length: 10\r\n\r\n{\"jsonrpc\""[..], -32700),
+        (b"Content-Length: 2\r\n\r\n{}", -32600),
+        (b"Content-Type: text/plain\r\n\r\n", -32700),
+        (b"Content-Length: 9x\r\n\r\n{\"jsonrpc\"", -32700),
+    ] {
+        input.write_all(bad).unwrap();
+        assert_eq!(
+            read_message(&mut output),
+            error(code),
+            "{}",
+            String::from_utf8_lossy(bad)
+        );
+    }
+    input.write_all(&frame(&json!({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}}))).unwrap();
+    assert_eq!(
+        read_message(&mut output)["result"]["serverInfo"]["name"],
+        "walls-lsp"
+    );
+    // The next frame read as part of a body too long: an error, then the frame.
+    let shutdown = frame(&json!({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}));
+    input.write_all(b"Content-Length: 30\r\n\r\n{").unwrap();
+    input.write_all(&shutdown).unwrap();
+    input.write_all(&shutdown).unwrap();
+    assert_eq!(read_message(&mut output), error(-32700));
+    assert_eq!(read_message(&mut output)["id"], 2);
+    // `exit` ends the server even if the client keeps its input open.
+    input
+        .write_all(&frame(&json!({"jsonrpc": "2.0", "method": "exit"})))
+        .unwrap();
+    assert!(wait(&mut server).success());
+    drop(input);
+}
+
+#[test]
+fn help_and_version_print_and_exit() {
+    let run = |arg: &str| {
+        Command::new(env!("CARGO_BIN_EXE_walls-lsp"))
+            .arg(arg)
+            .stdin(Stdio::null())
+            .output()
+            .unwrap()
+    };
+    let help = run("--help");
+    assert_eq!(help.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&help.stdout).contains("Usage: walls-lsp"));
+    let version = run("--version");
+    assert_eq!(version.status.code(), Some(0));
+    assert_eq!(
+        String::from_utf8_lossy(&version.stdout),
+        format!("walls-lsp {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    let unknown = run("--port=9");
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(unknown.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&unknown.stderr).contains("Usage: walls-lsp"));
+}
+
 #[test]
 fn neovim_shows_diagnostics_hovers_completes_formats() {
     let dir = tempfile::tempdir().unwrap();

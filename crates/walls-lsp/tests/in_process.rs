@@ -69,6 +69,23 @@ impl Client {
         }
     }
 
+    /// The text of the next `window/showMessage` notification.
+    async fn message(&mut self) -> String {
+        loop {
+            let message = self
+                .socket
+                .next()
+                .await
+                .expect("the server sends a message");
+            if message.method() == "window/showMessage" {
+                return message.params().unwrap()["message"]
+                    .as_str()
+                    .unwrap()
+                    .into();
+            }
+        }
+    }
+
     async fn open(&mut self, text: &str) -> Value {
         self.notify(
             "textDocument/didOpen",
@@ -430,4 +447,110 @@ async fn explains_codes_as_walls_lint_does() {
             .await,
         Value::Null
     );
+}
+
+#[tokio::test]
+async fn bad_settings_are_named_and_the_rest_applies() {
+    let mut c = Client::start(json!({"mode": "fast", "maxWalls": -3, "maxwalls": 30})).await;
+    assert_eq!(
+        c.message().await,
+        "walls: setting `maxWalls` is -3, not a whole number of at least 1: keeping 20; \
+         unknown setting `maxwalls` (= 30) ignored; the settings are `mode` and `maxWalls`; \
+         setting `mode` is \"fast\", not \"ssdem\" or \"hsdem\": keeping \"ssdem\"."
+    );
+    // With no document open, so that the test reads each notification as it comes.
+    c.notify(
+        "workspace/didChangeConfiguration",
+        json!({"settings": {"walls": {"mode": "hsdem", "maxWalls": "9", "server": {"path": "walls-lsp"}}}}),
+    )
+    .await;
+    assert_eq!(
+        c.message().await,
+        "walls: setting `maxWalls` is \"9\", not a whole number of at least 1: keeping 20."
+    );
+    // The good setting applies: hsdem wants each wall's `k_n`.
+    let published = c.open("wall type disk radius 1\n").await;
+    assert!(
+        codes(&published).iter().any(|c| c.starts_with('M')),
+        "{published}"
+    );
+}
+
+#[tokio::test]
+async fn a_broken_format_configuration_is_named_and_the_defaults_format() {
+    let dir = tempfile::tempdir().unwrap();
+    let config = dir.path().join(".walls-fmt.toml");
+    std::fs::write(&config, "indent_width = 4\nindent = 4\n").unwrap();
+    let uri = format!("file://{}/scene.walls", dir.path().display());
+    let mut c = Client::start(json!({})).await;
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "walls", "version": 1, "text": "wall type disk radius 1\n"}}),
+    )
+    .await;
+    c.diagnostics().await;
+    let edits = c
+        .request(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
+        )
+        .await;
+    assert_eq!(edits[0]["newText"], "wall type disk\n  radius 1\n");
+    let message = c.message().await;
+    assert!(
+        message.starts_with(&format!(
+            "walls: {}: 2:1: unknown field `indent`",
+            config.display()
+        )),
+        "{message}"
+    );
+    assert!(
+        message.ends_with("; formatting with the default options"),
+        "{message}"
+    );
+}
+
+#[tokio::test]
+async fn hover_and_diagnostics_agree_on_lines_with_lone_carriage_returns() {
+    let mut c = Client::start(json!({})).await;
+    // pkdgrav reads `\r` as a blank, editors (and LSP) as a line end: lines 0 to 2.
+    let text = "wall type disk\r  radius -1\r\n  epsn 2 k_n 1e5\n";
+    let published = c.open(text).await;
+    let ranges: Vec<_> = published["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| (d["code"].as_str().unwrap().to_string(), d["range"].clone()))
+        .collect();
+    let range = |line: u32, start: u32, end: u32| json!({"start": {"line": line, "character": start}, "end": {"line": line, "character": end}});
+    assert_eq!(
+        ranges,
+        [
+            ("C107".into(), range(1, 9, 11)),
+            ("C114".into(), range(2, 7, 8))
+        ]
+    );
+    // A hover where each diagnostic starts is about that diagnostic's statement.
+    for (_, r) in &ranges {
+        let hover = c
+            .request(
+                "textDocument/hover",
+                json!({"textDocument": {"uri": URI}, "position": r["start"]}),
+            )
+            .await;
+        let line = r["start"]["line"].as_u64().unwrap() as u32;
+        assert_eq!(
+            hover["range"],
+            range(line, 2, r["end"]["character"].as_u64().unwrap() as u32)
+        );
+    }
+    // The folds count the same lines.
+    let folds = c
+        .request(
+            "textDocument/foldingRange",
+            json!({"textDocument": {"uri": URI}}),
+        )
+        .await;
+    assert_eq!(folds[0]["startLine"], 0);
+    assert_eq!(folds[0]["endLine"], 2);
 }

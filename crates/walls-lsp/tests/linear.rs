@@ -1,0 +1,172 @@
+//! The server's time grows linearly with its input: each feature (diagnostics published
+//! after opening, semantic tokens, hover, formatting) is timed on a document and on one
+//! twice as large, and the larger may take less than three times as long (a quadratic
+//! feature takes four). Two documents: 100k diagnostics on as many lines, and one
+//! line of 10 MB with 100k tokens and diagnostics. The shortest of a few runs is taken,
+//! and times under 20 ms count as 20 ms, so that noise on a busy machine is no failure.
+//! These are the sizes of `cargo test --release -p walls-lsp --test linear`; a debug
+//! build runs a tenth of them (`WALLS_LINEAR_SCALE` sets the factor). The times are
+//! printed (`--nocapture`).
+
+use futures::StreamExt;
+use serde_json::{Value, json};
+use std::time::{Duration, Instant};
+use tower::{Service, ServiceExt};
+use tower_lsp_server::jsonrpc::Request;
+use tower_lsp_server::{ClientSocket, LspService};
+
+const URI: &str = "file:///linear/scene.walls";
+/// Times below this are noise: they count as this.
+const FLOOR: Duration = Duration::from_millis(20);
+
+async fn call(service: &mut LspService<walls_lsp::Backend>, req: Request) -> Option<Value> {
+    let response = service.ready().await.unwrap().call(req).await.unwrap()?;
+    response.into_parts().1.ok()
+}
+
+async fn request(
+    service: &mut LspService<walls_lsp::Backend>,
+    method: &'static str,
+    params: Value,
+) -> Value {
+    call(
+        service,
+        Request::build(method).params(params).id(1).finish(),
+    )
+    .await
+    .unwrap_or(Value::Null)
+}
+
+/// Seconds per feature on `text`: open to diagnostics, semantic tokens, hover at the
+/// end, formatting. Returns the number of diagnostics and tokens too.
+async fn times(text: &str) -> ([Duration; 4], usize, usize) {
+    let (mut service, mut socket): (_, ClientSocket) = walls_lsp::service();
+    request(&mut service, "initialize", json!({"capabilities": {}})).await;
+    let open = Request::build("textDocument/didOpen")
+        .params(json!({"textDocument": {"uri": URI, "languageId": "walls", "version": 1, "text": text}}))
+        .finish();
+    let start = Instant::now();
+    call(&mut service, open).await;
+    let published = loop {
+        let message = socket.next().await.unwrap();
+        if message.method() == "textDocument/publishDiagnostics" {
+            break message.params().cloned().unwrap();
+        }
+    };
+    let open = start.elapsed();
+    let diagnostics = published["diagnostics"].as_array().unwrap().len();
+    let doc = json!({"uri": URI});
+    let start = Instant::now();
+    let tokens = request(
+        &mut service,
+        "textDocument/semanticTokens/full",
+        json!({"textDocument": doc}),
+    )
+    .await;
+    let tokens_time = start.elapsed();
+    let tokens = tokens["data"].as_array().unwrap().len() / 5;
+    let last_line = text.lines().count() - 1;
+    let last_column = text.lines().last().unwrap().encode_utf16().count() - 1;
+    let start = Instant::now();
+    request(
+        &mut service,
+        "textDocument/hover",
+        json!({"textDocument": doc, "position": {"line": last_line, "character": last_column}}),
+    )
+    .await;
+    let hover = start.elapsed();
+    let start = Instant::now();
+    request(
+        &mut service,
+        "textDocument/formatting",
+        json!({"textDocument": doc, "options": {"tabSize": 2, "insertSpaces": true}}),
+    )
+    .await;
+    let format = start.elapsed();
+    ([open, tokens_time, hover, format], diagnostics, tokens)
+}
+
+/// The sizes' factor: `WALLS_LINEAR_SCALE`, else 1 in an optimised build and 0.1 in a
+/// debug build (whose checker takes some 20 s for 100k diagnostics).
+fn scale() -> f64 {
+    std::env::var("WALLS_LINEAR_SCALE")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(if cfg!(debug_assertions) { 0.1 } else { 1.0 })
+}
+
+/// Runs `document(n)` and `document(2n)` a few times and checks every feature.
+async fn grows_linearly(name: &str, n: usize, document: impl Fn(usize) -> String) {
+    let n = ((n as f64 * scale()) as usize).max(100);
+    let (small, large) = (document(n), document(2 * n));
+    let mut best = [[Duration::MAX; 4]; 2];
+    let mut counts = [(0, 0); 2];
+    for _ in 0..3 {
+        for (k, text) in [&small, &large].into_iter().enumerate() {
+            let (t, diagnostics, tokens) = times(text).await;
+            counts[k] = (diagnostics, tokens);
+            for (b, t) in best[k].iter_mut().zip(t) {
+                *b = (*b).min(t);
+            }
+        }
+    }
+    let features = [
+        "open → diagnostics",
+        "semantic tokens",
+        "hover",
+        "formatting",
+    ];
+    for k in 0..2 {
+        println!(
+            "{name} ({} bytes, {} diagnostics, {} tokens): {}",
+            [&small, &large][k].len(),
+            counts[k].0,
+            counts[k].1,
+            features
+                .iter()
+                .zip(best[k])
+                .map(|(f, t)| format!("{f} {t:.2?}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    assert!(counts[1].0 >= 2 * counts[0].0 - 2, "{counts:?}");
+    for (i, feature) in features.iter().enumerate() {
+        let (a, b) = (best[0][i].max(FLOOR), best[1][i].max(FLOOR));
+        assert!(
+            b < a * 3,
+            "{name}: {feature} takes {b:?} on twice the input of {a:?}: not linear"
+        );
+    }
+}
+
+/// `n` lines, each an unknown word: `n` diagnostics.
+fn many_lines(n: usize) -> String {
+    let mut text = String::from("wall type plane\n");
+    for i in 0..n {
+        text.push_str(&format!("  raduis{i} 1\n"));
+    }
+    text
+}
+
+/// One line of `n` unknown words and `n` numbers (`n` diagnostics, `2n` tokens), with a
+/// non-ASCII character every so often, as long as `n` makes it (about 100 bytes each: 10 MB for 100k).
+fn one_long_line(n: usize) -> String {
+    let mut text = String::from("wall type plane ");
+    for i in 0..n {
+        let word = if i % 64 == 0 { "µ" } else { "x" };
+        text.push_str(&format!("{word}{i} 1.{i:0>90} "));
+    }
+    text.push('\n');
+    text
+}
+
+#[tokio::test]
+async fn a_hundred_thousand_diagnostics() {
+    grows_linearly("many lines", 50_000, many_lines).await;
+}
+
+#[tokio::test]
+async fn a_ten_megabyte_line() {
+    grows_linearly("one long line", 50_000, one_long_line).await;
+}
