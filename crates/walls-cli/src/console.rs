@@ -39,7 +39,12 @@ pub fn err(args: Arguments<'_>) {
 /// Whether to colour output to a stream that is (or is not) a terminal: on a terminal,
 /// unless `NO_COLOR` is set to a non-empty value.
 pub fn color(is_terminal: bool) -> bool {
-    is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+    color_with(is_terminal, std::env::var_os("NO_COLOR").as_deref())
+}
+
+/// [`color`] with the value of `NO_COLOR` given.
+fn color_with(is_terminal: bool, no_color: Option<&std::ffi::OsStr>) -> bool {
+    is_terminal && no_color.is_none_or(|v| v.is_empty())
 }
 
 /// [`color`] for standard error, where the tools write diagnostics.
@@ -64,4 +69,18 @@ macro_rules! out {
 #[macro_export]
 macro_rules! errln {
     ($($arg:tt)*) => { $crate::console::err(format_args!("{}\n", format_args!($($arg)*))) };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::color_with;
+    use std::ffi::OsStr;
+
+    #[test]
+    fn only_a_non_empty_no_color_turns_colour_off() {
+        assert!(color_with(true, None));
+        assert!(color_with(true, Some(OsStr::new(""))), "NO_COLOR= (empty) keeps colour");
+        assert!(!color_with(true, Some(OsStr::new("1"))));
+        assert!(!color_with(false, None), "no colour off a terminal");
+    }
 }
