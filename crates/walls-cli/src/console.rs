@@ -79,7 +79,10 @@ mod tests {
     #[test]
     fn only_a_non_empty_no_color_turns_colour_off() {
         assert!(color_with(true, None));
-        assert!(color_with(true, Some(OsStr::new(""))), "NO_COLOR= (empty) keeps colour");
+        assert!(
+            color_with(true, Some(OsStr::new(""))),
+            "NO_COLOR= (empty) keeps colour"
+        );
         assert!(!color_with(true, Some(OsStr::new("1"))));
         assert!(!color_with(false, None), "no colour off a terminal");
     }
