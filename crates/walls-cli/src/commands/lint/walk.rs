@@ -37,9 +37,7 @@ pub(super) fn expand(
     let mut seen = HashSet::new();
     for path in paths {
         if path == "-" || !Path::new(path).is_dir() {
-            if seen.insert(PathBuf::from(path)) {
-                targets.files.push(path.clone());
-            }
+            add(PathBuf::from(path), &mut seen, &mut targets);
             continue;
         }
         let before = targets.files.len();
@@ -120,7 +118,8 @@ fn walk(
     Ok(())
 }
 
-/// Adds `path` unless it is already in.
+/// Adds `path` unless it is already in, by any name (`a.walls`, `./a.walls`, a symbolic
+/// link, or found again in a folder named).
 fn add(path: PathBuf, seen: &mut HashSet<PathBuf>, targets: &mut Targets) {
     let key = std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone());
     if seen.insert(key) {
