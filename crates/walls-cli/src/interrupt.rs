@@ -12,7 +12,7 @@
 //! * otherwise ([`install`]) the process exits with status 128 + the signal's number, as
 //!   a shell reports a process the signal killed.
 
-use std::collections::HashSet;
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, MutexGuard, Once};
@@ -20,7 +20,7 @@ use std::sync::{Mutex, MutexGuard, Once};
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use signal_hook::iterator::Signals;
 
-static TEMP: Mutex<Option<HashSet<PathBuf>>> = Mutex::new(None);
+static TEMP: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
 static STOP: AtomicBool = AtomicBool::new(false);
 static GRACEFUL: AtomicBool = AtomicBool::new(false);
 static INSTALLED: Once = Once::new();
@@ -35,7 +35,7 @@ pub fn install() {
         };
         std::thread::spawn(move || {
             for signal in signals.forever() {
-                for path in temp().iter().flatten() {
+                for path in temp().iter() {
                     let _ = std::fs::remove_file(path);
                 }
                 if GRACEFUL.load(Ordering::SeqCst) && !STOP.swap(true, Ordering::SeqCst) {
@@ -59,7 +59,7 @@ pub fn stop_requested() -> bool {
     STOP.load(Ordering::Relaxed)
 }
 
-fn temp() -> MutexGuard<'static, Option<HashSet<PathBuf>>> {
+fn temp() -> MutexGuard<'static, BTreeSet<PathBuf>> {
     TEMP.lock().unwrap_or_else(|e| e.into_inner())
 }
 
@@ -71,9 +71,7 @@ pub struct Registration {
 
 /// Registers `path` for removal when a signal comes.
 pub fn remove_on_signal(path: &Path) -> Registration {
-    temp()
-        .get_or_insert_with(HashSet::new)
-        .insert(path.to_path_buf());
+    temp().insert(path.to_path_buf());
     Registration {
         path: path.to_path_buf(),
     }
@@ -81,8 +79,6 @@ pub fn remove_on_signal(path: &Path) -> Registration {
 
 impl Drop for Registration {
     fn drop(&mut self) {
-        if let Some(set) = temp().as_mut() {
-            set.remove(&self.path);
-        }
+        temp().remove(&self.path);
     }
 }
