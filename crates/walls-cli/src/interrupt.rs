@@ -3,14 +3,14 @@
 //! A thread waits for the signals (signal-hook's iterator; no code runs in the signal
 //! handler itself). When one comes:
 //!
-//! * files registered with [`remove_on_signal`] (temporary files a command writes before
-//!   renaming them into place) are removed, whatever the command is doing;
 //! * a command that can stop cleanly (a run writing its outputs) has called
 //!   [`install_graceful`]: the first signal only sets the flag it polls with
 //!   [`stop_requested`], so that it finishes the rows it is writing and exits with status
-//!   1; a second signal exits at once;
-//! * otherwise ([`install`]) the process exits with status 128 + the signal's number, as
-//!   a shell reports a process the signal killed.
+//!   1; a second signal exits at once, as below;
+//! * otherwise ([`install`]) the files registered with [`remove_on_signal`] (temporary
+//!   files a command writes before renaming them into place) are removed, whatever the
+//!   command is doing, and the process exits with status 128 + the signal's number, as a
+//!   shell reports a process the signal killed.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -35,11 +35,11 @@ pub fn install() {
         };
         std::thread::spawn(move || {
             for signal in signals.forever() {
-                for path in temp().iter() {
-                    let _ = std::fs::remove_file(path);
-                }
                 if GRACEFUL.load(Ordering::SeqCst) && !STOP.swap(true, Ordering::SeqCst) {
                     continue;
+                }
+                for path in temp().iter() {
+                    let _ = std::fs::remove_file(path);
                 }
                 std::process::exit(128 + signal);
             }
