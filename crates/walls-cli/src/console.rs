@@ -8,7 +8,7 @@
 //! * a failed write to standard error is dropped: the warning is lost, the command goes on
 //!   and still writes its results.
 //!
-//! [`color`] decides whether to colour a stream, following <https://no-color.org>: only a
+//! [`color_stderr`] decides whether to colour standard error, following <https://no-color.org>: only a
 //! non-empty `NO_COLOR` turns colour off.
 
 use std::fmt::Arguments;
@@ -36,20 +36,18 @@ pub fn err(args: Arguments<'_>) {
     let _ = std::io::stderr().lock().write_fmt(args);
 }
 
-/// Whether to colour output to a stream that is (or is not) a terminal: on a terminal,
+/// Whether to colour standard error, where the tools write diagnostics: on a terminal,
 /// unless `NO_COLOR` is set to a non-empty value.
-pub fn color(is_terminal: bool) -> bool {
-    color_with(is_terminal, std::env::var_os("NO_COLOR").as_deref())
+pub fn color_stderr() -> bool {
+    color_with(
+        std::io::stderr().is_terminal(),
+        std::env::var_os("NO_COLOR").as_deref(),
+    )
 }
 
-/// [`color`] with the value of `NO_COLOR` given.
+/// Whether to colour a stream that is (or is not) a terminal, given `NO_COLOR`'s value.
 fn color_with(is_terminal: bool, no_color: Option<&std::ffi::OsStr>) -> bool {
     is_terminal && no_color.is_none_or(|v| v.is_empty())
-}
-
-/// [`color`] for standard error, where the tools write diagnostics.
-pub fn color_stderr() -> bool {
-    color(std::io::stderr().is_terminal())
 }
 
 /// `println!` that never panics: see [`out`].

@@ -3,16 +3,16 @@
 //! A thread waits for the signals (signal-hook's iterator; no code runs in the signal
 //! handler itself). When one comes:
 //!
-//! * files registered with [`remove_on_signal`] (temporary files a command writes before
-//!   renaming them into place) are removed, whatever the command is doing;
 //! * a command that can stop cleanly (a run writing its outputs) has called
 //!   [`install_graceful`]: the first signal only sets the flag it polls with
 //!   [`stop_requested`], so that it finishes the rows it is writing and exits with status
-//!   1; a second signal exits at once;
-//! * otherwise ([`install`]) the process exits with status 128 + the signal's number, as
-//!   a shell reports a process the signal killed.
+//!   1; a second signal exits at once, as below;
+//! * otherwise ([`install`]) the files registered with [`remove_on_signal`] (temporary
+//!   files a command writes before renaming them into place) are removed, whatever the
+//!   command is doing, and the process exits with status 128 + the signal's number, as a
+//!   shell reports a process the signal killed.
 
-use std::collections::HashSet;
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, MutexGuard, Once};
@@ -20,7 +20,7 @@ use std::sync::{Mutex, MutexGuard, Once};
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use signal_hook::iterator::Signals;
 
-static TEMP: Mutex<Option<HashSet<PathBuf>>> = Mutex::new(None);
+static TEMP: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
 static STOP: AtomicBool = AtomicBool::new(false);
 static GRACEFUL: AtomicBool = AtomicBool::new(false);
 static INSTALLED: Once = Once::new();
@@ -35,11 +35,11 @@ pub fn install() {
         };
         std::thread::spawn(move || {
             for signal in signals.forever() {
-                for path in temp().iter().flatten() {
-                    let _ = std::fs::remove_file(path);
-                }
                 if GRACEFUL.load(Ordering::SeqCst) && !STOP.swap(true, Ordering::SeqCst) {
                     continue;
+                }
+                for path in temp().iter() {
+                    let _ = std::fs::remove_file(path);
                 }
                 std::process::exit(128 + signal);
             }
@@ -59,7 +59,7 @@ pub fn stop_requested() -> bool {
     STOP.load(Ordering::Relaxed)
 }
 
-fn temp() -> MutexGuard<'static, Option<HashSet<PathBuf>>> {
+fn temp() -> MutexGuard<'static, BTreeSet<PathBuf>> {
     TEMP.lock().unwrap_or_else(|e| e.into_inner())
 }
 
@@ -71,9 +71,7 @@ pub struct Registration {
 
 /// Registers `path` for removal when a signal comes.
 pub fn remove_on_signal(path: &Path) -> Registration {
-    temp()
-        .get_or_insert_with(HashSet::new)
-        .insert(path.to_path_buf());
+    temp().insert(path.to_path_buf());
     Registration {
         path: path.to_path_buf(),
     }
@@ -81,8 +79,6 @@ pub fn remove_on_signal(path: &Path) -> Registration {
 
 impl Drop for Registration {
     fn drop(&mut self) {
-        if let Some(set) = temp().as_mut() {
-            set.remove(&self.path);
-        }
+        temp().remove(&self.path);
     }
 }

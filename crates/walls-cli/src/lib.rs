@@ -1,6 +1,7 @@
 //! Shared pieces of the walls command-line tools: printing that never panics
-//! ([`console`]), Ctrl-C without leftovers ([`interrupt`]), reading inputs (files or standard input), a run's outputs as a movie's frames ([`movie`]) and the contact model that
-//! `--mode` takes. The whole check of one file and the registry of diagnostic codes that
+//! ([`console`]), Ctrl-C without leftovers ([`interrupt`]), reading inputs (files or
+//! standard input), a run's outputs as a movie's frames ([`movie`]) and the contact model
+//! that `--mode` takes. The whole check of one file and the registry of diagnostic codes that
 //! `--explain` and SARIF read are `walls-ide`'s, re-exported here for the tools.
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]

@@ -22,12 +22,22 @@ const CLEAN: &str = "wall type plane\n  origin 0 0 1\n";
 const NOBODY: u32 = 65534;
 
 fn walls_fmt(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
+    walls_fmt_fed(dir, args, b"")
+}
+
+/// `walls-fmt ARGS` in `dir`, with `stdin` piped to it.
+fn walls_fmt_fed(dir: &Path, args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
         .args(args)
         .current_dir(dir)
         .env_remove("NO_COLOR")
-        .output()
-        .unwrap()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin).unwrap();
+    child.wait_with_output().unwrap()
 }
 
 fn stderr(out: &Output) -> String {
@@ -199,21 +209,9 @@ fn a_pipe_is_read_but_not_replaced() {
             "would reformat /dev/stdin\n1 file would be reformatted, 0 unchanged\n",
         ),
     ] {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
-            .args(flag)
-            .arg("/dev/stdin")
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
-        child
-            .stdin
-            .take()
-            .unwrap()
-            .write_all(MESSY.as_bytes())
-            .unwrap();
-        let out = child.wait_with_output().unwrap();
+        let dir = tempfile::tempdir().unwrap();
+        let args: Vec<&str> = flag.into_iter().chain(["/dev/stdin"]).collect();
+        let out = walls_fmt_fed(dir.path(), &args, MESSY.as_bytes());
         assert_eq!(out.status.code(), Some(code), "{flag:?}");
         assert_eq!(stderr(&out), message);
     }
@@ -312,48 +310,43 @@ fn big_messy(path: &Path, lines: usize) {
     write(path, &block.repeat(lines / 3), 0o644);
 }
 
-#[test]
-fn killed_mid_write_leaves_the_original_and_no_temporary_file() {
-    // A file-size limit of 64 KiB kills walls-fmt (SIGXFSZ, which it does not handle, like
-    // SIGKILL) while it writes the new text.
+/// Runs walls-fmt on a big file that formatting changes under a 64 KiB file-size limit
+/// (`ulimit -f 64`, after the shell's `setup`), and checks that the original and its
+/// folder are as they were.
+fn fmt_past_a_file_size_limit(setup: &str) -> Output {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("big.walls");
     big_messy(&path, 30_000);
     let before = std::fs::read(&path).unwrap();
     let out = Command::new("sh")
         .arg("-c")
-        .arg("ulimit -f 64 && exec \"$0\" big.walls")
+        .arg(format!("{setup}ulimit -f 64 && exec \"$0\" big.walls"))
         .arg(env!("CARGO_BIN_EXE_walls-fmt"))
         .current_dir(dir.path())
         .output()
         .unwrap();
+    assert_eq!(std::fs::read(&path).unwrap(), before, "{out:?}");
+    assert_eq!(names(dir.path()), ["big.walls"], "{out:?}");
+    out
+}
+
+#[test]
+fn killed_mid_write_leaves_the_original_and_no_temporary_file() {
+    // SIGXFSZ, which walls-fmt does not handle, kills it like SIGKILL while it writes.
+    let out = fmt_past_a_file_size_limit("");
     assert_eq!(out.status.signal(), Some(25), "SIGXFSZ: {out:?}");
-    assert_eq!(std::fs::read(&path).unwrap(), before);
-    assert_eq!(names(dir.path()), ["big.walls"]);
 }
 
 #[test]
 fn a_full_disk_leaves_the_original() {
     // With SIGXFSZ ignored, writing past the limit fails as on a full disk (EFBIG).
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("big.walls");
-    big_messy(&path, 30_000);
-    let before = std::fs::read(&path).unwrap();
-    let out = Command::new("sh")
-        .arg("-c")
-        .arg("trap '' XFSZ && ulimit -f 64 && exec \"$0\" big.walls")
-        .arg(env!("CARGO_BIN_EXE_walls-fmt"))
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let out = fmt_past_a_file_size_limit("trap '' XFSZ && ");
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         stderr(&out),
         "walls-fmt: error: cannot write big.walls: File too large (os error 27)\n\
          0 files reformatted, 0 unchanged, 1 not written\n"
     );
-    assert_eq!(std::fs::read(&path).unwrap(), before);
-    assert_eq!(names(dir.path()), ["big.walls"]);
 }
 
 /// The variable that makes [`a_signal_while_writing_removes_the_temporary_file`] the

@@ -14,7 +14,7 @@ use crate::input;
 use clap::Parser;
 use rayon::prelude::*;
 use std::collections::HashSet;
-use std::io::{Read, Write};
+use std::io::Write;
 use std::os::unix::fs::MetadataExt;
 use std::path::Path;
 use std::process::ExitCode;
@@ -191,13 +191,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
         Err(e) => return Outcome::Unreadable(e.to_string()),
     };
     let read = if stdin {
-        let mut bytes = Vec::new();
-        std::io::stdin()
-            .lock()
-            .take(input::MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map(|_| (None, bytes))
-            .map_err(|e| format!("cannot read standard input: {e}"))
+        input::read(path).bytes.map(|b| (None, b))
     } else {
         safe_write::read(Path::new(path), input::MAX_FILE_BYTES).map(|(o, b)| (Some(o), b))
     };

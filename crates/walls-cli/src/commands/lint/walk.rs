@@ -26,6 +26,17 @@ pub(super) struct Targets {
     pub errors: Vec<(String, String)>,
 }
 
+impl Targets {
+    /// Adds an error, unless a folder named twice (or inside another named) found it
+    /// already.
+    fn error(&mut self, path: String, error: String) {
+        let error = (path, error);
+        if !self.errors.contains(&error) {
+            self.errors.push(error);
+        }
+    }
+}
+
 /// Expands `paths`: files stay as given, folders become the walls files in them.
 /// An invalid glob is a usage error.
 pub(super) fn expand(
@@ -37,38 +48,35 @@ pub(super) fn expand(
     let mut seen = HashSet::new();
     for path in paths {
         if path == "-" || !Path::new(path).is_dir() {
-            if seen.insert(PathBuf::from(path)) {
-                targets.files.push(path.clone());
-            }
+            add(PathBuf::from(path), &mut seen, &mut targets);
             continue;
         }
-        let before = targets.files.len();
-        walk(Path::new(path), include, exclude, &mut seen, &mut targets)?;
-        if targets.files.len() == before {
+        if walk(Path::new(path), include, exclude, &mut seen, &mut targets)? == 0 {
             let globs = if include.is_empty() {
                 DEFAULT_INCLUDE.to_string()
             } else {
                 include.join(", ")
             };
-            targets.errors.push((
+            targets.error(
                 path.clone(),
                 format!(
                     "{path}: no walls file in this folder (no file matching {globs}, and no .par naming one)"
                 ),
-            ));
+            );
         }
     }
     Ok(targets)
 }
 
-/// Adds the walls files under `root` to `targets`.
+/// Adds the walls files under `root` to `targets`; how many it found, counting those
+/// already in (a folder named twice has them still).
 fn walk(
     root: &Path,
     include: &[String],
     exclude: &[String],
     seen: &mut HashSet<PathBuf>,
     targets: &mut Targets,
-) -> Result<(), String> {
+) -> Result<usize, String> {
     let defaults = [DEFAULT_INCLUDE.to_string()];
     let include = if include.is_empty() {
         &defaults[..]
@@ -83,13 +91,12 @@ fn walk(
         .require_git(false)
         .sort_by_file_name(|a, b| a.cmp(b))
         .build();
+    let mut found = 0;
     for entry in walker {
         let entry = match entry {
             Ok(entry) => entry,
             Err(e) => {
-                targets
-                    .errors
-                    .push((root.display().to_string(), e.to_string()));
+                targets.error(root.display().to_string(), e.to_string());
                 continue;
             }
         };
@@ -100,27 +107,32 @@ fn walk(
         let path = entry.path().strip_prefix(".").unwrap_or(entry.path());
         if includes.matched(path, false).is_whitelist() {
             add(path.to_path_buf(), seen, targets);
+            found += 1;
         }
         if path.extension().is_some_and(|e| e == "par") {
             let shown = path.display().to_string();
             match named_walls_file(path) {
-                Ok(Some(walls)) if walls.is_file() => add(walls, seen, targets),
+                Ok(Some(walls)) if walls.is_file() => {
+                    add(walls, seen, targets);
+                    found += 1;
+                }
                 Ok(Some(walls)) => {
                     let e = format!(
                         "{shown}: names the walls file {}, which does not exist",
                         walls.display()
                     );
-                    targets.errors.push((shown, e));
+                    targets.error(shown, e);
                 }
                 Ok(None) => {}
-                Err(e) => targets.errors.push((shown, e)),
+                Err(e) => targets.error(shown, e),
             }
         }
     }
-    Ok(())
+    Ok(found)
 }
 
-/// Adds `path` unless it is already in.
+/// Adds `path` unless it is already in, by any name (`a.walls`, `./a.walls`, a symbolic
+/// link, or found again in a folder named).
 fn add(path: PathBuf, seen: &mut HashSet<PathBuf>, targets: &mut Targets) {
     let key = std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone());
     if seen.insert(key) {
@@ -148,4 +160,62 @@ fn named_walls_file(par: &Path) -> Result<Option<PathBuf>, String> {
     Ok(params
         .walls_file
         .map(|name| par.parent().unwrap_or(Path::new("")).join(name)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::expand;
+    use std::path::Path;
+
+    fn write(root: &Path, name: &str, text: &str) {
+        let path = root.join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, text).unwrap();
+    }
+
+    #[test]
+    fn a_tree_gives_its_walls_files_once_in_name_order() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        for name in [
+            "a.walls",
+            "ignored.walls",
+            ".hidden/h.walls",
+            "sub/b.walls",
+            "sub/old/c.walls",
+            "scene.dat",
+        ] {
+            write(root, name, "wall type plane\n");
+        }
+        write(root, ".gitignore", "ignored.walls\n");
+        write(root, "sub/run.par", "achWallsFile = ../scene.dat\n");
+        write(root, "z/missing.par", "achWallsFile = gone.walls\n");
+        let r = root.display();
+        let named = format!("{r}/scene.dat");
+        let targets = expand(
+            &[
+                named.clone(),
+                r.to_string(),
+                r.to_string(),
+                format!("{r}/sub"),
+            ],
+            &[],
+            &["old".to_string()],
+        )
+        .unwrap();
+        // scene.dat is named first, so the .par naming it adds nothing; the folder named
+        // again, and the one inside it, add nothing and are not "folders with no walls file".
+        assert_eq!(
+            targets.files,
+            [named, format!("{r}/a.walls"), format!("{r}/sub/b.walls")]
+        );
+        let par = format!("{r}/z/missing.par");
+        assert_eq!(
+            targets.errors,
+            [(
+                par.clone(),
+                format!("{par}: names the walls file {r}/z/gone.walls, which does not exist")
+            )]
+        );
+    }
 }
