@@ -298,12 +298,19 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
     assert!(stdout.contains("\"stopped\": \"interrupted\""), "{stdout}");
     assert!(stderr.contains("the run stopped early"), "{stderr}");
     assert!(stderr.contains(": interrupted"), "{stderr}");
-    assert!(stderr.contains("end at t = "), "{stderr}");
     assert!(
         stderr.contains("particles.csv") && stderr.contains("walls.csv"),
         "{stderr}"
     );
     assert!(whole_rows(&csv, 15) > 100);
+    // The step the message names is the last row's.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let last_row = text.lines().last().unwrap();
+    let step = last_row.split(',').next().unwrap();
+    assert!(
+        stderr.contains(&format!("end at their last output, step {step} (t = ")),
+        "{stderr}\nlast row: {last_row}"
+    );
     whole_rows(&dir.path().join("out/walls.csv"), 6);
 }
 

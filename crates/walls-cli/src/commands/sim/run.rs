@@ -309,6 +309,8 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         None => settings.end_step().saturating_sub(first),
     });
     let mut written: std::io::Result<()> = Ok(());
+    // The step and time of the last output written: where the outputs end.
+    let mut last_output = (first, settings.t_start());
     if let Some(out) = &mut trajectory {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
         written = out.record(first, settings.t_start(), &start, scene, &[]);
@@ -337,25 +339,20 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
             if let Some(bar) = &progress {
                 bar.set_position(step - first);
             }
-            if let Some(out) = &mut reactive_files
-                && output(step)
-                && written.is_ok()
-            {
-                written = out.record_assemblies(step, scene, assemblies);
+            if !output(step) || written.is_err() {
+                return;
             }
-            if let Some(out) = &mut trajectory
-                && output(step)
-                && written.is_ok()
-            {
-                written = out.record(step, t, states, scene, assemblies);
-            }
-            if let Some(dir) = &args.out
-                && args.ss_output
-                && output(step)
-                && written.is_ok()
-            {
-                written = write_ss(dir, &ss_name, step, t, states);
-            }
+            written = (reactive_files.as_mut())
+                .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
+                .and_then(|()| {
+                    (trajectory.as_mut())
+                        .map_or(Ok(()), |out| out.record(step, t, states, scene, assemblies))
+                })
+                .and_then(|()| match &args.out {
+                    Some(dir) if args.ss_output => write_ss(dir, &ss_name, step, t, states),
+                    _ => Ok(()),
+                });
+            last_output = (step, t);
         },
         &crate::interrupt::stop_requested,
     );
@@ -404,15 +401,17 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     let Some(why) = outcome.stopped else {
         return Ok(exit_status(errors));
     };
-    let end = readout.time(outcome.t);
     crate::errln!(
-        "walls-sim: error: the run stopped early, after step {} (t = {end}): {why}",
+        "walls-sim: error: the run stopped early, after step {} (t = {}): {why}",
         first + outcome.steps,
+        readout.time(outcome.t),
     );
     if let Some(dir) = &args.out {
+        let (step, t) = last_output;
         crate::errln!(
-            "walls-sim: the outputs in {} end at t = {end}, in whole rows: {}",
+            "walls-sim: the outputs in {} end at their last output, step {step} (t = {}), in whole rows: {}",
             dir.display(),
+            readout.time(t),
             output_files(dir, args.ss_output, reactive).join(", ")
         );
     }
@@ -422,23 +421,15 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
 /// The output files a run with `--out dir` writes: the trajectory's, the `.ss` outputs
 /// (as a pattern) and pkdgrav's reactive-wall files.
 fn output_files(dir: &std::path::Path, ss: bool, reactive: bool) -> Vec<String> {
-    let mut names = vec!["particles.csv", "walls.csv"];
+    let path = |name: &str| dir.join(name).display().to_string();
+    let mut names = vec![path("particles.csv"), path("walls.csv")];
     if ss {
-        names.push("the .ss outputs");
+        names.push("the .ss outputs".to_string());
     }
     if reactive {
-        names.extend(["WALLSREACTdata.out", "WALLSREACTviz.out"]);
+        names.extend([path("WALLSREACTdata.out"), path("WALLSREACTviz.out")]);
     }
     names
-        .into_iter()
-        .map(|n| {
-            if n.starts_with("the ") {
-                n.to_string()
-            } else {
-                dir.join(n).display().to_string()
-            }
-        })
-        .collect()
 }
 
 /// pkdgrav's output after `step`: the living particles, in input order, as pkdgrav
