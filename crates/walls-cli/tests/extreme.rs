@@ -348,6 +348,40 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
 }
 
 #[test]
+fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    // Every write to walls.csv fails, as on a full disk.
+    std::os::unix::fs::symlink("/dev/full", out.join("walls.csv")).unwrap();
+    let mut child = long_run(dir.path())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        // Rather than computing its 50 million steps for nothing.
+        assert!(start.elapsed() < LIMIT, "the run went on");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let mut stderr = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    assert_eq!(child.wait().unwrap().code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("cannot write the outputs to out: No space left on device")
+            && stderr.contains("they end at their last whole row"),
+        "{stderr}"
+    );
+    assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
+}
+
+#[test]
 fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out");
