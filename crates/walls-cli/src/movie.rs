@@ -5,6 +5,7 @@
 //! `WALLSREACTviz.out` by step.
 
 use nalgebra::Vector3;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use walls_geometry::Particle;
 use walls_model::Scene;
@@ -143,49 +144,46 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
     out
 }
 
-/// The steps of a `WALLSREACTviz.out`: each line's step label and its walls'
-/// placements, in file order.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// The steps of a `WALLSREACTviz.out`: its walls' placements by step label (a label on
+/// more than one line, as in a file a later run appended to, keeps its last line), and
+/// the last line's label.
+#[derive(Debug, Clone, PartialEq)]
 pub struct VizSteps {
-    steps: Vec<(u64, Vec<Placement>)>,
+    steps: BTreeMap<u64, Vec<Placement>>,
+    last: u64,
 }
 
 impl VizSteps {
     /// Reads the text of a `WALLSREACTviz.out`; the error says the line that is not a
     /// viz line.
     pub fn parse(text: &str) -> Result<VizSteps, String> {
-        let mut steps = Vec::new();
+        let mut steps = BTreeMap::new();
+        let mut last = None;
         for (n, line) in text.lines().enumerate() {
             if line.trim().is_empty() {
                 continue;
             }
             let (step, walls) = parse_viz_line(line)
                 .ok_or_else(|| format!("line {}: not a {VIZ_FILE} line", n + 1))?;
-            steps.push((step, walls.into_iter().map(placement).collect()));
+            steps.insert(step, walls.into_iter().map(placement).collect());
+            last = Some(step);
         }
-        if steps.is_empty() {
-            return Err("no steps".into());
-        }
-        Ok(VizSteps { steps })
+        let last = last.ok_or("no steps")?;
+        Ok(VizSteps { steps, last })
     }
 
     /// The placements of the last line.
     pub fn last(&self) -> &[Placement] {
-        self.steps.last().map_or(&[], |(_, p)| p)
+        &self.steps[&self.last]
     }
 
     /// The placements for `step`: the line labelled `step`, whether exactly; else the
-    /// last line whose label is at or before it (none when every label is after).
+    /// last line with the greatest label before it (none when every label is after).
     pub fn at(&self, step: u64) -> (Option<&[Placement]>, bool) {
-        if let Some((_, p)) = self.steps.iter().rev().find(|(s, _)| *s == step) {
-            return (Some(p), true);
+        match self.steps.range(..=step).next_back() {
+            Some((&s, p)) => (Some(p), s == step),
+            None => (None, false),
         }
-        let before = self
-            .steps
-            .iter()
-            .filter(|(s, _)| *s <= step)
-            .max_by_key(|(s, _)| *s);
-        (before.map(|(_, p)| p.as_slice()), false)
     }
 }
 
@@ -369,6 +367,24 @@ mod tests {
         let warning = warning.unwrap();
         assert!(warning.starts_with("1 frame(s)"), "{warning}");
         assert!(warning.contains("step 150"), "{warning}");
+        // A file a second run appended to: a label's last line places it.
+        let z_of = |placed: Option<&[Placement]>| match placed {
+            Some([Placement::Round { origin, .. }]) => Some(origin.z),
+            _ => None,
+        };
+        let appended = VizSteps::parse(&(text + &viz_line(0, &[at(3.0)]))).unwrap();
+        assert_eq!(z_of(Some(appended.last())), Some(3.0));
+        assert_eq!(appended.at(0), (Some(appended.last()), true));
+        assert_eq!(
+            (z_of(appended.at(50).0), appended.at(50).1),
+            (Some(3.0), false)
+        );
+        assert_eq!(
+            (z_of(appended.at(100).0), appended.at(100).1),
+            (Some(2.0), true)
+        );
+        let later = VizSteps::parse(&viz_line(10, &[at(1.0)])).unwrap();
+        assert_eq!(later.at(5), (None, false));
         assert_eq!(
             VizSteps::parse("0 1 2\nnot a line\n"),
             Err(format!("line 1: not a {VIZ_FILE} line"))

@@ -2,7 +2,9 @@
 //! in place, walls-sim scene/run/plan/advise/preview) over a table of extreme values in
 //! walls files, particle files and options (1e-300, 1e300, 1e308, -1e308, 1e-400, 1e999,
 //! nan, inf, -0, 0, huge counts, empty files), each killed after a time limit: the exit
-//! status must be 0, 1 or 2 and standard error must not say "panicked". Then the
+//! status must be 0, 1 or 2 and standard error must not say "panicked"; a number no
+//! double holds (1e-400, 1e999, nan, inf) in a particle file, an option or a `.par`
+//! file's real must be refused with exit 2 and an error naming it where it is. Then the
 //! interrupt of a run writing its outputs (whole rows, exit 1, `"stopped":
 //! "interrupted"`), and a run with its standard streams closed.
 
@@ -69,9 +71,17 @@ fn run_in(dir: &Path, args: &[String]) -> Result<(i32, String), String> {
     Ok((status.code().unwrap_or(-1), text))
 }
 
-/// A row of the table: the command line (the binary first) and the files it needs,
-/// each a name and its bytes.
-type Row = (Vec<String>, Vec<(&'static str, Vec<u8>)>);
+/// A row of the table: the command line (the binary first), the files it needs, each a
+/// name and its bytes, and, when the row must be refused, what standard error must say.
+type Row = (Vec<String>, Vec<(&'static str, Vec<u8>)>, Option<String>);
+
+/// The values no double holds: a run must refuse them (exit 2) and say where they are.
+const UNREADABLE: [&str; 4] = ["1e-400", "1e999", "nan", "inf"];
+
+/// `says` when `v` is [`UNREADABLE`].
+fn refused(v: &str, says: impl FnOnce() -> String) -> Option<String> {
+    UNREADABLE.contains(&v).then(says)
+}
 
 /// Every row of the table.
 fn table() -> Vec<Row> {
@@ -99,26 +109,28 @@ fn table() -> Vec<Row> {
         for v in VALUES {
             let text = template.replace("{v}", v).into_bytes();
             for cmd in walls_commands {
-                rows.push((s(cmd), vec![("w.walls", text.clone())]));
+                rows.push((s(cmd), vec![("w.walls", text.clone())], None));
             }
         }
     }
     for cmd in walls_commands {
-        rows.push((s(cmd), vec![("w.walls", Vec::new())]));
+        rows.push((s(cmd), vec![("w.walls", Vec::new())], None));
     }
     let particle_commands = [
         "walls-sim run w.walls --particles p.csv --t-end 0.01 --max-steps 20000",
         "walls-sim preview w.walls --particles p.csv --out x.svg",
     ];
-    for column in 0..8 {
+    let columns = ["mass", "radius", "x", "y", "z", "vx", "vy", "vz"];
+    for (column, name) in columns.iter().enumerate() {
         for v in VALUES {
             let mut row = ["1", "0.1", "0", "0", "0.3", "0", "0", "-2"];
             row[column] = v;
-            let text = format!("mass,radius,x,y,z,vx,vy,vz\n{}\n", row.join(",")).into_bytes();
+            let text = format!("{}\n{}\n", columns.join(","), row.join(",")).into_bytes();
             for cmd in particle_commands {
                 rows.push((
                     s(cmd),
                     vec![("w.walls", floor.clone()), ("p.csv", text.clone())],
+                    refused(v, || format!("error: p.csv: line 2: `{name}` is `{v}`, ")),
                 ));
             }
         }
@@ -132,6 +144,7 @@ fn table() -> Vec<Row> {
             rows.push((
                 s(cmd),
                 vec![("w.walls", floor.clone()), ("p.csv", particles.clone())],
+                None,
             ));
         }
     }
@@ -154,13 +167,21 @@ fn table() -> Vec<Row> {
     ];
     for cmd in option_commands {
         for v in VALUES {
+            // The option whose value `v` is: the word before it.
+            let option = cmd
+                .split_whitespace()
+                .take_while(|w| *w != "{v}")
+                .last()
+                .unwrap_or_default();
             rows.push((
                 s(&cmd.replace("{v}", v)),
                 vec![("w.walls", floor.clone()), ("p.csv", ball.clone())],
+                refused(v, || format!("error: invalid value '{v}' for '{option} ")),
             ));
         }
     }
     // .par files: empty, and extreme values of its keys.
+    let reals = ["dDelta", "dKn", "dzUnifGrav"];
     for key in ["dDelta", "dKn", "nSteps", "bWallsEdgeDetect", "dzUnifGrav"] {
         for v in VALUES {
             let par = format!("achInFile = p.csv\ndDelta = 1e-4\nnSteps = 100\n{key} = {v}\n");
@@ -171,21 +192,24 @@ fn table() -> Vec<Row> {
                     ("p.csv", ball.clone()),
                     ("run.par", par.into_bytes()),
                 ],
+                refused(v, || format!("error: run.par: line 4: `{key}` is `{v}`, "))
+                    .filter(|_| reals.contains(&key)),
             ));
         }
     }
     rows.push((
         s("walls-sim run w.walls --par run.par --max-steps 20000 --t-end 0.01"),
         vec![("w.walls", floor.clone()), ("run.par", Vec::new())],
+        None,
     ));
     rows
 }
 
 #[test]
-fn every_command_over_extreme_values_exits_0_1_or_2_without_panic_or_hang() {
+fn every_command_over_extreme_values_exits_0_1_or_2_and_refuses_what_no_double_holds() {
     let rows = table();
     let mut failures = Vec::new();
-    for (args, files) in &rows {
+    for (args, files, refusal) in &rows {
         let dir = tempfile::tempdir().unwrap();
         for (name, bytes) in files {
             std::fs::write(dir.path().join(name), bytes).unwrap();
@@ -197,6 +221,15 @@ fn every_command_over_extreme_values_exits_0_1_or_2_without_panic_or_hang() {
             .collect::<Vec<_>>()
             .join("; ");
         match run_in(dir.path(), args) {
+            Ok((code, stderr)) if code != 2 && refusal.is_some() => {
+                failures.push(format!("{line} [{contents}]: exit {code}, not 2: {stderr}"))
+            }
+            Ok((_, stderr)) if refusal.as_ref().is_some_and(|says| !stderr.contains(says)) => {
+                failures.push(format!(
+                    "{line} [{contents}]: standard error does not say {:?}: {stderr}",
+                    refusal.as_deref().unwrap_or_default()
+                ));
+            }
             Ok((code, stderr)) if (0..=2).contains(&code) && !stderr.contains("panicked") => {}
             Ok((code, stderr)) => failures.push(format!(
                 "{line} [{contents}]: exit {code}: {}",
@@ -298,13 +331,54 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
     assert!(stdout.contains("\"stopped\": \"interrupted\""), "{stdout}");
     assert!(stderr.contains("the run stopped early"), "{stderr}");
     assert!(stderr.contains(": interrupted"), "{stderr}");
-    assert!(stderr.contains("end at t = "), "{stderr}");
     assert!(
         stderr.contains("particles.csv") && stderr.contains("walls.csv"),
         "{stderr}"
     );
     assert!(whole_rows(&csv, 15) > 100);
+    // The step the message names is the last row's.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let last_row = text.lines().last().unwrap();
+    let step = last_row.split(',').next().unwrap();
+    assert!(
+        stderr.contains(&format!("end at their last output, step {step} (t = ")),
+        "{stderr}\nlast row: {last_row}"
+    );
     whole_rows(&dir.path().join("out/walls.csv"), 6);
+}
+
+#[test]
+fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    // Every write to walls.csv fails, as on a full disk.
+    std::os::unix::fs::symlink("/dev/full", out.join("walls.csv")).unwrap();
+    let mut child = long_run(dir.path())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        // Rather than computing its 50 million steps for nothing.
+        assert!(start.elapsed() < LIMIT, "the run went on");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let mut stderr = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    assert_eq!(child.wait().unwrap().code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("cannot write the outputs to out: No space left on device")
+            && stderr.contains("they end at their last whole row"),
+        "{stderr}"
+    );
+    assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
 }
 
 #[test]

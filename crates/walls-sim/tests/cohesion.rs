@@ -184,7 +184,21 @@ fn the_cohesion_files_errors_name_the_file_and_the_line() {
     );
     assert_eq!(
         err("2\n1\n0 1e-3\n1 abc\n"),
-        "line 4: the coefficient of colour 1 is `abc`, not a finite number"
+        "line 4: the coefficient of colour 1 is `abc`, not a number"
+    );
+    assert_eq!(
+        err("1\n1\n0 nan\n"),
+        "line 3: the coefficient of colour 0 is `nan`, not a finite number"
+    );
+    // Numbers a double cannot hold, which pkdgrav's reading would turn into 0 or
+    // infinity without a word.
+    assert_eq!(
+        err("1\n1\n0 1e-400\n"),
+        "line 3: the coefficient of colour 0 is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+    );
+    assert_eq!(
+        err("1\n1\n0 1e999\n"),
+        "line 3: the coefficient of colour 0 is `1e999`, beyond the largest double (about 1.8e308): C's atof, and so pkdgrav, would read infinity"
     );
     // A huge announced count is an error about the file, not memory reserved for it.
     assert_eq!(

@@ -72,7 +72,12 @@ fn two_layer_sentinels_fall_back_to_dkn_and_two_sevenths() {
         read_par("dKn = 0\ndKnInner = 5\n").unwrap_err().to_string(),
         "line 1: `dKnOuter` comes to 0; pkdgrav needs every two-layer spring constant above 0 (−1 means dKn, or 2/7 of the normal constant)"
     );
-    assert!(read_par("dKn = 1\ndKtOuter = -3\n").is_err());
+    assert_eq!(
+        read_par("dKn = 1\ndKtOuter = -3\n")
+            .unwrap_err()
+            .to_string(),
+        "line 2: `dKtOuter` is `-3`; it must be 0 or more, or -1 (pkdgrav's \"2/7 of the normal constant\")"
+    );
 }
 
 #[test]

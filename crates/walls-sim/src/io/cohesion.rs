@@ -60,18 +60,12 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
             )
         })?;
         let (x_line, x_word) = take(&format!("the coefficient of colour {colour}"))?;
-        let x: f64 = x_word
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| {
-                error(
-                    format!("line {x_line}"),
-                    format!(
-                        "the coefficient of colour {colour} is `{x_word}`, not a finite number"
-                    ),
-                )
-            })?;
+        let x = super::number(x_word).map_err(|why| {
+            error(
+                format!("line {x_line}"),
+                format!("the coefficient of colour {colour} is `{x_word}`, {why}"),
+            )
+        })?;
         if !listed.insert(colour) {
             return Err(error(
                 format!("line {c_line}"),

@@ -529,7 +529,7 @@ impl<'a> Lines<'a> {
     }
 
     /// A pkdgrav switch (an integer, any value but 0 on) as pkdgrav reads it
-    /// ([`Lines::integer`]).
+    /// ([`Lines::percent_d`]).
     fn switch(&self, key: &str) -> Result<Option<bool>, InputError> {
         Ok(self.percent_d(key)?.map(|(_, x, _)| x != 0))
     }

@@ -309,6 +309,8 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         None => settings.end_step().saturating_sub(first),
     });
     let mut written: std::io::Result<()> = Ok(());
+    // The step and time of the last output written: where the outputs end.
+    let mut last_output = (first, settings.t_start());
     if let Some(out) = &mut trajectory {
         let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
         written = out.record(first, settings.t_start(), &start, scene, &[]);
@@ -329,6 +331,8 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     // Ctrl-C (or SIGTERM, SIGHUP) stops the run after the step it is in, so that every
     // output ends on whole rows.
     crate::interrupt::install_graceful();
+    // A failed write stops the run after its step: nothing more would be written.
+    let write_failed = std::cell::Cell::new(written.is_err());
     let outcome = run_watched(
         scene,
         particles.clone(),
@@ -337,27 +341,23 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
             if let Some(bar) = &progress {
                 bar.set_position(step - first);
             }
-            if let Some(out) = &mut reactive_files
-                && output(step)
-                && written.is_ok()
-            {
-                written = out.record_assemblies(step, scene, assemblies);
+            if !output(step) || written.is_err() {
+                return;
             }
-            if let Some(out) = &mut trajectory
-                && output(step)
-                && written.is_ok()
-            {
-                written = out.record(step, t, states, scene, assemblies);
-            }
-            if let Some(dir) = &args.out
-                && args.ss_output
-                && output(step)
-                && written.is_ok()
-            {
-                written = write_ss(dir, &ss_name, step, t, states);
-            }
+            written = (reactive_files.as_mut())
+                .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
+                .and_then(|()| {
+                    (trajectory.as_mut())
+                        .map_or(Ok(()), |out| out.record(step, t, states, scene, assemblies))
+                })
+                .and_then(|()| match &args.out {
+                    Some(dir) if args.ss_output => write_ss(dir, &ss_name, step, t, states),
+                    _ => Ok(()),
+                });
+            write_failed.set(written.is_err());
+            last_output = (step, t);
         },
-        &crate::interrupt::stop_requested,
+        &|| write_failed.get() || crate::interrupt::stop_requested(),
     );
     if let Some(bar) = progress {
         bar.finish_and_clear();
@@ -369,18 +369,23 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
         written = written.and_then(|()| out.finish());
     }
     if let (Err(e), Some(dir)) = (written, &args.out) {
-        // A failed write may have cut a row: the trajectory's files go.
-        for name in ["particles.csv", "walls.csv"] {
-            let _ = std::fs::remove_file(dir.join(name));
+        // A failed write may have cut a row: each file is cut back to its last whole row,
+        // keeping every row written before.
+        let mut names = vec!["particles.csv", "walls.csv"];
+        if reactive {
+            names.extend(["WALLSREACTdata.out", "WALLSREACTviz.out"]);
         }
-        let appended = if reactive {
-            "; WALLSREACTdata.out and WALLSREACTviz.out, appended to, may end mid-row"
-        } else {
-            ""
-        };
+        let uncut: Vec<String> = names
+            .into_iter()
+            .filter_map(|name| {
+                let why = keep_whole_rows(&dir.join(name)).err()?;
+                Some(format!("; {name} may end mid-row ({why})"))
+            })
+            .collect();
         return Err(format!(
-            "cannot write the trajectory to {}: {e}; particles.csv and walls.csv removed (they may have ended mid-row){appended}",
-            dir.display()
+            "cannot write the outputs to {}: {e}; they end at their last whole row{}",
+            dir.display(),
+            uncut.concat()
         ));
     }
     if args.json {
@@ -404,15 +409,17 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
     let Some(why) = outcome.stopped else {
         return Ok(exit_status(errors));
     };
-    let end = readout.time(outcome.t);
     crate::errln!(
-        "walls-sim: error: the run stopped early, after step {} (t = {end}): {why}",
+        "walls-sim: error: the run stopped early, after step {} (t = {}): {why}",
         first + outcome.steps,
+        readout.time(outcome.t),
     );
     if let Some(dir) = &args.out {
+        let (step, t) = last_output;
         crate::errln!(
-            "walls-sim: the outputs in {} end at t = {end}, in whole rows: {}",
+            "walls-sim: the outputs in {} end at their last output, step {step} (t = {}), in whole rows: {}",
             dir.display(),
+            readout.time(t),
             output_files(dir, args.ss_output, reactive).join(", ")
         );
     }
@@ -422,23 +429,15 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
 /// The output files a run with `--out dir` writes: the trajectory's, the `.ss` outputs
 /// (as a pattern) and pkdgrav's reactive-wall files.
 fn output_files(dir: &std::path::Path, ss: bool, reactive: bool) -> Vec<String> {
-    let mut names = vec!["particles.csv", "walls.csv"];
+    let path = |name: &str| dir.join(name).display().to_string();
+    let mut names = vec![path("particles.csv"), path("walls.csv")];
     if ss {
-        names.push("the .ss outputs");
+        names.push("the .ss outputs".to_string());
     }
     if reactive {
-        names.extend(["WALLSREACTdata.out", "WALLSREACTviz.out"]);
+        names.extend([path("WALLSREACTdata.out"), path("WALLSREACTviz.out")]);
     }
     names
-        .into_iter()
-        .map(|n| {
-            if n.starts_with("the ") {
-                n.to_string()
-            } else {
-                dir.join(n).display().to_string()
-            }
-        })
-        .collect()
 }
 
 /// pkdgrav's output after `step`: the living particles, in input order, as pkdgrav
@@ -456,10 +455,41 @@ fn write_ss(
         .filter(|s| s.alive)
         .map(walls_sim::run::State::as_written)
         .collect();
-    std::fs::write(
-        dir.join(ss_file_name(name, *digits, step)),
-        write_ss(t, &alive),
-    )
+    let path = dir.join(ss_file_name(name, *digits, step));
+    std::fs::write(&path, write_ss(t, &alive)).inspect_err(|_| {
+        // Cut short, it is no .ss file: it goes.
+        let _ = std::fs::remove_file(&path);
+    })
+}
+
+/// Cuts the file at `path` after its last whole line, where a write that failed may
+/// have left part of a row; removes it when no line is whole (nothing when it does not
+/// exist).
+fn keep_whole_rows(path: &std::path::Path) -> std::io::Result<()> {
+    use std::io::{Read, Seek, SeekFrom};
+    let mut file = match std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(path)
+    {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        opened => opened?,
+    };
+    // From the end back, a few kilobytes at a time: a row is a few hundred bytes.
+    let mut chunk = [0u8; 4096];
+    let mut end = file.metadata()?.len();
+    while end > 0 {
+        let start = end.saturating_sub(chunk.len() as u64);
+        let read = &mut chunk[..(end - start) as usize];
+        file.seek(SeekFrom::Start(start))?;
+        file.read_exact(read)?;
+        if let Some(i) = read.iter().rposition(|&b| b == b'\n') {
+            return file.set_len(start + i as u64 + 1);
+        }
+        end = start;
+    }
+    drop(file);
+    std::fs::remove_file(path)
 }
 
 /// A progress bar over `steps` steps, when standard error is a terminal.
@@ -474,4 +504,31 @@ fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
         bar.set_style(style);
     }
     Some(bar)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::keep_whole_rows;
+
+    #[test]
+    fn a_cut_output_keeps_its_whole_rows() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("particles.csv");
+        let whole = format!("step,t\n{}", "0,0\n".repeat(3000));
+        for (written, kept) in [
+            (format!("{whole}100,0."), Some(whole.as_str())),
+            (whole.clone(), Some(whole.as_str())),
+            // A cut row longer than what is read at a time.
+            (format!("{whole}{}", "9".repeat(5000)), Some(whole.as_str())),
+            ("step,".to_string(), None),
+            (String::new(), None),
+        ] {
+            std::fs::write(&path, &written).unwrap();
+            keep_whole_rows(&path).unwrap();
+            assert_eq!(std::fs::read_to_string(&path).ok().as_deref(), kept);
+        }
+        // A file never made stays unmade.
+        keep_whole_rows(&dir.path().join("walls.csv")).unwrap();
+        assert!(!dir.path().join("walls.csv").exists());
+    }
 }
