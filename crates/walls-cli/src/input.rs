@@ -16,38 +16,50 @@ pub const MAX_FILE_BYTES: u64 = u32::MAX as u64;
 /// Reads `path`, or standard input when it is `-`.
 pub fn read(path: &str) -> Input {
     if path == "-" {
-        let mut bytes = Vec::new();
-        let result = std::io::stdin()
-            .lock()
-            .take(MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(|e| format!("cannot read standard input: {e}"))
-            .and_then(|_| check_size(bytes));
         return Input {
             name: "<stdin>".into(),
-            bytes: result,
+            bytes: read_all(std::io::stdin().lock(), "standard input"),
         };
     }
-    let result = std::fs::File::open(path)
-        .and_then(|f| {
-            let mut bytes = Vec::new();
-            f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)?;
-            Ok(bytes)
-        })
+    let bytes = std::fs::File::open(path)
         .map_err(|e| format!("cannot read {path}: {e}"))
-        .and_then(check_size);
+        .and_then(|f| read_all(f, path));
     Input {
         name: path.to_string(),
-        bytes: result,
+        bytes,
     }
 }
 
-fn check_size(bytes: Vec<u8>) -> Result<Vec<u8>, String> {
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        Err(format!(
-            "larger than {MAX_FILE_BYTES} bytes, the most the tools read"
-        ))
-    } else {
-        Ok(bytes)
+/// Reads all of `reader`, up to [`MAX_FILE_BYTES`] (more is an error); `what` names it
+/// in the messages (a path, or "standard input").
+pub fn read_all(reader: impl Read, what: &str) -> Result<Vec<u8>, String> {
+    read_at_most(reader, what, MAX_FILE_BYTES)
+}
+
+fn read_at_most(reader: impl Read, what: &str, limit: u64) -> Result<Vec<u8>, String> {
+    let mut bytes = Vec::new();
+    reader
+        .take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read {what}: {e}"))?;
+    if bytes.len() as u64 > limit {
+        return Err(format!(
+            "cannot read {what}: larger than {limit} bytes, the most the tools read"
+        ));
+    }
+    Ok(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::read_at_most;
+
+    #[test]
+    fn a_file_over_the_limit_is_refused_by_name() {
+        assert_eq!(read_at_most(&b"wall"[..], "a.walls", 4).unwrap(), b"wall");
+        assert_eq!(
+            read_at_most(&b"wall "[..], "a.walls", 4).unwrap_err(),
+            "cannot read a.walls: larger than 4 bytes, the most the tools read"
+        );
     }
 }

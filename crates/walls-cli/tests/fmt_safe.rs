@@ -240,7 +240,7 @@ fn an_edit_saved_after_the_read_is_kept() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("a.walls");
     write(&path, MESSY, 0o644);
-    let (original, bytes) = safe_write::read(&path, 1 << 20).unwrap();
+    let (original, bytes) = safe_write::read(&path).unwrap();
     assert_eq!(bytes, MESSY.as_bytes());
     // The user appends a line and saves.
     let edited = format!("{MESSY}wall type disk\n");
@@ -264,7 +264,7 @@ fn an_edit_saved_by_renaming_after_the_read_is_kept() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("a.walls");
     write(&path, MESSY, 0o644);
-    let (original, _) = safe_write::read(&path, 1 << 20).unwrap();
+    let (original, _) = safe_write::read(&path).unwrap();
     // An editor saves the same number of bytes by writing a new file and renaming it.
     let saved = MESSY.replace("plane", "PLANE");
     write(&dir.path().join("new"), &saved, 0o644);
@@ -283,7 +283,7 @@ fn an_edit_saved_while_writing_is_kept() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("a.walls");
         write(&path, MESSY, 0o644);
-        let (original, _) = safe_write::read(&path, 1 << 20).unwrap();
+        let (original, _) = safe_write::read(&path).unwrap();
         let result = original.replace_with(temporary, |file| {
             file.write_all(CLEAN.as_bytes())?;
             // The user saves while the new text is being written.
@@ -363,7 +363,7 @@ fn a_signal_while_writing_removes_the_temporary_file() {
         } else {
             Temporary::Unnamed
         };
-        let (original, _) = safe_write::read(&dir.join("a.walls"), 1 << 20).unwrap();
+        let (original, _) = safe_write::read(&dir.join("a.walls")).unwrap();
         let result = original.replace_with(temporary, |file| {
             file.write_all(&CLEAN.as_bytes()[..8])?;
             file.sync_all()?;

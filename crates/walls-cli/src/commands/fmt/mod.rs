@@ -193,7 +193,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     let read = if stdin {
         input::read(path).bytes.map(|b| (None, b))
     } else {
-        safe_write::read(Path::new(path), input::MAX_FILE_BYTES).map(|(o, b)| (Some(o), b))
+        safe_write::read(Path::new(path)).map(|(o, b)| (Some(o), b))
     };
     let (original, bytes) = match read {
         Ok(read) => read,

@@ -21,7 +21,7 @@
 use crate::interrupt::{self, Registration};
 use std::fmt;
 use std::fs::{File, Metadata};
-use std::io::{self, Read, Write};
+use std::io::{self, Write};
 use std::os::fd::AsRawFd;
 use std::os::unix::fs::{MetadataExt, OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
@@ -199,9 +199,10 @@ pub struct Original {
     stamp: Stamp,
 }
 
-/// Reads the file at `path` (through symbolic links), at most `limit` bytes (more is an
-/// error): the file and its bytes, or a message saying why it could not be read.
-pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
+/// Reads the file at `path` (through symbolic links), at most
+/// [`MAX_FILE_BYTES`](crate::input::MAX_FILE_BYTES) (more is an error): the file and its
+/// bytes, or a message saying why it could not be read.
+pub fn read(path: &Path) -> Result<(Original, Vec<u8>), String> {
     let fail = |e: io::Error| format!("cannot read {}: {e}", path.display());
     let file = File::open(path).map_err(fail)?;
     let stamp = Stamp::from(&file.metadata().map_err(fail)?);
@@ -209,14 +210,7 @@ pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
     // file, which `check` refuses to replace; if a link changed meanwhile, the identity
     // differs.
     let real = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
-    let mut bytes = Vec::new();
-    file.take(limit + 1).read_to_end(&mut bytes).map_err(fail)?;
-    if bytes.len() as u64 > limit {
-        return Err(format!(
-            "cannot read {}: larger than {limit} bytes, the most the tools read",
-            path.display()
-        ));
-    }
+    let bytes = crate::input::read_all(file, &path.display().to_string())?;
     Ok((Original { path: real, stamp }, bytes))
 }
 
