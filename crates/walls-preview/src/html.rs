@@ -26,7 +26,7 @@
 //! `frames`, `play()`, `pause()` and `hoverAt(x, y)` (client pixels) once `ready`, and
 //! `document.body.dataset` has `ready`, `time` and `frame`, for tests and scripts.
 
-use crate::mesh::wall_meshes_in;
+use crate::mesh::meshes_of;
 use crate::{MovieFrame, WallMesh, palette};
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use std::collections::BTreeMap;
@@ -104,14 +104,15 @@ pub fn write(
         .map(|&t| particles.map_or_else(Vec::new, |p| particles_at(p, t)))
         .collect();
     let all: Vec<Particle> = at.iter().flatten().cloned().collect();
-    let scene_box = scene_bounds_at(&decode(scene), &all, &times);
+    let walls = decode(scene);
+    let scene_box = scene_bounds_at(&walls, &all, &times);
     let movie: Vec<MovieFrame> = times
         .iter()
         .zip(at)
         .map(|(&t, particles)| MovieFrame {
             t,
             step: None,
-            walls: wall_meshes_in(scene, t, SEGMENTS, &scene_box),
+            walls: meshes_of(&walls, t, SEGMENTS, &scene_box),
             particles,
         })
         .collect();
@@ -432,18 +433,20 @@ fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String 
     string(&mut s, &readout.length(size));
     let _ = write!(s, ",\"trails\":{}", options.trails.unwrap_or(0));
     s.push_str(",\"walls\":[");
-    let first_walls = frames.first().map_or(&[][..], |f| &f.walls[..]);
-    let mut first = true;
-    for wm in first_walls {
-        // The mesh's colour: ssdraw's, or what an ssdraw.par made it.
-        let Some(color) = wm.rgb.map(palette::css) else {
-            continue;
-        };
-        if !first {
+    // The walls drawn: those of the first frame with a colour (ssdraw's, or what an
+    // ssdraw.par made it).
+    let drawn: Vec<(&WallMesh, String)> = frames
+        .first()
+        .map_or(&[][..], |f| &f.walls[..])
+        .iter()
+        .filter_map(|wm| Some((wm, palette::css(wm.rgb?))))
+        .collect();
+    let placements = placements(frames, &drawn);
+    for (i, ((wm, color), placed)) in drawn.iter().zip(&placements).enumerate() {
+        if i > 0 {
             s.push(',');
         }
-        first = false;
-        wall(&mut s, scene, frames, wm, &color, (&centre, size));
+        wall(&mut s, scene, wm, placed, color, (&centre, size));
     }
     s.push_str("],\"particles\":");
     particles(&mut s, frames, &centre, size);
@@ -451,13 +454,41 @@ fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String 
     s
 }
 
+/// Each drawn wall's origin and turn in every frame (a frame without the wall keeps the
+/// one before), the frames' walls matched by index in one pass over each frame.
+fn placements(
+    frames: &[MovieFrame],
+    drawn: &[(&WallMesh, String)],
+) -> Vec<Vec<(Vec3, Rotation3<f64>)>> {
+    let slot: BTreeMap<usize, usize> = drawn
+        .iter()
+        .enumerate()
+        .map(|(i, (wm, _))| (wm.wall, i))
+        .collect();
+    let mut placed: Vec<(Vec3, Rotation3<f64>)> =
+        drawn.iter().map(|(wm, _)| (wm.origin, wm.turn)).collect();
+    let mut placements = vec![Vec::with_capacity(frames.len()); drawn.len()];
+    for frame in frames {
+        for m in &frame.walls {
+            if let Some(&i) = slot.get(&m.wall) {
+                placed[i] = (m.origin, m.turn);
+            }
+        }
+        for (each, &now) in placements.iter_mut().zip(&placed) {
+            each.push(now);
+        }
+    }
+    placements
+}
+
 /// One wall of the first frame, `wm`: its mesh about its origin, and where each frame
-/// has its origin and how it turns it (about the origin, from the first frame).
+/// has its origin and how it turns it (`placements`, about the origin, from the first
+/// frame).
 fn wall(
     s: &mut String,
     scene: &Scene,
-    frames: &[MovieFrame],
     wm: &WallMesh,
+    placements: &[(Vec3, Rotation3<f64>)],
     color: &str,
     (centre, size): (&Vec3, f64),
 ) {
@@ -477,17 +508,6 @@ fn wall(
     );
     s.push_str(",\"indices\":");
     nums(s, wm.mesh.triangles.iter().flatten().map(|&i| f64::from(i)));
-    // Each frame's placement (a frame without the wall keeps the one before).
-    let mut placed = (wm.origin, wm.turn);
-    let placements: Vec<(Vec3, Rotation3<f64>)> = frames
-        .iter()
-        .map(|f| {
-            if let Some(m) = f.walls.iter().find(|m| m.wall == wm.wall) {
-                placed = (m.origin, m.turn);
-            }
-            placed
-        })
-        .collect();
     s.push_str(",\"origins\":");
     coords(s, placements.iter().map(|(o, _)| *o), centre, size);
     s.push_str(",\"turns\":");

@@ -69,7 +69,12 @@ pub fn wall_meshes_in(
 }
 
 /// [`wall_meshes_in`] of decoded walls.
-fn meshes_of(walls: &[Wall], t: f64, segments: usize, scene_box: &(Vec3, Vec3)) -> Vec<WallMesh> {
+pub(crate) fn meshes_of(
+    walls: &[Wall],
+    t: f64,
+    segments: usize,
+    scene_box: &(Vec3, Vec3),
+) -> Vec<WallMesh> {
     walls
         .iter()
         .enumerate()
