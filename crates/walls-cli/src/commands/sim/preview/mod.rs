@@ -214,13 +214,9 @@ fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>),
     let mut snapshots = Vec::new();
     for f in &files {
         snapshots.extend(movie::read_snapshots(Path::new(f))?);
-        if let Some(bar) = &bar {
-            bar.inc(1);
-        }
+        bar.inc(1);
     }
-    if let Some(bar) = bar {
-        bar.finish_and_clear();
-    }
+    bar.finish_and_clear();
     Ok((snapshots, viz))
 }
 

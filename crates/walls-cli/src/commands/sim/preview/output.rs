@@ -6,6 +6,7 @@
 use super::PreviewArgs;
 use crate::commands::sim::UnitsArg;
 use crate::movie::Movie;
+use indicatif::ProgressBar;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
 use walls_geometry::units::{Readout, Scale};
@@ -18,17 +19,18 @@ use walls_preview::ssdraw::SsdrawView;
 const LONG: usize = 20;
 
 /// A bar on standard error counting `len` files `done` ("read", "written"), for a
-/// series longer than [`LONG`] when standard error is a terminal.
-pub(super) fn progress(len: usize, done: &str) -> Option<indicatif::ProgressBar> {
+/// series longer than [`LONG`] when standard error is a terminal; otherwise a hidden
+/// one, which counts without drawing.
+pub(super) fn progress(len: usize, done: &str) -> ProgressBar {
     if len <= LONG || !std::io::stderr().is_terminal() {
-        return None;
+        return ProgressBar::hidden();
     }
-    let bar = indicatif::ProgressBar::new(len as u64);
+    let bar = ProgressBar::new(len as u64);
     let template = format!("walls-sim {{bar:40}} {{pos}}/{{len}} frames {done}, {{eta}} left");
     if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
         bar.set_style(style);
     }
-    Some(bar)
+    bar
 }
 
 /// Writes `frames` as `kind` (the extension of --out; `None`: SVG on standard output).
@@ -68,13 +70,9 @@ pub(super) fn write(
                 let bar = progress(frames.len(), "written");
                 for (k, frame) in frames.iter().enumerate() {
                     save(&numbered(path, k, "svg"), std::slice::from_ref(frame))?;
-                    if let Some(bar) = &bar {
-                        bar.inc(1);
-                    }
+                    bar.inc(1);
                 }
-                if let Some(bar) = bar {
-                    bar.finish_and_clear();
-                }
+                bar.finish_and_clear();
             }
             Ok(())
         }
@@ -111,13 +109,9 @@ pub(super) fn write(
                 };
                 walls_preview::pov::write_frame_file(&file, scene, frame, movie.bounds, &pov_view)
                     .map_err(|e| cannot(&file, e))?;
-                if let Some(bar) = &bar {
-                    bar.inc(1);
-                }
+                bar.inc(1);
             }
-            if let Some(bar) = bar {
-                bar.finish_and_clear();
-            }
+            bar.finish_and_clear();
             Ok(())
         }
         Some("vtp") => {
@@ -143,14 +137,10 @@ pub(super) fn write(
         Some("pvd") => {
             let bar = progress(frames.len(), "written");
             walls_preview::pvd::write_file(path, frames, &vtk_scale(args.units, &readout), |_| {
-                if let Some(bar) = &bar {
-                    bar.inc(1);
-                }
+                bar.inc(1)
             })
             .map_err(|e| cannot(path, e))?;
-            if let Some(bar) = bar {
-                bar.finish_and_clear();
-            }
+            bar.finish_and_clear();
             Ok(())
         }
         Some("html") => {
