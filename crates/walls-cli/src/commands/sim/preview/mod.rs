@@ -95,13 +95,6 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .as_ref()
         .and_then(|p| p.extension())
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let placed = matches!(
-        kind.as_deref(),
-        None | Some("svg" | "vtp" | "pvd" | "html" | "pov")
-    );
-    if args.reactive.is_some() && !placed {
-        return Err("--reactive is drawn in .svg, .pov, .vtp, .pvd and .html pictures".into());
-    }
     let inputs: Vec<PathBuf> = args
         .particles
         .iter()
@@ -109,8 +102,8 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .cloned()
         .collect();
     let (snapshots, found_viz) = read_particles(&inputs)?;
-    // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.
-    let viz_file = args.reactive.clone().or(found_viz.filter(|_| placed));
+    // Every format draws reactive walls where a run moved them.
+    let viz_file = args.reactive.clone().or(found_viz);
     let viz = match &viz_file {
         Some(f) => {
             let text = std::fs::read_to_string(f)
