@@ -27,7 +27,7 @@
 //! `document.body.dataset` has `ready`, `time` and `frame`, for tests and scripts.
 
 use crate::mesh::meshes_of;
-use crate::{MovieFrame, WallMesh, palette};
+use crate::{MovieFrame, WallMesh, escape, palette};
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -175,8 +175,7 @@ pub fn write_movie(
 ) -> io::Result<()> {
     let json = data(scene, frames, options);
     let bundle = script_safe(BUNDLE);
-    let mut title = String::new();
-    html_text(&mut title, &options.title);
+    let title = escape(&options.title);
     write!(
         out,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
@@ -189,18 +188,6 @@ pub fn write_movie(
         out,
         "</script>\n<script>{bundle}</script>\n</body>\n</html>\n"
     )
-}
-
-/// `text` as HTML text: `&`, `<` and `>` escaped.
-fn html_text(s: &mut String, text: &str) {
-    for c in text.chars() {
-        match c {
-            '&' => s.push_str("&amp;"),
-            '<' => s.push_str("&lt;"),
-            '>' => s.push_str("&gt;"),
-            c => s.push(c),
-        }
-    }
 }
 
 const STYLE: &str = "html,body{margin:0;height:100%;overflow:hidden;background:#20232a;\

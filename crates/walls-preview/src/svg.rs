@@ -6,6 +6,7 @@
 //! bar. Several frames make an animated SVG (SMIL: one group per frame, shown in turn),
 //! which browsers play without script.
 
+use crate::escape;
 use crate::mesh::WallMesh;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
@@ -282,13 +283,6 @@ fn draw(camera: &Camera, frame: &Frame, readout: &Readout) -> String {
         escape(&readout.time(frame.t))
     );
     s
-}
-
-/// `s` as SVG text.
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 /// The axes (bottom left) and a scale bar (bottom right) of a round length near a
