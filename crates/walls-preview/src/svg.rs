@@ -63,8 +63,8 @@ struct Camera {
 }
 
 impl Camera {
-    /// Fits the box `lo`–`hi` (and the particles) into the view, with a margin.
-    fn new(view: &View, lo: &Vec3, hi: &Vec3, particles: &[Particle]) -> Camera {
+    /// Fits the box `lo`–`hi` (and the particles' `centres`) into the view, with a margin.
+    fn new(view: &View, lo: &Vec3, hi: &Vec3, centres: impl Iterator<Item = Vec3>) -> Camera {
         let towards = view.from.try_normalize(0.0).unwrap_or_else(Vec3::z);
         let right = view
             .up
@@ -81,7 +81,7 @@ impl Camera {
                 )
             })
             .collect();
-        points.extend(particles.iter().map(|p| p.pos));
+        points.extend(centres);
         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
         for p in &points {
             let (x, y) = (right.dot(p), up.dot(p));
@@ -343,8 +343,10 @@ pub fn write(
     seconds: f64,
     readout: &Readout,
 ) -> io::Result<()> {
-    let all: Vec<Particle> = frames.iter().flat_map(|f| f.particles.to_vec()).collect();
-    let camera = Camera::new(view, &bounds.0, &bounds.1, &all);
+    let centres = frames
+        .iter()
+        .flat_map(|f| f.particles.iter().map(|p| p.pos));
+    let camera = Camera::new(view, &bounds.0, &bounds.1, centres);
     let mut s = String::new();
     let _ = writeln!(
         s,
