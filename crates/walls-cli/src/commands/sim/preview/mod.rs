@@ -29,9 +29,9 @@ pub struct PreviewArgs {
     #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     pub time: f64,
     /// The picture, by its extension: .svg (the default, on standard output without
-    /// --out), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for ParaView), .pvd
-    /// (a ParaView collection of one .vtp per frame, in a folder named after it) or
-    /// .html (an interactive page over [--time, --until]).
+    /// --out or with `-`), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for
+    /// ParaView), .pvd (a ParaView collection of one .vtp per frame, in a folder named
+    /// after it) or .html (an interactive page over [--time, --until]).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Particles to draw too: a CSV or .ss file; or a run's outputs as a movie, one
@@ -86,15 +86,12 @@ pub fn run(args: &PreviewArgs) -> ExitCode {
 }
 
 fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
+    // The format first: a wrong --out is told before any input is read.
+    let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
     let file = walls_file(args, ssdraw.as_ref())?;
     let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
     let scene = &checked.scene;
-    let kind = args
-        .out
-        .as_ref()
-        .and_then(|p| p.extension())
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
     let inputs: Vec<PathBuf> = args
         .particles
         .iter()
@@ -162,15 +159,7 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
-    output::write(
-        args,
-        &file,
-        ssdraw.as_ref(),
-        kind.as_deref(),
-        scene,
-        &movie,
-        series,
-    )?;
+    output::write(args, &file, ssdraw.as_ref(), kind, scene, &movie, series)?;
     Ok(exit_status(errors))
 }
 

@@ -33,13 +33,55 @@ pub(super) fn progress(len: usize, done: &str) -> ProgressBar {
     bar
 }
 
-/// Writes `frames` as `kind` (the extension of --out; `None`: SVG on standard output).
-/// `series`: the frames are a run's outputs (not --frames of one picture).
+/// The pictures `--out` can name, by its extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    Svg,
+    Pov,
+    Vtp,
+    Pvd,
+    Html,
+}
+
+impl Kind {
+    /// The picture `out` asks for by its extension (`None`: no --out, or `-`, SVG on
+    /// standard output), or why it names none.
+    pub(super) fn of(out: Option<&Path>) -> Result<Option<Kind>, String> {
+        let Some(path) = out.filter(|p| *p != Path::new("-")) else {
+            return Ok(None);
+        };
+        let extension = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        let kind = match extension.as_deref() {
+            Some("svg") => Kind::Svg,
+            Some("pov") => Kind::Pov,
+            Some("vtp") => Kind::Vtp,
+            Some("pvd") => Kind::Pvd,
+            Some("html") => Kind::Html,
+            Some(other) => return Err(format!("cannot draw .{other} files: {NAMES}")),
+            None => {
+                return Err(format!(
+                    "--out {} has no extension to tell the picture's format by: {NAMES}",
+                    path.display()
+                ));
+            }
+        };
+        Ok(Some(kind))
+    }
+}
+
+/// The formats, as the errors of [`Kind::of`] name them.
+const NAMES: &str =
+    "use .svg, .pov, .vtp, .pvd or .html (or no --out, or --out -, for SVG on standard output)";
+
+/// Writes `frames` as `kind` (`None`: SVG on standard output). `series`: the frames
+/// are a run's outputs (not --frames of one picture).
 pub(super) fn write(
     args: &PreviewArgs,
     file: &str,
     ssdraw: Option<&SsdrawView>,
-    kind: Option<&str>,
+    kind: Option<Kind>,
     scene: &Scene,
     movie: &Movie,
     series: bool,
@@ -56,7 +98,7 @@ pub(super) fn write(
                 .and_then(|()| out.flush())
                 .map_err(|e| format!("cannot write the picture: {e}"))
         }
-        Some("svg") => {
+        Some(Kind::Svg) => {
             let save = |path: &Path, frames: &[MovieFrame]| {
                 let mut out = std::io::BufWriter::new(
                     std::fs::File::create(path).map_err(|e| cannot(path, e))?,
@@ -76,7 +118,7 @@ pub(super) fn write(
             }
             Ok(())
         }
-        Some("pov") => {
+        Some(Kind::Pov) => {
             let default = walls_preview::pov::View::default();
             // ssdraw's camera where --view does not say otherwise, looking at its
             // look-at point or the scene's centre.
@@ -114,7 +156,7 @@ pub(super) fn write(
             bar.finish_and_clear();
             Ok(())
         }
-        Some("vtp") => {
+        Some(Kind::Vtp) => {
             let [frame] = frames else {
                 return Err(format!(
                     "{} frames do not fit in one .vtp: write a ParaView collection, --out {}",
@@ -134,7 +176,7 @@ pub(super) fn write(
             .and_then(|()| out.flush())
             .map_err(|e| cannot(path, e))
         }
-        Some("pvd") => {
+        Some(Kind::Pvd) => {
             let bar = progress(frames.len(), "written");
             walls_preview::pvd::write_file(path, frames, &vtk_scale(args.units, &readout), |_| {
                 bar.inc(1)
@@ -143,7 +185,7 @@ pub(super) fn write(
             bar.finish_and_clear();
             Ok(())
         }
-        Some("html") => {
+        Some(Kind::Html) => {
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
             let until = args.until.unwrap_or(args.time);
@@ -169,9 +211,6 @@ pub(super) fn write(
                 .and_then(|()| out.flush())
                 .map_err(|e| cannot(path, e))
         }
-        Some(other) => Err(format!(
-            "cannot draw .{other} files: use .svg, .pov, .vtp, .pvd or .html (or no --out for SVG on standard output)"
-        )),
     }
 }
 
