@@ -31,7 +31,8 @@ pub struct PreviewArgs {
     /// The picture, by its extension: .svg (the default, on standard output without
     /// --out or with `-`), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for
     /// ParaView), .pvd (a ParaView collection of one .vtp per frame, in a folder named
-    /// after it) or .html (an interactive page over [--time, --until]).
+    /// after it) or .html (an interactive page; with --until, of the walls' motion over
+    /// [0, --until]).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Particles to draw too: a CSV or .ss file; or a run's outputs as a movie, one

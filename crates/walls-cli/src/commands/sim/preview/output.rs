@@ -188,11 +188,10 @@ pub(super) fn write(
         Some(Kind::Html) => {
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            let until = args.until.unwrap_or(args.time);
-            let written = match frames {
+            let written = match (frames, args.until) {
                 // One set of particles with the walls' motion over [0, --until],
                 // sampled at 101 times.
-                [frame] if !series && args.until.is_some() => {
+                ([frame], Some(until)) if !series => {
                     let moving = html_particles(frame);
                     walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
                 }
