@@ -26,13 +26,13 @@
 //! `frames`, `play()`, `pause()` and `hoverAt(x, y)` (client pixels) once `ready`, and
 //! `document.body.dataset` has `ready`, `time` and `frame`, for tests and scripts.
 
-use crate::mesh::wall_meshes_in;
-use crate::{MovieFrame, WallMesh, palette};
+use crate::mesh::meshes_of;
+use crate::{MovieFrame, WallMesh, escape, palette};
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io;
-use walls_geometry::units::{Readout, System};
+use walls_geometry::units::{Readout, System, Unit};
 use walls_geometry::{Particle, decode, scene_bounds_at};
 use walls_keywords::Keyword;
 use walls_model::{Scene, Value, Wall};
@@ -104,14 +104,15 @@ pub fn write(
         .map(|&t| particles.map_or_else(Vec::new, |p| particles_at(p, t)))
         .collect();
     let all: Vec<Particle> = at.iter().flatten().cloned().collect();
-    let scene_box = scene_bounds_at(&decode(scene), &all, &times);
+    let walls = decode(scene);
+    let scene_box = scene_bounds_at(&walls, &all, &times);
     let movie: Vec<MovieFrame> = times
         .iter()
         .zip(at)
         .map(|(&t, particles)| MovieFrame {
             t,
             step: None,
-            walls: wall_meshes_in(scene, t, SEGMENTS, &scene_box),
+            walls: meshes_of(&walls, t, SEGMENTS, &scene_box),
             particles,
         })
         .collect();
@@ -174,8 +175,7 @@ pub fn write_movie(
 ) -> io::Result<()> {
     let json = data(scene, frames, options);
     let bundle = script_safe(BUNDLE);
-    let mut title = String::new();
-    html_text(&mut title, &options.title);
+    let title = escape(&options.title);
     write!(
         out,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
@@ -188,18 +188,6 @@ pub fn write_movie(
         out,
         "</script>\n<script>{bundle}</script>\n</body>\n</html>\n"
     )
-}
-
-/// `text` as HTML text: `&`, `<` and `>` escaped.
-fn html_text(s: &mut String, text: &str) {
-    for c in text.chars() {
-        match c {
-            '&' => s.push_str("&amp;"),
-            '<' => s.push_str("&lt;"),
-            '>' => s.push_str("&gt;"),
-            c => s.push(c),
-        }
-    }
 }
 
 const STYLE: &str = "html,body{margin:0;height:100%;overflow:hidden;background:#20232a;\
@@ -233,15 +221,25 @@ fn num(s: &mut String, x: f64) {
     }
 }
 
-fn nums(s: &mut String, xs: impl IntoIterator<Item = f64>) {
+/// A JSON array of `items`, each written by `item`.
+fn array<T>(
+    s: &mut String,
+    items: impl IntoIterator<Item = T>,
+    mut item: impl FnMut(&mut String, T),
+) {
     s.push('[');
-    for (i, x) in xs.into_iter().enumerate() {
+    for (i, x) in items.into_iter().enumerate() {
         if i > 0 {
             s.push(',');
         }
-        num(s, x);
+        item(s, x);
     }
     s.push(']');
+}
+
+/// A JSON array of numbers as [`num`] writes them.
+fn nums(s: &mut String, xs: impl IntoIterator<Item = f64>) {
+    array(s, xs, num);
 }
 
 /// A JSON string, with `<` escaped so that it cannot close the script element.
@@ -314,27 +312,27 @@ fn coord(s: &mut String, x: f64) {
     if q < 0 {
         s.push('-');
     }
-    let (whole, frac) = (q.unsigned_abs() / 100_000, q.unsigned_abs() % 100_000);
+    let (whole, mut frac) = (q.unsigned_abs() / 100_000, q.unsigned_abs() % 100_000);
     let _ = write!(s, "{whole}");
     if frac > 0 {
-        let digits = format!("{frac:05}");
-        s.push('.');
-        s.push_str(digits.trim_end_matches('0'));
+        // The five decimals without their trailing zeros.
+        let mut digits = 5;
+        while frac % 10 == 0 {
+            frac /= 10;
+            digits -= 1;
+        }
+        let _ = write!(s, ".{frac:0digits$}");
     }
 }
 
 /// The points `xs` in units of the scene's size about its centre, to five decimals.
 fn coords(s: &mut String, xs: impl IntoIterator<Item = Vec3>, centre: &Vec3, size: f64) {
-    s.push('[');
-    for (i, x) in xs.into_iter().enumerate() {
-        for (j, c) in ((x - centre) / size).iter().enumerate() {
-            if i > 0 || j > 0 {
-                s.push(',');
-            }
-            coord(s, *c);
-        }
-    }
-    s.push(']');
+    array(
+        s,
+        xs.into_iter()
+            .flat_map(|x| <[f64; 3]>::from((x - centre) / size)),
+        coord,
+    );
 }
 /// The box around the movie: every drawn wall's mesh in every frame and every particle.
 /// Its centre and size (the longest side), a size of 1 for a box of none (a point or
@@ -374,11 +372,11 @@ fn frame_box(frames: &[MovieFrame]) -> (Vec3, f64) {
 }
 
 /// One unit of a readout for the page: `[name, per pkdgrav unit]`.
-fn unit(s: &mut String, name: &str, per: f64) {
+fn unit(s: &mut String, unit: &Unit) {
     s.push('[');
-    string(s, name);
+    string(s, unit.name);
     s.push(',');
-    num64(s, per);
+    num64(s, unit.per_pkdgrav);
     s.push(']');
 }
 
@@ -387,77 +385,85 @@ fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String 
     let (centre, size) = frame_box(frames);
     let readout = &options.readout;
     let mut s = String::new();
-    s.push_str("{\"times\":[");
-    for (k, frame) in frames.iter().enumerate() {
-        if k > 0 {
-            s.push(',');
+    s.push_str("{\"times\":");
+    array(&mut s, frames.iter().map(|f| f.t), num64);
+    s.push_str(",\"steps\":");
+    array(&mut s, frames, |s, f| match f.step {
+        Some(step) => {
+            let _ = write!(s, "{step}");
         }
-        num64(&mut s, frame.t);
-    }
-    s.push_str("],\"steps\":[");
-    for (k, frame) in frames.iter().enumerate() {
-        if k > 0 {
-            s.push(',');
-        }
-        match frame.step {
-            Some(step) => {
-                let _ = write!(s, "{step}");
-            }
-            None => s.push_str("null"),
-        }
-    }
-    s.push_str("],\"readout\":{\"time\":");
-    unit(
-        &mut s,
-        readout.scale.time.name,
-        readout.scale.time.per_pkdgrav,
-    );
+        None => s.push_str("null"),
+    });
+    s.push_str(",\"readout\":{\"time\":");
+    unit(&mut s, &readout.scale.time);
     s.push_str(",\"length\":");
-    unit(
-        &mut s,
-        readout.scale.length.name,
-        readout.scale.length.per_pkdgrav,
-    );
+    unit(&mut s, &readout.scale.length);
     let _ = write!(s, ",\"withPkdgrav\":{}}}", readout.with_pkdgrav);
-    s.push_str(",\"centre\":[");
-    for (i, c) in centre.iter().enumerate() {
-        if i > 0 {
-            s.push(',');
-        }
-        num64(&mut s, *c);
-    }
-    s.push_str("],\"size\":");
+    s.push_str(",\"centre\":");
+    array(&mut s, centre.iter().copied(), num64);
+    s.push_str(",\"size\":");
     num64(&mut s, size);
     s.push_str(",\"sizeLabel\":");
     string(&mut s, &readout.length(size));
     let _ = write!(s, ",\"trails\":{}", options.trails.unwrap_or(0));
-    s.push_str(",\"walls\":[");
-    let first_walls = frames.first().map_or(&[][..], |f| &f.walls[..]);
-    let mut first = true;
-    for wm in first_walls {
-        // The mesh's colour: ssdraw's, or what an ssdraw.par made it.
-        let Some(color) = wm.rgb.map(palette::css) else {
-            continue;
-        };
-        if !first {
-            s.push(',');
-        }
-        first = false;
-        wall(&mut s, scene, frames, wm, &color, (&centre, size));
-    }
-    s.push_str("],\"particles\":");
+    s.push_str(",\"walls\":");
+    // The walls drawn: those of the first frame with a colour (ssdraw's, or what an
+    // ssdraw.par made it).
+    let drawn: Vec<(&WallMesh, String)> = frames
+        .first()
+        .map_or(&[][..], |f| &f.walls[..])
+        .iter()
+        .filter_map(|wm| Some((wm, palette::css(wm.rgb?))))
+        .collect();
+    let placements = placements(frames, &drawn);
+    array(
+        &mut s,
+        drawn.iter().zip(&placements),
+        |s, ((wm, color), placed)| {
+            wall(s, scene, wm, placed, color, (&centre, size));
+        },
+    );
+    s.push_str(",\"particles\":");
     particles(&mut s, frames, &centre, size);
     s.push('}');
     s
 }
 
+/// Each drawn wall's origin and turn in every frame (a frame without the wall keeps the
+/// one before), the frames' walls matched by index in one pass over each frame.
+fn placements(
+    frames: &[MovieFrame],
+    drawn: &[(&WallMesh, String)],
+) -> Vec<Vec<(Vec3, Rotation3<f64>)>> {
+    let slot: BTreeMap<usize, usize> = drawn
+        .iter()
+        .enumerate()
+        .map(|(i, (wm, _))| (wm.wall, i))
+        .collect();
+    let mut placed: Vec<(Vec3, Rotation3<f64>)> =
+        drawn.iter().map(|(wm, _)| (wm.origin, wm.turn)).collect();
+    let mut placements = vec![Vec::with_capacity(frames.len()); drawn.len()];
+    for frame in frames {
+        for m in &frame.walls {
+            if let Some(&i) = slot.get(&m.wall) {
+                placed[i] = (m.origin, m.turn);
+            }
+        }
+        for (each, &now) in placements.iter_mut().zip(&placed) {
+            each.push(now);
+        }
+    }
+    placements
+}
+
 /// One wall of the first frame, `wm`: its mesh about its origin, and where each frame
-/// has its origin and how it turns it (about the origin, from the first frame).
+/// has its origin and how it turns it (`placements`, about the origin, from the first
+/// frame).
 fn wall(
     s: &mut String,
     scene: &Scene,
-    frames: &[MovieFrame],
     wm: &WallMesh,
+    placements: &[(Vec3, Rotation3<f64>)],
     color: &str,
     (centre, size): (&Vec3, f64),
 ) {
@@ -477,17 +483,6 @@ fn wall(
     );
     s.push_str(",\"indices\":");
     nums(s, wm.mesh.triangles.iter().flatten().map(|&i| f64::from(i)));
-    // Each frame's placement (a frame without the wall keeps the one before).
-    let mut placed = (wm.origin, wm.turn);
-    let placements: Vec<(Vec3, Rotation3<f64>)> = frames
-        .iter()
-        .map(|f| {
-            if let Some(m) = f.walls.iter().find(|m| m.wall == wm.wall) {
-                placed = (m.origin, m.turn);
-            }
-            placed
-        })
-        .collect();
     s.push_str(",\"origins\":");
     coords(s, placements.iter().map(|(o, _)| *o), centre, size);
     s.push_str(",\"turns\":");
@@ -500,20 +495,10 @@ fn wall(
     } else {
         nums(s, turns.iter().flat_map(|q| [q.i, q.j, q.k, q.w]));
     }
-    s.push_str(",\"tokens\":[");
-    if let Some(w) = scene.walls.get(wm.wall) {
-        for (i, (k, v)) in tokens(w).into_iter().enumerate() {
-            if i > 0 {
-                s.push(',');
-            }
-            s.push('[');
-            string(s, k);
-            s.push(',');
-            string(s, &v);
-            s.push(']');
-        }
-    }
-    s.push_str("]}");
+    s.push_str(",\"tokens\":");
+    let shown = scene.walls.get(wm.wall).map(tokens).unwrap_or_default();
+    array(s, shown, |s, (k, v)| array(s, [k, v.as_str()], string));
+    s.push('}');
 }
 
 /// The particles of every frame, matched by their index: each one's index, radius (in
@@ -530,57 +515,39 @@ fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
         return;
     }
     let slot: BTreeMap<i32, usize> = seen.keys().enumerate().map(|(i, &k)| (k, i)).collect();
-    s.push_str("{\"ids\":[");
-    for (i, index) in seen.keys().enumerate() {
-        if i > 0 {
-            s.push(',');
-        }
+    s.push_str("{\"ids\":");
+    array(s, seen.keys(), |s, index| {
         let _ = write!(s, "{index}");
-    }
-    s.push_str("],\"radii\":");
+    });
+    s.push_str(",\"radii\":");
     nums(s, seen.values().map(|(r, _)| r.abs() / size));
-    s.push_str(",\"colors\":[");
-    for (i, (_, color)) in seen.values().enumerate() {
-        if i > 0 {
-            s.push(',');
-        }
+    s.push_str(",\"colors\":");
+    array(s, seen.values(), |s, (_, color)| {
         match palette::hex(i64::from(*color)) {
             Some(hex) => string(s, &hex),
             None => s.push_str("null"),
         }
-    }
-    s.push_str("],\"positions\":[");
+    });
+    s.push_str(",\"positions\":");
     let mut at: Vec<Option<Vec3>> = vec![None; seen.len()];
-    for (k, frame) in frames.iter().enumerate() {
-        if k > 0 {
-            s.push(',');
-        }
+    array(s, frames, |s, frame| {
         at.iter_mut().for_each(|q| *q = None);
         for p in &frame.particles {
             if let Some(&i) = slot.get(&p.index) {
                 at[i] = Some(p.pos);
             }
         }
-        s.push('[');
-        for (i, q) in at.iter().enumerate() {
-            if i > 0 {
-                s.push(',');
-            }
-            match q {
-                Some(q) => {
-                    for (j, c) in ((q - centre) / size).iter().enumerate() {
-                        if j > 0 {
-                            s.push(',');
-                        }
-                        coord(s, *c);
-                    }
-                }
-                None => s.push_str("null,null,null"),
-            }
-        }
-        s.push(']');
-    }
-    s.push_str("]}");
+        // Three coordinates a particle, `null`s for one the frame lacks.
+        let xyz = at.iter().flat_map(|q| {
+            let x = q.map(|q| <[f64; 3]>::from((q - centre) / size));
+            (0..3).map(move |j| x.map(|x| x[j]))
+        });
+        array(s, xyz, |s, c| match c {
+            Some(c) => coord(s, c),
+            None => s.push_str("null"),
+        });
+    });
+    s.push('}');
 }
 
 #[cfg(test)]

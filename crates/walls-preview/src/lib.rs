@@ -17,3 +17,12 @@ pub mod vtk;
 
 pub use mesh::{Mesh, WallMesh, wall_meshes, wall_meshes_in};
 pub use movie::MovieFrame;
+
+/// `s` as XML or HTML text or a quoted attribute's value: `&`, `<`, `>` and `"`
+/// escaped.
+pub(crate) fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('"', "&quot;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}

@@ -17,6 +17,7 @@
 
 use crate::palette;
 use nalgebra::Vector3;
+use std::collections::BTreeMap;
 pub use walls_geometry::Mesh;
 use walls_geometry::mesh::basis;
 use walls_geometry::{Wall, decode, scene_bounds};
@@ -69,7 +70,12 @@ pub fn wall_meshes_in(
 }
 
 /// [`wall_meshes_in`] of decoded walls.
-fn meshes_of(walls: &[Wall], t: f64, segments: usize, scene_box: &(Vec3, Vec3)) -> Vec<WallMesh> {
+pub(crate) fn meshes_of(
+    walls: &[Wall],
+    t: f64,
+    segments: usize,
+    scene_box: &(Vec3, Vec3),
+) -> Vec<WallMesh> {
     walls
         .iter()
         .enumerate()
@@ -123,6 +129,12 @@ pub enum Placement {
 pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
     use nalgebra::{Matrix3, Rotation3};
     let walls = decode(scene);
+    // Each wall's mesh by index, found once (a reactive hull of 10⁴ triangles).
+    let at: BTreeMap<usize, usize> = meshes
+        .iter()
+        .enumerate()
+        .map(|(i, m)| (m.wall, i))
+        .collect();
     for p in placed {
         let (w, origin, turn) = match *p {
             Placement::Polygon {
@@ -171,7 +183,7 @@ pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
                 (wall, origin, turn)
             }
         };
-        let Some(m) = meshes.iter_mut().find(|m| m.wall == w) else {
+        let Some(m) = at.get(&w).map(|&i| &mut meshes[i]) else {
             continue;
         };
         let from = m.origin;

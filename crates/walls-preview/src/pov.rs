@@ -22,6 +22,7 @@
 
 use crate::palette;
 use nalgebra::Vector3;
+use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::path::Path;
 use walls_geometry::Particle;
@@ -99,9 +100,12 @@ pub fn write_frame_file(
     view: &View,
 ) -> io::Result<()> {
     let walls = decode(scene);
+    // The frame's walls by index, looked up once each (a hull of 10⁴ triangles).
+    let placed: BTreeMap<usize, &crate::WallMesh> =
+        frame.walls.iter().map(|m| (m.wall, m)).collect();
     let shapes = walls
         .iter()
-        .map(|w| match frame.walls.iter().find(|m| m.wall == w.index) {
+        .map(|w| match placed.get(&w.index) {
             Some(m) => w.shape.turned(m.origin, &m.turn),
             None => w.shape.at(w.motion.position_or_origin(frame.t)),
         })
@@ -200,7 +204,7 @@ fn write_shapes(
         };
         let transmit = wall.appearance.transparency.clamp(0.0, 1.0);
         writeln!(out, "// wall {i}: {kind}")?;
-        match primitive(&shape.renormalised(&centre, size), &Vec3::zeros(), 1.0) {
+        match primitive(&shape.renormalised(&centre, size)) {
             Some((object, style)) => {
                 writeln!(out, "{object}\n  {style}({colour}, {})\n}}", num(transmit))?
             }
@@ -316,9 +320,10 @@ fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::R
     )
 }
 
-/// The wall's object, without its texture and closing brace, and its style macro; `None`
-/// for shapes of no area.
-fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'static str)> {
+/// The wall's object in renormalised coordinates (the scene's centre at 0, its size 1),
+/// without its texture and closing brace, and its style macro; `None` for shapes of no
+/// area.
+fn primitive(shape: &Shape) -> Option<(String, &'static str)> {
     let axis = shape
         .axis()
         .and_then(|a| direction(&a))
@@ -327,11 +332,12 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
     let v = vec;
     match *shape {
         Shape::Plane(_) => {
-            // A square 2·size across centred where the scene's centre projects onto
-            // the plane, size/1000 thick: the box in the frame (u, v, axis) moved there.
-            let c = centre - axis * axis.dot(&(centre - o));
+            // A square twice the scene's size across centred where the scene's centre
+            // projects onto the plane, a thousandth of it thick: the box in the frame
+            // (u, v, axis) moved there.
+            let c = axis * axis.dot(&o);
             let (u, w) = basis(&axis);
-            let (h, e) = (num(size), num(size * 1e-3));
+            let (h, e) = (num(1.0), num(1e-3));
             let m = [u, w, axis, c].map(|x| format!("{}, {}, {}", num(x.x), num(x.y), num(x.z)));
             Some((
                 format!(
@@ -396,8 +402,8 @@ fn primitive(shape: &Shape, centre: &Vec3, size: f64) -> Option<(String, &'stati
             })
         }
         Shape::InfiniteCylinder(InfiniteCylinder { radius, .. }) => (radius > 0.0).then(|| {
-            let c = o + axis * axis.dot(&(centre - o));
-            let (a, b) = (c - axis * size, c + axis * size);
+            let c = o - axis * axis.dot(&o);
+            let (a, b) = (c - axis, c + axis);
             (
                 format!("cylinder {{ {}, {}, {} open", v(&a), v(&b), num(radius)),
                 "CylinderStyle",

@@ -7,7 +7,7 @@
 //! collection names its frame's file relative to the `.pvd` and gives the frame's time
 //! as `timestep`, in the collection's time unit (the same as the frames' `TIME`).
 
-use crate::MovieFrame;
+use crate::{MovieFrame, escape};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use walls_geometry::units::Scale;
@@ -77,12 +77,4 @@ pub fn write(
     }
     writeln!(out, "  </Collection>")?;
     writeln!(out, "</VTKFile>")
-}
-
-/// `s` as an XML attribute value.
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('"', "&quot;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }

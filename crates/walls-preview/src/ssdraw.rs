@@ -240,21 +240,26 @@ Particle shape = 2
 
     #[test]
     fn bad_values_name_their_line() {
-        assert_eq!(
-            read("\nCamera position = 1 2\n").unwrap_err().to_string(),
-            "line 2: `Camera position` takes 3 numbers, not `1 2`"
-        );
-        assert_eq!(
-            read("Colour 300 = 1 1 1").unwrap_err().to_string(),
-            "line 1: `300` is not a colour index (0 to 255)"
-        );
-        assert_eq!(
-            read("Background color = 2 0 0").unwrap_err().to_string(),
-            "line 1: colours are red, green and blue from 0 to 1, not 2 0 0"
-        );
-        assert_eq!(
-            read("Aspect ratio = -1").unwrap_err().to_string(),
-            "line 1: `Aspect ratio` must be above 0, not -1"
-        );
+        for (text, message) in [
+            (
+                "\nCamera position = 1 2\n",
+                "line 2: `Camera position` takes 3 numbers, not `1 2`",
+            ),
+            (
+                "Colour 300 = 1 1 1",
+                "line 1: `300` is not a colour index (0 to 255)",
+            ),
+            (
+                "Background color = 2 0 0",
+                "line 1: colours are red, green and blue from 0 to 1, not 2 0 0",
+            ),
+            (
+                "Aspect ratio = -1",
+                "line 1: `Aspect ratio` must be above 0, not -1",
+            ),
+            ("Wall data file =", "line 1: `Wall data file` names no file"),
+        ] {
+            assert_eq!(read(text).unwrap_err().to_string(), message, "{text:?}");
+        }
     }
 }

@@ -6,6 +6,7 @@
 //! bar. Several frames make an animated SVG (SMIL: one group per frame, shown in turn),
 //! which browsers play without script.
 
+use crate::escape;
 use crate::mesh::WallMesh;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
@@ -62,8 +63,8 @@ struct Camera {
 }
 
 impl Camera {
-    /// Fits the box `lo`–`hi` (and the particles) into the view, with a margin.
-    fn new(view: &View, lo: &Vec3, hi: &Vec3, particles: &[Particle]) -> Camera {
+    /// Fits the box `lo`–`hi` (and the particles' `centres`) into the view, with a margin.
+    fn new(view: &View, lo: &Vec3, hi: &Vec3, centres: impl Iterator<Item = Vec3>) -> Camera {
         let towards = view.from.try_normalize(0.0).unwrap_or_else(Vec3::z);
         let right = view
             .up
@@ -80,7 +81,7 @@ impl Camera {
                 )
             })
             .collect();
-        points.extend(particles.iter().map(|p| p.pos));
+        points.extend(centres);
         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
         for p in &points {
             let (x, y) = (right.dot(p), up.dot(p));
@@ -284,13 +285,6 @@ fn draw(camera: &Camera, frame: &Frame, readout: &Readout) -> String {
     s
 }
 
-/// `s` as SVG text.
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
-
 /// The axes (bottom left) and a scale bar (bottom right) of a round length near a
 /// fifth of the width, round in `readout`'s length unit and labelled in it.
 fn furniture(camera: &Camera, readout: &Readout) -> String {
@@ -349,8 +343,10 @@ pub fn write(
     seconds: f64,
     readout: &Readout,
 ) -> io::Result<()> {
-    let all: Vec<Particle> = frames.iter().flat_map(|f| f.particles.to_vec()).collect();
-    let camera = Camera::new(view, &bounds.0, &bounds.1, &all);
+    let centres = frames
+        .iter()
+        .flat_map(|f| f.particles.iter().map(|p| p.pos));
+    let camera = Camera::new(view, &bounds.0, &bounds.1, centres);
     let mut s = String::new();
     let _ = writeln!(
         s,

@@ -5,10 +5,10 @@
 //! installs it). The frames, their times, particle positions and the unit metadata must
 //! read back, in SI when asked.
 
+mod vtk_reader;
+
 use nalgebra::Vector3;
-use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
+use vtk_reader::read_back;
 use walls_geometry::Particle;
 use walls_geometry::units::{AU_CM, Readout, Scale, System, TIME_UNIT_S};
 use walls_model::{Options, Units, analyze};
@@ -56,22 +56,6 @@ if errors:
 print(json.dumps(frames))
 "#;
 
-fn read_back(path: &Path) -> Value {
-    let out = Command::new("python3")
-        .args(["-c", READER])
-        .arg(path)
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "reading {} back failed (python3 with the `vtk` package is needed: run \
-         scripts/install-test-tools):\n{}",
-        path.display(),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("the reader prints JSON")
-}
-
 /// Three frames of a disk and a particle falling past it, in a file that sets units
 /// (centimetres, seconds).
 fn movie() -> (walls_model::Scene, Vec<MovieFrame>) {
@@ -104,7 +88,7 @@ fn paraview_reads_the_frames_times_and_positions() {
     let mut written = Vec::new();
     pvd::write_file(&path, &frames, &Scale::PKDGRAV, |k| written.push(k)).unwrap();
     assert_eq!(written, [0, 1, 2]);
-    let read = read_back(&path);
+    let read = read_back(READER, &path);
     let read = read.as_array().unwrap();
     assert_eq!(read.len(), 3);
     for (k, frame) in read.iter().enumerate() {
@@ -126,7 +110,7 @@ fn si_frames_are_in_metres_and_seconds() {
     let path = dir.path().join("si.pvd");
     let si = Readout::new(System::Si, &scene.units).scale;
     pvd::write_file(&path, &frames, &si, |_| {}).unwrap();
-    let read = read_back(&path);
+    let read = read_back(READER, &path);
     let frame = &read[2];
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
     // z = 0.5 AU, radius 0.1 AU, t = 0.5 pkdgrav time units, in metres and seconds.

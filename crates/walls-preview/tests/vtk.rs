@@ -5,10 +5,12 @@
 //! mesh triangle, cell and point arrays as long as the cells and points, and the same
 //! coordinates and values that were written.
 
+mod vtk_reader;
+
 use nalgebra::Vector3;
 use serde_json::Value;
 use std::path::Path;
-use std::process::Command;
+use vtk_reader::read_back;
 use walls_geometry::Particle;
 use walls_geometry::units::Scale;
 use walls_model::{Options, analyze};
@@ -73,31 +75,6 @@ print(json.dumps({
 }))
 "#;
 
-fn read_back(path: &Path) -> Value {
-    let available = Command::new("python3")
-        .args(["-c", "import vtkmodules.vtkIOXML"])
-        .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false);
-    assert!(
-        available,
-        "python3 with the `vtk` package (VTK's reader, the independent check) is missing: \
-         run scripts/install-test-tools"
-    );
-    let out = Command::new("python3")
-        .args(["-c", READER])
-        .arg(path)
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "vtkXMLPolyDataReader failed on {}:\n{}",
-        path.display(),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("the reader prints JSON")
-}
-
 fn particle(i: i32) -> Particle {
     let f = f64::from(i);
     Particle {
@@ -134,7 +111,7 @@ fn vtkxmlpolydatareader_reads_back_the_walls_and_particles() {
     let mut bytes = Vec::new();
     vtk::write(&mut bytes, &walls, &particles, 0.0, &Scale::PKDGRAV).unwrap();
     std::fs::write(&path, &bytes).unwrap();
-    let seen = read_back(&path);
+    let seen = read_back(READER, &path);
 
     let wall_points: usize = walls.iter().map(|w| w.mesh.positions.len()).sum();
     let triangles: usize = walls.iter().map(|w| w.mesh.triangles.len()).sum();
@@ -267,7 +244,7 @@ fn walls_alone_and_nothing_at_all_are_read_back() {
         let mut bytes = Vec::new();
         vtk::write(&mut bytes, walls, &[], 0.0, &Scale::PKDGRAV).unwrap();
         std::fs::write(&path, &bytes).unwrap();
-        let seen = read_back(&path);
+        let seen = read_back(READER, &path);
         let triangles = walls.len();
         assert_eq!(seen["points"], 3 * triangles, "{name}");
         assert_eq!(seen["cells"], triangles, "{name}");

@@ -29,9 +29,10 @@ pub struct PreviewArgs {
     #[arg(long, value_name = "T", default_value_t = 0.0, allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     pub time: f64,
     /// The picture, by its extension: .svg (the default, on standard output without
-    /// --out), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for ParaView), .pvd
-    /// (a ParaView collection of one .vtp per frame, in a folder named after it) or
-    /// .html (an interactive page over [--time, --until]).
+    /// --out or with `-`), .pov (POV-Ray, with walls.inc beside it), .vtp (VTK, for
+    /// ParaView), .pvd (a ParaView collection of one .vtp per frame, in a folder named
+    /// after it) or .html (an interactive page; with --until, of the walls' motion over
+    /// [0, --until]).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Particles to draw too: a CSV or .ss file; or a run's outputs as a movie, one
@@ -86,22 +87,12 @@ pub fn run(args: &PreviewArgs) -> ExitCode {
 }
 
 fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
+    // The format first: a wrong --out is told before any input is read.
+    let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
     let file = walls_file(args, ssdraw.as_ref())?;
     let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
     let scene = &checked.scene;
-    let kind = args
-        .out
-        .as_ref()
-        .and_then(|p| p.extension())
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let placed = matches!(
-        kind.as_deref(),
-        None | Some("svg" | "vtp" | "pvd" | "html" | "pov")
-    );
-    if args.reactive.is_some() && !placed {
-        return Err("--reactive is drawn in .svg, .pov, .vtp, .pvd and .html pictures".into());
-    }
     let inputs: Vec<PathBuf> = args
         .particles
         .iter()
@@ -109,8 +100,8 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
         .cloned()
         .collect();
     let (snapshots, found_viz) = read_particles(&inputs)?;
-    // A run folder's WALLSREACTviz.out is used where reactive walls are drawn.
-    let viz_file = args.reactive.clone().or(found_viz.filter(|_| placed));
+    // Every format draws reactive walls where a run moved them.
+    let viz_file = args.reactive.clone().or(found_viz);
     let viz = match &viz_file {
         Some(f) => {
             let text = std::fs::read_to_string(f)
@@ -169,15 +160,7 @@ fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
-    output::write(
-        args,
-        &file,
-        ssdraw.as_ref(),
-        kind.as_deref(),
-        scene,
-        &movie,
-        series,
-    )?;
+    output::write(args, &file, ssdraw.as_ref(), kind, scene, &movie, series)?;
     Ok(exit_status(errors))
 }
 
@@ -214,13 +197,9 @@ fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>),
     let mut snapshots = Vec::new();
     for f in &files {
         snapshots.extend(movie::read_snapshots(Path::new(f))?);
-        if let Some(bar) = &bar {
-            bar.inc(1);
-        }
+        bar.inc(1);
     }
-    if let Some(bar) = bar {
-        bar.finish_and_clear();
-    }
+    bar.finish_and_clear();
     Ok((snapshots, viz))
 }
 

@@ -6,6 +6,7 @@
 use super::PreviewArgs;
 use crate::commands::sim::UnitsArg;
 use crate::movie::Movie;
+use indicatif::ProgressBar;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
 use walls_geometry::units::{Readout, Scale};
@@ -18,26 +19,69 @@ use walls_preview::ssdraw::SsdrawView;
 const LONG: usize = 20;
 
 /// A bar on standard error counting `len` files `done` ("read", "written"), for a
-/// series longer than [`LONG`] when standard error is a terminal.
-pub(super) fn progress(len: usize, done: &str) -> Option<indicatif::ProgressBar> {
+/// series longer than [`LONG`] when standard error is a terminal; otherwise a hidden
+/// one, which counts without drawing.
+pub(super) fn progress(len: usize, done: &str) -> ProgressBar {
     if len <= LONG || !std::io::stderr().is_terminal() {
-        return None;
+        return ProgressBar::hidden();
     }
-    let bar = indicatif::ProgressBar::new(len as u64);
+    let bar = ProgressBar::new(len as u64);
     let template = format!("walls-sim {{bar:40}} {{pos}}/{{len}} frames {done}, {{eta}} left");
     if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
         bar.set_style(style);
     }
-    Some(bar)
+    bar
 }
 
-/// Writes `frames` as `kind` (the extension of --out; `None`: SVG on standard output).
-/// `series`: the frames are a run's outputs (not --frames of one picture).
+/// The pictures `--out` can name, by its extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    Svg,
+    Pov,
+    Vtp,
+    Pvd,
+    Html,
+}
+
+impl Kind {
+    /// The picture `out` asks for by its extension (`None`: no --out, or `-`, SVG on
+    /// standard output), or why it names none.
+    pub(super) fn of(out: Option<&Path>) -> Result<Option<Kind>, String> {
+        let Some(path) = out.filter(|p| *p != Path::new("-")) else {
+            return Ok(None);
+        };
+        let extension = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        let kind = match extension.as_deref() {
+            Some("svg") => Kind::Svg,
+            Some("pov") => Kind::Pov,
+            Some("vtp") => Kind::Vtp,
+            Some("pvd") => Kind::Pvd,
+            Some("html") => Kind::Html,
+            Some(other) => return Err(format!("cannot draw .{other} files: {NAMES}")),
+            None => {
+                return Err(format!(
+                    "--out {} has no extension to tell the picture's format by: {NAMES}",
+                    path.display()
+                ));
+            }
+        };
+        Ok(Some(kind))
+    }
+}
+
+/// The formats, as the errors of [`Kind::of`] name them.
+const NAMES: &str =
+    "use .svg, .pov, .vtp, .pvd or .html (or no --out, or --out -, for SVG on standard output)";
+
+/// Writes `frames` as `kind` (`None`: SVG on standard output). `series`: the frames
+/// are a run's outputs (not --frames of one picture).
 pub(super) fn write(
     args: &PreviewArgs,
     file: &str,
     ssdraw: Option<&SsdrawView>,
-    kind: Option<&str>,
+    kind: Option<Kind>,
     scene: &Scene,
     movie: &Movie,
     series: bool,
@@ -54,7 +98,7 @@ pub(super) fn write(
                 .and_then(|()| out.flush())
                 .map_err(|e| format!("cannot write the picture: {e}"))
         }
-        Some("svg") => {
+        Some(Kind::Svg) => {
             let save = |path: &Path, frames: &[MovieFrame]| {
                 let mut out = std::io::BufWriter::new(
                     std::fs::File::create(path).map_err(|e| cannot(path, e))?,
@@ -68,17 +112,13 @@ pub(super) fn write(
                 let bar = progress(frames.len(), "written");
                 for (k, frame) in frames.iter().enumerate() {
                     save(&numbered(path, k, "svg"), std::slice::from_ref(frame))?;
-                    if let Some(bar) = &bar {
-                        bar.inc(1);
-                    }
+                    bar.inc(1);
                 }
-                if let Some(bar) = bar {
-                    bar.finish_and_clear();
-                }
+                bar.finish_and_clear();
             }
             Ok(())
         }
-        Some("pov") => {
+        Some(Kind::Pov) => {
             let default = walls_preview::pov::View::default();
             // ssdraw's camera where --view does not say otherwise, looking at its
             // look-at point or the scene's centre.
@@ -111,16 +151,12 @@ pub(super) fn write(
                 };
                 walls_preview::pov::write_frame_file(&file, scene, frame, movie.bounds, &pov_view)
                     .map_err(|e| cannot(&file, e))?;
-                if let Some(bar) = &bar {
-                    bar.inc(1);
-                }
+                bar.inc(1);
             }
-            if let Some(bar) = bar {
-                bar.finish_and_clear();
-            }
+            bar.finish_and_clear();
             Ok(())
         }
-        Some("vtp") => {
+        Some(Kind::Vtp) => {
             let [frame] = frames else {
                 return Err(format!(
                     "{} frames do not fit in one .vtp: write a ParaView collection, --out {}",
@@ -140,27 +176,22 @@ pub(super) fn write(
             .and_then(|()| out.flush())
             .map_err(|e| cannot(path, e))
         }
-        Some("pvd") => {
+        Some(Kind::Pvd) => {
             let bar = progress(frames.len(), "written");
             walls_preview::pvd::write_file(path, frames, &vtk_scale(args.units, &readout), |_| {
-                if let Some(bar) = &bar {
-                    bar.inc(1);
-                }
+                bar.inc(1)
             })
             .map_err(|e| cannot(path, e))?;
-            if let Some(bar) = bar {
-                bar.finish_and_clear();
-            }
+            bar.finish_and_clear();
             Ok(())
         }
-        Some("html") => {
+        Some(Kind::Html) => {
             let mut out =
                 std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            let until = args.until.unwrap_or(args.time);
-            let written = match frames {
+            let written = match (frames, args.until) {
                 // One set of particles with the walls' motion over [0, --until],
                 // sampled at 101 times.
-                [frame] if !series && args.until.is_some() => {
+                ([frame], Some(until)) if !series => {
                     let moving = html_particles(frame);
                     walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
                 }
@@ -179,9 +210,6 @@ pub(super) fn write(
                 .and_then(|()| out.flush())
                 .map_err(|e| cannot(path, e))
         }
-        Some(other) => Err(format!(
-            "cannot draw .{other} files: use .svg, .pov, .vtp, .pvd or .html (or no --out for SVG on standard output)"
-        )),
     }
 }
 
