@@ -240,17 +240,15 @@ pub fn frames(
         .collect();
     snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
     let times: Vec<f64> = snapshots.iter().map(|(t, _)| t + wall_offset).collect();
-    let all: Vec<Particle> = snapshots
-        .iter()
-        .flat_map(|(_, s)| s.particles.iter().cloned())
-        .collect();
-    let bounds = walls_geometry::scene_bounds_at(&walls_geometry::decode(scene), &all, &times);
+    let decoded = walls_geometry::decode(scene);
+    let all = snapshots.iter().flat_map(|(_, s)| &s.particles);
+    let bounds = walls_geometry::scene_bounds_at(&decoded, all, &times);
     let mut unmatched: Vec<u64> = Vec::new();
     let frames = snapshots
         .into_iter()
         .map(|(t, s)| {
             let mut walls =
-                walls_preview::wall_meshes_in(scene, t + wall_offset, segments, &bounds);
+                walls_preview::wall_meshes_in(&decoded, t + wall_offset, segments, &bounds);
             if let Some(viz) = viz {
                 let placed = match s.step {
                     None => Some(viz.last()),
@@ -263,7 +261,7 @@ pub fn frames(
                     }
                 };
                 if let Some(placed) = placed {
-                    walls_preview::mesh::place(&mut walls, scene, placed);
+                    walls_preview::mesh::place(&mut walls, &decoded, placed);
                 }
             }
             MovieFrame {

@@ -46,8 +46,13 @@ pub fn scene_bounds(walls: &[Wall], particles: &[Particle]) -> (Vec3, Vec3) {
 }
 
 /// The box around `walls` where they are at each of `times` and `particles`: a moving
-/// scene's box over a span (see the module documentation).
-pub fn scene_bounds_at(walls: &[Wall], particles: &[Particle], times: &[f64]) -> (Vec3, Vec3) {
+/// scene's box over a span (see the module documentation). The particles may be those
+/// of many frames, read in place.
+pub fn scene_bounds_at<'a>(
+    walls: &[Wall],
+    particles: impl IntoIterator<Item = &'a Particle>,
+    times: &[f64],
+) -> (Vec3, Vec3) {
     let mut b = Grow::empty();
     for w in walls.iter().filter(|w| !w.shape.is_infinite()) {
         // A wall that does not translate is where it is at every time: once is enough

@@ -47,16 +47,17 @@ wall type rectangle
 
 fn main() {
     let scene = movie_scene();
+    let decoded = walls_geometry::decode(&scene);
     let scene_box = (Vector3::repeat(-5.0 * CM), Vector3::repeat(5.0 * CM));
     // Particles falling in a spiral, deterministic; one in ten leaves half-way through.
     let frames: Vec<MovieFrame> = (0..FRAMES)
         .map(|k| {
             let t = 1e-7 * k as f64;
-            let mut walls = wall_meshes_in(&scene, t, 64, &scene_box);
+            let mut walls = wall_meshes_in(&decoded, t, 64, &scene_box);
             let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), 0.05 * k as f64);
             place(
                 &mut walls,
-                &scene,
+                &decoded,
                 &[Placement::Polygon {
                     wall: 3,
                     origin: turn * Vector3::new(-3.0, -0.5, -4.0) * CM,

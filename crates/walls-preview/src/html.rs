@@ -26,7 +26,7 @@
 //! `frames`, `play()`, `pause()` and `hoverAt(x, y)` (client pixels) once `ready`, and
 //! `document.body.dataset` has `ready`, `time` and `frame`, for tests and scripts.
 
-use crate::mesh::meshes_of;
+use crate::mesh::wall_meshes_in;
 use crate::{MovieFrame, WallMesh, escape, palette};
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use std::collections::BTreeMap;
@@ -112,7 +112,7 @@ pub fn write(
         .map(|(&t, particles)| MovieFrame {
             t,
             step: None,
-            walls: meshes_of(&walls, t, SEGMENTS, &scene_box),
+            walls: wall_meshes_in(&walls, t, SEGMENTS, &scene_box),
             particles,
         })
         .collect();

@@ -54,23 +54,14 @@ pub struct WallMesh {
 pub fn wall_meshes(scene: &Scene, t: f64, segments: usize) -> Vec<WallMesh> {
     let walls = decode(scene);
     let scene_box = scene_bounds(&walls, &[]);
-    meshes_of(&walls, t, segments, &scene_box)
+    wall_meshes_in(&walls, t, segments, &scene_box)
 }
 
-/// Every wall of `scene` at time `t`, with planes and infinite cylinders cut to
-/// `scene_box` (the box around the walls and particles of a picture, or of every frame
-/// of a movie, [`walls_geometry::scene_bounds_at`]).
+/// Every wall of a scene (decoded once by [`walls_geometry::decode`], for every frame)
+/// at time `t`, with planes and infinite cylinders cut to `scene_box` (the box around the
+/// walls and particles of a picture, or of every frame of a movie,
+/// [`walls_geometry::scene_bounds_at`]).
 pub fn wall_meshes_in(
-    scene: &Scene,
-    t: f64,
-    segments: usize,
-    scene_box: &(Vec3, Vec3),
-) -> Vec<WallMesh> {
-    meshes_of(&decode(scene), t, segments, scene_box)
-}
-
-/// [`wall_meshes_in`] of decoded walls.
-pub(crate) fn meshes_of(
     walls: &[Wall],
     t: f64,
     segments: usize,
@@ -121,14 +112,13 @@ pub enum Placement {
     },
 }
 
-/// Moves each placed wall's mesh in `meshes` (made from `scene`) to its placement: the
+/// Moves each placed wall's mesh in `meshes` (made from `walls`) to its placement: the
 /// rigid turn that takes the wall's own vectors to the placed ones, about its origin,
 /// then to the placed origin. A round wall turns by the shortest rotation from its
 /// orient to the placed one (its shape is the same about the axis; half a turn about a
 /// perpendicular when the two are opposite).
-pub fn place(meshes: &mut [WallMesh], scene: &Scene, placed: &[Placement]) {
+pub fn place(meshes: &mut [WallMesh], walls: &[Wall], placed: &[Placement]) {
     use nalgebra::{Matrix3, Rotation3};
-    let walls = decode(scene);
     // Each wall's mesh by index, found once (a reactive hull of 10⁴ triangles).
     let at: BTreeMap<usize, usize> = meshes
         .iter()

@@ -411,15 +411,16 @@ fn movie() -> (Scene, Vec<MovieFrame>, MovieOptions) {
         p.color = color;
         p
     };
+    let decoded = walls_geometry::decode(&scene);
     let frames = (0..3)
         .map(|k| {
-            let mut walls = wall_meshes_in(&scene, 0.0, 64, &box_);
+            let mut walls = wall_meshes_in(&decoded, 0.0, 64, &box_);
             // The bar turned k quarter turns about z, about its centre (0, 0, 0).
             let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), FRAC_PI_2 * k as f64);
             let corner = Vector3::new(-2.0, -0.25, 0.0) * CM;
             place(
                 &mut walls,
-                &scene,
+                &decoded,
                 &[Placement::Polygon {
                     wall: 1,
                     origin: turn * corner,

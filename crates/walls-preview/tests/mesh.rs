@@ -148,7 +148,7 @@ fn reactive_walls_are_drawn_where_a_run_left_them() {
             orient: Vector3::x(),
         },
     ];
-    place(&mut meshes, &s, &placed);
+    place(&mut meshes, &decode(&s), &placed);
     let corners: Vec<_> = meshes[0].mesh.positions.clone();
     let expect = [
         Vector3::new(5.0, 0.0, 1.0),
@@ -187,7 +187,7 @@ fn a_round_wall_turned_upside_down_is_drawn_so() {
     assert!((wide(&meshes[0]) + 1.0).abs() < 1e-12);
     place(
         &mut meshes,
-        &cone,
+        &decode(&cone),
         &[Placement::Round {
             wall: 0,
             origin: Vector3::zeros(),

@@ -29,7 +29,7 @@ fn scene(unit: f64) -> (Scene, Vec<Particle>) {
 fn svg(unit: f64) -> String {
     let (s, particles) = scene(unit);
     let bounds = scene_bounds(&decode(&s), &particles);
-    let walls = wall_meshes_in(&s, 0.0, 16, &bounds);
+    let walls = wall_meshes_in(&walls_geometry::decode(&s), 0.0, 16, &bounds);
     let frames = [Frame {
         t: 0.0,
         walls: &walls,
@@ -77,7 +77,7 @@ fn vtk_holds_the_scene_at_its_scale() {
     let points = |unit: f64, units: System| {
         let (s, particles) = scene(unit);
         let bounds = scene_bounds(&decode(&s), &particles);
-        let walls = wall_meshes_in(&s, 0.0, 8, &bounds);
+        let walls = wall_meshes_in(&walls_geometry::decode(&s), 0.0, 8, &bounds);
         let mut out = Vec::new();
         let scale = Readout::new(units, &s.units).scale;
         vtk::write(&mut out, &walls, &particles, 0.0, &scale).unwrap();
