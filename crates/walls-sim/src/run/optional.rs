@@ -175,7 +175,7 @@ fn why_not(settings: &Settings, has: bool, option: &'static str) -> Option<Strin
         Some(format!("the build lacks {option}"))
     } else if settings.integrator != Integrator::Pkdgrav {
         Some(format!(
-            "{option} is followed only with pkdgrav's contact law (Integrator::Pkdgrav, which --integrator does not select yet)"
+            "{option} is followed only with pkdgrav's contact law (--integrator pkdgrav, the default)"
         ))
     } else {
         None
