@@ -1236,8 +1236,7 @@ impl<'a> SoftStepper<'a> {
 /// timestep, 1.2/N for N = π/(ω₀·dt) steps per contact (ω₀ = √(k_n/m); W202,
 /// docs/run-warnings.md), and no less than round-off (10⁻⁹).
 fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
-    let omega_dt = (k_n / mass).sqrt() * dt;
-    let tolerance = 1.2 * omega_dt / std::f64::consts::PI;
+    let tolerance = super::stability::rebound_error((k_n / mass).sqrt(), dt);
     if tolerance.is_finite() {
         tolerance.max(1e-9)
     } else {
