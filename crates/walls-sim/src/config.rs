@@ -416,7 +416,7 @@ fn optional_key_warnings(
                 )
             } else if integrator != Integrator::Pkdgrav {
                 format!(
-                    "{what} is followed only with pkdgrav's contact law (Integrator::Pkdgrav, which --integrator does not select yet): the run ignores the key"
+                    "{what} is followed only with pkdgrav's contact law (--integrator pkdgrav, the default): the run ignores the key"
                 )
             } else {
                 return None;

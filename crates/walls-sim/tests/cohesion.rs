@@ -327,10 +327,15 @@ fn crossing_the_boundary_rescales_the_shear_spring_and_keeps_its_energy() {
 
 /// Resolves `par` (a `.par` file's text) for a floor scene with `build`.
 fn settings_of(par: &str, build: &str) -> (Settings, Vec<String>) {
+    settings_with(par, build, Integrator::Pkdgrav)
+}
+
+/// [`settings_of`] with `integrator`.
+fn settings_with(par: &str, build: &str, integrator: Integrator) -> (Settings, Vec<String>) {
     let params = parse_par(par).unwrap();
     let flags = Flags {
         build: Some(Build::parse(build).unwrap()),
-        integrator: Integrator::Pkdgrav,
+        integrator,
         ..Flags::default()
     };
     let run = resolve(
@@ -375,6 +380,19 @@ fn par_keys_of_a_build_option_the_run_lacks_are_warned_about() {
     // With the options, no warning.
     let (_, warned) = settings_of(text, "DEM DEM_ROTATION_DASHPOT DEM_COHESION DEM_TWOLAYERS");
     assert_eq!(warned, Vec::<String>::new());
+    // With the options but another integrator, each key is ignored, saying which one
+    // follows it.
+    let (_, warned) = settings_with(
+        "dKn = 1e5\ndCohesiveCoeff = 2e-3\n",
+        "DEM DEM_ROTATION_DASHPOT DEM_COHESION",
+        Integrator::Leapfrog,
+    );
+    assert_eq!(
+        warned,
+        [
+            "line 2: `dCohesiveCoeff`: cohesion (physics.md §7) is followed only with pkdgrav's contact law (--integrator pkdgrav, the default): the run ignores the key"
+        ]
+    );
     // An invalid model is an error on its line.
     assert_eq!(
         parse_par("iCohesionModel = 2\n").unwrap_err().to_string(),
@@ -480,7 +498,10 @@ fn walls_tokens_of_a_build_option_the_run_lacks_are_warned_about() {
         Integrator::Leapfrog,
     ));
     assert_eq!(leapfrog.len(), 2);
-    assert!(leapfrog[0].1.contains("Integrator::Pkdgrav"));
+    assert_eq!(
+        leapfrog[0].1,
+        "walls [1] set cohesion_model, cohesive_coeff: DEM_COHESION is followed only with pkdgrav's contact law (--integrator pkdgrav, the default), so the run has no cohesion and ignores them"
+    );
     let full = pkdgrav(
         "DEM DEM_ROTATION_DASHPOT DEM_COHESION DEM_TWOLAYERS",
         Integrator::Pkdgrav,

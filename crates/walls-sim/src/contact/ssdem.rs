@@ -160,6 +160,14 @@ pub fn contact_radius(r: f64, x: f64) -> f64 {
     (2.0 * r * x - x * x).max(0.0).sqrt()
 }
 
+/// pkdgrav's contact radius (`bUseContactRadius`, physics.md §1.4): √(r² − l²), the
+/// radius of the circle a sphere of radius `r` cuts on the plane `lever` l from its
+/// centre (l = r − x against a wall, the distance to the plane of intersection between
+/// particles).
+pub fn lever_contact_radius(r: f64, lever: f64) -> f64 {
+    (r * r - lever * lever).max(0.0).sqrt()
+}
+
 /// What pkdgrav keeps of one contact from step to step (`dem.h DEM_ELEMENT`, physics.md
 /// §1.3): the shear spring, the normal it was last turned to (pkdgrav's: towards the
 /// partner; zero in a new contact), the rolling spring and the twist angle.

@@ -54,7 +54,6 @@ pub struct OptionalPhysics {
     /// Each particle's colour and own coefficient.
     colours: Vec<i32>,
     coefficients: Vec<f64>,
-    contact_radius: bool,
 }
 
 impl OptionalPhysics {
@@ -98,7 +97,6 @@ impl OptionalPhysics {
             walls,
             colours,
             coefficients,
-            contact_radius: settings.contact_radius,
         }
     }
 
@@ -107,9 +105,17 @@ impl OptionalPhysics {
         self.cohesion.is_some() || self.layers.is_some()
     }
 
-    /// What they add to the contact of particles `i` and `j` (radii `r1`, `r2`, lever
-    /// `l1` from i's centre, material `mat`).
-    pub fn pair(&self, i: usize, j: usize, r1: f64, r2: f64, l1: f64, mat: &Material) -> Optional {
+    /// What they add to the contact of particles `i` and `j` (radii `r1`, `r2`, the
+    /// contact radius `a` with `bUseContactRadius`, material `mat`).
+    pub fn pair(
+        &self,
+        i: usize,
+        j: usize,
+        r1: f64,
+        r2: f64,
+        a: Option<f64>,
+        mat: &Material,
+    ) -> Optional {
         if !self.any() {
             return Optional::default();
         }
@@ -121,9 +127,6 @@ impl OptionalPhysics {
                     }
                     _ => self.coefficients[i],
                 };
-                let a = self
-                    .contact_radius
-                    .then(|| (r1 * r1 - l1 * l1).max(0.0).sqrt());
                 cohesion::between_particles(c.model, coefficient, mat.beta_s, r1, r2, a)
             }
             None => 0.0,
@@ -135,9 +138,10 @@ impl OptionalPhysics {
         Optional { cohesion, layers }
     }
 
-    /// What they add to the contact of particle `i` (radius `r`, lever d = r − x) with
-    /// wall `w`, whose material against particles is `mat`.
-    pub fn wall(&self, w: usize, i: usize, r: f64, lever: f64, mat: &Material) -> Optional {
+    /// What they add to the contact of particle `i` (radius `r`, the contact radius `a`
+    /// with `bUseContactRadius`) with wall `w`, whose material against particles is
+    /// `mat`.
+    pub fn wall(&self, w: usize, i: usize, r: f64, a: Option<f64>, mat: &Material) -> Optional {
         if !self.any() {
             return Optional::default();
         }
@@ -145,9 +149,6 @@ impl OptionalPhysics {
         let cohesion = match &self.cohesion {
             Some(_) => {
                 let coefficient = values.coefficient.unwrap_or(self.coefficients[i]);
-                let a = self
-                    .contact_radius
-                    .then(|| (r * r - lever * lever).max(0.0).sqrt());
                 cohesion::against_wall(values.model, coefficient, mat.beta_s, r, a)
             }
             None => 0.0,
@@ -175,7 +176,7 @@ fn why_not(settings: &Settings, has: bool, option: &'static str) -> Option<Strin
         Some(format!("the build lacks {option}"))
     } else if settings.integrator != Integrator::Pkdgrav {
         Some(format!(
-            "{option} is followed only with pkdgrav's contact law (Integrator::Pkdgrav, which --integrator does not select yet)"
+            "{option} is followed only with pkdgrav's contact law (--integrator pkdgrav, the default)"
         ))
     } else {
         None

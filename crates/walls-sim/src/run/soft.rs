@@ -29,7 +29,7 @@ use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
     ConstantTorque, Dashpot, Material, Record, Rolling, Touch, contact, contact_radius,
-    damping_per_root_mass, dashpot_contact_with, normal_contact, resistance,
+    damping_per_root_mass, dashpot_contact_with, lever_contact_radius, normal_contact, resistance,
 };
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
@@ -298,6 +298,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
                 None => wall.spin,
             };
+            let a = walls.contact_radius.then(|| lever_contact_radius(r, lever));
             let dashpot = Dashpot {
                 overlap,
                 normal: -n,
@@ -306,27 +307,20 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 turn: s.particle.spin + wall_spin,
                 levers: (lever, 0.0),
                 mass: m,
-                radius: if walls.contact_radius {
-                    (r * r - lever * lever).max(0.0).sqrt()
-                } else {
-                    r
-                },
+                radius: a.unwrap_or(r),
                 wall: true,
-                constant_torque: walls.constant_torque.map(|legacy| {
-                    let a = (r * r - lever * lever).max(0.0).sqrt();
-                    ConstantTorque {
-                        spins: (spin, Vec3::zeros()),
-                        roll_levers: match (walls.contact_radius, legacy) {
-                            (true, _) => (a, 0.0),
-                            (false, true) => (lever, 0.0),
-                            (false, false) => (r, 0.0),
-                        },
-                        twist_radius: if walls.contact_radius { a } else { 0.0 },
-                        inertias: (inertia(m, r), f64::INFINITY),
-                    }
+                constant_torque: walls.constant_torque.map(|legacy| ConstantTorque {
+                    spins: (spin, Vec3::zeros()),
+                    roll_levers: match (a, legacy) {
+                        (Some(a), _) => (a, 0.0),
+                        (None, true) => (lever, 0.0),
+                        (None, false) => (r, 0.0),
+                    },
+                    twist_radius: a.unwrap_or(0.0),
+                    inertias: (inertia(m, r), f64::INFINITY),
                 }),
             };
-            let extra = walls.optional.wall(w, i, r, lever, mat);
+            let extra = walls.optional.wall(w, i, r, a, mat);
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
             load.force += c.force;
             load.torque += c.torque;
@@ -945,6 +939,9 @@ impl<'a> SoftStepper<'a> {
                 // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
                 // towards j, velocities and spins are j's relative to i's (physics.md
                 // §1.1–§1.5).
+                let a = (self.settings.contact_radius).then(|| lever_contact_radius(p.radius, li));
+                let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
+                let legacy = self.settings.legacy_roll;
                 let dashpot = Dashpot {
                     overlap,
                     normal: -n,
@@ -953,32 +950,25 @@ impl<'a> SoftStepper<'a> {
                     turn: p.spin + q.spin,
                     levers: (li, lj),
                     mass: reduced,
-                    radius: if self.settings.contact_radius && self.settings.legacy_roll {
+                    radius: match a {
                         // The contact radius is never worked out then (physics.md §1.6).
-                        0.0
-                    } else if self.settings.contact_radius {
-                        (p.radius * p.radius - li * li).max(0.0).sqrt()
-                    } else {
-                        p.radius * q.radius / (p.radius + q.radius)
+                        Some(_) if legacy => 0.0,
+                        Some(a) => a,
+                        None => reduced_radius,
                     },
                     wall: false,
                     constant_torque: (!self.settings.build.rotation_dashpot).then(|| {
-                        let a = (p.radius * p.radius - li * li).max(0.0).sqrt();
-                        let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
                         let inertia_of = |free: bool, m: f64, r: f64| {
                             if free { inertia(m, r) } else { f64::INFINITY }
                         };
                         ConstantTorque {
                             spins: (wi, wj),
-                            roll_levers: match (
-                                self.settings.contact_radius,
-                                self.settings.legacy_roll,
-                            ) {
-                                (true, _) => (a, a),
-                                (false, true) => (li, lj),
-                                (false, false) => (reduced_radius, reduced_radius),
+                            roll_levers: match (a, legacy) {
+                                (Some(a), _) => (a, a),
+                                (None, true) => (li, lj),
+                                (None, false) => (reduced_radius, reduced_radius),
                             },
-                            twist_radius: if self.settings.contact_radius { a } else { 0.0 },
+                            twist_radius: a.unwrap_or(0.0),
                             inertias: (
                                 inertia_of(free_i, p.mass, p.radius),
                                 inertia_of(free_j, q.mass, q.radius),
@@ -986,7 +976,7 @@ impl<'a> SoftStepper<'a> {
                         }
                     }),
                 };
-                let extra = self.optional.pair(i, j, p.radius, q.radius, li, mat);
+                let extra = self.optional.pair(i, j, p.radius, q.radius, a, mat);
                 let c = dashpot_contact_with(&dashpot, &mut entry.record, dt, mat, &extra);
                 if free_i {
                     loads[i].force += c.force;
@@ -1236,8 +1226,7 @@ impl<'a> SoftStepper<'a> {
 /// timestep, 1.2/N for N = π/(ω₀·dt) steps per contact (ω₀ = √(k_n/m); W202,
 /// docs/run-warnings.md), and no less than round-off (10⁻⁹).
 fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
-    let omega_dt = (k_n / mass).sqrt() * dt;
-    let tolerance = 1.2 * omega_dt / std::f64::consts::PI;
+    let tolerance = super::stability::rebound_error((k_n / mass).sqrt(), dt);
     if tolerance.is_finite() {
         tolerance.max(1e-9)
     } else {

@@ -13,6 +13,12 @@ use walls_geometry::Wall;
 /// (docs/accuracy.md, chart `accuracy_restitution`).
 const REBOUND_ERROR_TIMES_STEPS: f64 = 1.2;
 
+/// The relative rebound error expected of a contact of angular frequency `omega`
+/// (ω₀ = √(k_n/m)) stepped by `dt`: 1.2/N for N = π/(ω₀·dt) steps per contact.
+pub(super) fn rebound_error(omega: f64, dt: f64) -> f64 {
+    REBOUND_ERROR_TIMES_STEPS * omega * dt / std::f64::consts::PI
+}
+
 /// Warnings about a soft-sphere run of `states` against `scene` before it starts.
 pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Settings) -> Vec<Warning> {
     let mut out = Vec::new();
@@ -58,7 +64,7 @@ pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Setting
         } else if steps < 10.0 {
             out.push(Warning::FewStepsPerContact {
                 steps,
-                error_percent: 100.0 * REBOUND_ERROR_TIMES_STEPS / steps,
+                error_percent: 100.0 * rebound_error(omega, dt),
                 stiffest: what,
             });
         }
