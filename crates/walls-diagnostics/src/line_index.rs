@@ -1,7 +1,10 @@
 //! Byte offsets to lines and columns, computed only at the edge.
 //!
-//! Lines are split at `\n`. Columns count Unicode scalar values (characters), as the
-//! command-line contract asks; [`LineIndex::utf16_col`] serves the LSP.
+//! Lines are split at `\n` only, as pkdgrav reads them (`fgets`; a lone `\r` is white
+//! space to it and to the lexer), so that a report's line is the line pkdgrav and the
+//! syntax check count. Columns count Unicode scalar values (characters), as the
+//! command-line contract asks. The language server counts lines as editors do (`\n`,
+//! `\r\n` or a lone `\r`) and columns in UTF-16: it has its own index, `walls_ide::Lines`.
 //!
 //! Every query costs at most one block of [`BLOCK`] bytes, however long the line: the
 //! index keeps the number of characters before each block, so that a hundred thousand
@@ -31,13 +34,14 @@ impl LineIndex {
     /// Indexes `text`.
     pub fn new(text: &str) -> Self {
         let mut starts = vec![0];
-        starts.extend(memchr_newlines(text.as_bytes()));
-        let mut chars_before_block = Vec::with_capacity(text.len() / BLOCK + 1);
-        let mut chars = 0;
-        for block in text.as_bytes().chunks(BLOCK) {
-            chars_before_block.push(chars);
-            chars += count_chars(block);
-        }
+        starts.extend(memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1));
+        // One entry per block, and one for the end: any offset up to the length has one.
+        let chars_before_block = std::iter::once(0)
+            .chain(text.as_bytes().chunks(BLOCK).scan(0, |chars, block| {
+                *chars += count_chars(block);
+                Some(*chars)
+            }))
+            .collect();
         LineIndex {
             starts,
             chars_before_block,
@@ -47,13 +51,7 @@ impl LineIndex {
     /// The number of characters of `text` before byte `offset` (at most the text's length).
     fn chars_before(&self, text: &str, offset: usize) -> usize {
         let block = offset / BLOCK;
-        match self.chars_before_block.get(block) {
-            Some(&before) => before + count_chars(&text.as_bytes()[block * BLOCK..offset]),
-            None => {
-                self.chars_before_block.last().copied().unwrap_or(0)
-                    + count_chars(&text.as_bytes()[(block.max(1) - 1) * BLOCK..offset])
-            }
-        }
+        self.chars_before_block[block] + count_chars(&text.as_bytes()[block * BLOCK..offset])
     }
 
     /// The 0-based line holding byte `offset` (offsets past the end map to the last line).
@@ -83,28 +81,11 @@ impl LineIndex {
             column: column + 1,
         }
     }
-
-    /// 0-based line and UTF-16 column of byte `offset`, as the LSP counts them.
-    pub fn utf16_col(&self, text: &str, offset: usize) -> (usize, usize) {
-        let offset = offset.min(text.len());
-        let line = self.line_of(offset);
-        let start = self.starts[line];
-        let prefix = text.get(start..offset).unwrap_or_default();
-        (line, prefix.encode_utf16().count())
-    }
 }
 
 /// The number of bytes of `bytes` that start a character.
 fn count_chars(bytes: &[u8]) -> usize {
     bytes.iter().filter(|&&b| (b as i8) >= -0x40).count()
-}
-
-fn memchr_newlines(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
-    bytes
-        .iter()
-        .enumerate()
-        .filter(|&(_, &b)| b == b'\n')
-        .map(|(i, _)| i + 1)
 }
 
 #[cfg(test)]
@@ -120,7 +101,6 @@ mod tests {
         assert_eq!(idx.line_col(text, 5), LineCol { line: 2, column: 2 });
         assert_eq!(idx.line_col(text, 7), LineCol { line: 3, column: 1 });
         assert_eq!(idx.line_col(text, 99), LineCol { line: 3, column: 1 });
-        assert_eq!(idx.utf16_col(text, 5), (1, 1));
     }
 
     #[test]
@@ -143,5 +123,15 @@ mod tests {
             let expected = count_chars(&text.as_bytes()[start..offset]) + 1;
             assert_eq!(idx.line_col(&text, offset).column, expected, "at {offset}");
         }
+        // A text that ends on a block's end: its end is in the table too.
+        let text = "μ".repeat(BLOCK / 2);
+        let end = LineIndex::new(&text).line_col(&text, text.len());
+        assert_eq!(
+            end,
+            LineCol {
+                line: 1,
+                column: BLOCK / 2 + 1
+            }
+        );
     }
 }

@@ -3,9 +3,9 @@
 //! Checked over the walls in HSDEM: walls are gathered by the place that leaves the
 //! coefficient at 99, and each place is reported once, after every wall.
 
+use super::{ByPlace, walls_named};
 use crate::check::Checker;
 use crate::scene::Wall;
-use std::collections::HashMap;
 use walls_diagnostics::{Code, Diagnostic, MAX_LABELS};
 use walls_keywords::Keyword;
 
@@ -35,7 +35,7 @@ wall type plane
 /// The walls that leave `epsn` or `epst` at 99, by keyword and by the start of the
 /// token that set 99 (none for the built-in value).
 #[derive(Default)]
-pub(crate) struct AtNinetyNine<'w>(HashMap<(Keyword, Option<usize>), Vec<&'w Wall>>);
+pub(crate) struct AtNinetyNine<'w>(ByPlace<'w, (Keyword, Option<usize>)>);
 
 impl<'w> AtNinetyNine<'w> {
     /// Notes `wall` if it leaves a coefficient at 99.
@@ -46,16 +46,14 @@ impl<'w> AtNinetyNine<'w> {
                     .setting(k)
                     .and_then(|s| s.source.span())
                     .map(|s| s.start);
-                self.0.entry((k, key)).or_default().push(wall);
+                self.0.add((k, key), wall);
             }
         }
     }
 
     /// Reports each place, in the order of its first wall.
     pub(crate) fn report(self, cx: &mut Checker) {
-        let mut groups: Vec<_> = self.0.into_iter().collect();
-        groups.sort_by_key(|((k, _), walls)| (walls[0].index, *k));
-        for ((k, source), walls) in groups {
+        for ((k, source), walls) in self.0.into_groups() {
             report(cx, k, source.is_some(), &walls);
         }
     }
@@ -64,18 +62,8 @@ impl<'w> AtNinetyNine<'w> {
 /// One diagnostic per place that leaves the coefficient at 99 for the walls listed.
 fn report(cx: &mut Checker, k: Keyword, from_token: bool, walls: &[&Wall]) {
     let first = walls[0];
-    let mut ids: Vec<String> = walls
-        .iter()
-        .take(MAX_LABELS)
-        .map(|w| w.index.to_string())
-        .collect();
-    if walls.len() > MAX_LABELS {
-        ids.push("…".into());
-    }
-    let which = match walls.len() {
-        1 => format!("wall {} leaves", first.index),
-        n => format!("{n} walls ({}) leave", ids.join(", ")),
-    };
+    let verb = if walls.len() == 1 { "leaves" } else { "leave" };
+    let which = format!("{} {verb}", walls_named(walls));
     let span = if from_token {
         cx.span_of(first, k).unwrap_or_else(|| first.span.clone())
     } else {

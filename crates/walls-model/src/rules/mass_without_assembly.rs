@@ -5,9 +5,9 @@
 //! `defaults` line is reported on that line, with the walls it reaches as labels (the
 //! first [`MAX_LABELS`]; the message gives their count).
 
+use super::{ByPlace, walls_named};
 use crate::check::Checker;
 use crate::scene::{Place, Source, Wall};
-use std::collections::HashMap;
 use walls_diagnostics::{Applicability, Code, Diagnostic, Edit, MAX_LABELS};
 use walls_keywords::Keyword;
 
@@ -42,7 +42,7 @@ wall type disk
 /// The reactive walls with no assembly, by the start of the `mass` values that gave
 /// them their mass.
 #[derive(Default)]
-pub(crate) struct NoAssembly<'w>(HashMap<usize, Vec<&'w Wall>>);
+pub(crate) struct NoAssembly<'w>(ByPlace<'w, usize>);
 
 impl<'w> NoAssembly<'w> {
     /// Notes `wall`, a reactive wall, if it has no assembly.
@@ -54,14 +54,12 @@ impl<'w> NoAssembly<'w> {
             .setting(Keyword::Mass)
             .and_then(|s| s.source.span())
             .map_or(wall.span.start, |s| s.start);
-        self.0.entry(key).or_default().push(wall);
+        self.0.add(key, wall);
     }
 
     /// Reports each `mass` token, in the order of its first wall.
     pub(crate) fn report(self, cx: &mut Checker) {
-        let mut groups: Vec<_> = self.0.into_values().collect();
-        groups.sort_by_key(|walls| walls[0].index);
-        for walls in groups {
+        for (_, walls) in self.0.into_groups() {
             report(cx, &walls);
         }
     }
@@ -80,22 +78,13 @@ fn report(cx: &mut Checker, walls: &[&Wall]) {
     );
     let span = cx.mass_span(first);
     let mut d = if from_defaults {
-        let mut ids: Vec<String> = walls
-            .iter()
-            .take(MAX_LABELS)
-            .map(|w| w.index.to_string())
-            .collect();
-        if walls.len() > MAX_LABELS {
-            ids.push("…".into());
-        }
-        let which = match walls.len() {
-            1 => format!("wall {}", first.index),
-            n => format!("{n} walls ({})", ids.join(", ")),
-        };
         let mut d = Diagnostic::error(
             &MASS_WITHOUT_ASSEMBLY,
             span.clone(),
-            format!("this `defaults` mass gives {which} a mass but no assembly"),
+            format!(
+                "this `defaults` mass gives {} a mass but no assembly",
+                walls_named(walls)
+            ),
         );
         for w in walls.iter().take(MAX_LABELS) {
             d = d.with_label(w.span.clone(), format!("wall {} has this mass", w.index));

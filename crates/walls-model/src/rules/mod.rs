@@ -62,10 +62,63 @@ pub(crate) mod wall_too_fast;
 pub(crate) mod zero_vector;
 
 use crate::ContactModel;
-use crate::scene::Value;
+use crate::scene::{Value, Wall};
+use std::collections::HashMap;
+use std::hash::Hash;
 use std::ops::Range;
-use walls_diagnostics::Diagnostic;
+use walls_diagnostics::{Diagnostic, MAX_LABELS};
 use walls_keywords::{Keyword, ValueRange};
+
+/// Walls gathered by the place (`K`) that gave them what a rule reports, for one
+/// diagnostic per place: the groups come in the order of their first wall, when walls
+/// are added in file order.
+pub(crate) struct ByPlace<'w, K> {
+    /// Where each place's group is in `groups`.
+    at: HashMap<K, usize>,
+    groups: Vec<(K, Vec<&'w Wall>)>,
+}
+
+impl<K> Default for ByPlace<'_, K> {
+    fn default() -> Self {
+        ByPlace {
+            at: HashMap::new(),
+            groups: Vec::new(),
+        }
+    }
+}
+
+impl<'w, K: Hash + Eq + Copy> ByPlace<'w, K> {
+    /// Adds `wall` to the group of `place`.
+    pub(crate) fn add(&mut self, place: K, wall: &'w Wall) {
+        let i = *self.at.entry(place).or_insert_with(|| {
+            self.groups.push((place, Vec::new()));
+            self.groups.len() - 1
+        });
+        self.groups[i].1.push(wall);
+    }
+
+    /// Each place with its walls (at least one), in the order of their first wall.
+    pub(crate) fn into_groups(self) -> Vec<(K, Vec<&'w Wall>)> {
+        self.groups
+    }
+}
+
+/// How a message names `walls` (at least one): `wall 3`, or `4 walls (3, 5, 8, 9)` with
+/// the first [`MAX_LABELS`] numbers and `…` for the rest.
+pub(crate) fn walls_named(walls: &[&Wall]) -> String {
+    if let [wall] = walls {
+        return format!("wall {}", wall.index);
+    }
+    let mut ids: Vec<String> = walls
+        .iter()
+        .take(MAX_LABELS)
+        .map(|w| w.index.to_string())
+        .collect();
+    if walls.len() > MAX_LABELS {
+        ids.push("…".into());
+    }
+    format!("{} walls ({})", walls.len(), ids.join(", "))
+}
 
 /// A value as the resolver read it, for the value rules.
 pub(crate) struct Read<'a> {
