@@ -55,44 +55,52 @@ impl Client {
         self.service.ready().await.unwrap().call(req).await.unwrap();
     }
 
-    /// The next `publishDiagnostics` notification.
-    async fn diagnostics(&mut self) -> Value {
+    /// The parameters of the next notification `method` from the server.
+    async fn notification(&mut self, method: &str) -> Value {
         loop {
             let message = self
                 .socket
                 .next()
                 .await
-                .expect("the server sends diagnostics");
-            if message.method() == "textDocument/publishDiagnostics" {
+                .unwrap_or_else(|| panic!("the server sends {method}"));
+            if message.method() == method {
                 return message.params().cloned().unwrap();
             }
         }
     }
 
+    /// The next `publishDiagnostics` notification.
+    async fn diagnostics(&mut self) -> Value {
+        self.notification("textDocument/publishDiagnostics").await
+    }
+
     /// The text of the next `window/showMessage` notification.
     async fn message(&mut self) -> String {
-        loop {
-            let message = self
-                .socket
-                .next()
-                .await
-                .expect("the server sends a message");
-            if message.method() == "window/showMessage" {
-                return message.params().unwrap()["message"]
-                    .as_str()
-                    .unwrap()
-                    .into();
-            }
-        }
+        let params = self.notification("window/showMessage").await;
+        params["message"].as_str().unwrap().into()
     }
 
     async fn open(&mut self, text: &str) -> Value {
+        self.open_at(URI, text).await
+    }
+
+    /// Opens `text` at `uri`; its diagnostics.
+    async fn open_at(&mut self, uri: &str, text: &str) -> Value {
         self.notify(
             "textDocument/didOpen",
-            json!({"textDocument": {"uri": URI, "languageId": "walls", "version": 1, "text": text}}),
+            json!({"textDocument": {"uri": uri, "languageId": "walls", "version": 1, "text": text}}),
         )
         .await;
         self.diagnostics().await
+    }
+
+    /// The edits of `textDocument/formatting` for the document at `uri`.
+    async fn format(&mut self, uri: &str) -> Value {
+        self.request(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
+        )
+        .await
     }
 }
 
@@ -167,12 +175,7 @@ async fn hover_formatting_actions_symbols_folding() {
         "{shown}"
     );
 
-    let edits = c
-        .request(
-            "textDocument/formatting",
-            json!({"textDocument": {"uri": URI}, "options": {"tabSize": 2, "insertSpaces": true}}),
-        )
-        .await;
+    let edits = c.format(URI).await;
     assert_eq!(
         edits[0]["newText"],
         "lengthunit 2\ndefaults radius 0.25\n\nwall type disk\n  radius 0.5\n  color 3\n\nwall type plane\n  radius 1\n"
@@ -352,7 +355,7 @@ async fn a_whole_session_snapshot() {
         "hover": c.request("textDocument/hover", at(3, 3)).await,
         "symbols": c.request("textDocument/documentSymbol", doc.clone()).await,
         "folding": c.request("textDocument/foldingRange", doc.clone()).await,
-        "formatting": c.request("textDocument/formatting", json!({"textDocument": {"uri": URI}, "options": {"tabSize": 2, "insertSpaces": true}})).await,
+        "formatting": c.format(URI).await,
         "actions": c.request("textDocument/codeAction", json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 4, "character": 0}, "end": {"line": 5, "character": 1}}, "context": {"diagnostics": []}})).await,
         "hints": c.request("textDocument/inlayHint", all_lines.clone()).await,
         "definition": c.request("textDocument/definition", at(2, 1)).await,
@@ -367,18 +370,8 @@ async fn formatting_reads_the_project_configuration() {
     let path = dir.path().join("my scene.walls");
     let uri = format!("file://{}", path.display()).replace(' ', "%20");
     let mut c = Client::start(json!({})).await;
-    c.notify(
-        "textDocument/didOpen",
-        json!({"textDocument": {"uri": uri, "languageId": "walls", "version": 1, "text": "wall type disk radius 1\n"}}),
-    )
-    .await;
-    c.diagnostics().await;
-    let edits = c
-        .request(
-            "textDocument/formatting",
-            json!({"textDocument": {"uri": uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
-        )
-        .await;
+    c.open_at(&uri, "wall type disk radius 1\n").await;
+    let edits = c.format(&uri).await;
     assert_eq!(edits[0]["newText"], "wall type disk\n    radius 1\n");
 }
 
@@ -483,18 +476,8 @@ async fn a_broken_format_configuration_is_named_and_the_defaults_format() {
     std::fs::write(&config, "indent_width = 4\nindent = 4\n").unwrap();
     let uri = format!("file://{}/scene.walls", dir.path().display());
     let mut c = Client::start(json!({})).await;
-    c.notify(
-        "textDocument/didOpen",
-        json!({"textDocument": {"uri": uri, "languageId": "walls", "version": 1, "text": "wall type disk radius 1\n"}}),
-    )
-    .await;
-    c.diagnostics().await;
-    let edits = c
-        .request(
-            "textDocument/formatting",
-            json!({"textDocument": {"uri": uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
-        )
-        .await;
+    c.open_at(&uri, "wall type disk radius 1\n").await;
+    let edits = c.format(&uri).await;
     assert_eq!(edits[0]["newText"], "wall type disk\n  radius 1\n");
     let message = c.message().await;
     assert!(
