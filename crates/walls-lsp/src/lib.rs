@@ -283,21 +283,16 @@ impl LanguageServer for Backend {
         let (versions, problems): (Vec<(Uri, i32)>, _) = {
             let mut state = self.lock();
             let (options, problems) = options_from(&section, state.options.clone());
-            state.options = options;
-            let options = state.options.clone();
-            let uris: Vec<Uri> = state.documents.keys().cloned().collect();
-            let versions = uris
-                .into_iter()
-                .filter_map(|uri| {
-                    let doc = state.documents.remove(&uri)?;
-                    let version = doc.version;
-                    let text = doc.text().to_string();
-                    state
-                        .documents
-                        .insert(uri.clone(), Document::new(version, text, &options));
-                    Some((uri, version))
+            // Every open document is checked again with the new options.
+            let versions = state
+                .documents
+                .iter_mut()
+                .map(|(uri, doc)| {
+                    *doc = Document::new(doc.version, doc.text().to_string(), &options);
+                    (uri.clone(), doc.version)
                 })
                 .collect();
+            state.options = options;
             (versions, problems)
         };
         if let Some(message) = settings_message(&problems) {
