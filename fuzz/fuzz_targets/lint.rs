@@ -6,14 +6,14 @@
 
 use libfuzzer_sys::fuzz_target;
 use walls_diagnostics::render::{self, FileReport, ToolInfo};
-use walls_model::{Mode, Options};
+use walls_model::{ContactModel, Options};
 
 fuzz_target!(|data: &[u8]| {
-    let options = Options { mode: Mode::Hsdem, min_radius: Some(0.01), dt: Some(1e-3), ..Options::default() };
+    let options = Options { mode: ContactModel::Hsdem, min_radius: Some(0.01), dt: Some(1e-3), ..Options::default() };
     let checked = walls_cli::check_bytes(data.to_vec(), &options);
     let (text, diagnostics) = (checked.text, checked.diagnostics);
     let mut scene = Vec::new();
-    walls_model::json::write_scene(&mut scene, &checked.scene, &text, Some(1.5)).unwrap();
+    walls_geometry::json::write_scene(&mut scene, &checked.scene, &text, Some(1.5)).unwrap();
     let scene: serde_json::Value = serde_json::from_slice(&scene).expect("scene JSON parses");
     // NaN and infinities would be written as null: only an infinite mass may be null.
     for wall in scene["walls"].as_array().expect("walls") {
@@ -53,10 +53,11 @@ fuzz_target!(|data: &[u8]| {
     let files = [file];
     let mut sink = Vec::new();
     render::human(&mut sink, &files[0], false).unwrap();
-    render::github(&mut sink, &files).unwrap();
-    render::json(&mut sink, &files).unwrap();
+    render::github(&mut sink, &files, &[]).unwrap();
+    render::json(&mut sink, &files, &[]).unwrap();
     let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: None };
-    render::sarif(&mut sink, &files, &tool, &[]).unwrap();
+    let rules: Vec<_> = walls_cli::all_codes().collect();
+    render::sarif(&mut sink, &files, &[], &tool, &rules).unwrap();
 });
 
 /// Formatting either declines (syntax errors) or gives a stable text with the same
