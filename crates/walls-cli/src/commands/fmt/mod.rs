@@ -47,6 +47,9 @@ pub struct FmtArgs {
     /// Keep one of the blank lines the author wrote between statements.
     #[arg(long, value_name = "BOOL", num_args = 0..=1, default_missing_value = "true")]
     pub keep_blank_lines: Option<bool>,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
 }
 
 /// What happened to one file.

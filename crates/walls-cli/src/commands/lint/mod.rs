@@ -61,6 +61,9 @@ pub struct LintArgs {
     /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
     #[arg(long, value_name = "CODE", conflicts_with = "files")]
     pub explain: Option<String>,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
 }
 
 /// `--format`: where and how diagnostics are reported.
