@@ -52,3 +52,31 @@ fn man_pages_are_those_of_the_command_lines() {
     man_pages_in_step(FmtArgs::command());
     man_pages_in_step(SimArgs::command());
 }
+
+#[test]
+fn entry_points_return_the_exit_status_without_ending_the_process() {
+    let argv = |words: &[&str]| words.iter().map(Into::into).collect::<Vec<_>>();
+    assert_eq!(
+        walls_cli::entry::lint(argv(&["walls-lint", "--no-such"])),
+        2
+    );
+    assert_eq!(walls_cli::entry::fmt(argv(&["walls-fmt", "--version"])), 0);
+    assert_eq!(walls_cli::entry::sim(argv(&["walls-sim"])), 2);
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("scene.walls");
+    std::fs::write(&file, "wall type plane\n  raduis 1\n").unwrap();
+    let file = file.to_str().unwrap();
+    assert_eq!(walls_cli::entry::lint(argv(&["walls-lint", file])), 1);
+    assert_eq!(
+        walls_cli::entry::fmt(argv(&["walls-fmt", "--check", file])),
+        1
+    );
+    assert_eq!(
+        walls_cli::entry::lint(argv(&["walls-lint", "--unsafe-fixes", file])),
+        0
+    );
+    assert_eq!(
+        walls_cli::entry::fmt(argv(&["walls-fmt", "--check", file])),
+        0
+    );
+}

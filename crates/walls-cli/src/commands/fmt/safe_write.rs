@@ -141,6 +141,16 @@ pub enum WriteError {
     Io(io::Error),
 }
 
+impl WriteError {
+    /// What to tell the user about the file at `path`, which was not written.
+    pub fn message(&self, path: &str) -> String {
+        match self {
+            WriteError::Refused(why) => format!("not writing {path}: {why}"),
+            WriteError::Io(e) => format!("cannot write {path}: {e}"),
+        }
+    }
+}
+
 impl From<Refusal> for WriteError {
     fn from(r: Refusal) -> Self {
         WriteError::Refused(r)
