@@ -6,7 +6,10 @@
 //! A command line clap refuses prints clap's message to standard error and returns 2;
 //! `--help` and `--version` print to standard output and return 0, as does
 //! `--completions SHELL` (the shell's completion script, from the clap definitions).
-//! Nothing here ends the process.
+//! Nothing here ends the process; what the commands share can, as the binaries expect:
+//! a standard output closed by its reader ends it with status 0, one that fails with 2
+//! ([`crate::console`]), and a signal while `walls-sim run` runs, or while a file is
+//! written through a named temporary file, with 128 + the signal ([`crate::interrupt`]).
 
 use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, sim::SimArgs};
 use clap::Parser;

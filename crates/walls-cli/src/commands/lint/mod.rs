@@ -5,7 +5,7 @@
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
 //! findings, and every format reports it. Human output goes to standard error, machine
 //! output (json, sarif, github) to standard output. Folders are walked as [`walk`] says.
-//! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first ([`fix`]).
+//! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first (`fix.rs`).
 
 mod fix;
 mod walk;
