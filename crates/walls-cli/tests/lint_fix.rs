@@ -1,6 +1,7 @@
 //! `walls-lint --fix` writes files as walls-fmt does (the end-to-end cases under
 //! `tests/lint/fix-*` show the rest): a file it may not replace is left as it was and
-//! reported, with status 2; a file it fixes keeps its mode.
+//! reported, with status 2 and advice worded for walls-lint; a file it fixes keeps its
+//! mode.
 
 use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
@@ -58,4 +59,22 @@ fn a_fixed_file_keeps_its_mode() {
     assert_eq!(std::fs::read_to_string(&path).unwrap(), FIXED);
     let mode = std::fs::metadata(&path).unwrap().permissions().mode();
     assert_eq!(mode & 0o7777, 0o640);
+}
+
+#[test]
+fn a_refusal_says_what_to_do_with_walls_lint() {
+    let (dir, path) = scene_with_mode(0o644);
+    std::fs::hard_link(&path, dir.path().join("other-name.walls")).unwrap();
+    let out = fix(dir.path());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.starts_with(
+            "walls-lint: error: not writing scene.walls: it has 2 hard links, which a rewrite \
+             would part; fix a copy (walls-lint --fix - < FILE > COPY) and copy it back over \
+             the file\n"
+        ),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), GLUED);
 }

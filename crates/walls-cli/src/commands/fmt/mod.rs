@@ -248,7 +248,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     }
     match original.replace(formatted.as_bytes()) {
         Ok(()) => done,
-        Err(e) => Outcome::NotWritten(e.message(path)),
+        Err(e) => Outcome::NotWritten(e.message(path, safe_write::Rewriter::Format)),
     }
 }
 

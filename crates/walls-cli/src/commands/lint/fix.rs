@@ -111,7 +111,7 @@ pub(super) fn lint(path: &str, options: &Options, fixing: Fixing) -> (Linted, Fi
             Some((Ok(()), after)) => after,
             Some((Err(e), _)) => {
                 fixes.fixed = 0;
-                fixes.not_written = Some(e.message(path));
+                fixes.not_written = Some(e.message(path, safe_write::Rewriter::Fix));
                 checked
             }
         }
