@@ -94,10 +94,10 @@ pub(crate) fn side_entry(
 }
 
 /// A sphere meeting the circle of `radius` around `c` in the plane across unit `axis`:
-/// the ray against the torus of tube radius r, a quartic (docs/pkdgrav-physics.md §11). Moving
-/// along the axis itself the quartic has only double roots, so that case is the point
-/// quadratic with the distance √(r² − radius²); near the axis, a search on the distance
-/// to the circle backs the quartic up.
+/// the ray against the torus of tube radius r, a quartic (docs/pkdgrav-physics.md §11).
+/// Moving along the axis itself the quartic has only double roots, so that case is the
+/// point quadratic with the distance √(r² − radius²); near the axis, a search on the
+/// distance to the circle backs the quartic up.
 pub(crate) fn ring_entry(
     p: &Vec3,
     d: &Vec3,

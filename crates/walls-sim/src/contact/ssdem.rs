@@ -161,10 +161,10 @@ pub fn contact_radius(r: f64, x: f64) -> f64 {
     (2.0 * r * x - x * x).max(0.0).sqrt()
 }
 
-/// pkdgrav's contact radius (`bUseContactRadius`, docs/pkdgrav-physics.md §1.4): √(r² −
-/// l²), the radius of the circle a sphere of radius `r` cuts on the plane `lever` l from
-/// its centre (l = r − x against a wall, the distance to the plane of intersection
-/// between particles).
+/// pkdgrav's contact radius (`bUseContactRadius`, docs/pkdgrav-physics.md §1.4):
+/// √(r² − l²), the radius of the circle a sphere of radius `r` cuts on the plane `lever`
+/// l from its centre (l = r − x against a wall, the distance to the plane of
+/// intersection between particles).
 pub fn lever_contact_radius(r: f64, lever: f64) -> f64 {
     (r * r - lever * lever).max(0.0).sqrt()
 }
