@@ -104,7 +104,7 @@ pub(crate) fn looks_numeric(word: &str) -> bool {
         || unsigned.is_empty()
 }
 
-/// Length of the longest prefix of `b` that is a decimal real per SPEC §1.
+/// Length of the longest prefix of `b` that is a decimal real per docs/spec.md §1.
 fn decimal_prefix(b: &[u8]) -> usize {
     let mut i = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let int = b[i..].iter().take_while(|c| c.is_ascii_digit()).count();
