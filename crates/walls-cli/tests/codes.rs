@@ -116,7 +116,8 @@ fn docs_list_every_code() {
     let mut doc = String::from(
         "# Diagnostic codes\n\n<!-- Generated from the code registry by `UPDATE_DOCS=1 cargo test -p walls-cli --test codes`; do not edit. -->\n\n\
          `walls-lint --explain CODE` prints the same text. `S` codes are syntax (what pkdgrav refuses to read), \
-         `M` codes depend on the contact model (`--mode`).\n\n| code | name | summary |\n|---|---|---|\n",
+         `M` codes depend on the contact model (`--mode`), `L` codes are about the suppression comments \
+         (`# walls-lint: ignore CODE`, [configuration.md](configuration.md#suppression-comments)).\n\n| code | name | summary |\n|---|---|---|\n",
     );
     for c in all_codes() {
         doc.push_str(&format!(

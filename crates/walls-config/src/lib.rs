@@ -187,7 +187,7 @@ pub fn find_format(dir: &Path) -> Result<(FormatOptions, Option<PathBuf>), Setti
     let dir = absolute(dir);
     for d in dir.ancestors() {
         let settings = settings_in(d)?;
-        let old = d.join(FORMAT_FILE);
+        let old = shown(&d.join(FORMAT_FILE));
         let old = old.is_file().then_some(old);
         match (settings, old) {
             (Some(s), Some(old)) if s.format.is_some() => {
@@ -229,7 +229,7 @@ pub fn load(path: &Path) -> Result<Settings, SettingsError> {
 fn settings_in(dir: &Path) -> Result<Option<Settings>, SettingsError> {
     let mut found: Option<Settings> = None;
     for name in SETTINGS_FILES {
-        let path = dir.join(name);
+        let path = shown(&dir.join(name));
         if !path.is_file() {
             continue;
         }
@@ -249,6 +249,16 @@ fn settings_in(dir: &Path) -> Result<Option<Settings>, SettingsError> {
         found = Some(settings);
     }
     Ok(found)
+}
+
+/// `path` (absolute) as messages show it: relative to the current folder when it is
+/// inside it, else whole.
+fn shown(path: &Path) -> PathBuf {
+    std::env::current_dir()
+        .ok()
+        .map(|cwd| absolute(&cwd))
+        .and_then(|cwd| path.strip_prefix(cwd).ok().map(Path::to_path_buf))
+        .unwrap_or_else(|| path.to_path_buf())
 }
 
 /// `dir` as an absolute path without `.` or `..` (symbolic links resolved where it

@@ -152,7 +152,8 @@ impl File<'_> {
     }
 
     fn lint(&self, table: LintTable) -> Result<Lint, SettingsError> {
-        let dir = self.path.parent().unwrap_or(Path::new(""));
+        let dir = crate::absolute(self.path.parent().unwrap_or(Path::new("")));
+        let dir = dir.as_path();
         let positive = |x: Option<Spanned<f64>>, key: &str| -> Result<_, SettingsError> {
             match x {
                 Some(v) if !(*v.get_ref() > 0.0 && v.get_ref().is_finite()) => Err(self.error(

@@ -20,7 +20,11 @@ fn error(root: &Path, dir: &Path) -> String {
 fn the_nearest_folder_with_settings_wins_whole() {
     let dir = tempfile::tempdir().unwrap();
     let root = dir.path();
-    write(root, "walls.toml", "[lint]\nmode = \"hsdem\"\nmax-walls = 4\n");
+    write(
+        root,
+        "walls.toml",
+        "[lint]\nmode = \"hsdem\"\nmax-walls = 4\n",
+    );
     // A pyproject without [tool.walls] does not count.
     write(root, "a/pyproject.toml", "[project]\nname = \"x\"\n");
     write(root, "a/b/pyproject.toml", "[tool.walls.lint]\ndt = 0.5\n");
@@ -32,7 +36,10 @@ fn the_nearest_folder_with_settings_wins_whole() {
     let s = find(&root.join("a/b/c")).unwrap();
     assert_eq!(s.path, Some(absolute(root).join("a/b/pyproject.toml")));
     // Nothing is merged from further up.
-    assert_eq!((s.lint.mode, s.lint.max_walls, s.lint.dt), (None, None, Some(0.5)));
+    assert_eq!(
+        (s.lint.mode, s.lint.max_walls, s.lint.dt),
+        (None, None, Some(0.5))
+    );
     let none = tempfile::tempdir().unwrap();
     assert_eq!(find(none.path()).unwrap().path, None);
 }
@@ -42,10 +49,17 @@ fn format_options_come_from_the_nearest_settings_or_walls_fmt_toml() {
     let dir = tempfile::tempdir().unwrap();
     let root = dir.path();
     write(root, ".walls-fmt.toml", "indent_width = 4\n");
-    write(root, "a/.walls.toml", "[format]\nindent-width = 3\nkeep-blank-lines = false\n");
+    write(
+        root,
+        "a/.walls.toml",
+        "[format]\nindent-width = 3\nkeep-blank-lines = false\n",
+    );
     write(root, "a/b/walls.toml", "[lint]\nmax-walls = 30\n");
     let (o, path) = find_format(root).unwrap();
-    assert_eq!((o.indent_width, path), (4, Some(absolute(root).join(".walls-fmt.toml"))));
+    assert_eq!(
+        (o.indent_width, path),
+        (4, Some(absolute(root).join(".walls-fmt.toml")))
+    );
     let (o, _) = find_format(&root.join("a")).unwrap();
     assert_eq!((o.indent_width, o.keep_blank_lines), (3, false));
     // A settings file without [format]: the defaults.
@@ -109,8 +123,14 @@ fn every_mistake_is_located() {
             "[format]\nindent-width = 20\n",
             "ROOT/walls.toml:2:16: indent-width 20 is more than 16",
         ),
-        ("[fmt]\n", "ROOT/walls.toml:1:2: unknown field `fmt`, expected `lint` or `format`"),
-        ("[lint\n", "ROOT/walls.toml:1:6: unclosed table, expected `]`"),
+        (
+            "[fmt]\n",
+            "ROOT/walls.toml:1:2: unknown field `fmt`, expected `lint` or `format`",
+        ),
+        (
+            "[lint\n",
+            "ROOT/walls.toml:1:6: unclosed table, expected `]`",
+        ),
     ] {
         write(root, "walls.toml", text);
         assert_eq!(error(root, root), expected, "{text}");
@@ -128,9 +148,7 @@ fn ignores_hide_warnings_of_matching_files_but_never_errors() {
     );
     let s = find(root).unwrap();
     let text = "wall type plane\n  radius 2\n  origin 0 0\n";
-    let check = || {
-        walls_ide::check_text(text, &walls_model::Options::default()).diagnostics
-    };
+    let check = || walls_ide::check_text(text, &walls_model::Options::default()).diagnostics;
     let codes = |d: &[Diagnostic]| d.iter().map(|d| d.code.id).collect::<Vec<_>>();
     let old = absolute(root).join("old/a.walls");
     let mut d = check();
@@ -138,9 +156,13 @@ fn ignores_hide_warnings_of_matching_files_but_never_errors() {
     assert_eq!(codes(&d), ["S103"]);
     assert_eq!(met.len(), 1);
     assert_eq!(met[0].code.id, "S103");
-    assert_eq!(met[0].at.to_string(), format!("{}:2:11", absolute(root).join("walls.toml").display()));
+    assert_eq!(
+        met[0].at.to_string(),
+        format!("{}:2:11", absolute(root).join("walls.toml").display())
+    );
     let mut d = check();
-    s.lint.filter(Some(&absolute(root).join("new/a.walls")), &mut d);
+    s.lint
+        .filter(Some(&absolute(root).join("new/a.walls")), &mut d);
     assert_eq!(codes(&d), ["C201", "S103"]);
     let mut d = check();
     s.lint.filter(None, &mut d);
@@ -160,5 +182,8 @@ fn load_reads_the_file_named() {
     let s = load(&root.join("x/any.toml")).unwrap();
     assert_eq!(s.lint.deny_warnings, Some(true));
     let e = load(&root.join("x/none.toml")).unwrap_err().to_string();
-    assert!(e.ends_with("none.toml: cannot read: No such file or directory (os error 2)"), "{e}");
+    assert!(
+        e.ends_with("none.toml: cannot read: No such file or directory (os error 2)"),
+        "{e}"
+    );
 }

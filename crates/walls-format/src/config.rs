@@ -68,7 +68,8 @@ mod tests {
 
     #[test]
     fn both_spellings_are_read_and_limits_located() {
-        let t: FormatTable = toml::from_str("indent_width = 4\nkeep-blank-lines = false\n").unwrap();
+        let t: FormatTable =
+            toml::from_str("indent_width = 4\nkeep-blank-lines = false\n").unwrap();
         let o = t.options().unwrap();
         assert_eq!(o.indent_width, 4);
         assert!(!o.keep_blank_lines && !o.align_trailing_comments);

@@ -33,7 +33,7 @@ and docs/diagnostics.md list every code.
 Bad:
 ```walls
 wall type plane
-  radius 2  # walls-lint: ignore C210
+  radius 2  # walls-lint: ignore C299
 ```
 
 Good:
@@ -254,7 +254,10 @@ fn directive(tree: &SyntaxTree, i: usize, found: &mut Vec<Diagnostic>) -> Option
                 found.push(
                     malformed(
                         span,
-                        format!("`{word}` is not a code's id: suppressions name ids, such as `{}`", code.id),
+                        format!(
+                            "`{word}` is not a code's id: suppressions name ids, such as `{}`",
+                            code.id
+                        ),
                     )
                     .with_help(format!("`{}` is the id of `{}`", code.id, code.name)),
                 );
@@ -267,7 +270,9 @@ fn directive(tree: &SyntaxTree, i: usize, found: &mut Vec<Diagnostic>) -> Option
                         span.clone(),
                         format!("`{word}` is not a diagnostic code"),
                     )
-                    .with_help("`walls-lint --explain CODE` and docs/diagnostics.md list the codes"),
+                    .with_help(
+                        "`walls-lint --explain CODE` and docs/diagnostics.md list the codes",
+                    ),
                 );
                 codes.push(Entry {
                     span,
@@ -341,7 +346,10 @@ fn report(d: &Directive, found: &mut Vec<Diagnostic>) {
                 Diagnostic::warning(
                     &ERROR_NOT_SILENCED,
                     entry.span.clone(),
-                    format!("`{}` is an error here, and errors cannot be silenced", code.id),
+                    format!(
+                        "`{}` is an error here, and errors cannot be silenced",
+                        code.id
+                    ),
                 )
                 .with_label(error.clone(), "this error is still reported")
                 .with_help("correct the file: pkdgrav rejects or misreads what an error reports"),
@@ -351,9 +359,15 @@ fn report(d: &Directive, found: &mut Vec<Diagnostic>) {
                 ("remove the suppression comment", d.removal.clone())
             } else if k == 0 {
                 // The first code: up to the next one, so `ignore C201, M003` keeps `ignore M003`.
-                ("remove the unused code", entry.span.start..d.codes[1].span.start)
+                (
+                    "remove the unused code",
+                    entry.span.start..d.codes[1].span.start,
+                )
             } else {
-                ("remove the unused code", d.codes[k - 1].span.end..entry.span.end)
+                (
+                    "remove the unused code",
+                    d.codes[k - 1].span.end..entry.span.end,
+                )
             };
             found.push(
                 Diagnostic::warning(
@@ -463,15 +477,13 @@ mod tests {
         let text = "wall type plane\n  radius 2  # walls-lint: ignore C201\n\
                     wall type plane\n  # walls-lint: ignore C201\n\n  # why\n  radius 2\n\
                     wall type plane\n  radius 2\n";
-        assert_eq!(
-            report(text),
-            ["C201@9: a plane wall ignores `radius`"]
-        );
+        assert_eq!(report(text), ["C201@9: a plane wall ignores `radius`"]);
     }
 
     #[test]
     fn ignore_file_silences_everywhere_and_errors_are_never_silenced() {
-        let text = "# walls-lint: ignore-file C201 S103\nwall type plane\n  radius 2\n  origin 0 0\n";
+        let text =
+            "# walls-lint: ignore-file C201 S103\nwall type plane\n  radius 2\n  origin 0 0\n";
         assert_eq!(
             report(text),
             [

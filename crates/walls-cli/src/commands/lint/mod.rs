@@ -5,17 +5,20 @@
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
 //! findings, and every format reports it. Human output goes to standard error, machine
 //! output (json, sarif, github) to standard output. Folders are walked as [`walk`] says.
+//! Each file is checked with the settings found for it ([`super::settings`]); the flags
+//! win over them.
 
 mod walk;
 
+use super::settings::{Resolver, SettingsArgs, absolute_file};
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
 use std::io::Write;
 use std::process::ExitCode;
 use std::sync::Arc;
-use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo, Unreadable};
+use walls_diagnostics::{Diagnostic, Severity};
 use walls_model::Options;
 
 /// The command line of `walls-lint`.
@@ -24,7 +27,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile)."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -41,12 +44,13 @@ pub struct LintArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
-    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
-    #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
-    pub mode: ContactModel,
-    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls.
-    #[arg(long, value_name = "N", default_value_t = 20)]
-    pub max_walls: usize,
+    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code
+    /// lacks [default: ssdem].
+    #[arg(long, value_enum)]
+    pub mode: Option<ContactModel>,
+    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls [default: 20].
+    #[arg(long, value_name = "N")]
+    pub max_walls: Option<usize>,
     /// The smallest particle radius (pkdgrav units): enables the SSDEM wall-speed check.
     #[arg(long, value_name = "R", value_parser = positive)]
     pub min_radius: Option<f64>,
@@ -62,6 +66,9 @@ pub struct LintArgs {
     /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
     #[arg(long, value_name = "CODE", conflicts_with = "files")]
     pub explain: Option<String>,
+    /// Where the settings come from.
+    #[command(flatten)]
+    pub settings: SettingsArgs,
 }
 
 /// `--format`: where and how diagnostics are reported.
@@ -87,6 +94,10 @@ pub enum Color {
 struct Linted {
     name: String,
     outcome: Result<(Arc<str>, Vec<Diagnostic>), String>,
+    /// Its warnings fail the check (`--deny-warnings`, or its settings' `deny-warnings`).
+    deny_warnings: bool,
+    /// The settings' ignores of codes it has errors of: they are reported anyway.
+    ignored_errors: Vec<String>,
 }
 
 /// Checks the files `args` name and reports on them; the exit status.
@@ -94,13 +105,24 @@ pub fn run(args: &LintArgs) -> ExitCode {
     if let Some(query) = &args.explain {
         return explain(query);
     }
-    let options = Options {
-        mode: args.mode,
-        max_walls: args.max_walls,
-        min_radius: args.min_radius,
-        dt: args.dt,
+    let resolver = match Resolver::new(&args.settings) {
+        Ok(resolver) => resolver,
+        Err(e) => {
+            crate::errln!("walls-lint: error: {e}");
+            return ExitCode::from(2);
+        }
     };
-    let targets = match walk::expand(&args.files, &args.include, &args.exclude) {
+    let globs = |folder: &str| {
+        let lint = &resolver.settings(folder).map_err(|e| e.to_string())?.lint;
+        let pick = |flag: &Vec<String>, set: &Vec<String>| {
+            if flag.is_empty() { set } else { flag }.clone()
+        };
+        Ok((
+            pick(&args.include, &lint.include),
+            pick(&args.exclude, &lint.exclude),
+        ))
+    };
+    let targets = match walk::expand(&args.files, globs) {
         Ok(targets) => targets,
         Err(e) => {
             crate::errln!("walls-lint: error: {e}");
@@ -110,8 +132,13 @@ pub fn run(args: &LintArgs) -> ExitCode {
     let checked: Vec<Linted> = targets
         .files
         .par_iter()
-        .map(|p| lint(p, &options))
+        .map(|p| lint(p, args, &resolver))
         .collect();
+    for c in &checked {
+        for e in &c.ignored_errors {
+            crate::errln!("walls-lint: warning: {e}");
+        }
+    }
 
     let mut unreadable: Vec<Unreadable> = Vec::new();
     for c in &checked {
@@ -141,6 +168,12 @@ pub fn run(args: &LintArgs) -> ExitCode {
         })
         .collect();
     let summary = render::summarize(&reports);
+    let denied = checked.iter().any(|c| {
+        c.deny_warnings
+            && c.outcome.as_ref().is_ok_and(|(_, diagnostics)| {
+                diagnostics.iter().any(|d| d.severity == Severity::Warning)
+            })
+    });
     if let Err(e) = write_reports(args, &reports, &unreadable) {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-lint: error: cannot write output: {e}");
@@ -151,22 +184,55 @@ pub fn run(args: &LintArgs) -> ExitCode {
     std::mem::forget(checked);
     if io_failed {
         ExitCode::from(2)
-    } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
+    } else if summary.errors > 0 || denied {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
     }
 }
 
-fn lint(path: &str, options: &Options) -> Linted {
+/// Checks one file with its settings, the flags winning over them.
+fn lint(path: &str, args: &LintArgs, resolver: &Resolver) -> Linted {
+    let settings = match resolver.settings(path) {
+        Ok(settings) => settings,
+        Err(e) => {
+            return Linted {
+                name: input::display_name(path),
+                outcome: Err(e.to_string()),
+                deny_warnings: false,
+                ignored_errors: Vec::new(),
+            };
+        }
+    };
+    let set = &settings.lint;
+    let defaults = Options::default();
+    let options = Options {
+        mode: args.mode.or(set.mode).unwrap_or(defaults.mode),
+        max_walls: args
+            .max_walls
+            .or(set.max_walls)
+            .unwrap_or(defaults.max_walls),
+        min_radius: args.min_radius.or(set.min_radius),
+        dt: args.dt.or(set.dt),
+    };
     let read = input::read(path);
+    let mut ignored_errors = Vec::new();
     let outcome = read.bytes.map(|bytes| {
-        let checked = check_bytes(bytes, options);
+        let mut checked = check_bytes(bytes, &options);
+        let file = absolute_file(path);
+        for i in set.filter(file.as_deref(), &mut checked.diagnostics) {
+            ignored_errors.push(format!(
+                "{}: `{}` is ignored, but errors cannot be: its errors in {} are reported",
+                i.at, i.code.id, read.name
+            ));
+        }
         (checked.text, checked.diagnostics)
     });
     Linted {
         name: read.name,
         outcome,
+        deny_warnings: args.deny_warnings || set.deny_warnings.unwrap_or(false),
+        ignored_errors,
     }
 }
 
