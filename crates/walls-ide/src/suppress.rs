@@ -338,7 +338,7 @@ fn directive(tree: &SyntaxTree, i: usize, found: &mut Vec<Diagnostic>) -> Option
 /// attempts to silence an error.
 fn report(d: &Directive, found: &mut Vec<Diagnostic>) {
     let unused = |e: &Entry| e.code.is_some() && !e.used && e.errors.is_empty();
-    let all_unused = d.codes.iter().all(|e| unused(e));
+    let all_unused = d.codes.iter().all(unused);
     for (k, entry) in d.codes.iter().enumerate() {
         let Some(code) = entry.code else { continue };
         if let Some(error) = entry.errors.first() {

@@ -152,8 +152,12 @@ pub fn run(args: &LintArgs) -> ExitCode {
     for (path, e) in &targets.errors {
         unreadable.push(Unreadable { path, error: e });
     }
+    // A broken settings file is every file's error: said once.
+    let mut said = std::collections::HashSet::new();
     for u in &unreadable {
-        crate::errln!("walls-lint: error: {}", u.error);
+        if said.insert(u.error) {
+            crate::errln!("walls-lint: error: {}", u.error);
+        }
     }
     let io_failed = !unreadable.is_empty();
     let reports: Vec<FileReport> = checked
