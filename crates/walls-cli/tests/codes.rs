@@ -105,7 +105,7 @@ line.
 |---|---|
 | 0 | every file was read and has no error (warnings and infos allowed, unless `--deny-warnings`) |
 | 1 | every file was read and some have errors (or warnings, with `--deny-warnings`) |
-| 2 | usage error (bad option or glob), or an I/O error: a file, folder or `.par` that could not be read, or output that could not be written |
+| 2 | usage error (bad option or glob, or a settings file with a mistake: [configuration.md](configuration.md)), or an I/O error: a file, folder or `.par` that could not be read, or output that could not be written |
 
 An I/O error wins: one unreadable file makes the status 2 even when other files have
 errors, so that a script never takes a partial check for a complete one.
