@@ -176,10 +176,8 @@ pub(crate) fn apply(tree: &SyntaxTree, diagnostics: &mut Vec<Diagnostic>) {
         let last = diagnostics.partition_point(|x| x.span.start <= d.scope.end);
         for (i, diagnostic) in diagnostics.iter().enumerate().take(last).skip(first) {
             for entry in &mut d.codes {
-                if !entry
-                    .code
-                    .is_some_and(|c| std::ptr::eq(c, diagnostic.code) && !is_own(c))
-                {
+                // The `L` diagnostics are made after this: comments cannot silence them.
+                if !entry.code.is_some_and(|c| std::ptr::eq(c, diagnostic.code)) {
                     continue;
                 }
                 if diagnostic.severity == Severity::Error {
@@ -202,11 +200,6 @@ pub(crate) fn apply(tree: &SyntaxTree, diagnostics: &mut Vec<Diagnostic>) {
     kept.extend(found);
     kept.sort_by_key(|d| (d.span.start, d.span.end));
     *diagnostics = kept;
-}
-
-/// Whether `code` is one of this module's: comments do not silence them.
-fn is_own(code: &Code) -> bool {
-    ALL.iter().any(|c| std::ptr::eq(*c, code))
 }
 
 /// The directive in comment token `i`, if it is one; malformed ones are reported in
