@@ -140,7 +140,7 @@ line.
 |---|---|
 | 0 | every file was read and has no error (warnings and infos allowed, unless `--deny-warnings`) |
 | 1 | every file was read and some have errors (or warnings, with `--deny-warnings`) |
-| 2 | usage error (bad option or glob), or an I/O error: a file, folder or `.par` that could not be read, or output that could not be written |
+| 2 | usage error (bad option or glob, or a settings file with a mistake: [configuration.md](configuration.md)), or an I/O error: a file, folder or `.par` that could not be read, or output that could not be written |
 
 An I/O error wins: one unreadable file makes the status 2 even when other files have
 errors, so that a script never takes a partial check for a complete one.
@@ -151,7 +151,8 @@ fn docs_list_every_code() {
     let mut doc = String::from(
         "# Diagnostic codes\n\n<!-- Generated from the code registry by `UPDATE_DOCS=1 cargo test -p walls-cli --test codes`; do not edit. -->\n\n\
          `walls-lint --explain CODE` prints the same text. `S` codes are syntax (what pkdgrav refuses to read), \
-         `M` codes depend on the contact model (`--mode`).\n\n| code | name | summary |\n|---|---|---|\n",
+         `M` codes depend on the contact model (`--mode`), `L` codes are about the suppression comments \
+         (`# walls-lint: ignore CODE`, [configuration.md](configuration.md#suppression-comments)).\n\n| code | name | summary |\n|---|---|---|\n",
     );
     for c in all_codes() {
         doc.push_str(&format!(

@@ -17,12 +17,12 @@
 mod config;
 mod layout;
 
-pub use config::{CONFIG_FILE, ConfigError, discover};
+pub use config::{FormatTable, MAX_INDENT_WIDTH};
 use std::ops::Range;
 use walls_diagnostics::{Diagnostic, Edit};
 use walls_syntax::Parse;
 
-/// How the canonical layout may vary (`.walls-fmt.toml`).
+/// How the canonical layout may vary (`.walls-fmt.toml`, the `[format]` table of `walls.toml`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FormatOptions {
     /// Spaces before a statement inside a block.

@@ -29,8 +29,9 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-geometry", 3),
     ("walls-sim", 4),
     ("walls-preview", 4),
-    ("walls-lsp", 4),
+    ("walls-config", 4),
     ("walls-test-support", 4),
+    ("walls-lsp", 5),
     ("walls-cli", 5),
     ("walls-charts", 5),
 ];
@@ -117,6 +118,16 @@ const KNOWS_NOTHING_OF: &[(&str, &[&str])] = &[
         ],
     ),
     (
+        "walls-config",
+        &[
+            "walls-geometry",
+            "walls-sim",
+            "walls-preview",
+            "walls-lsp",
+            "walls-cli",
+        ],
+    ),
+    (
         "walls-lsp",
         &["walls-geometry", "walls-sim", "walls-preview", "walls-cli"],
     ),
@@ -141,6 +152,7 @@ const FRONT_END: &[&str] = &[
     "walls-model",
     "walls-format",
     "walls-ide",
+    "walls-config",
     "walls-lsp",
     "walls-test-support",
     "tree-sitter-walls",

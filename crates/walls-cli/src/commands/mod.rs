@@ -3,8 +3,10 @@
 //!
 //! * `walls-lint` is [`lint`];
 //! * `walls-fmt` is [`fmt`];
-//! * `walls-sim scene`, `run`, `plan`, `advise` and `preview` are [`sim`]'s modules.
+//! * `walls-sim scene`, `run`, `plan`, `advise` and `preview` are [`sim`]'s modules;
+//! * [`settings`] is where `walls-lint` and `walls-fmt` find each file's settings.
 
 pub mod fmt;
 pub mod lint;
+pub mod settings;
 pub mod sim;

@@ -18,7 +18,7 @@ use crate::{Checked, check_bytes, input};
 use clap::ValueEnum;
 use std::io::Write;
 use std::path::Path;
-use walls_diagnostics::{Applicability, apply_fixes_counted};
+use walls_diagnostics::{Applicability, Diagnostic, apply_fixes_counted};
 use walls_ide::check_text;
 use walls_model::Options;
 
@@ -74,9 +74,15 @@ pub(super) struct FileFixes {
     pub not_written: Option<String>,
 }
 
-/// Reads the file at `path` (`-`: standard input), checks it, applies its fixes as
-/// `fixing` says and writes the result (or makes its diff).
-pub(super) fn lint(path: &str, options: &Options, fixing: Fixing) -> (Linted, FileFixes) {
+/// Reads the file at `path` (`-`: standard input), checks it (`keep` drops the
+/// diagnostics its settings ignore, after every check), applies its fixes as `fixing`
+/// says and writes the result (or makes its diff).
+pub(super) fn lint(
+    path: &str,
+    options: &Options,
+    keep: &dyn Fn(&mut Vec<Diagnostic>),
+    fixing: Fixing,
+) -> (Linted, FileFixes) {
     let (name, read) = if path == "-" {
         let read = input::read(path);
         (read.name, read.bytes.map(|bytes| (None, bytes)))
@@ -91,13 +97,14 @@ pub(super) fn lint(path: &str, options: &Options, fixing: Fixing) -> (Linted, Fi
         Ok(read) => read,
         Err(e) => {
             let outcome = Err(e);
-            return (Linted { name, outcome }, FileFixes::default());
+            return (Linted::new(name, outcome), FileFixes::default());
         }
     };
     // Bytes that are not UTF-8 give only the encoding error, which has no fix: such a file
     // is never written.
-    let checked = check_bytes(bytes, options);
-    let after = fix(&checked, options, fixing.level);
+    let mut checked = check_bytes(bytes, options);
+    keep(&mut checked.diagnostics);
+    let after = fix(&checked, options, keep, fixing.level);
     let mut fixes = FileFixes {
         fixed: after.as_ref().map_or(0, |(_, fixed)| *fixed),
         ..FileFixes::default()
@@ -121,12 +128,17 @@ pub(super) fn lint(path: &str, options: &Options, fixing: Fixing) -> (Linted, Fi
         after
     };
     let outcome = Ok((kept.text, kept.diagnostics));
-    (Linted { name, outcome }, fixes)
+    (Linted::new(name, outcome), fixes)
 }
 
 /// The text of `first` with the fixes of `level` applied, round after round, checked
 /// again, and how many fixes were applied; `None` if there was nothing to apply.
-fn fix(first: &Checked, options: &Options, level: Applicability) -> Option<(Checked, usize)> {
+fn fix(
+    first: &Checked,
+    options: &Options,
+    keep: &dyn Fn(&mut Vec<Diagnostic>),
+    level: Applicability,
+) -> Option<(Checked, usize)> {
     let mut fixed: Option<Checked> = None;
     let mut count = 0;
     for _ in 0..MAX_ROUNDS {
@@ -136,7 +148,9 @@ fn fix(first: &Checked, options: &Options, level: Applicability) -> Option<(Chec
             break;
         }
         count += applied;
-        fixed = Some(check_text(text, options));
+        let mut checked = check_text(text, options);
+        keep(&mut checked.diagnostics);
+        fixed = Some(checked);
     }
     fixed.map(|checked| (checked, count))
 }
