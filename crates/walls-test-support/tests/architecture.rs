@@ -31,6 +31,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-preview", 4),
     ("walls-lsp", 4),
     ("walls-test-support", 4),
+    ("walls-build", 4),
     ("walls-cli", 5),
     ("walls-charts", 5),
 ];
@@ -120,6 +121,16 @@ const KNOWS_NOTHING_OF: &[(&str, &[&str])] = &[
         "walls-lsp",
         &["walls-geometry", "walls-sim", "walls-preview", "walls-cli"],
     ),
+    (
+        "walls-build",
+        &[
+            "walls-geometry",
+            "walls-sim",
+            "walls-preview",
+            "walls-lsp",
+            "walls-cli",
+        ],
+    ),
 ];
 
 /// The crates whose types are the Language Server Protocol's.
@@ -143,6 +154,7 @@ const FRONT_END: &[&str] = &[
     "walls-ide",
     "walls-lsp",
     "walls-test-support",
+    "walls-build",
     "tree-sitter-walls",
 ];
 

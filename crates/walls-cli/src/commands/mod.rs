@@ -3,8 +3,10 @@
 //!
 //! * `walls-lint` is [`lint`];
 //! * `walls-fmt` is [`fmt`];
-//! * `walls-sim scene`, `run`, `plan`, `advise` and `preview` are [`sim`]'s modules.
+//! * `walls-sim scene`, `run`, `plan`, `advise` and `preview` are [`sim`]'s modules;
+//! * `walls-mesh` is [`mesh`].
 
 pub mod fmt;
 pub mod lint;
+pub mod mesh;
 pub mod sim;
