@@ -1,13 +1,13 @@
 //! The tools as functions from a command line to an exit status, so that a program that
-//! embeds them (a Python wheel) runs them in its own process: [`lint`], [`fmt`] and
-//! [`sim`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
+//! embeds them (a Python wheel) runs them in its own process: [`lint`], [`fmt`], [`sim`]
+//! and [`mesh`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
 //! A command line clap refuses prints clap's message to standard error and returns 2;
 //! `--help` and `--version` print to standard output and return 0. Nothing here ends the
 //! process.
 
-use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, sim::SimArgs};
+use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, mesh::MeshArgs, sim::SimArgs};
 use clap::Parser;
 use std::ffi::OsString;
 
@@ -31,6 +31,14 @@ pub fn fmt(argv: Vec<OsString>) -> i32 {
 pub fn sim(argv: Vec<OsString>) -> i32 {
     match parse::<SimArgs>(argv) {
         Ok(args) => commands::sim::dispatch(&args),
+        Err(status) => status,
+    }
+}
+
+/// `walls-mesh` with the command line `argv`; the exit status.
+pub fn mesh(argv: Vec<OsString>) -> i32 {
+    match parse::<MeshArgs>(argv) {
+        Ok(args) => commands::mesh::run(&args),
         Err(status) => status,
     }
 }

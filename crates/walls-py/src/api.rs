@@ -51,7 +51,7 @@ impl Source {
 }
 
 /// `mode`: the contact model, by the name the tools' `--mode` takes.
-fn contact_model(mode: &str) -> PyResult<ContactModel> {
+pub(crate) fn contact_model(mode: &str) -> PyResult<ContactModel> {
     match mode {
         "ssdem" => Ok(ContactModel::Ssdem),
         "hsdem" => Ok(ContactModel::Hsdem),

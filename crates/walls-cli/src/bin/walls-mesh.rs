@@ -1,12 +1,10 @@
 //! `walls-mesh`: an STL or OBJ mesh as pkdgrav triangle walls (docs/meshes.md;
-//! [`walls_cli::commands::mesh`]).
+//! [`walls_cli::commands::mesh`], run by [`walls_cli::entry::mesh`]).
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
-use clap::Parser;
 use std::process::ExitCode;
-use walls_cli::commands::mesh::{MeshArgs, run};
 
 fn main() -> ExitCode {
-    run(&MeshArgs::parse())
+    ExitCode::from(walls_cli::entry::mesh(std::env::args_os().collect()) as u8)
 }

@@ -13,7 +13,6 @@ use clap::Parser;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use walls_build::mesh::{self, MeshOptions, Orientation};
 use walls_build::{CheckOptions, DumpOptions, Given, LengthUnit, Units, Wall, dumps};
 use walls_diagnostics::render::{self, FileReport};
@@ -65,13 +64,13 @@ fn orientation_parser() -> impl TypedValueParser<Value = Orientation> {
         .map(|name| Orientation::named(&name).unwrap_or_default())
 }
 
-fn error(message: impl std::fmt::Display) -> ExitCode {
+fn error(message: impl std::fmt::Display) -> i32 {
     crate::errln!("walls-mesh: error: {message}");
-    ExitCode::from(2)
+    2
 }
 
 /// Turns the mesh `args` names into walls and writes them; the exit status.
-pub fn run(args: &MeshArgs) -> ExitCode {
+pub fn run(args: &MeshArgs) -> i32 {
     if let Some(out) = args.output.as_ref().filter(|_| !args.force)
         && out.exists()
     {
@@ -140,17 +139,26 @@ pub fn run(args: &MeshArgs) -> ExitCode {
         Err(e) => {
             report(&e.text, &e.diagnostics);
             crate::errln!("walls-mesh: error: the walls file would have errors: nothing written");
-            return ExitCode::from(1);
+            return 1;
         }
     };
     report(&dumped.text, &dumped.warnings);
     match &args.output {
         None => {
-            crate::out!("{}", dumped.text);
-            ExitCode::SUCCESS
+            let mut stdout = std::io::stdout().lock();
+            match stdout
+                .write_all(dumped.text.as_bytes())
+                .and_then(|()| stdout.flush())
+            {
+                // A reader that stopped reading wants no more.
+                Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                    error(format!("cannot write standard output: {e}"))
+                }
+                _ => 0,
+            }
         }
         Some(out) => match write_new(out, dumped.text.as_bytes(), args.force) {
-            Ok(()) => ExitCode::SUCCESS,
+            Ok(()) => 0,
             Err(e) => error(e),
         },
     }
