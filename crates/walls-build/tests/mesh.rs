@@ -205,7 +205,7 @@ fn a_face_without_area_is_refused_by_name() {
         Mesh::from_arrays(vec![[0.0; 3]], &[[0, 1, 0]])
             .unwrap_err()
             .to_string(),
-        "face 0: vertex 1 does not exist (there are 1 vertices)"
+        "face 0: vertex 1 does not exist: the mesh has 1 vertex"
     );
 }
 

@@ -159,25 +159,40 @@ impl Mesh {
         let faces = faces
             .iter()
             .enumerate()
-            .map(|(i, f)| match f.iter().find(|&&v| v >= vertices.len()) {
-                Some(v) => Err(Problem::at(
-                    Origin::Face(i),
-                    format!(
-                        "vertex {v} does not exist (there are {} vertices)",
-                        vertices.len()
-                    ),
-                )),
-                None => Ok(Face {
-                    vertices: *f,
-                    origin: Origin::Face(i),
-                }),
+            .map(|(i, f)| Face {
+                vertices: *f,
+                origin: Origin::Face(i),
             })
-            .collect::<Result<_, _>>()?;
-        Ok(Mesh {
+            .collect();
+        let mesh = Mesh {
             vertices,
             faces,
             first_index: 0,
-        })
+        };
+        mesh.check_indices()?;
+        Ok(mesh)
+    }
+
+    /// Whether every face names vertices that exist.
+    fn check_indices(&self) -> Result<(), Problem> {
+        for face in &self.faces {
+            if let Some(&v) = face.vertices.iter().find(|&&v| v >= self.vertices.len()) {
+                return Err(Problem::at(
+                    face.origin,
+                    format!(
+                        "vertex {} does not exist: the mesh has {} vert{}",
+                        self.vertex_name(v),
+                        self.vertices.len(),
+                        if self.vertices.len() == 1 {
+                            "ex"
+                        } else {
+                            "ices"
+                        }
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// The vertex `i` as messages number it.
@@ -226,6 +241,7 @@ pub struct MeshOptions {
 /// normal. A face with no area is an error naming it; so is a mesh asked to be oriented
 /// that is open, or whose faces cannot be wound consistently, naming the edge.
 pub fn to_walls(mesh: &Mesh, options: &MeshOptions) -> Result<Vec<Wall>, Problem> {
+    mesh.check_indices()?;
     for face in &mesh.faces {
         let [a, b, c] = face.vertices.map(|i| mesh.vertices[i]);
         if !has_area(a, b, c) {
