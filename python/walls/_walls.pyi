@@ -67,9 +67,7 @@ def scene(
     *,
     mode: Mode = "ssdem",
 ) -> Dict[str, Any]: ...
-def run_tool(
-    tool: Literal["walls-lint", "walls-fmt", "walls-sim", "walls-mesh", "walls-lsp"], argv: List[str]
-) -> int: ...
+def run_tool(tool: str, argv: List[str]) -> int: ...
 
 TokenValue = Union[float, int, str, Tuple[float, float, float]]
 

@@ -110,3 +110,39 @@ impl Analysis {
         &self.checked.diagnostics
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_are_the_error_diagnostics_in_order() {
+        let options = Options {
+            max_walls: 1,
+            ..Options::default()
+        };
+        let checked = check_text(
+            "wall type plane\n  raduis 1\nwall type plane\n  colour 3\n",
+            &options,
+        );
+        let all: Vec<(&str, Severity)> = checked
+            .diagnostics
+            .iter()
+            .map(|d| (d.code.id, d.severity))
+            .collect();
+        assert_eq!(
+            all,
+            [
+                ("S101", Severity::Error),
+                ("C209", Severity::Warning),
+                ("S101", Severity::Error)
+            ]
+        );
+        let errors: Vec<&str> = checked.errors().iter().map(|d| d.code.id).collect();
+        assert_eq!(errors, ["S101", "S101"]);
+        assert_eq!(
+            checked.errors()[1].span.start,
+            checked.diagnostics[2].span.start
+        );
+    }
+}

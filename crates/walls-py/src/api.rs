@@ -141,9 +141,7 @@ fn format(
             }
         },
     };
-    let formatted = py.detach(|| {
-        walls_format::format(&walls_syntax::parse(text.as_str()), &options).map(|f| f.text)
-    });
+    let formatted = py.detach(|| walls_format::format_text(&text, &options));
     formatted.map_err(|e| diagnostics::error(py, NOT_FORMATTED, &text, &e.diagnostics))
 }
 

@@ -1,5 +1,4 @@
-//! `walls._walls`, the extension module of the `walls` Python package
-//! ([docs/python.md](../../../docs/python.md)).
+//! `walls._walls`, the extension module of the `walls` Python package (docs/python.md).
 //!
 //! Every function here calls the library the command-line tools call, and none checks,
 //! formats or resolves on its own: [`api`] is `walls.lint`, `walls.format` and
