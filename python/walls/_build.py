@@ -16,12 +16,14 @@ The checks and the layout are those of the command-line tools (docs/meshes.md)::
 
 import os
 import warnings
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Literal, Optional, Sequence, Tuple, Union
 
 from walls._walls import Wall, _dumps, _from_mesh, _read_mesh
 
 __all__ = ["Wall", "dumps", "from_mesh", "read_mesh"]
 
+Mode = Literal["ssdem", "hsdem"]
+Orientation = Literal["keep", "outward", "inward"]
 Units = Union[str, Dict[str, float], None]
 Defaults = Union[Wall, Dict[str, Any], None]
 
@@ -32,7 +34,7 @@ def dumps(
     defaults: Defaults = None,
     comment: Optional[str] = None,
     *,
-    mode: str = "ssdem",
+    mode: Mode = "ssdem",
     max_walls: int = 20,
 ) -> str:
     """The walls as a whole walls file, in ``walls-fmt``'s canonical layout.
@@ -56,7 +58,7 @@ def dumps(
 def from_mesh(
     vertices: Sequence[Sequence[float]],
     faces: Sequence[Sequence[int]],
-    orientation: str = "keep",
+    orientation: Orientation = "keep",
     merge_rectangles: bool = False,
 ) -> List[Wall]:
     """The walls of a triangle mesh: face (a, b, c) becomes the triangle wall with
