@@ -1,6 +1,6 @@
 //! The tools as functions from a command line to an exit status, so that a program that
-//! embeds them (a Python wheel) runs them in its own process: [`lint`], [`fmt`] and
-//! [`sim`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
+//! embeds them (a Python wheel) runs them in its own process: [`lint`], [`fmt`], [`sim`]
+//! and [`mesh`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
 //! A command line clap refuses prints clap's message to standard error and returns 2;
@@ -11,7 +11,7 @@
 //! ([`crate::console`]), and a signal while `walls-sim run` runs, or while a file is
 //! written through a named temporary file, with 128 + the signal ([`crate::interrupt`]).
 
-use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, sim::SimArgs};
+use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, mesh::MeshArgs, sim::SimArgs};
 use clap::Parser;
 use clap_complete::Shell;
 use std::ffi::OsString;
@@ -30,6 +30,11 @@ pub fn fmt(argv: Vec<OsString>) -> i32 {
 /// `walls-sim` with the command line `argv`; the exit status.
 pub fn sim(argv: Vec<OsString>) -> i32 {
     tool::<SimArgs>(argv)
+}
+
+/// `walls-mesh` with the command line `argv`; the exit status.
+pub fn mesh(argv: Vec<OsString>) -> i32 {
+    tool::<MeshArgs>(argv)
 }
 
 /// A tool's command line: what it runs, and the `--completions` every tool has.
@@ -64,6 +69,15 @@ impl Tool for SimArgs {
     }
     fn run(&self) -> i32 {
         commands::sim::dispatch(self)
+    }
+}
+
+impl Tool for MeshArgs {
+    fn completions(&self) -> Option<Shell> {
+        self.completions
+    }
+    fn run(&self) -> i32 {
+        commands::mesh::run(self)
     }
 }
 

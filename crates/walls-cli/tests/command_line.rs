@@ -5,13 +5,14 @@
 
 use clap::CommandFactory;
 use std::path::Path;
-use walls_cli::commands::{fmt::FmtArgs, lint::LintArgs, sim::SimArgs};
+use walls_cli::commands::{fmt::FmtArgs, lint::LintArgs, mesh::MeshArgs, sim::SimArgs};
 use walls_test_support::cli::{bash_completes, completion_scripts, man_pages_in_step};
 
-const TOOLS: [(&str, &str); 3] = [
+const TOOLS: [(&str, &str); 4] = [
     ("walls-lint", env!("CARGO_BIN_EXE_walls-lint")),
     ("walls-fmt", env!("CARGO_BIN_EXE_walls-fmt")),
     ("walls-sim", env!("CARGO_BIN_EXE_walls-sim")),
+    ("walls-mesh", env!("CARGO_BIN_EXE_walls-mesh")),
 ];
 
 #[test]
@@ -41,6 +42,10 @@ fn bash_loads_the_scripts_and_completes_options_values_and_commands() {
     assert_eq!(complete("walls-fmt", &["--che"])[1..], ["--check"]);
     assert_eq!(complete("walls-sim", &["sc"])[1..], ["scene"]);
     assert_eq!(
+        complete("walls-mesh", &["--orientation", ""])[1..],
+        ["keep", "outward", "inward"]
+    );
+    assert_eq!(
         complete("walls-sim", &["--completions", "f"])[1..],
         ["fish"]
     );
@@ -51,6 +56,7 @@ fn man_pages_are_those_of_the_command_lines() {
     man_pages_in_step(LintArgs::command());
     man_pages_in_step(FmtArgs::command());
     man_pages_in_step(SimArgs::command());
+    man_pages_in_step(MeshArgs::command());
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 use crate::lines::Lines;
 use std::sync::Arc;
-use walls_diagnostics::Diagnostic;
+use walls_diagnostics::{Diagnostic, Severity};
 use walls_model::{Options, Scene};
 use walls_syntax::{Parse, SyntaxTree};
 
@@ -61,6 +61,17 @@ pub fn check_bytes(bytes: Vec<u8>, options: &Options) -> Checked {
     }
 }
 
+impl Checked {
+    /// The diagnostics of error severity, in order: what stops a run or a scene.
+    pub fn errors(&self) -> Vec<Diagnostic> {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .cloned()
+            .collect()
+    }
+}
+
 /// A checked file ready for the editor features: the check and where its lines start.
 #[derive(Debug, Clone)]
 pub struct Analysis {
@@ -100,5 +111,41 @@ impl Analysis {
     /// Syntax and model diagnostics, sorted by position.
     pub fn diagnostics(&self) -> &[Diagnostic] {
         &self.checked.diagnostics
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_are_the_error_diagnostics_in_order() {
+        let options = Options {
+            max_walls: 1,
+            ..Options::default()
+        };
+        let checked = check_text(
+            "wall type plane\n  raduis 1\nwall type plane\n  colour 3\n",
+            &options,
+        );
+        let all: Vec<(&str, Severity)> = checked
+            .diagnostics
+            .iter()
+            .map(|d| (d.code.id, d.severity))
+            .collect();
+        assert_eq!(
+            all,
+            [
+                ("S101", Severity::Error),
+                ("C209", Severity::Warning),
+                ("S101", Severity::Error)
+            ]
+        );
+        let errors: Vec<&str> = checked.errors().iter().map(|d| d.code.id).collect();
+        assert_eq!(errors, ["S101", "S101"]);
+        assert_eq!(
+            checked.errors()[1].span.start,
+            checked.diagnostics[2].span.start
+        );
     }
 }
