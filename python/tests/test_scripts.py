@@ -1,7 +1,8 @@
-"""The wheel's console scripts: `walls-lint`, `walls-fmt`, `walls-sim` and `walls-lsp`.
+"""The wheel's console scripts: `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and
+`walls-lsp`.
 
 The scripts run the tools in the Python process, so they must behave as the binaries do:
-every end-to-end case of the repository (`tests/{lint,fmt,sim}/*/`, the binaries' own
+every end-to-end case of the repository (`tests/{lint,fmt,sim,mesh}/*/`, the binaries' own
 contract) is replayed with the installed scripts and must print, exit and write exactly
 what its snapshot says. Then what only a real process shows: a closed standard output,
 Ctrl-C, and the language server answering over standard input and output.
@@ -20,12 +21,12 @@ import pytest
 import walls
 from conftest import CASES, Case
 
-TOOLS = ["walls-lint", "walls-fmt", "walls-sim", "walls-lsp"]
+TOOLS = ["walls-lint", "walls-fmt", "walls-sim", "walls-mesh", "walls-lsp"]
 LIMIT = 60
 
 
 def cases():
-    found = sorted(p.parent for p in CASES.glob("*/*/cmd") if p.parent.parent.name in ("lint", "fmt", "sim"))
+    found = sorted(p.parent for p in CASES.glob("*/*/cmd") if p.parent.parent.name in ("lint", "fmt", "sim", "mesh"))
     assert len(found) >= 30, f"expected the end-to-end cases under {CASES}"
     return [f"{p.parent.name}/{p.name}" for p in found]
 

@@ -14,8 +14,23 @@ The functions are the command-line tools' own, run in this process (docs/python.
 * ``walls.format(text, **options)``: the canonical text ``walls-fmt`` writes; raises
   ``walls.WallsError`` when syntax errors prevent formatting.
 * ``walls.scene(text, time=None, strict=True)``: the dict ``walls-sim scene`` prints.
+* ``walls.Wall(type=..., **tokens)``, ``walls.dumps(walls, units=None, defaults=None,
+  comment=None)``, ``walls.from_mesh(vertices, faces, orientation="keep",
+  merge_rectangles=False)`` and ``walls.read_mesh(path)``: walls files from Python
+  (docs/meshes.md).
 """
 
+from walls._build import Wall, dumps, from_mesh, read_mesh
 from walls._walls import WallsError, __version__, format, lint, scene
 
-__all__ = ["WallsError", "__version__", "format", "lint", "scene"]
+__all__ = [
+    "Wall",
+    "WallsError",
+    "__version__",
+    "dumps",
+    "format",
+    "from_mesh",
+    "lint",
+    "read_mesh",
+    "scene",
+]

@@ -1,4 +1,4 @@
-"""The console scripts `walls-lint`, `walls-fmt`, `walls-sim` and `walls-lsp`.
+"""The console scripts `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and `walls-lsp`.
 
 Each runs its tool's own Rust entry point in this process (a wheel holds the extension,
 not the binaries) and exits with the status the binary would. Ctrl-C is given back to
@@ -32,6 +32,11 @@ def fmt() -> None:
 def sim() -> None:
     """`walls-sim`: evaluate walls files."""
     _run("walls-sim")
+
+
+def mesh() -> None:
+    """`walls-mesh`: turn an STL or OBJ mesh into triangle walls."""
+    _run("walls-mesh")
 
 
 def lsp() -> None:

@@ -1,7 +1,8 @@
 """Types of `walls._walls`, the Rust extension behind the `walls` package."""
 
+import os
 import sys
-from typing import Any, Dict, List, Optional, Union
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 if sys.version_info >= (3, 11):
     from typing import Literal, NotRequired, TypedDict
@@ -67,3 +68,35 @@ def scene(
     mode: Mode = "ssdem",
 ) -> Dict[str, Any]: ...
 def run_tool(tool: str, argv: List[str]) -> int: ...
+
+TokenValue = Union[float, int, str, Tuple[float, float, float]]
+
+class Wall:
+    """One wall: its type and tokens, each checked against the keyword table as it is set."""
+
+    def __init__(self, **tokens: Any) -> None: ...
+    def set(self, name: str, value: Any) -> "Wall": ...
+    @property
+    def type(self) -> Optional[str]: ...
+    @property
+    def tokens(self) -> Dict[str, TokenValue]: ...
+    def __getitem__(self, name: str) -> TokenValue: ...
+
+def _dumps(
+    walls: Iterable[Wall],
+    units: Union[str, Dict[str, float], None] = None,
+    defaults: Union[Wall, Dict[str, Any], None] = None,
+    comment: Optional[str] = None,
+    *,
+    mode: Mode = "ssdem",
+    max_walls: int = 20,
+) -> Tuple[str, List[str]]: ...
+def _from_mesh(
+    vertices: Sequence[Sequence[float]],
+    faces: Sequence[Sequence[int]],
+    orientation: Literal["keep", "outward", "inward"] = "keep",
+    merge_rectangles: bool = False,
+) -> List[Wall]: ...
+def _read_mesh(
+    path: Union[str, "os.PathLike[str]"],
+) -> Tuple[List[Tuple[float, float, float]], List[Tuple[int, int, int]], List[str]]: ...

@@ -13,11 +13,20 @@ pub struct Input {
 /// Largest file the tools accept: spans are stored as 32-bit offsets.
 pub const MAX_FILE_BYTES: u64 = u32::MAX as u64;
 
+/// The name messages give the input `path`: `<stdin>` for `-`, else the path as given.
+pub fn display_name(path: &str) -> String {
+    if path == "-" {
+        "<stdin>".into()
+    } else {
+        path.into()
+    }
+}
+
 /// Reads `path`, or standard input when it is `-`.
 pub fn read(path: &str) -> Input {
     if path == "-" {
         return Input {
-            name: "<stdin>".into(),
+            name: display_name(path),
             bytes: read_all(std::io::stdin().lock(), "standard input"),
         };
     }

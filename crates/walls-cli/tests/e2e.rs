@@ -1,8 +1,8 @@
 //! End-to-end tests as data: each folder under the repository's `tests/lint/`,
-//! `tests/fmt/` and `tests/sim/` holds a `cmd` file (the command line, words separated by
+//! `tests/fmt/`, `tests/sim/` and `tests/mesh/` holds a `cmd` file (the command line, words separated by
 //! spaces), the files it names, an optional `stdin`, and the snapshot `output.snap` of
 //! exit status, stdout, stderr and every file the command changed or made. The real binary
-//! (`walls-lint`, `walls-fmt` or `walls-sim`) runs in a copy of that folder. Update the
+//! (`walls-lint`, `walls-fmt`, `walls-sim` or `walls-mesh`) runs in a copy of that folder. Update the
 //! snapshots with `INSTA_UPDATE=always cargo test -p walls-cli --test e2e`.
 
 use std::io::Write;
@@ -12,7 +12,7 @@ use std::process::{Command, Stdio};
 #[test]
 fn lint_cases() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests");
-    let mut cases: Vec<_> = ["lint", "fmt", "sim"]
+    let mut cases: Vec<_> = ["lint", "fmt", "sim", "mesh"]
         .iter()
         .flat_map(|group| std::fs::read_dir(root.join(group)).unwrap())
         .map(|e| e.unwrap().path())
@@ -31,6 +31,7 @@ fn lint_cases() {
             Some("walls-lint") => env!("CARGO_BIN_EXE_walls-lint"),
             Some("walls-fmt") => env!("CARGO_BIN_EXE_walls-fmt"),
             Some("walls-sim") => env!("CARGO_BIN_EXE_walls-sim"),
+            Some("walls-mesh") => env!("CARGO_BIN_EXE_walls-mesh"),
             other => panic!("{}: unknown command {other:?}", case.display()),
         };
         // Run in a copy, so that commands that write files leave the case as it is.

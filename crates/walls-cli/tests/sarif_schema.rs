@@ -34,7 +34,7 @@ fn sarif_output_is_valid_against_the_schema() {
         files.sort();
         for mode in ["ssdem", "hsdem"] {
             let out = Command::new(env!("CARGO_BIN_EXE_walls-lint"))
-                .args(["--format", "sarif", "--mode", mode])
+                .args(["--isolated", "--format", "sarif", "--mode", mode])
                 .args(&files)
                 .output()
                 .unwrap();

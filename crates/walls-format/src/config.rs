@@ -1,89 +1,65 @@
-//! `.walls-fmt.toml`: the formatting options of a project, found upward from a file.
+//! The formatting options as a settings file writes them: the keys of `.walls-fmt.toml`
+//! and of the `[format]` table of `walls.toml` (found and read by `walls-config`).
 //!
 //! ```toml
-//! indent_width = 4
-//! align_trailing_comments = true
-//! keep_blank_lines = false
+//! indent-width = 4
+//! align-trailing-comments = true
+//! keep-blank-lines = false
 //! ```
 //!
-//! Every key is optional (the default stands in); an unknown key or a value of the wrong
-//! type is an error that names the file, line and column.
+//! Every key is optional (the default stands in) and may also be spelled with `_`
+//! (`indent_width`), as `.walls-fmt.toml` files have them; an unknown key or a value of
+//! the wrong type is a deserialisation error with its span.
 
 use crate::FormatOptions;
 use serde::Deserialize;
-use std::path::{Path, PathBuf};
+use std::ops::Range;
+use toml::Spanned;
 
-/// The name of the configuration file.
-pub const CONFIG_FILE: &str = ".walls-fmt.toml";
+/// The most spaces `indent-width` may ask for.
+pub const MAX_INDENT_WIDTH: usize = 16;
 
-/// A configuration file that could not be used.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ConfigError {
-    /// The file.
-    pub path: PathBuf,
-    /// What is wrong, with its line and column where it has one.
-    pub message: String,
+/// The formatting table of a settings file, as written.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct FormatTable {
+    /// Spaces before a statement inside a block.
+    #[serde(alias = "indent_width")]
+    pub indent_width: Option<Spanned<usize>>,
+    /// Line up the comments after consecutive statements of a block.
+    #[serde(alias = "align_trailing_comments")]
+    pub align_trailing_comments: Option<bool>,
+    /// Keep one of the blank lines the author wrote between statements.
+    #[serde(alias = "keep_blank_lines")]
+    pub keep_blank_lines: Option<bool>,
 }
 
-impl std::fmt::Display for ConfigError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.path.display(), self.message)
+impl FormatTable {
+    /// The options the table gives (defaults for the keys it leaves out), or the span of
+    /// a value out of range with the reason.
+    pub fn options(&self) -> Result<FormatOptions, (Range<usize>, String)> {
+        let defaults = FormatOptions::default();
+        let indent_width = match &self.indent_width {
+            Some(n) if *n.get_ref() > MAX_INDENT_WIDTH => {
+                return Err((
+                    n.span(),
+                    format!(
+                        "indent-width {} is more than {MAX_INDENT_WIDTH}",
+                        n.get_ref()
+                    ),
+                ));
+            }
+            Some(n) => *n.get_ref(),
+            None => defaults.indent_width,
+        };
+        Ok(FormatOptions {
+            indent_width,
+            align_trailing_comments: self
+                .align_trailing_comments
+                .unwrap_or(defaults.align_trailing_comments),
+            keep_blank_lines: self.keep_blank_lines.unwrap_or(defaults.keep_blank_lines),
+        })
     }
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct File {
-    indent_width: Option<usize>,
-    align_trailing_comments: Option<bool>,
-    keep_blank_lines: Option<bool>,
-}
-
-/// The options for a file in directory `dir`: those of the nearest `.walls-fmt.toml` in
-/// `dir` or a parent, else the defaults. Returns the file used, if any.
-pub fn discover(dir: &Path) -> Result<(FormatOptions, Option<PathBuf>), ConfigError> {
-    for d in dir.ancestors() {
-        let path = d.join(CONFIG_FILE);
-        if path.is_file() {
-            return load(&path).map(|o| (o, Some(path)));
-        }
-    }
-    Ok((FormatOptions::default(), None))
-}
-
-fn load(path: &Path) -> Result<FormatOptions, ConfigError> {
-    let error = |message: String| ConfigError {
-        path: path.to_path_buf(),
-        message,
-    };
-    let text = std::fs::read_to_string(path).map_err(|e| error(e.to_string()))?;
-    let file: File = toml::from_str(&text).map_err(|e| {
-        let at = e.span().map(|s| {
-            let line = text[..s.start].matches('\n').count() + 1;
-            let column = text[..s.start]
-                .rsplit('\n')
-                .next()
-                .map_or(0, |l| l.chars().count())
-                + 1;
-            format!("{line}:{column}: ")
-        });
-        error(format!("{}{}", at.unwrap_or_default(), e.message()))
-    })?;
-    let defaults = FormatOptions::default();
-    let indent_width = file.indent_width.unwrap_or(defaults.indent_width);
-    if indent_width > FormatOptions::MAX_INDENT_WIDTH {
-        return Err(error(format!(
-            "indent_width {indent_width} is more than {}",
-            FormatOptions::MAX_INDENT_WIDTH
-        )));
-    }
-    Ok(FormatOptions {
-        indent_width,
-        align_trailing_comments: file
-            .align_trailing_comments
-            .unwrap_or(defaults.align_trailing_comments),
-        keep_blank_lines: file.keep_blank_lines.unwrap_or(defaults.keep_blank_lines),
-    })
 }
 
 #[cfg(test)]
@@ -91,30 +67,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn found_upward_and_errors_located() {
-        let root = std::env::temp_dir().join(format!("walls-fmt-config-{}", std::process::id()));
-        let deep = root.join("a/b");
-        std::fs::create_dir_all(&deep).unwrap();
-        assert_eq!(discover(&deep).unwrap().1, None);
-        std::fs::write(
-            root.join(CONFIG_FILE),
-            "indent_width = 4\nkeep_blank_lines = false\n",
-        )
-        .unwrap();
-        let (options, path) = discover(&deep).unwrap();
-        assert_eq!(path, Some(root.join(CONFIG_FILE)));
-        assert_eq!(options.indent_width, 4);
-        assert!(!options.keep_blank_lines && !options.align_trailing_comments);
-        std::fs::write(root.join(CONFIG_FILE), "indent_width = 2\nindent = 4\n").unwrap();
-        let e = discover(&deep).unwrap_err();
-        assert!(
-            e.message.starts_with("2:1: unknown field `indent`"),
-            "{}",
-            e.message
+    fn both_spellings_are_read_and_limits_located() {
+        let t: FormatTable =
+            toml::from_str("indent_width = 4\nkeep-blank-lines = false\n").unwrap();
+        let o = t.options().unwrap();
+        assert_eq!(o.indent_width, 4);
+        assert!(!o.keep_blank_lines && !o.align_trailing_comments);
+        let t: FormatTable = toml::from_str("indent-width = 17\n").unwrap();
+        assert_eq!(
+            t.options().unwrap_err(),
+            (15..17, "indent-width 17 is more than 16".to_string())
         );
-        std::fs::write(root.join(CONFIG_FILE), "keep_blank_lines = \"yes\"\n").unwrap();
-        let e = discover(&deep).unwrap_err();
-        assert!(e.message.starts_with("1:20: "), "{}", e.message);
-        std::fs::remove_dir_all(&root).unwrap();
+        let e = toml::from_str::<FormatTable>("indent = 4\n").unwrap_err();
+        assert!(e.message().starts_with("unknown field `indent`"), "{e}");
     }
 }

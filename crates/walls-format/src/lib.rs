@@ -17,12 +17,12 @@
 mod config;
 mod layout;
 
-pub use config::{CONFIG_FILE, ConfigError, discover};
+pub use config::{FormatTable, MAX_INDENT_WIDTH};
 use std::ops::Range;
 use walls_diagnostics::{Diagnostic, Edit};
 use walls_syntax::Parse;
 
-/// How the canonical layout may vary (`.walls-fmt.toml`).
+/// How the canonical layout may vary (`.walls-fmt.toml`, the `[format]` table of `walls.toml`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FormatOptions {
     /// Spaces before a statement inside a block.
@@ -31,11 +31,6 @@ pub struct FormatOptions {
     pub align_trailing_comments: bool,
     /// Keep (one of) the blank lines the author wrote between statements.
     pub keep_blank_lines: bool,
-}
-
-impl FormatOptions {
-    /// The widest indentation a file may ask for.
-    pub const MAX_INDENT_WIDTH: usize = 16;
 }
 
 impl Default for FormatOptions {

@@ -1,6 +1,7 @@
-//! Times of impact for the hard-sphere model (SPEC §3 "HSDEM"): when a sphere moving in
-//! a straight line first comes within its radius of a plane, a point, a segment, a
-//! cylinder's side or a circle. The shapes' `hit` functions combine them per feature.
+//! Times of impact for the hard-sphere model (docs/spec.md §3 "HSDEM"): when a sphere
+//! moving in a straight line first comes within its radius of a plane, a point, a
+//! segment, a cylinder's side or a circle. The shapes' `hit` functions combine them per
+//! feature.
 
 use nalgebra::Vector3;
 
@@ -68,7 +69,7 @@ pub(crate) fn segment_entry(p: &Vec3, d: &Vec3, r: f64, a: &Vec3, b: &Vec3) -> O
 
 /// A sphere meeting the side of a cylinder of `radius` around the axis through `c` along
 /// unit `axis`, within `half` of `c` along it: from outside by the earlier root, from
-/// inside by the later (SPEC §3).
+/// inside by the later (docs/spec.md §3).
 pub(crate) fn side_entry(
     p: &Vec3,
     d: &Vec3,
@@ -93,10 +94,10 @@ pub(crate) fn side_entry(
 }
 
 /// A sphere meeting the circle of `radius` around `c` in the plane across unit `axis`:
-/// the ray against the torus of tube radius r, a quartic (notes-dem-physics §2). Moving
-/// along the axis itself the quartic has only double roots, so that case is the point
-/// quadratic with the distance √(r² − radius²); near the axis, a search on the distance
-/// to the circle backs the quartic up.
+/// the ray against the torus of tube radius r, a quartic (docs/pkdgrav-physics.md §11).
+/// Moving along the axis itself the quartic has only double roots, so that case is the
+/// point quadratic with the distance √(r² − radius²); near the axis, a search on the
+/// distance to the circle backs the quartic up.
 pub(crate) fn ring_entry(
     p: &Vec3,
     d: &Vec3,

@@ -1,4 +1,4 @@
-//! The resolved scene as JSON, as `walls-sim scene` prints it (SPEC §2).
+//! The resolved scene as JSON, as `walls-sim scene` prints it (docs/spec.md §2).
 //!
 //! `{"walls":[{"index":0,"line":N,"type":"plane","<token>":value,…}]}`: one key per wall
 //! token, spelled as the token, in the order of the keyword table, holding the effective

@@ -1,6 +1,6 @@
 //! A contact's material values, and pkdgrav's fall-backs from a wall's values to the
-//! particles' (SPEC §3): a wall's `epsn`/`epst` of 99 and its `k_n`, `k_t`, `mu_s`,
-//! `mu_r`, `mu_t`, `beta_s` of −1 mean "the particles' value".
+//! particles' (docs/spec.md §3): a wall's `epsn`/`epst` of 99 and its `k_n`, `k_t`,
+//! `mu_s`, `mu_r`, `mu_t`, `beta_s` of −1 mean "the particles' value".
 
 /// The material values of a contact, or of a wall as written.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -20,12 +20,12 @@ pub struct Material {
     /// Twisting friction coefficient (0: none).
     pub mu_t: f64,
     /// The shape parameter β_s of the rolling and twisting spring–dashpot–slider
-    /// (pkdgrav's `dBetaS`, a wall's `beta_s`; physics.md §1.4).
+    /// (pkdgrav's `dBetaS`, a wall's `beta_s`; docs/pkdgrav-physics.md §1.4).
     pub beta_s: f64,
 }
 
 /// pkdgrav's β_s when the `.par` file leaves `dBetaS` out (its default build,
-/// `DEM_ROTATION_DASHPOT`; physics.md §4).
+/// `DEM_ROTATION_DASHPOT`; docs/pkdgrav-physics.md §4).
 pub const BETA_S_DEFAULT: f64 = 0.5;
 
 /// The restitution value that means "the particles' value".
@@ -59,9 +59,10 @@ impl Material {
 }
 
 /// A wall's values for the contact physics of pkdgrav's optional builds, as written:
-/// cohesion (`DEM_COHESION`, physics.md §7) and two-layer contacts (`DEM_TWOLAYERS`,
-/// §8). Every value left at −1 means "the `.par` value"; a `k_n_*` written resets its
-/// `k_t_*` to 2/7 of it (the scene's resolution does that, in file order).
+/// cohesion (`DEM_COHESION`, docs/pkdgrav-physics.md §7) and two-layer contacts
+/// (`DEM_TWOLAYERS`, §8). Every value left at −1 means "the `.par` value"; a `k_n_*`
+/// written resets its `k_t_*` to 2/7 of it (the scene's resolution does that, in file
+/// order).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OptionalMaterial {
     /// `cohesion_model`: 0 microscopic contact, 1 granular bridge, −1 the `.par`'s.

@@ -1,5 +1,5 @@
-//! How walls move (SPEC §1 "Motion", §3 "Contact velocity"): the one place wall motion
-//! is computed.
+//! How walls move (docs/spec.md §1 "Motion", §3 "Contact velocity"): the one place wall
+//! motion is computed.
 //!
 //! A wall's origin at time t is origin + velocity·q + A·sin(ω·q + 2πφ)·ô, with q = t or,
 //! when `step` > 0, t quantised to whole steps. A point q of the wall moves at
@@ -21,7 +21,7 @@ type Vec3 = Vector3<f64>;
 /// How an oscillating wall's position advances.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OscillationStepping {
-    /// The exact sinusoid of SPEC §1 at every time.
+    /// The exact sinusoid of docs/spec.md §1 at every time.
     Exact,
     /// pkdgrav's way (the default, as runs follow pkdgrav): each step adds the
     /// oscillation velocity at its start times dt.

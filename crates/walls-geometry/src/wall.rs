@@ -23,8 +23,8 @@ pub struct Appearance {
     pub transparency: f64,
 }
 
-/// A wall's reactive values (SPEC §3 "Reactive walls"): they matter for walls with a
-/// finite mass and an assembly.
+/// A wall's reactive values (docs/spec.md §3 "Reactive walls"): they matter for walls
+/// with a finite mass and an assembly.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reactive {
     /// The mass (0: infinite, the wall does not react).

@@ -18,13 +18,15 @@ pub struct Checked {
     pub parse: Parse,
     /// The walls resolved from what parsed (empty for bytes that are not UTF-8).
     pub scene: Scene,
-    /// Syntax and model diagnostics, sorted by position (for bytes that are not UTF-8,
-    /// only the encoding error).
+    /// Syntax and model diagnostics, sorted by position, less those a suppression
+    /// comment silences and with the diagnostics of the comments (for bytes that are not
+    /// UTF-8, only the encoding error).
     pub diagnostics: Vec<Diagnostic>,
 }
 
 /// Everything `walls-lint` checks in a text: parses, resolves the scene, runs the
-/// checker, and sorts the syntax and model diagnostics together by position.
+/// checker, sorts the syntax and model diagnostics together by position, and applies the
+/// file's suppression comments (`# walls-lint: ignore C201`, see [`crate::suppress`]).
 pub fn check_text(text: impl Into<Arc<str>>, options: &Options) -> Checked {
     let parse = walls_syntax::parse(text);
     let analysis = walls_model::analyze(&parse.tree, options);
@@ -32,6 +34,7 @@ pub fn check_text(text: impl Into<Arc<str>>, options: &Options) -> Checked {
     diagnostics.extend(analysis.diagnostics);
     // Stable: a syntax diagnostic stays before a model one at the same span.
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    crate::suppress::apply(&parse.tree, &mut diagnostics);
     Checked {
         text: parse.tree.shared_text().clone(),
         parse,

@@ -8,6 +8,7 @@ pub fn all_codes() -> impl Iterator<Item = &'static Code> {
     walls_syntax::codes::ALL
         .iter()
         .chain(walls_model::codes::ALL)
+        .chain(crate::suppress::ALL)
         .copied()
 }
 

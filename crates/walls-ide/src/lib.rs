@@ -1,8 +1,9 @@
 //! One analysis of a walls file for every tool, and the editor features as plain data.
 //!
 //! [`check_text`] and [`check_bytes`] are the one place that parses, resolves, checks
-//! and sorts the diagnostics of a file: `walls-lint`, `walls-sim`, the language server
-//! and the charts all start from the [`Checked`] they return. [`all_codes`],
+//! and sorts the diagnostics of a file, honouring its suppression comments ([`suppress`]):
+//! `walls-lint`, `walls-sim`, the language server and the charts all start from the
+//! [`Checked`] they return. [`all_codes`],
 //! [`find_code`] and [`explain`] are the registry of diagnostic codes.
 //!
 //! The editor features are functions of an [`Analysis`] (a [`Checked`] file and its
@@ -26,6 +27,7 @@ mod hover;
 mod lines;
 mod locate;
 mod outline;
+pub mod suppress;
 mod tokens;
 
 pub use actions::{Action, ActionKind, code_actions};

@@ -1,7 +1,8 @@
 //! The editor features as data: each `data/<feature>/NAME.walls` is a file, with a `$0`
 //! marking the cursor for the features that take one, and `NAME.snap` beside it is the
 //! feature's answer, its byte ranges shown as 1-based `line:column` with the text they
-//! cover.
+//! cover. `data/suppress/` shows the diagnostics left by suppression comments and the
+//! file after their safe fixes.
 
 use std::fmt::Write as _;
 use std::ops::Range;
@@ -180,4 +181,39 @@ fn explanations() {
             .starts_with("**radius**")
     );
     assert_eq!(walls_ide::explain("no-such-thing"), None);
+}
+
+#[test]
+fn suppress() {
+    insta::glob!("data/suppress/*.walls", |path| {
+        let (a, _) = load(path);
+        let mut out = String::new();
+        for d in a.diagnostics() {
+            writeln!(
+                out,
+                "{} {} {}: {}",
+                d.code.id,
+                d.severity.as_str(),
+                at(&a, &d.span),
+                d.message
+            )
+            .unwrap();
+            if let Some(fix) = &d.fix {
+                writeln!(
+                    out,
+                    "  fix ({}): {}",
+                    fix.applicability.as_str(),
+                    fix.message
+                )
+                .unwrap();
+            }
+        }
+        let fixed = walls_diagnostics::apply_fixes(
+            a.text(),
+            a.diagnostics(),
+            walls_diagnostics::Applicability::Safe,
+        );
+        write!(out, "\nafter the safe fixes:\n{fixed}").unwrap();
+        snapshot_beside(path, &out);
+    });
 }

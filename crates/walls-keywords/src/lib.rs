@@ -1,6 +1,6 @@
 //! The one table of the walls language's words.
 //!
-//! Every keyword pkdgrav's walls-file reader knows (SPEC §1, including the five
+//! Every keyword pkdgrav's walls-file reader knows (docs/spec.md §1, including the five
 //! undocumented two-layer contact tokens) and every wall type name, with what follows
 //! each keyword. The lexer, the parser, "did you mean" suggestions, the grammar
 //! documentation, the checker, hover and completion all read this table, so adding a token
@@ -78,7 +78,7 @@ macro_rules! keywords {
         }
 
         impl Keyword {
-            /// Every keyword, in the order of SPEC §1.
+            /// Every keyword, in the order of docs/spec.md §1.
             pub const ALL: &'static [Keyword] = &[$(Keyword::$variant,)*];
 
             /// The keyword as written in canonical (lower-case) form.
@@ -192,7 +192,8 @@ keywords! {
     Assembly => "assembly", Integer, Property, true, Dimensionless, Integer(-1), Assembly, ALL, "The reactive assembly (0 or 1) the wall moves with; walls of one assembly move as one rigid body. Leave it out for a wall in no assembly. SSDEM only.";
 }
 
-/// The values a keyword accepts, as checked when the value is read (SPEC §1 table).
+/// The values a keyword accepts, as checked when the value is read (docs/spec.md §1
+/// table).
 ///
 /// Each range is checked by one rule of `walls-model` (named in brackets) for the
 /// keywords that have it, so a keyword's range is changed here and nowhere else. Ranges
@@ -241,7 +242,7 @@ pub enum ValueRange {
     InertiaRow(usize),
 }
 
-/// How a value is scaled by the unit tokens in force when it is read (SPEC §1).
+/// How a value is scaled by the unit tokens in force when it is read (docs/spec.md §1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Dimension {
     /// × lengthunit.

@@ -95,15 +95,16 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
     })
 }
 
-/// The formatting options for a document: from the `.walls-fmt.toml` above its file, as
-/// `walls-fmt` would find them (defaults for other URIs), or why that file is unusable.
-pub fn format_options(uri: &Uri) -> Result<FormatOptions, walls_format::ConfigError> {
+/// The formatting options for a document: from the settings file (`walls.toml`'s
+/// `[format]`, …, or `.walls-fmt.toml`) above its file, as `walls-fmt` would find them
+/// (defaults for other URIs), or why that file is unusable.
+pub fn format_options(uri: &Uri) -> Result<FormatOptions, walls_config::SettingsError> {
     let path = uri
         .as_str()
         .strip_prefix("file://")
         .map(|p| std::path::PathBuf::from(percent_decode(p)));
     match path.as_deref().and_then(std::path::Path::parent) {
-        Some(dir) => walls_format::discover(dir).map(|(options, _)| options),
+        Some(dir) => walls_config::find_format(dir).map(|(options, _)| options),
         None => Ok(FormatOptions::default()),
     }
 }

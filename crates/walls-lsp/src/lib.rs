@@ -5,9 +5,10 @@
 //! answers of `walls-ide`'s feature functions into LSP values:
 //! - diagnostics come from the syntax check and the checker;
 //! - hovers show the keyword's documentation and its effective value;
-//! - formatting and range formatting use `walls-format` (options from the
-//!   `.walls-fmt.toml` above the document's file; an unusable one is named in a
-//!   message to the user, and the defaults are used);
+//! - formatting and range formatting use `walls-format` (options from the settings
+//!   file above the document's file, as `walls-fmt` finds them: `walls.toml`'s `[format]`
+//!   or `.walls-fmt.toml`; an unusable one is named in a message to the user, and the
+//!   defaults are used);
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
 //! - the outline shows walls and defaults blocks;
 //! - folding covers blocks;
@@ -161,7 +162,7 @@ impl Backend {
     }
 
     /// The formatting options of `uri`'s project; the defaults, and a message to the
-    /// user naming the file and what is wrong, if its `.walls-fmt.toml` is unusable.
+    /// user naming the file and what is wrong, if its settings file is unusable.
     async fn format_options(&self, uri: &Uri) -> FormatOptions {
         match features::format_options(uri) {
             Ok(options) => options,

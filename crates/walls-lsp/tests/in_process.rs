@@ -373,6 +373,17 @@ async fn formatting_reads_the_project_configuration() {
     c.open_at(&uri, "wall type disk radius 1\n").await;
     let edits = c.format(&uri).await;
     assert_eq!(edits[0]["newText"], "wall type disk\n    radius 1\n");
+    // The [format] table of a nearer walls.toml, as walls-fmt reads it.
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    std::fs::write(
+        dir.path().join("sub/walls.toml"),
+        "[format]\nindent-width = 3\n",
+    )
+    .unwrap();
+    let uri = format!("file://{}/sub/b.walls", dir.path().display()).replace(' ', "%20");
+    c.open_at(&uri, "wall type disk radius 1\n").await;
+    let edits = c.format(&uri).await;
+    assert_eq!(edits[0]["newText"], "wall type disk\n   radius 1\n");
 }
 
 #[tokio::test]
@@ -482,7 +493,7 @@ async fn a_broken_format_configuration_is_named_and_the_defaults_format() {
     let message = c.message().await;
     assert!(
         message.starts_with(&format!(
-            "walls: {}: 2:1: unknown field `indent`",
+            "walls: {}:2:1: unknown field `indent`",
             config.display()
         )),
         "{message}"

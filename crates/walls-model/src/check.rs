@@ -1,6 +1,6 @@
-//! The checker: runs the rules about blocks, walls and files (SPEC §1 "Checks users
-//! expect" and the wall-type and contact-model rules), on top of the value rules the
-//! resolver applies as it reads.
+//! The checker: runs the rules about blocks, walls and files (docs/spec.md §1 "Checks
+//! users expect" and the wall-type and contact-model rules), on top of the value rules
+//! the resolver applies as it reads.
 //!
 //! Each rule lives in its own file under `rules/`; this module fixes the order they run
 //! in (which orders diagnostics that share a span) and gives them a [`Checker`] to report

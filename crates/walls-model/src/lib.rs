@@ -2,10 +2,10 @@
 //!
 //! [`analyze`] reads the syntax tree front to back as pkdgrav does ([`resolve`]) into a
 //! [`Scene`] of walls with effective values in pkdgrav units, each remembering where it
-//! came from, and checks every rule of SPEC §1: single values as they are read, then
-//! blocks, walls and the file as a whole. Each rule, with its diagnostic code and the
-//! code's documentation, is one file of the private `rules` module; [`codes`] lists them.
-//! The back end decodes each wall into typed parts once (the walls-geometry crate).
+//! came from, and checks every rule of docs/spec.md §1: single values as they are read,
+//! then blocks, walls and the file as a whole. Each rule, with its diagnostic code and
+//! the code's documentation, is one file of the private `rules` module; [`codes`] lists
+//! them. The back end decodes each wall into typed parts once (the walls-geometry crate).
 
 mod check;
 pub mod codes;

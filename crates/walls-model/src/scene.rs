@@ -314,8 +314,8 @@ pub struct Scene {
     pub units: Units,
 }
 
-/// `lengthunit`, `massunit` and `timeunit` as the file set them (SPEC §1): how many
-/// pkdgrav units one of the file's units is. All 1 until set.
+/// `lengthunit`, `massunit` and `timeunit` as the file set them (docs/spec.md §1): how
+/// many pkdgrav units one of the file's units is. All 1 until set.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Units {
     /// pkdgrav lengths per file length.

@@ -1,8 +1,8 @@
-//! An interactive, self-contained HTML page of a scene or a movie (SPEC §2 `walls-sim
-//! preview`): three.js draws the walls in ssdraw's colours (colour 0 not drawn) and the
-//! particles as spheres in their pkdgrav colours; a slider steps through the frames, a
-//! play button runs through them, the mouse orbits the camera, and hovering a wall shows
-//! its type, index and tokens.
+//! An interactive, self-contained HTML page of a scene or a movie (docs/spec.md §2
+//! `walls-sim preview`): three.js draws the walls in ssdraw's colours (colour 0 not
+//! drawn) and the particles as spheres in their pkdgrav colours; a slider steps through
+//! the frames, a play button runs through them, the mouse orbits the camera, and hovering
+//! a wall shows its type, index and tokens.
 //!
 //! The page needs no network: the viewer, three.js and its OrbitControls come bundled in
 //! one script (`assets/viewer.bundle.js`, built by `web/bundle.sh` from the npm packages

@@ -1,9 +1,9 @@
-//! Pictures of walls files (SPEC §2 `walls-sim preview`, §3 "Drawing"): every wall of a
-//! scene placed where it is at a time and tessellated into triangles in ssdraw's
-//! colours, for the writers of each picture format to draw: [`svg`] (the embedded
-//! renderer), [`pov`] (POV-Ray), [`vtk`] (VTK PolyData for ParaView), [`pvd`] (a movie's
-//! frames as a ParaView collection) and [`html`] (an interactive page). [`ssdraw`]
-//! reads the view of a pkdgrav user's `ssdraw.par`.
+//! Pictures of walls files (docs/spec.md §2 `walls-sim preview`, §3 "Drawing"): every
+//! wall of a scene placed where it is at a time and tessellated into triangles in
+//! ssdraw's colours, for the writers of each picture format to draw: [`svg`] (the
+//! embedded renderer), [`pov`] (POV-Ray), [`vtk`] (VTK PolyData for ParaView), [`pvd`] (a
+//! movie's frames as a ParaView collection) and [`html`] (an interactive page).
+//! [`ssdraw`] reads the view of a pkdgrav user's `ssdraw.par`.
 
 pub mod html;
 pub mod mesh;

@@ -1,5 +1,5 @@
-//! Each wall, placed where it is at a time (SPEC §1 "Motion"), as a mesh of triangles
-//! ([`walls_geometry::Shape::tessellate`]), with how ssdraw draws it:
+//! Each wall, placed where it is at a time (docs/spec.md §1 "Motion"), as a mesh of
+//! triangles ([`walls_geometry::Shape::tessellate`]), with how ssdraw draws it:
 //!
 //! - a plane as the polygon where it cuts the scene's box (the box around the finite
 //!   walls and the particles, [`walls_geometry::scene_bounds`]); a plane clear of the box as a square twice the
@@ -33,7 +33,7 @@ pub struct WallMesh {
     pub wall: usize,
     /// Its type.
     pub wall_type: WallType,
-    /// Its colour index (SPEC §3: 0 is not drawn).
+    /// Its colour index (docs/spec.md §3: 0 is not drawn).
     pub color: i64,
     /// Red, green, blue from 0 to 1, or `None` when not drawn.
     pub rgb: Option<[f64; 3]>,

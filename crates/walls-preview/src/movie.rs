@@ -1,6 +1,6 @@
 //! A movie: the frames of a run, each the walls and particles at one time, as
-//! `walls-sim preview` reads them from a run's outputs (SPEC §2) and every picture
-//! format draws them.
+//! `walls-sim preview` reads them from a run's outputs (docs/spec.md §2) and every
+//! picture format draws them.
 
 use crate::WallMesh;
 use walls_geometry::Particle;

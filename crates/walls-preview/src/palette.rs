@@ -1,7 +1,7 @@
-//! ssdraw's colours (SPEC §3 "Drawing"): 0 is not drawn; 1–15 are POV-Ray's named colours
-//! White, Red, Green, Blue, Yellow, Magenta, Cyan, Gold, Pink, Orange, Khaki, Violet,
-//! Maroon, Aquamarine, Navy (values from POV-Ray's `colors.inc`); 16–255 are greys of
-//! level (c − 16)/239.
+//! ssdraw's colours (docs/spec.md §3 "Drawing"): 0 is not drawn; 1–15 are POV-Ray's named
+//! colours White, Red, Green, Blue, Yellow, Magenta, Cyan, Gold, Pink, Orange, Khaki,
+//! Violet, Maroon, Aquamarine, Navy (values from POV-Ray's `colors.inc`); 16–255 are
+//! greys of level (c − 16)/239.
 
 /// The POV-Ray names of colours 1–15.
 pub const NAMES: [&str; 15] = [

@@ -1,4 +1,4 @@
-//! POV-Ray scenes of walls files, after ssdraw's conventions (SPEC §3 "Drawing"):
+//! POV-Ray scenes of walls files, after ssdraw's conventions (docs/spec.md §3 "Drawing"):
 //!
 //! - each wall as a POV-Ray primitive where it has one: a plane as a large thin square
 //!   (a `box` twice the scene's size across, as [`crate::mesh`]'s squares), a triangle as

@@ -51,7 +51,7 @@ impl Source {
 }
 
 /// `mode`: the contact model, by the name the tools' `--mode` takes.
-fn contact_model(mode: &str) -> PyResult<ContactModel> {
+pub(crate) fn contact_model(mode: &str) -> PyResult<ContactModel> {
     match mode {
         "ssdem" => Ok(ContactModel::Ssdem),
         "hsdem" => Ok(ContactModel::Hsdem),
@@ -125,11 +125,11 @@ fn format(
             .unwrap_or(defaults.align_trailing_comments),
         keep_blank_lines: keep_blank_lines.unwrap_or(defaults.keep_blank_lines),
     };
-    if options.indent_width > FormatOptions::MAX_INDENT_WIDTH {
+    if options.indent_width > walls_format::MAX_INDENT_WIDTH {
         return Err(PyValueError::new_err(format!(
             "indent_width {} is more than {}",
             options.indent_width,
-            FormatOptions::MAX_INDENT_WIDTH
+            walls_format::MAX_INDENT_WIDTH
         )));
     }
     let text = match Source::of(text)? {

@@ -11,6 +11,7 @@
 //! `mod` line and a `register` call in [`_walls`].
 
 mod api;
+mod build;
 mod diagnostics;
 mod tools;
 
@@ -22,6 +23,7 @@ fn _walls(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     diagnostics::register(m)?;
     api::register(m)?;
+    build::register(m)?;
     tools::register(m)?;
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! The command-line tools run in this process, for the wheel's console scripts
 //! (`python/walls/_cli.py`): maturin puts either an extension or binaries in a wheel, so
-//! `walls-lint`, `walls-fmt`, `walls-sim` and `walls-lsp` are Python scripts that call
+//! `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and `walls-lsp` are Python scripts that call
 //! the tools' own entry points here, with the GIL released.
 
 use pyo3::exceptions::PyValueError;
@@ -13,7 +13,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_tool, m)?)
 }
 
-/// Runs the tool `tool` ("walls-lint", "walls-fmt", "walls-sim" or "walls-lsp") with the
+/// Runs the tool `tool` ("walls-lint", "walls-fmt", "walls-sim", "walls-mesh" or
+/// "walls-lsp") with the
 /// command line `argv` (argv[0] is the program's name) and returns the status its binary
 /// would exit with.
 #[pyfunction]
@@ -22,10 +23,11 @@ fn run_tool(py: Python<'_>, tool: &str, argv: Vec<OsString>) -> PyResult<i32> {
         "walls-lint" => walls_cli::entry::lint,
         "walls-fmt" => walls_cli::entry::fmt,
         "walls-sim" => walls_cli::entry::sim,
+        "walls-mesh" => walls_cli::entry::mesh,
         "walls-lsp" => walls_lsp::entry,
         _ => {
             return Err(PyValueError::new_err(format!(
-                "no tool {tool:?}: walls-lint, walls-fmt, walls-sim or walls-lsp"
+                "no tool {tool:?}: walls-lint, walls-fmt, walls-sim, walls-mesh or walls-lsp"
             )));
         }
     };

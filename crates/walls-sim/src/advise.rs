@@ -868,7 +868,7 @@ mod tests {
     #[test]
     fn reproduces_the_demparams_worked_example() {
         // The log prints its inputs to 6 significant figures, so its results are matched
-        // to 2e-5; then to the 4 figures of notes-dem-physics.md.
+        // to 2e-5; then to 4 significant figures.
         let a = advise(&demparams()).unwrap();
         let column = a.column.unwrap();
         // "Kinetic dKn = 2.020492e+06 kg/s^2 (recommended)"

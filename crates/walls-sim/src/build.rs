@@ -1,7 +1,7 @@
 //! pkdgrav's build: the compile options (its `Makefile.in`'s `USE_…` names) that decide
-//! which physics a pkdgrav binary runs (physics.md §0). `walls-sim --pkdgrav-build`
-//! takes them by pkdgrav's own names, space or comma separated, with or without the
-//! `USE_` prefix; the default is pkdgrav's default build, `DEM DEM_FIXED_BALL
+//! which physics a pkdgrav binary runs (docs/pkdgrav-physics.md §0). `walls-sim
+//! --pkdgrav-build` takes them by pkdgrav's own names, space or comma separated, with or
+//! without the `USE_` prefix; the default is pkdgrav's default build, `DEM DEM_FIXED_BALL
 //! DEM_ROTATION_DASHPOT`.
 //!
 //! Options that change the physics set a switch of [`Build`]; those that do not
@@ -17,7 +17,7 @@ struct Known {
     effect: &'static str,
 }
 
-/// Every compile option the evaluator knows (physics.md §0).
+/// Every compile option the evaluator knows (docs/pkdgrav-physics.md §0).
 const KNOWN: &[Known] = &[
     Known {
         name: "COLLISIONS",

@@ -9,7 +9,7 @@
 //! run alone); gravity defaults to −z only for those two. A particle file with no
 //! particles runs the walls alone too.
 //!
-//! A run from a `.par` file is pkdgrav's run (`reference/pkdgrav/physics.md` §3–4): a
+//! A run from a `.par` file is pkdgrav's run (docs/pkdgrav-physics.md §3–4): a
 //! material key the file leaves out takes pkdgrav's default (ε 1, no friction,
 //! k_t = 2/7·k_n), except `dKn`, whose default 0 would let particles through every wall
 //! (the evaluator derives it from the scene, with a warning); `nSteps` is the number of
@@ -405,9 +405,9 @@ fn optional_key_warnings(
                 _ => build.two_layers,
             };
             let what = if k.option == "DEM_COHESION" {
-                "cohesion (physics.md §7)"
+                "cohesion (docs/pkdgrav-physics.md §7)"
             } else {
-                "two-layer contacts (physics.md §8)"
+                "two-layer contacts (docs/pkdgrav-physics.md §8)"
             };
             let message = if !has {
                 format!(

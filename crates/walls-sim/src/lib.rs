@@ -1,4 +1,4 @@
-//! The reference evaluator of walls files (SPEC §3), on the typed walls of
+//! The reference evaluator of walls files (docs/spec.md §3), on the typed walls of
 //! walls-geometry (shapes, motion, material). Its layout is the pipeline:
 //!
 //! * [`build`]: pkdgrav's compile options, which decide its physics;

@@ -1,8 +1,8 @@
-//! pkdgrav's aggregates (its `AGGS` build, physics.md §9) against what the facts and
-//! mechanics say: a falling aggregate's members show the half-step velocity pkdgrav
-//! writes, a torque-free asymmetric aggregate keeps its angular momentum and energy to
-//! the integrator's tolerance, the set-up gives the mass, centre and inertia of known
-//! shapes, an AGGS build has no rolling or twisting between particles, and the runs
+//! pkdgrav's aggregates (its `AGGS` build, docs/pkdgrav-physics.md §9) against what the
+//! facts and mechanics say: a falling aggregate's members show the half-step velocity
+//! pkdgrav writes, a torque-free asymmetric aggregate keeps its angular momentum and
+//! energy to the integrator's tolerance, the set-up gives the mass, centre and inertia of
+//! known shapes, an AGGS build has no rolling or twisting between particles, and the runs
 //! pkdgrav refuses stop with a warning.
 
 use nalgebra::{Matrix3, Vector3};

@@ -1,9 +1,9 @@
-//! Cohesion (`DEM_COHESION`, physics.md §7) and two-layer contacts (`DEM_TWOLAYERS`,
-//! §8): the cohesive force of each model against particles and walls (with and without
-//! `bUseContactRadius`), added after the friction limits; the per-colour cohesion file,
-//! its combination rules and its located errors; the two-layer force across the
-//! boundary and the shear spring's rescaling; the `.par` sentinels; and the warnings of
-//! a run whose build lacks the option.
+//! Cohesion (`DEM_COHESION`, docs/pkdgrav-physics.md §7) and two-layer contacts
+//! (`DEM_TWOLAYERS`, §8): the cohesive force of each model against particles and walls
+//! (with and without `bUseContactRadius`), added after the friction limits; the
+//! per-colour cohesion file, its combination rules and its located errors; the two-layer
+//! force across the boundary and the shear spring's rescaling; the `.par` sentinels; and
+//! the warnings of a run whose build lacks the option.
 
 use nalgebra::Vector3;
 use std::f64::consts::PI;
@@ -390,7 +390,7 @@ fn par_keys_of_a_build_option_the_run_lacks_are_warned_about() {
     assert_eq!(
         warned,
         [
-            "line 2: `dCohesiveCoeff`: cohesion (physics.md §7) is followed only with pkdgrav's contact law (--integrator pkdgrav, the default): the run ignores the key"
+            "line 2: `dCohesiveCoeff`: cohesion (docs/pkdgrav-physics.md §7) is followed only with pkdgrav's contact law (--integrator pkdgrav, the default): the run ignores the key"
         ]
     );
     // An invalid model is an error on its line.

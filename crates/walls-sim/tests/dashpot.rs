@@ -1,9 +1,9 @@
 //! pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting
-//! (`contact::ssdem::dashpot_contact`, physics.md §1.3–§1.5), on the details the golden
-//! scenes do not pin one by one: the shear spring's reset when the contact slides, the
-//! capped dashpot that remains, the turn of the springs with the normal (the other way
-//! for a wall), the rolling and twisting sliders (the twisting limit's extra μ_s), and
-//! where β_s and the contact radius come from.
+//! (`contact::ssdem::dashpot_contact`, docs/pkdgrav-physics.md §1.3–§1.5), on the details
+//! the golden scenes do not pin one by one: the shear spring's reset when the contact
+//! slides, the capped dashpot that remains, the turn of the springs with the normal (the
+//! other way for a wall), the rolling and twisting sliders (the twisting limit's extra
+//! μ_s), and where β_s and the contact radius come from.
 
 use nalgebra::Vector3;
 use walls_geometry::{BETA_S_DEFAULT, Material};
@@ -122,7 +122,8 @@ fn the_spring_turns_with_the_normal_and_the_other_way_for_a_wall() {
         record.spring
     };
     // A pair carries the spring with the normal into the new tangent plane; a wall
-    // turns it as far the other way (physics.md §1.3 step 2), with no re-projection.
+    // turns it as far the other way (docs/pkdgrav-physics.md §1.3 step 2), with no
+    // re-projection.
     let (p, w) = (still(false), still(true));
     assert!(close(p.y, 1e-6) && p.z.abs() < 1e-20, "{p}");
     let (sin2, cos2) = (2.0 * angle).sin_cos();
@@ -167,7 +168,8 @@ fn rolling_and_twisting_hold_at_their_slider_limits() {
     assert_eq!(record.roll, roll);
     assert_eq!(record.twist, -10.0);
     let rolling = mat.mu_r * beta * r * n_force;
-    // The twisting limit carries an extra μ_s (physics.md §1.4), with the spring's sign.
+    // The twisting limit carries an extra μ_s (docs/pkdgrav-physics.md §1.4), with the
+    // spring's sign.
     let twisting = mat.mu_t * beta * r * mat.mu_s * n_force;
     assert!(close(c.resistance.x, rolling), "{}", c.resistance);
     assert!(close(c.resistance.z, -twisting), "{}", c.resistance);
@@ -232,11 +234,11 @@ fn beta_s_defaults_to_pkdgravs_half_and_walls_fall_back_to_it() {
     assert_eq!(wall("wall type plane origin 0 0 0 beta_s 0.25\n"), 0.25);
 }
 
-/// Builds without `DEM_ROTATION_DASHPOT` (physics.md §1.6): rolling is μ_r·N·(r̂ × n̂)
-/// times each particle's lever, r = l₁ w₁ × n̂ − l₂ w₂ × n̂, capped so that it cannot
-/// reverse a spin across the normal within the step; twisting μ_t·N·a·sign(ω_t)·n̂, with
-/// no twisting at all when the radius a is 0 (no `bUseContactRadius`); nothing is kept
-/// in the record's rolling spring or twist angle.
+/// Builds without `DEM_ROTATION_DASHPOT` (docs/pkdgrav-physics.md §1.6): rolling is
+/// μ_r·N·(r̂ × n̂) times each particle's lever, r = l₁ w₁ × n̂ − l₂ w₂ × n̂, capped so
+/// that it cannot reverse a spin across the normal within the step; twisting
+/// μ_t·N·a·sign(ω_t)·n̂, with no twisting at all when the radius a is 0 (no
+/// `bUseContactRadius`); nothing is kept in the record's rolling spring or twist angle.
 #[test]
 fn constant_torques_oppose_rolling_and_twisting_with_the_levers_given() {
     use walls_sim::contact::ssdem::ConstantTorque;

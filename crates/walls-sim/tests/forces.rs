@@ -1,7 +1,7 @@
 //! Two `.par` switches of pkdgrav's force evaluation, followed as pkdgrav follows them:
-//! `bDoGravity = 0` (no forces at all: no uniform gravity, no contacts; physics.md §2)
-//! and `dAccCrit` (small motions zeroed after the forces, before the closing kick;
-//! §1.7).
+//! `bDoGravity = 0` (no forces at all: no uniform gravity, no contacts;
+//! docs/pkdgrav-physics.md §2) and `dAccCrit` (small motions zeroed after the forces,
+//! before the closing kick; §1.7).
 
 use nalgebra::Vector3;
 use walls_sim::config::{Flags, resolve};

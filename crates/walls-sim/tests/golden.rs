@@ -13,11 +13,11 @@
 //! Each scene is one test, with its bar: the simulator reproduces pkdgrav (1e-9;
 //! `cylinder_test` 1e-6) and must keep doing so. Every scene meets it today.
 //!
-//! `agg_cube` (a rigid aggregate, physics.md §9) meets the faithful bar with room to
-//! spare (2.6e-10), though its contacts last five steps at overlaps of 10⁻⁴ of a radius,
-//! where one unit in the last place of a position is 10⁻¹² of the contact force: the
-//! way pkdgrav renormalises the aggregate's axes (scaling by the reciprocal of the length
-//! rather than dividing by it) alone moves the error from 2.3e-9 to 2.6e-10.
+//! `agg_cube` (a rigid aggregate, docs/pkdgrav-physics.md §9) meets the faithful bar with
+//! room to spare (2.6e-10), though its contacts last five steps at overlaps of 10⁻⁴ of a
+//! radius, where one unit in the last place of a position is 10⁻¹² of the contact force:
+//! the way pkdgrav renormalises the aggregate's axes (scaling by the reciprocal of the
+//! length rather than dividing by it) alone moves the error from 2.3e-9 to 2.6e-10.
 //!
 //! `cargo test -p walls-sim --test golden -- --nocapture` prints each scene's error and
 //! run time (the figures of docs/fidelity.md).

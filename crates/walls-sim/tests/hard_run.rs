@@ -433,7 +433,7 @@ fn a_vibrated_plate_throws_a_resting_particle_only_above_one_g() {
 fn off_a_spinning_disk_the_contact_feels_its_surface_velocity() {
     // Falling at 1 onto a disk spinning at 2 about z, at x = 0.5: the disk's surface there
     // moves at (0, 1, 0). With εt = −1 the contact point's tangential velocity relative to
-    // the disk reverses: v′ = (0, 4/7, 1) and ω′ = (10/(7R), 0, 0) (SPEC §3).
+    // the disk reverses: v′ = (0, 4/7, 1) and ω′ = (10/(7R), 0, 0) (docs/spec.md §3).
     let out = run(
         &scene("wall type disk\n  radius 1\n  ang-speed 2\n  epsn 1\n  epst -1\n"),
         vec![particle([0.5, 0.0, 0.5], [0.0, 0.0, -1.0])],
@@ -561,9 +561,10 @@ fn dropped_down_the_axis_onto_a_small_hole_it_bounces_straight_back() {
 fn pkdgrav_carries_a_particle_that_sticks_within_a_step_by_the_walls_whole_step() {
     // A sticky plate moving along x at 2; the particle falls onto it and touches at
     // t = 0.35, τ = 0.05 into the step from 0.3 to 0.4. pkdgrav leaves it where it touched
-    // and adds the wall's travel over the whole step at the step's end (physics.md §6):
-    // at t = 1 it is 2·(1 − 0.3) along, v_wall·τ = 0.1 further than the wall carried it
-    // after the impact, 2·(1 − 0.35), which the other integrators give.
+    // and adds the wall's travel over the whole step at the step's end
+    // (docs/pkdgrav-physics.md §6): at t = 1 it is 2·(1 − 0.3) along, v_wall·τ = 0.1
+    // further than the wall carried it after the impact, 2·(1 − 0.35), which the other
+    // integrators give.
     let walls = scene(
         "wall type rectangle\n  origin -5 -5 0\n  vertex1 10 0 0\n  vertex2 0 10 0\n  epsn 0\n  epst 1\n  velocity 2 0 0\n",
     );

@@ -1,8 +1,9 @@
 //! `Integrator::Pkdgrav`, pkdgrav's order of operations in a soft-sphere step
-//! (physics.md §2), step by step against the same arithmetic written out by hand: the
-//! force evaluation before the first step, the velocities and spins predicted to the
-//! step's end for wall and pair contacts, the lever r − x against a wall, and the walls
-//! moved as pkdgrav's soft-sphere build moves them (§5). The golden scenes pin the rest.
+//! (docs/pkdgrav-physics.md §2), step by step against the same arithmetic written out by
+//! hand: the force evaluation before the first step, the velocities and spins predicted
+//! to the step's end for wall and pair contacts, the lever r − x against a wall, and the
+//! walls moved as pkdgrav's soft-sphere build moves them (§5). The golden scenes pin the
+//! rest.
 
 use nalgebra::Vector3;
 use walls_geometry::Particle;
@@ -195,9 +196,9 @@ fn walls_move_in_steps_to_the_sinusoid_with_the_velocity_half_a_step_later() {
 fn pair_torques_act_at_the_plane_of_intersection() {
     // Unequal spheres overlapping at t0, the larger spinning across the line of
     // centres: the tangential force turns each about its distance to the plane where
-    // the spheres intersect (l1, l2 of physics.md §1.1), not about its radius. The
-    // levers' ratio is 0.446 at t0 and changes by about 1e-3 within the step; the
-    // radii's is 0.5.
+    // the spheres intersect (l1, l2 of docs/pkdgrav-physics.md §1.1), not about its
+    // radius. The levers' ratio is 0.446 at t0 and changes by about 1e-3 within the step;
+    // the radii's is 0.5.
     let (r1, r2, x0) = (0.1, 0.05, 0.01);
     let d = r1 + r2 - x0;
     let ps = vec![

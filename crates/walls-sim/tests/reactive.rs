@@ -347,8 +347,8 @@ fn wall_masses_are_ignored_without_dem_walls_react_and_the_run_says_so() {
 
 #[test]
 fn a_reactive_walls_spin_seen_by_the_rolling_springs_depends_on_its_type() {
-    // physics.md §10: the face normal's component for triangles and rectangles, orient's
-    // for disks and cylinders, all of it for shells.
+    // docs/pkdgrav-physics.md §10: the face normal's component for triangles and
+    // rectangles, orient's for disks and cylinders, all of it for shells.
     use walls_sim::dynamics::reactive::relative_spin;
     let w = Vec3::new(1.0, 2.0, 3.0);
     let shape = |text: &str| scene(text).remove(0).shape;

@@ -297,7 +297,7 @@ fn particles_bounce_off_each_other_at_eps_n_keeping_momentum() {
 /// A particle resting on the plane z = 0 (radius 0.1, mass 1, k_n 10³, g = 1), at its
 /// equilibrium overlap of 1 % of the radius, with velocity `vel` and spin `spin`, in a
 /// pkdgrav build without `DEM_ROTATION_DASHPOT`: rolling and twisting resistance are
-/// directional constant torques (physics.md §1.6), twisting only with
+/// directional constant torques (docs/pkdgrav-physics.md §1.6), twisting only with
 /// `bUseContactRadius` (`contact_radius`), which also makes the contact radius the
 /// rolling lever.
 fn resting(
@@ -334,7 +334,7 @@ fn resting(
 #[test]
 fn rolling_resistance_slows_a_rolling_ball_at_five_sevenths_mu_r_g() {
     // Rolling at v0 = 1 with ω = v0/R about y. pkdgrav's contact point is at the lever
-    // d = R − x (physics.md §1.1), so the ball first slips to rolling at v1 = ω d with its
+    // d = R − x (docs/pkdgrav-physics.md §1.1), so the ball first slips to rolling at v1 = ω d with its
     // angular momentum about the contact point kept: (I ω0 + m d v0) = (I/d + m d) v1.
     // Then the torque μ_r·R·mg against the spin, shared with the friction that keeps it
     // rolling, decelerates it at a = μ_r·g·R·d/(0.4R² + d²): (5/7)·μ_r·g when x = 0.
@@ -367,8 +367,8 @@ fn twisting_resistance_stops_a_spin_about_the_normal() {
     // Spinning at 10 about z on the plane: torque μ_t·a·mg with a = √(2Rx − x²) the
     // contact circle's radius at overlap x = mg/k_n, so ω falls at μ_t·a·mg/(0.4·mR²)
     // (pkdgrav's twisting needs bUseContactRadius in a build without the dashpot).
-    // The torque has no cap (physics.md §1.6): once stopped, the spin flips about zero
-    // by at most one step's change.
+    // The torque has no cap (docs/pkdgrav-physics.md §1.6): once stopped, the spin flips
+    // about zero by at most one step's change.
     let (mu_t, x, r): (f64, f64, f64) = (1.0, 1e-3, 0.1);
     let a = (2.0 * r * x - x * x).sqrt();
     let rate = mu_t * a / (0.4 * r * r);

@@ -165,6 +165,7 @@ fn sliding_turns_into_rolling_at_five_sevenths() {
 fn no_damping_for_restitution_zero_or_one() {
     assert_eq!(damping(1.0, 1e5, 1.0), 0.0);
     assert_eq!(damping(0.0, 1e5, 1.0), 0.0);
-    // ε = 0.5, k = 10⁴, m = 1: C = 43.09 (notes-dem-physics).
+    // ε = 0.5, k = 10⁴, m = 1: C = −2 ln ε √(m k/(π² + ln²ε)) = 43.09
+    // (docs/pkdgrav-physics.md §1.2).
     assert!((damping(0.5, 1e4, 1.0) - 43.09).abs() < 0.01);
 }

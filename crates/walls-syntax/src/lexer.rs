@@ -26,7 +26,7 @@ pub enum TokenKind {
     Comment,
     /// A `#` or `!` comment glued to the end of a word (`1#x`): not a comment to pkdgrav.
     GluedComment,
-    /// A decimal real as SPEC §1 defines it.
+    /// A decimal real as docs/spec.md §1 defines it.
     Number,
     /// A keyword, matched regardless of case.
     Keyword(Keyword),

@@ -15,6 +15,7 @@ mod validate;
 
 pub use lexer::{Token, TokenKind, Tokens, lex};
 use std::sync::Arc;
+pub use suggest::{Suggestion, keyword_like, type_like};
 pub use tree::{Block, BlockKind, Item, Statement, SyntaxTree, TokenId};
 pub use validate::MAX_LINE_BYTES;
 use walls_diagnostics::Diagnostic;

@@ -4,13 +4,13 @@
 use walls_keywords::{Keyword, WallType};
 
 /// The keyword closest to `word`, if one is close enough to be a likely misspelling.
-pub(crate) fn keyword_like(word: &str) -> Option<&'static str> {
+pub fn keyword_like(word: &str) -> Option<&'static str> {
     closest(word, Keyword::ALL.iter().map(|k| k.name()))
 }
 
 /// What to suggest for a word that should have been a wall type.
 #[derive(Debug, PartialEq, Eq)]
-pub(crate) enum Suggestion {
+pub enum Suggestion {
     /// One likely name.
     One(&'static str),
     /// Several names the word abbreviates (`cylinder`), quoted for a message.
@@ -21,7 +21,7 @@ pub(crate) enum Suggestion {
 
 /// The wall type `word` most likely meant: a close misspelling, or the names it is a
 /// prefix of.
-pub(crate) fn type_like(word: &str) -> Suggestion {
+pub fn type_like(word: &str) -> Suggestion {
     let names = || WallType::ALL.iter().map(|t| t.name());
     if let Some(name) = closest(word, names()) {
         return Suggestion::One(name);
@@ -104,7 +104,7 @@ pub(crate) fn looks_numeric(word: &str) -> bool {
         || unsigned.is_empty()
 }
 
-/// Length of the longest prefix of `b` that is a decimal real per SPEC §1.
+/// Length of the longest prefix of `b` that is a decimal real per docs/spec.md §1.
 fn decimal_prefix(b: &[u8]) -> usize {
     let mut i = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let int = b[i..].iter().take_while(|c| c.is_ascii_digit()).count();

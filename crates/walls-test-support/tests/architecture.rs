@@ -29,8 +29,10 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-geometry", 3),
     ("walls-sim", 4),
     ("walls-preview", 4),
-    ("walls-lsp", 4),
+    ("walls-config", 4),
+    ("walls-build", 4),
     ("walls-test-support", 4),
+    ("walls-lsp", 5),
     ("walls-cli", 5),
     ("walls-charts", 5),
     ("walls-py", 6),
@@ -118,8 +120,28 @@ const KNOWS_NOTHING_OF: &[(&str, &[&str])] = &[
         ],
     ),
     (
+        "walls-config",
+        &[
+            "walls-geometry",
+            "walls-sim",
+            "walls-preview",
+            "walls-lsp",
+            "walls-cli",
+        ],
+    ),
+    (
         "walls-lsp",
         &["walls-geometry", "walls-sim", "walls-preview", "walls-cli"],
+    ),
+    (
+        "walls-build",
+        &[
+            "walls-geometry",
+            "walls-sim",
+            "walls-preview",
+            "walls-lsp",
+            "walls-cli",
+        ],
     ),
 ];
 
@@ -142,8 +164,10 @@ const FRONT_END: &[&str] = &[
     "walls-model",
     "walls-format",
     "walls-ide",
+    "walls-config",
     "walls-lsp",
     "walls-test-support",
+    "walls-build",
     "tree-sitter-walls",
 ];
 

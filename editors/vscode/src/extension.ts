@@ -1,26 +1,40 @@
-// The walls extension: starts walls-lsp (from PATH or the `walls.server.path` setting)
-// for walls files and restarts it on demand or when the settings change.
+// The walls extension: finds walls-lsp (server.ts: the `walls.server.path` setting, the
+// bundled server, PATH, a Python's scripts folders, ~/.local/bin), starts it for walls
+// files, and restarts it on demand or when the server settings change.
 import * as vscode from 'vscode';
 import {
   LanguageClient,
   LanguageClientOptions,
   ServerOptions,
 } from 'vscode-languageclient/node';
+import { findServer, nodeHost } from './server';
 
 let client: LanguageClient | undefined;
+let extensionDir = '';
 
 function settings() {
   const config = vscode.workspace.getConfiguration('walls');
   return {
-    path: config.get<string>('server.path', 'walls-lsp'),
+    server: {
+      path: config.get<string>('server.path', ''),
+      python: config.get<string>('server.python', ''),
+    },
     mode: config.get<string>('mode', 'ssdem'),
     maxWalls: config.get<number>('maxWalls', 20),
   };
 }
 
 async function start(): Promise<void> {
-  const { path, mode, maxWalls } = settings();
-  const serverOptions: ServerOptions = { command: path, args: [] };
+  const { server, mode, maxWalls } = settings();
+  let found;
+  try {
+    found = await findServer(server, extensionDir, nodeHost());
+  } catch (error) {
+    const message = error instanceof Error ? error.message : String(error);
+    void vscode.window.showErrorMessage(`walls: ${message}`);
+    return;
+  }
+  const serverOptions: ServerOptions = { command: found.path, args: [] };
   const clientOptions: LanguageClientOptions = {
     documentSelector: [{ language: 'walls' }],
     initializationOptions: { mode, maxWalls },
@@ -31,21 +45,23 @@ async function start(): Promise<void> {
     await client.start();
   } catch (error) {
     void vscode.window.showErrorMessage(
-      `walls: could not start ${path} (install it with cargo install --path crates/walls-lsp, or set walls.server.path): ${error}`,
+      `walls: could not start ${found.path} (${found.place}): ${error}`,
     );
   }
 }
 
 async function restart(): Promise<void> {
   await client?.stop();
+  client = undefined;
   await start();
 }
 
 export async function activate(context: vscode.ExtensionContext): Promise<void> {
+  extensionDir = context.extensionPath;
   context.subscriptions.push(
     vscode.commands.registerCommand('walls.restartServer', restart),
     vscode.workspace.onDidChangeConfiguration((event) => {
-      if (event.affectsConfiguration('walls.server.path')) {
+      if (event.affectsConfiguration('walls.server')) {
         void restart();
       }
     }),

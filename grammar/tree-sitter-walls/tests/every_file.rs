@@ -1,6 +1,7 @@
 //! The tree-sitter grammar agrees with the toolkit's parser on every walls file in the
 //! repository: where `walls-syntax` finds no syntax error, the tree has no error node,
-//! and both see the same walls and defaults blocks. The queries compile.
+//! and both see the same walls and defaults blocks. The parser is ABI 14 and the queries
+//! compile.
 
 use std::path::{Path, PathBuf};
 
@@ -66,6 +67,13 @@ fn agrees_with_the_toolkit_on_every_file() {
         );
     }
     assert!(checked > 20, "only {checked} clean files");
+}
+
+#[test]
+fn the_parser_is_generated_for_abi_14() {
+    // ABI 15 parsers are refused by Neovim 0.7 to 0.10 and Helix before 25.07.
+    let language: tree_sitter::Language = tree_sitter_walls::LANGUAGE.into();
+    assert_eq!(language.abi_version(), 14);
 }
 
 #[test]

@@ -2,10 +2,10 @@
 //!
 //! A particle (m = 1, R = 0.1) meets a plane head-on at speed 1, gravity off, against
 //! k_n = 10⁴. The soft-sphere model runs at dt = t_c/N for N from 1.4 to 200 with four
-//! integrators: pkdgrav's own step (the default: physics.md §2, the force evaluation at
-//! t₀, the dashpot at v_n + a_n·dt), kick-drift-kick leapfrog, the same with the dashpot
-//! velocity predicted to the step's end, and explicit Euler; the hard-sphere model is
-//! exact at any step. Errors are against the analytic answers:
+//! integrators: pkdgrav's own step (the default: docs/pkdgrav-physics.md §2, the force
+//! evaluation at t₀, the dashpot at v_n + a_n·dt), kick-drift-kick leapfrog, the same
+//! with the dashpot velocity predicted to the step's end, and explicit Euler; the
+//! hard-sphere model is exact at any step. Errors are against the analytic answers:
 //! - restitution: |e_measured − ε|/ε at ε = 0.5 (the rebound speed over the impact's);
 //! - peak overlap: against the damped oscillator's x_max = (v/ω_d)·e^(−βt*)·sin(ω_d t*),
 //!   t* = atan(ω_d/β)/ω_d, β = C/2m, at ε = 0.5;

@@ -1,5 +1,5 @@
 //! `walls-sim`: evaluate a walls file. `walls-sim scene FILE [--time T]` prints the
-//! resolved scene as JSON (SPEC §2); `walls-sim run` runs particles against it;
+//! resolved scene as JSON (docs/spec.md §2); `walls-sim run` runs particles against it;
 //! `walls-sim advise` suggests dKn, dKt and dDelta for the real pkdgrav run. The command
 //! line and its commands are [`walls_cli::commands::sim`], run by
 //! [`walls_cli::entry::sim`].

@@ -1,4 +1,4 @@
-//! The `walls-lint --format json` object (command-line contract, SPEC §2).
+//! The `walls-lint --format json` object (command-line contract, docs/spec.md §2).
 //!
 //! ```text
 //! {"files":[{"path":…, "diagnostics":[{"code","severity","message","line","column",

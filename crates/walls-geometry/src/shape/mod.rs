@@ -271,9 +271,9 @@ impl Shape {
     }
 
     /// When, within `[0, t_max]`, a sphere of radius `r` at `p` moving in a straight
-    /// line at `d` relative to the wall first touches the shape, and where (SPEC §3
-    /// "HSDEM"): faces by a linear equation, cylinder sides, segment edges and points by
-    /// a quadratic, rings (disk rims, hole rims, cylinder ends) by a quartic
+    /// line at `d` relative to the wall first touches the shape, and where (docs/spec.md
+    /// §3 "HSDEM"): faces by a linear equation, cylinder sides, segment edges and points
+    /// by a quadratic, rings (disk rims, hole rims, cylinder ends) by a quartic
     /// ([`crate::impact`]). With `edges` off (pkdgrav's `bWallsEdgeDetect = 0`) only
     /// faces and sides count. A sphere already touching the shape is not a new contact:
     /// the caller deals with overlaps that exist at the start. Shapes outside

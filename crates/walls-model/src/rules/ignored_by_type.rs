@@ -13,8 +13,8 @@ pub static IGNORED_BY_TYPE: Code = Code {
     name: "ignored-by-type",
     summary: "a wall sets a token its type does not use",
     explanation:
-        "Each wall type reads only some tokens (SPEC §1): a plane has no radius, a triangle no
-orient (its normal is vertex1 × vertex2). The value is ignored, which usually means the
+        "Each wall type reads only some tokens (docs/spec.md §1): a plane has no radius, a triangle
+no orient (its normal is vertex1 × vertex2). The value is ignored, which usually means the
 type is not the one intended. Judged by the wall's final type; values inherited from
 `defaults` are not reported. The fix (safe: the value has no effect) removes the token.
 

@@ -34,7 +34,7 @@ wall type rectangle
 ",
 };
 
-/// Above this |cos| a rectangle's sides are not perpendicular (SPEC §1).
+/// Above this |cos| a rectangle's sides are not perpendicular (docs/spec.md §1).
 pub const RECTANGLE_COS_TOLERANCE: f64 = 0.001;
 
 /// Reports a rectangle whose sides are not perpendicular, with a fix that keeps vertex2's

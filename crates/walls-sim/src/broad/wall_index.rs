@@ -8,8 +8,8 @@
 //!
 //! # Moving walls
 //!
-//! Walls only translate (SPEC §1 "Motion": the spin never moves the drawn shape), and
-//! a wall's displacement from its place at t = 0 depends on its motion values alone:
+//! Walls only translate (docs/spec.md §1 "Motion": the spin never moves the drawn shape),
+//! and a wall's displacement from its place at t = 0 depends on its motion values alone:
 //! `velocity`, `osc-ampl`, `osc-freq`, `osc-phase`, `osc-vec` and `step`. So the walls
 //! are grouped by motion — walls whose motion values are equal move together; every
 //! static wall is in one group — and each group has its own hierarchy, built once over

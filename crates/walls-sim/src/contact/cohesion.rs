@@ -1,6 +1,6 @@
-//! Cohesion (pkdgrav's `DEM_COHESION` build, physics.md §7): while two bodies overlap,
-//! a force pulls them together along the normal. Its size depends on the model and the
-//! coefficient c (raw pkdgrav units of stress):
+//! Cohesion (pkdgrav's `DEM_COHESION` build, docs/pkdgrav-physics.md §7): while two
+//! bodies overlap, a force pulls them together along the normal. Its size depends on the
+//! model and the coefficient c (raw pkdgrav units of stress):
 //!
 //! | | particle–particle | particle–wall |
 //! |---|---|---|

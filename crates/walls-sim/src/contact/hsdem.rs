@@ -1,6 +1,6 @@
 //! The hard-sphere (HSDEM) collision of a particle with a wall or another particle
-//! (SPEC §3): how it bounces. When it happens, within a step, is the shapes' time of
-//! impact ([`walls_geometry::Shape::first_hit`]).
+//! (docs/spec.md §3): how it bounces. When it happens, within a step, is the shapes' time
+//! of impact ([`walls_geometry::Shape::first_hit`]).
 //!
 //! Bounce, with u the velocity of the particle's contact point relative to the wall and
 //! n̂ the normal: v′ = v − (1 + εn)·u_n − (2/7)(1 − εt)·u_t and

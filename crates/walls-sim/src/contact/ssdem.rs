@@ -1,21 +1,21 @@
-//! The soft-sphere (SSDEM) contact of a particle with a wall (SPEC §3): a linear
+//! The soft-sphere (SSDEM) contact of a particle with a wall (docs/spec.md §3): a linear
 //! spring–dashpot along the normal, and a tangential spring that follows the contact,
 //! capped by Coulomb friction. The wall counts as infinitely massive and flat: the
 //! reduced mass and radius are the particle's.
 //!
-//! Rolling and twisting resistance (SPEC §3) oppose the relative spin: rolling with
-//! torque μ_r·|F_n|·l against the spin across the normal (l the lever: the particle's
-//! radius against a wall, the reduced radius between particles), twisting with
+//! Rolling and twisting resistance (docs/spec.md §3) oppose the relative spin: rolling
+//! with torque μ_r·|F_n|·l against the spin across the normal (l the lever: the
+//! particle's radius against a wall, the reduced radius between particles), twisting with
 //! μ_t·|F_n|·a against the spin about the normal, a = √(2Rx − x²) being the radius of the
 //! contact circle of a sphere of radius R overlapping by x. Each is capped so that it
 //! cannot reverse the spin within a step.
 //!
 //! [`dashpot_contact`] is pkdgrav's own law instead (its default `DEM_ROTATION_DASHPOT`
-//! build, physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls and pairs:
-//! the springs kept in a [`Record`] turn with the contact, the shear spring resets when
-//! the contact slides, and rolling and twisting are spring–dashpot–sliders scaled by
-//! (β_s R*)². [`dashpot_contact_with`] adds what pkdgrav's optional builds change in it
-//! ([`Optional`]): cohesion (§7) and two-layer springs ([`Layers`], §8).
+//! build, docs/pkdgrav-physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls
+//! and pairs: the springs kept in a [`Record`] turn with the contact, the shear spring
+//! resets when the contact slides, and rolling and twisting are spring–dashpot–sliders
+//! scaled by (β_s R*)². [`dashpot_contact_with`] adds what pkdgrav's optional builds
+//! change in it ([`Optional`]): cohesion (§7) and two-layer springs ([`Layers`], §8).
 //!
 //! Damping from restitution: C = −2·ln ε·√(m·k/(π² + ln²ε)), 0 when ε is 0 or 1. The
 //! contact lasts π/ω_d with ω_d² = k/m − (C/2m)².
@@ -102,7 +102,8 @@ pub fn contact(
     let mut f_t = -(*spring * mat.k_t) - ut * c_t;
     let cap = mat.mu_s * f_n.norm();
     if f_t.norm() > cap {
-        // Sliding: the friction is the cap, and the spring starts again (SPEC §3).
+        // Sliding: the friction is the cap, and the spring starts again (docs/spec.md
+        // §3).
         f_t = match f_t.try_normalize(0.0) {
             Some(d) => d * cap,
             None => Vec3::zeros(),
@@ -160,10 +161,10 @@ pub fn contact_radius(r: f64, x: f64) -> f64 {
     (2.0 * r * x - x * x).max(0.0).sqrt()
 }
 
-/// pkdgrav's contact radius (`bUseContactRadius`, physics.md §1.4): √(r² − l²), the
-/// radius of the circle a sphere of radius `r` cuts on the plane `lever` l from its
-/// centre (l = r − x against a wall, the distance to the plane of intersection between
-/// particles).
+/// pkdgrav's contact radius (`bUseContactRadius`, docs/pkdgrav-physics.md §1.4):
+/// √(r² − l²), the radius of the circle a sphere of radius `r` cuts on the plane `lever`
+/// l from its centre (l = r − x against a wall, the distance to the plane of
+/// intersection between particles).
 pub fn lever_contact_radius(r: f64, lever: f64) -> f64 {
     (r * r - lever * lever).max(0.0).sqrt()
 }
@@ -181,12 +182,13 @@ pub struct Record {
     pub roll: Vec3,
     /// The twist angle.
     pub twist: f64,
-    /// Two-layer contacts (physics.md §8): the layer the contact was in last step,
-    /// positive the outer, negative the inner; 0 in a new contact.
+    /// Two-layer contacts (docs/pkdgrav-physics.md §8): the layer the contact was in last
+    /// step, positive the outer, negative the inner; 0 in a new contact.
     pub layer: i8,
 }
 
-/// The spring constants of a two-layer contact (`DEM_TWOLAYERS`, physics.md §8).
+/// The spring constants of a two-layer contact (`DEM_TWOLAYERS`, docs/pkdgrav-physics.md
+/// §8).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Layers {
     /// The overlap b where the inner layer begins (the fraction times R_eff).
@@ -202,7 +204,8 @@ pub struct Layers {
 }
 
 /// What pkdgrav's optional builds add to one [`Dashpot`] contact: the cohesion force
-/// (`DEM_COHESION`, physics.md §7; 0 for none) and the two layers (`DEM_TWOLAYERS`, §8).
+/// (`DEM_COHESION`, docs/pkdgrav-physics.md §7; 0 for none) and the two layers
+/// (`DEM_TWOLAYERS`, §8).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Optional {
     /// The size of the cohesive force, pulling particle 1 towards its partner.
@@ -240,8 +243,8 @@ impl Layers {
     }
 }
 
-/// One contact as pkdgrav's `DEM_ROTATION_DASHPOT` build sees it (physics.md §1.1–§1.4),
-/// in its own frame: particle 1 and its partner 2 (a particle or a wall).
+/// One contact as pkdgrav's `DEM_ROTATION_DASHPOT` build sees it (docs/pkdgrav-physics.md
+/// §1.1–§1.4), in its own frame: particle 1 and its partner 2 (a particle or a wall).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dashpot {
     /// The overlap x.
@@ -265,12 +268,13 @@ pub struct Dashpot {
     /// κ = ½/d).
     pub wall: bool,
     /// Builds without `DEM_ROTATION_DASHPOT`: rolling and twisting as the directional
-    /// constant torques of physics.md §1.6 instead of §1.4's springs (`None`: springs).
+    /// constant torques of docs/pkdgrav-physics.md §1.6 instead of §1.4's springs
+    /// (`None`: springs).
     pub constant_torque: Option<ConstantTorque>,
 }
 
 /// What the directional constant torques of a build without `DEM_ROTATION_DASHPOT`
-/// need (physics.md §1.6), besides the [`Dashpot`] contact.
+/// need (docs/pkdgrav-physics.md §1.6), besides the [`Dashpot`] contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ConstantTorque {
     /// The predicted spins of particle 1 and of its partner (zero for a wall).
@@ -289,9 +293,9 @@ pub struct ConstantTorque {
 }
 
 /// The directional constant rolling and twisting torques on particle 1 and its partner
-/// (physics.md §1.6): rolling μ_r·N·(r̂ × n̂) times each one's lever, with r the
-/// rolling velocity l₁ w₁ × n̂ − l₂ w₂ × n̂ (d w × n̂ against a wall), capped so that their
-/// impulses over `dt` cannot reverse the relative spin across the normal; twisting
+/// (docs/pkdgrav-physics.md §1.6): rolling μ_r·N·(r̂ × n̂) times each one's lever, with r
+/// the rolling velocity l₁ w₁ × n̂ − l₂ w₂ × n̂ (d w × n̂ against a wall), capped so that
+/// their impulses over `dt` cannot reverse the relative spin across the normal; twisting
 /// μ_t·N·sign(ω_t)·n̂ times the twisting radius, ω_t the partner's spin less particle 1's
 /// along n̂. Returns the torques on particle 1 and its partner, and the rolling torque on
 /// particle 1 alone.
@@ -363,7 +367,7 @@ pub struct DashpotForce {
     /// −it).
     pub resistance: Vec3,
     /// The rolling torque M_r alone (part of `resistance`), which pkdgrav's aggregates
-    /// turn into a pseudo-force (physics.md §9.4).
+    /// turn into a pseudo-force (docs/pkdgrav-physics.md §9.4).
     pub rolling: Vec3,
 }
 
@@ -373,19 +377,20 @@ fn turn(v: &Vec3, axis: &Vec3, sin: f64, cos: f64) -> Vec3 {
     v * cos + axis.cross(v) * sin + axis * (axis.dot(v) * (1.0 - cos))
 }
 
-/// pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting (physics.md
-/// §1.2–§1.5): the springs in `record` turned with the contact (about the mean normal by
-/// the mean spin over `dt`, then with the normal's change, the other way for a wall),
-/// stretched, and limited (the shear spring reset when the contact slides, the rolling
-/// and twisting springs held at their slider limits).
+/// pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting
+/// (docs/pkdgrav-physics.md §1.2–§1.5): the springs in `record` turned with the contact
+/// (about the mean normal by the mean spin over `dt`, then with the normal's change, the
+/// other way for a wall), stretched, and limited (the shear spring reset when the contact
+/// slides, the rolling and twisting springs held at their slider limits).
 pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material) -> DashpotForce {
     dashpot_contact_with(c, record, dt, mat, &Optional::default())
 }
 
 /// [`dashpot_contact`] with what pkdgrav's optional builds add (`extra`): the two-layer
 /// spring constants chosen by the overlap, the shear spring rescaled when the contact
-/// crosses from one layer into the other (physics.md §8), and the cohesive force added
-/// to the normal force after the friction limits (§7: the limits' N excludes it).
+/// crosses from one layer into the other (docs/pkdgrav-physics.md §8), and the cohesive
+/// force added to the normal force after the friction limits (§7: the limits' N excludes
+/// it).
 pub fn dashpot_contact_with(
     c: &Dashpot,
     record: &mut Record,

@@ -1,5 +1,5 @@
-//! pkdgrav's aggregates (its `AGGS` build, physics.md §9): rigid bodies made of
-//! particles. A particle whose `.ss` `org_idx` is negative belongs to aggregate
+//! pkdgrav's aggregates (its `AGGS` build, docs/pkdgrav-physics.md §9): rigid bodies made
+//! of particles. A particle whose `.ss` `org_idx` is negative belongs to aggregate
 //! −1 − org_idx; members may overlap, and members of one aggregate never interact.
 //!
 //! - **Set-up** ([`Aggregate::new`], §9.2): mass, centre and centre velocity; the inertia
@@ -138,7 +138,7 @@ impl Aggregates {
 
 impl Aggregate {
     /// The aggregate `number` of the particles `members` (input order), set up as pkdgrav
-    /// does (physics.md §9.2).
+    /// does (docs/pkdgrav-physics.md §9.2).
     pub fn new(number: u32, members: Vec<usize>, particles: &[Particle]) -> Aggregate {
         let mut mass = 0.0;
         let mut mr = Vec3::zeros();
@@ -293,8 +293,8 @@ impl Aggregate {
 }
 
 /// The pseudo-force pkdgrav turns a rolling torque `m_r` into at a contact with unit
-/// normal `n` (from the member towards its partner) at lever `l` (physics.md §9.4): of
-/// size |M_r|/l along M_r × l n̂. Zero when there is no rolling torque.
+/// normal `n` (from the member towards its partner) at lever `l` (docs/pkdgrav-physics.md
+/// §9.4): of size |M_r|/l along M_r × l n̂. Zero when there is no rolling torque.
 pub fn rolling_push(m_r: &Vec3, n: &Vec3, l: f64) -> Vec3 {
     let size = m_r.norm();
     if size == 0.0 {

@@ -1,7 +1,8 @@
-//! pkdgrav's integration of a rigid body's rotation over one step (physics.md §9.3 and
-//! §10): the body-frame angular velocity ω and the principal axes, integrated together
-//! by Euler's equations with the body-frame torque held fixed, by the adaptive
-//! Cash–Karp Runge–Kutta of Numerical Recipes (`odeint` driving `rkqs` and `rkck`).
+//! pkdgrav's integration of a rigid body's rotation over one step
+//! (docs/pkdgrav-physics.md §9.3 and §10): the body-frame angular velocity ω and the
+//! principal axes, integrated together by Euler's equations with the body-frame torque
+//! held fixed, by the adaptive Cash–Karp Runge–Kutta of Numerical Recipes (`odeint`
+//! driving `rkqs` and `rkck`).
 //!
 //! This is the integrator of both pkdgrav's reactive wall assemblies (`DEM_WALLS_REACT`)
 //! and its aggregates (`AGGS`): [`integrate`] advances a [`Rotation`] over `dt` given the

@@ -1,5 +1,6 @@
-//! Reactive walls (the document's section 7, SPEC §3 "Reactive walls"): finite-mass
-//! assemblies of walls that move in response to the particles that touch them.
+//! Reactive walls (the document's section 7, docs/spec.md §3 "Reactive walls"):
+//! finite-mass assemblies of walls that move in response to the particles that touch
+//! them.
 //!
 //! An assembly is every wall with a mass and the same `assembly` number (0 or 1). Its
 //! mass is the sum of its walls'; its centre of gravity, angular velocity (`rot-vec`, in
@@ -98,9 +99,9 @@ pub fn assemblies(walls: &[Wall]) -> Vec<Assembly> {
 }
 
 /// The spin a reactive wall of shape `shape` turning at `omega` shows a particle's
-/// rolling and twisting springs (physics.md §10, §1.4): along the face normal for a
-/// triangle or rectangle, along `orient` for a disk or cylinder, the whole of it for a
-/// shell (and for the infinite shapes, which cannot be reactive).
+/// rolling and twisting springs (docs/pkdgrav-physics.md §10, §1.4): along the face
+/// normal for a triangle or rectangle, along `orient` for a disk or cylinder, the whole
+/// of it for a shell (and for the infinite shapes, which cannot be reactive).
 pub fn relative_spin(shape: &Shape, omega: &Vec3) -> Vec3 {
     let along = |a: Vec3| a * a.dot(omega);
     match shape {
@@ -128,7 +129,7 @@ pub fn immovable(assemblies: &[Assembly]) -> Vec<i64> {
 }
 
 impl Assembly {
-    /// Switches the assembly to pkdgrav's motion (physics.md §10), for
+    /// Switches the assembly to pkdgrav's motion (docs/pkdgrav-physics.md §10), for
     /// `Integrator::Pkdgrav`: [`Assembly::move_pkdgrav`] moves it, its angular velocity
     /// is not kicked, and its contacts see the body-frame `rot-vec` as if it were a
     /// space vector. `scene` is the walls it was made from.
@@ -141,13 +142,14 @@ impl Assembly {
         self.placed.is_some()
     }
 
-    /// pkdgrav's wall move for the assembly (physics.md §10), after the opening kick of
-    /// its velocity: the centre of gravity and every wall's origin move by velocity·dt;
-    /// then ω (body frame) and the principal axes are integrated together over `dt` by
-    /// Euler's equations with the body torque of the last force evaluation held fixed
-    /// ([`crate::dynamics::euler_rigid`]); then each wall turns about the centre of
-    /// gravity by three successive right-handed rotations, about the new p̂₁, p̂₂ and p̂₃
-    /// by ω₁·dt, ω₂·dt and ω₃·dt (the new ω). Only for an assembly that follows pkdgrav.
+    /// pkdgrav's wall move for the assembly (docs/pkdgrav-physics.md §10), after the
+    /// opening kick of its velocity: the centre of gravity and every wall's origin move
+    /// by velocity·dt; then ω (body frame) and the principal axes are integrated together
+    /// over `dt` by Euler's equations with the body torque of the last force evaluation
+    /// held fixed ([`crate::dynamics::euler_rigid`]); then each wall turns about the
+    /// centre of gravity by three successive right-handed rotations, about the new p̂₁,
+    /// p̂₂ and p̂₃ by ω₁·dt, ω₂·dt and ω₃·dt (the new ω). Only for an assembly that
+    /// follows pkdgrav.
     pub fn move_pkdgrav(&mut self, dt: f64) {
         let travel = self.velocity * dt;
         self.cog += travel;
@@ -197,7 +199,7 @@ impl Assembly {
 
     /// The angular velocity in the world frame; for an assembly that follows pkdgrav,
     /// the body-frame `rot-vec` itself, which pkdgrav's contacts take for a space vector
-    /// (physics.md §10).
+    /// (docs/pkdgrav-physics.md §10).
     pub fn spin(&self) -> Vec3 {
         if self.is_pkdgrav() {
             return self.rotation.omega;

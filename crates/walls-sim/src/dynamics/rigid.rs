@@ -1,5 +1,5 @@
 //! The rotation of a rigid body with diagonal principal inertia under a torque given in
-//! the world frame, as a reactive wall assembly turns (SPEC §3 "Reactive walls").
+//! the world frame, as a reactive wall assembly turns (docs/spec.md §3 "Reactive walls").
 //!
 //! The state is the body-frame angular velocity ω and the principal axes p̂₁, p̂₂, p̂₃ in
 //! the world frame; the world angular velocity is Σ ωᵢ p̂ᵢ and the world angular momentum

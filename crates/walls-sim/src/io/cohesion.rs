@@ -1,7 +1,8 @@
-//! pkdgrav's per-colour cohesion file (`achCohesionFile`, physics.md §7): the number of
-//! colours N, the rule that combines two colours' coefficients (0 none, 1 mean, 2 max,
-//! 3 min), then N lines of `color coefficient`. Numbers are separated by white space (N
-//! and the rule may share a line). Every error names the file and the line.
+//! pkdgrav's per-colour cohesion file (`achCohesionFile`, docs/pkdgrav-physics.md §7):
+//! the number of colours N, the rule that combines two colours' coefficients (0 none, 1
+//! mean, 2 max, 3 min), then N lines of `color coefficient`. Numbers are separated by
+//! white space (N and the rule may share a line). Every error names the file and the
+//! line.
 
 use super::{FileError, InputError, error};
 use crate::contact::cohesion::{Colours, Rule};

@@ -1,5 +1,5 @@
 //! pkdgrav parameter files (`.par`): `name = value  # comment` lines, read as pkdgrav
-//! reads them (`reference/pkdgrav/physics.md` §3–4): the input and walls files, the
+//! reads them (docs/pkdgrav-physics.md §3–4): the input and walls files, the
 //! timestep, the first and last step numbers and the output interval, the particles'
 //! material with pkdgrav's sentinels (`dKt = -1` is 2/7·`dKn`; the two-layer constants'
 //! −1 fall back to `dKn` and 2/7 of it), cohesion, uniform gravity and edge detection;
@@ -71,24 +71,25 @@ pub struct Params {
     pub mu_r: Option<f64>,
     /// See `mu_s`.
     pub mu_t: Option<f64>,
-    /// `dBetaS`: β_s of the rolling and twisting spring–dashpot–slider (physics.md
-    /// §1.4); pkdgrav's default is [`walls_geometry::BETA_S_DEFAULT`].
+    /// `dBetaS`: β_s of the rolling and twisting spring–dashpot–slider
+    /// (docs/pkdgrav-physics.md §1.4); pkdgrav's default is
+    /// [`walls_geometry::BETA_S_DEFAULT`].
     pub beta_s: Option<f64>,
     /// `dxUnifGrav`, `dyUnifGrav`, `dzUnifGrav`: uniform gravity (missing components 0).
     pub gravity: Option<Vec3>,
     /// `bWallsEdgeDetect`: HSDEM edge detection (pkdgrav's default is on).
     pub edge_detect: Option<bool>,
     /// `bUseContactRadius`: the rolling and twisting radius is the contact radius
-    /// (physics.md §1.4; `Integrator::Pkdgrav` follows it).
+    /// (docs/pkdgrav-physics.md §1.4; `Integrator::Pkdgrav` follows it).
     pub contact_radius: Option<bool>,
     /// `bUseLegacyRoll`: the non-dashpot rolling lever is l₁, l₂ (d against a wall)
-    /// (physics.md §1.6).
+    /// (docs/pkdgrav-physics.md §1.6).
     pub legacy_roll: Option<bool>,
     /// `bDoGravity`: with 0, pkdgrav evaluates no forces at all: no uniform gravity,
-    /// no contacts (physics.md §2).
+    /// no contacts (docs/pkdgrav-physics.md §2).
     pub do_gravity: Option<bool>,
-    /// `dAccCrit`: below it, small motions are zeroed (physics.md §1.7; 0, the default,
-    /// turns it off).
+    /// `dAccCrit`: below it, small motions are zeroed (docs/pkdgrav-physics.md §1.7; 0,
+    /// the default, turns it off).
     pub acc_crit: Option<f64>,
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
@@ -108,8 +109,8 @@ pub struct Params {
     pub warnings: Vec<ParWarning>,
 }
 
-/// pkdgrav's two-layer contact constants (physics.md §8), with its sentinels resolved:
-/// `dKnOuter`, `dKnInner` = −1 are `dKn`; `dKtOuter`, `dKtInner` = −1 are
+/// pkdgrav's two-layer contact constants (docs/pkdgrav-physics.md §8), with its sentinels
+/// resolved: `dKnOuter`, `dKnInner` = −1 are `dKn`; `dKtOuter`, `dKtInner` = −1 are
 /// [`KT_PER_KN`] of their normal constant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwoLayer {
@@ -137,7 +138,7 @@ pub struct OptionalKey {
 }
 
 /// The `.par` keys of pkdgrav's optional builds, with the compile option each needs
-/// (physics.md §4, §7, §8).
+/// (docs/pkdgrav-physics.md §4, §7, §8).
 pub const OPTIONAL_KEYS: &[(&str, &str)] = &[
     ("iCohesionModel", "DEM_COHESION"),
     ("dCohesiveCoeff", "DEM_COHESION"),
@@ -195,9 +196,10 @@ const DEM_ONLY_2: &str = "pkdgrav's DEM builds need 2; the evaluator runs as if 
 const LEVELS: &str = "the evaluator warns and stops at pkdgrav's default overlap levels (3 %, 15 %, 50 % of the radius)";
 const HARD_OPTION: &str = "pkdgrav's hard-sphere overlap, slide, collapse and crush options are not modelled yet (DEM builds ignore them)";
 
-/// Every `.par` key of pkdgrav's wall runs (physics.md §3–4), and a few general ones,
-/// with what the evaluator does with it. Keys beginning `dSlide`, `dCollapse` and
-/// `dCrush` (the hard-sphere options) are not listed one by one ([`use_of`]).
+/// Every `.par` key of pkdgrav's wall runs (docs/pkdgrav-physics.md §3–4), and a few
+/// general ones, with what the evaluator does with it. Keys beginning `dSlide`,
+/// `dCollapse` and `dCrush` (the hard-sphere options) are not listed one by one
+/// ([`use_of`]).
 pub const KEYS: &[(&str, Use)] = &[
     ("achInFile", Use::Read),
     ("achWallsFile", Use::Read),

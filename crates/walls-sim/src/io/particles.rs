@@ -1,6 +1,6 @@
 //! Particles from the files a pkdgrav user has.
 //!
-//! * CSV (SPEC §2): header `mass,radius,x,y,z,vx,vy,vz`, optionally followed by
+//! * CSV (docs/spec.md §2): header `mass,radius,x,y,z,vx,vy,vz`, optionally followed by
 //!   `wx,wy,wz,color`; one particle a row, in pkdgrav units.
 //! * pkdgrav `.ss` files: big-endian XDR. A 16-byte header (double time, int32 count,
 //!   int32 magic: −1 standard, −10101 reduced), then per particle either 96 bytes (double
@@ -130,8 +130,8 @@ pub fn check(p: &Particle) -> Result<(), String> {
     Ok(())
 }
 
-/// The largest colour pkdgrav's tools draw (SPEC §1: 0 to 255; a negative colour means
-/// stuck to a wall).
+/// The largest colour pkdgrav's tools draw (docs/spec.md §1: 0 to 255; a negative colour
+/// means stuck to a wall).
 const COLOR_MAX: i32 = 255;
 
 /// A cursor over big-endian XDR data that reports the byte offset of a short read.

@@ -3,8 +3,8 @@
 //!
 //! * `particles.csv`: `step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz`, one
 //!   row per particle per output step;
-//! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (SPEC §1 "Motion"; a
-//!   reactive wall's where its assembly has moved it).
+//! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (docs/spec.md §1
+//!   "Motion"; a reactive wall's where its assembly has moved it).
 //!
 //! One long table per kind loads in one call into pandas, ParaView's CSV reader or a
 //! spreadsheet, and a particle's path is a filter on its index. Numbers are written with

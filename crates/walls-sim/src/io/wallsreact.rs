@@ -1,5 +1,5 @@
-//! The two text files pkdgrav writes for reactive walls (SPEC §3 "Reactive walls";
-//! walls document §7.4): `WALLSREACTdata.out`, one line per output step with each
+//! The two text files pkdgrav writes for reactive walls (docs/spec.md §3 "Reactive
+//! walls"; walls document §7.4): `WALLSREACTdata.out`, one line per output step with each
 //! assembly's state, and `WALLSREACTviz.out`, one line per output step with the
 //! placement of every finite wall, for redrawing the assembly frame by frame.
 //!
@@ -25,7 +25,7 @@
 //!   others: 1 + Σ(11 per triangle or rectangle, 8 per other wall) fields. `id` is the
 //!   wall's index in the walls file, counting from 0. (The document's "12 numbers" and
 //!   "9 numbers" per wall count one more than its own field list gives; its example line
-//!   and SPEC agree with 11 and 8.)
+//!   and docs/spec.md agree with 11 and 8.)
 //!
 //! [`viz_line`] writes a viz line and [`parse_viz_line`] reads it back as the same
 //! [`VizWall`]s; [`last_viz_step`] reads the last line of a viz file, where a run left

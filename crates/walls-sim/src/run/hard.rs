@@ -1,5 +1,6 @@
 //! The hard-sphere run (HSDEM): kick-drift-kick as in pkdgrav, where each drift moves
-//! particles in straight lines from one predicted collision to the next (SPEC §3).
+//! particles in straight lines from one predicted collision to the next (docs/spec.md
+//! §3).
 //!
 //! Within a step each wall translates at a constant velocity, the chord from where it
 //! is at the start of the step to where it is at the end (for a wall moving at constant
@@ -116,7 +117,8 @@ struct Drift<'a> {
     dt: f64,
     /// pkdgrav's carry of a particle that sticks within the step
     /// ([`Integrator::Pkdgrav`](super::Integrator::Pkdgrav)): the wall's travel over the
-    /// whole step, added at its end (physics.md §6), not the travel after the impact.
+    /// whole step, added at its end (docs/pkdgrav-physics.md §6), not the travel after
+    /// the impact.
     whole_step_carry: bool,
     /// Each particle's own clock within the step.
     clock: Vec<f64>,
@@ -400,7 +402,7 @@ fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event
         let offset = if whole_step_carry {
             // pkdgrav's: held where it touched, then carried at the end of the step by
             // the wall's whole step of travel and turn, as if it had been held from the
-            // step's start (physics.md §6).
+            // step's start (docs/pkdgrav-physics.md §6).
             p.pos - wall.start.origin
         } else {
             // Held from τ on: the carry at the end of the step turns it by the wall's

@@ -6,7 +6,8 @@
 //!   spring–dashpot of [`crate::contact::ssdem`] against every wall and particle a particle
 //!   overlaps.
 //! * `hard`: the hard-sphere model (HSDEM), kick-drift-kick too, but each drift moves
-//!   particles in straight lines from one predicted collision to the next (SPEC §3).
+//!   particles in straight lines from one predicted collision to the next (docs/spec.md
+//!   §3).
 //!
 //! Sticky walls (`epsn 0`) hold a particle at its contact point, which then moves with
 //! the wall; death walls (`epsn` < 0) remove it. Each wall contact that ends is an event
@@ -52,11 +53,11 @@ pub enum Integrator {
     /// acceleration, then the forces. First order and not symplectic; for comparison
     /// (docs/accuracy.md).
     ExplicitEuler,
-    /// pkdgrav's own step, in its order (physics.md §2): the forces evaluated once at
-    /// the start (stepping the springs of contacts open then); every contact, with a
-    /// wall or a particle, fed the velocities and spins predicted to the step's end
-    /// with the last accelerations (v_n + a_n·dt, w_n + ẇ_n·dt); pkdgrav's levers
-    /// (r − x against a wall, the distances to the plane of intersection between
+    /// pkdgrav's own step, in its order (docs/pkdgrav-physics.md §2): the forces
+    /// evaluated once at the start (stepping the springs of contacts open then); every
+    /// contact, with a wall or a particle, fed the velocities and spins predicted to the
+    /// step's end with the last accelerations (v_n + a_n·dt, w_n + ẇ_n·dt); pkdgrav's
+    /// levers (r − x against a wall, the distances to the plane of intersection between
     /// particles, §1.1); and the walls moved as its soft-sphere build moves them (§5:
     /// in steps of `step`, or of dt when it is 0, to the sinusoid's value, with the
     /// velocity half a step after the step's end), whatever the oscillation stepping;
@@ -73,9 +74,9 @@ pub enum Integrator {
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// The pkdgrav build whose physics the run follows (physics.md §0): soft or hard
-    /// spheres (`DEM`, [`Settings::method`]), and which of cohesion, two-layer contacts,
-    /// reactive walls, aggregates and the rolling model it has.
+    /// The pkdgrav build whose physics the run follows (docs/pkdgrav-physics.md §0): soft
+    /// or hard spheres (`DEM`, [`Settings::method`]), and which of cohesion, two-layer
+    /// contacts, reactive walls, aggregates and the rolling model it has.
     pub build: crate::build::Build,
     /// The timestep.
     pub dt: f64,
@@ -109,26 +110,27 @@ pub struct Settings {
     pub planning: Planning,
     /// [`Integrator::Pkdgrav`]: whether the rolling and twisting radius R* is the
     /// contact radius instead of the reduced radius (pkdgrav's `bUseContactRadius`,
-    /// physics.md §1.4; off by default).
+    /// docs/pkdgrav-physics.md §1.4; off by default).
     pub contact_radius: bool,
     /// [`Integrator::Pkdgrav`] in a build without `DEM_ROTATION_DASHPOT`: whether the
     /// rolling lever is l₁, l₂ (d against a wall) instead of the reduced radius
-    /// (pkdgrav's `bUseLegacyRoll`, physics.md §1.6; off by default).
+    /// (pkdgrav's `bUseLegacyRoll`, docs/pkdgrav-physics.md §1.6; off by default).
     pub legacy_roll: bool,
-    /// Whether forces are evaluated at all (pkdgrav's `bDoGravity`, physics.md §2):
-    /// without, SSDEM particles feel no contacts (config also drops uniform gravity).
+    /// Whether forces are evaluated at all (pkdgrav's `bDoGravity`,
+    /// docs/pkdgrav-physics.md §2): without, SSDEM particles feel no contacts (config
+    /// also drops uniform gravity).
     pub forces: bool,
-    /// [`Integrator::Pkdgrav`]: pkdgrav's `dAccCrit` (physics.md §1.7): after the
-    /// forces, a particle slowing down with |a| below it and |v| below it·dt is stopped
-    /// (and likewise its spin, with the thresholds over and times its radius); 0 turns
-    /// it off.
+    /// [`Integrator::Pkdgrav`]: pkdgrav's `dAccCrit` (docs/pkdgrav-physics.md §1.7):
+    /// after the forces, a particle slowing down with |a| below it and |v| below it·dt is
+    /// stopped (and likewise its spin, with the thresholds over and times its radius); 0
+    /// turns it off.
     pub acc_crit: f64,
-    /// Cohesion's `.par` values (physics.md §7): followed when the build has
+    /// Cohesion's `.par` values (docs/pkdgrav-physics.md §7): followed when the build has
     /// `DEM_COHESION` and the integrator is [`Integrator::Pkdgrav`].
     pub cohesion: crate::contact::cohesion::Cohesion,
-    /// The two-layer constants of the `.par` file (physics.md §8), `None` for pkdgrav's
-    /// defaults (no boundary, every constant from k_n): followed when the build has
-    /// `DEM_TWOLAYERS` and the integrator is [`Integrator::Pkdgrav`].
+    /// The two-layer constants of the `.par` file (docs/pkdgrav-physics.md §8), `None`
+    /// for pkdgrav's defaults (no boundary, every constant from k_n): followed when the
+    /// build has `DEM_TWOLAYERS` and the integrator is [`Integrator::Pkdgrav`].
     pub two_layer: Option<crate::io::par::TwoLayer>,
 }
 
@@ -286,8 +288,8 @@ pub struct State {
     pub stuck_to: Option<(usize, Vec3)>,
     pub(crate) acc: Vec3,
     pub(crate) alpha: Vec3,
-    /// A member of a rigid aggregate (physics.md §9): moved with it, never kicked or
-    /// drifted on its own.
+    /// A member of a rigid aggregate (docs/pkdgrav-physics.md §9): moved with it, never
+    /// kicked or drifted on its own.
     pub(crate) member: bool,
 }
 
@@ -305,7 +307,7 @@ impl State {
     }
 
     /// The particle as pkdgrav writes it in an output: its colour −1 − the wall's number
-    /// once stuck to a wall (unless it was already negative; physics.md §6).
+    /// once stuck to a wall (unless it was already negative; docs/pkdgrav-physics.md §6).
     pub fn as_written(&self) -> Particle {
         let mut p = self.particle.clone();
         if let Some((w, _)) = self.stuck_to
@@ -523,8 +525,8 @@ pub fn run_watched(
 }
 
 /// The wall a particle is stuck to from the start, with its offset from the wall's
-/// origin at `t0`: pkdgrav's negative `color`, −1 − the wall's number (physics.md §0,
-/// `PARTICLE_STUCK`), when that wall exists.
+/// origin at `t0`: pkdgrav's negative `color`, −1 − the wall's number
+/// (docs/pkdgrav-physics.md §0, `PARTICLE_STUCK`), when that wall exists.
 fn stuck_from_the_start(p: &Particle, walls: &[Wall], t0: f64) -> Option<(usize, Vec3)> {
     let w = usize::try_from(-1 - i64::from(p.color)).ok()?;
     let wall = walls.get(w)?;
@@ -625,8 +627,8 @@ impl WallNow {
     }
 }
 
-/// Where the walls' origins are as a run goes on: at the exact position of SPEC §1
-/// "Motion", or moved step by step as pkdgrav does ([`OscillationStepping`]). A wall
+/// Where the walls' origins are as a run goes on: at the exact position of docs/spec.md
+/// §1 "Motion", or moved step by step as pkdgrav does ([`OscillationStepping`]). A wall
 /// whose motion overflows stays where it was.
 struct Origins {
     now: Vec<Vec3>,
@@ -653,9 +655,9 @@ impl Origins {
     }
 
     /// Moves every origin as pkdgrav's soft-sphere build does over the step from `t`
-    /// to `t + dt` (`msrWallsMove(t + dt/2, dt)`, physics.md §5): by the change of the
-    /// sinusoid and of the linear travel between the whole steps of `step` (dt when it
-    /// is 0) that hold t + dt/2 and t + 3dt/2.
+    /// to `t + dt` (`msrWallsMove(t + dt/2, dt)`, docs/pkdgrav-physics.md §5): by the
+    /// change of the sinusoid and of the linear travel between the whole steps of `step`
+    /// (dt when it is 0) that hold t + dt/2 and t + 3dt/2.
     fn advance_pkdgrav(&mut self, walls: &[Wall], t: f64, dt: f64) {
         let (ta, tb) = (t + 0.5 * dt, t + 1.5 * dt);
         for (o, w) in self.now.iter_mut().zip(walls) {
@@ -698,8 +700,8 @@ impl Origins {
     }
 }
 
-/// The velocity pkdgrav gives a wall's origin at time `t` (physics.md §5): `velocity`
-/// plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to `step`.
+/// The velocity pkdgrav gives a wall's origin at time `t` (docs/pkdgrav-physics.md §5):
+/// `velocity` plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to `step`.
 fn smooth_velocity(motion: &walls_geometry::Motion, t: f64) -> Vec3 {
     let o = &motion.oscillation;
     let mut v = motion.velocity;

@@ -1,6 +1,6 @@
 //! What pkdgrav's optional builds add to a soft-sphere run's contacts: cohesion
-//! (`DEM_COHESION`, physics.md §7) and two-layer contacts (`DEM_TWOLAYERS`, §8). Each is
-//! on when the run's build has its option and the integrator is
+//! (`DEM_COHESION`, docs/pkdgrav-physics.md §7) and two-layer contacts (`DEM_TWOLAYERS`,
+//! §8). Each is on when the run's build has its option and the integrator is
 //! [`Integrator::Pkdgrav`] (pkdgrav's contact law); [`OptionalPhysics::new`] resolves
 //! the walls' values against the `.par` file's once, and the steppers ask it for each
 //! contact's [`Optional`] (nothing, at the cost of a test, when both are off).

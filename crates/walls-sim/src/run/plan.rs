@@ -283,12 +283,12 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         "rolling and twisting model",
         pkdgrav_law && (rolling || twisting),
         if build.rotation_dashpot {
-            "spring-dashpot-sliders scaled by beta_s (DEM_ROTATION_DASHPOT, physics.md §1.4)"
+            "spring-dashpot-sliders scaled by beta_s (DEM_ROTATION_DASHPOT, docs/pkdgrav-physics.md §1.4)"
                 .to_string()
         } else if settings.contact_radius {
-            "directional constant torques, twisting with the contact radius (no DEM_ROTATION_DASHPOT, bUseContactRadius; physics.md §1.6)".to_string()
+            "directional constant torques, twisting with the contact radius (no DEM_ROTATION_DASHPOT, bUseContactRadius; docs/pkdgrav-physics.md §1.6)".to_string()
         } else {
-            "directional constant torques, no twisting torque (no DEM_ROTATION_DASHPOT; physics.md §1.6)".to_string()
+            "directional constant torques, no twisting torque (no DEM_ROTATION_DASHPOT; docs/pkdgrav-physics.md §1.6)".to_string()
         },
         if pkdgrav_law {
             "no rolling or twisting friction"

@@ -117,8 +117,8 @@ struct Walls<'a> {
     /// pkdgrav's rolling radius is the contact radius (`bUseContactRadius`).
     contact_radius: bool,
     /// A build without `DEM_ROTATION_DASHPOT`: rolling and twisting are constant
-    /// torques (physics.md §1.6), the rolling lever d with `bUseLegacyRoll` (the
-    /// value).
+    /// torques (docs/pkdgrav-physics.md §1.6), the rolling lever d with `bUseLegacyRoll`
+    /// (the value).
     constant_torque: Option<bool>,
     /// pkdgrav's `dAccCrit` (0: off).
     acc_crit: f64,
@@ -167,7 +167,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     if let Some((w, _)) = s.stuck_to {
         // pkdgrav carries a stuck particle with its wall's move, before the forces
-        // (physics.md §6; `SoftStepper::carry_stuck`).
+        // (docs/pkdgrav-physics.md §6; `SoftStepper::carry_stuck`).
         if !walls.pkdgrav_levers {
             carry(s, &walls.now[w], dt);
         }
@@ -291,9 +291,9 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             && (plan.sliding_friction || plan.rolling || plan.twisting || walls.optional.any())
         {
             // pkdgrav's contact law, in its frame: the normal towards the wall, the
-            // wall's motion relative to the particle's (physics.md §1.1–§1.5).
-            // A reactive wall turns the springs by its spin about the face normal or
-            // axis alone (physics.md §10).
+            // wall's motion relative to the particle's (docs/pkdgrav-physics.md
+            // §1.1–§1.5). A reactive wall turns the springs by its spin about the face
+            // normal or axis alone (docs/pkdgrav-physics.md §10).
             let wall_spin = match walls.assembly_of[w] {
                 Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
                 None => wall.spin,
@@ -329,13 +329,15 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 && let Some(aggs) = walls.aggregates
             {
                 // An aggregate feels the rolling torque as a pseudo-force at the contact
-                // point, with its moment about the aggregate's centre (physics.md §9.4).
+                // point, with its moment about the aggregate's centre
+                // (docs/pkdgrav-physics.md §9.4).
                 let push = aggregate::rolling_push(&c.rolling, &-n, lever);
                 let arm = aggs.offset(i, &s.particle.pos) - n * lever;
                 load.torque += arm.cross(&push) - c.rolling;
             }
             if let Some(a) = walls.assembly_of[w] {
-                // The reaction (physics.md §10), with the rolling and twisting torques.
+                // The reaction (docs/pkdgrav-physics.md §10), with the rolling and
+                // twisting torques.
                 let at = s.particle.pos - n * lever;
                 out.reactions.push((
                     a,
@@ -399,9 +401,9 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     out
 }
 
-/// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, physics.md §1.7): a
-/// particle slowing down (a·v < 0) with |a| < a_c and |v| < a_c·dt is stopped, v and a
-/// both zeroed; its spin likewise, with |ẇ| < a_c·r and |w| < a_c·dt/r.
+/// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, docs/pkdgrav-physics.md
+/// §1.7): a particle slowing down (a·v < 0) with |a| < a_c and |v| < a_c·dt is stopped, v
+/// and a both zeroed; its spin likewise, with |ẇ| < a_c·r and |w| < a_c·dt/r.
 fn zero_small_motions(s: &mut State, a_c: f64, dt: f64) {
     let p = &mut s.particle;
     if s.acc.dot(&p.vel) < 0.0 && s.acc.norm() < a_c && p.vel.norm() < a_c * dt {
@@ -430,7 +432,7 @@ struct Kicks {
     /// The prediction of spins (against walls and particles) and of the velocities of
     /// particles meeting each other.
     predict_all: f64,
-    /// pkdgrav's levers (physics.md §1.1) instead of the radii.
+    /// pkdgrav's levers (docs/pkdgrav-physics.md §1.1) instead of the radii.
     pkdgrav_levers: bool,
 }
 
@@ -452,8 +454,8 @@ impl Kicks {
         }
     }
 
-    /// pkdgrav's force evaluation at the start (physics.md §2): the velocities and spins
-    /// as they are (v^pred = v, w^pred = w), and no kick after it.
+    /// pkdgrav's force evaluation at the start (docs/pkdgrav-physics.md §2): the
+    /// velocities and spins as they are (v^pred = v, w^pred = w), and no kick after it.
     fn at_start(self) -> Kicks {
         Kicks {
             closing: 0.0,
@@ -511,7 +513,8 @@ struct SoftStepper<'a> {
     assembly_of: Vec<Option<usize>>,
     /// Each assembly's centre of gravity this step (kept to save allocating).
     cogs: Vec<Vec3>,
-    /// pkdgrav's rigid aggregates of particles (`AGGS`, physics.md §9), if any.
+    /// pkdgrav's rigid aggregates of particles (`AGGS`, docs/pkdgrav-physics.md §9), if
+    /// any.
     aggregates: Option<Aggregates>,
     /// Set up failed (an aggregate of one member): the run stops before it starts.
     halted: bool,
@@ -646,10 +649,11 @@ impl<'a> SoftStepper<'a> {
         }
     }
 
-    /// pkdgrav's force evaluation at the start, before the first step (physics.md §2,
-    /// §12), for [`Integrator::Pkdgrav`]: gravity and every contact open at t₀, with
-    /// the velocities and spins as they are. It sets the accelerations the first kick
-    /// uses and steps the springs of those contacts once; it moves and kicks nothing.
+    /// pkdgrav's force evaluation at the start, before the first step
+    /// (docs/pkdgrav-physics.md §2, §12), for [`Integrator::Pkdgrav`]: gravity and every
+    /// contact open at t₀, with the velocities and spins as they are. It sets the
+    /// accelerations the first kick uses and steps the springs of those contacts once; it
+    /// moves and kicks nothing.
     fn start(&mut self) -> Flow {
         let kicks = self.kicks;
         self.kicks = kicks.at_start();
@@ -704,9 +708,9 @@ impl<'a> SoftStepper<'a> {
         flow
     }
 
-    /// pkdgrav's aggregates (physics.md §9.3): the opening half kick of each centre, the
-    /// drift (the rotation by Euler's equations, the centre with its half-step
-    /// velocity), and the members placed where it has taken them.
+    /// pkdgrav's aggregates (docs/pkdgrav-physics.md §9.3): the opening half kick of each
+    /// centre, the drift (the rotation by Euler's equations, the centre with its
+    /// half-step velocity), and the members placed where it has taken them.
     fn move_aggregates(&mut self) {
         let Some(aggs) = self.aggregates.as_mut() else {
             return;
@@ -719,8 +723,8 @@ impl<'a> SoftStepper<'a> {
         }
     }
 
-    /// Each aggregate's acceleration and torque from its members' loads (physics.md
-    /// §9.4), and, after a step's forces, its closing half kick.
+    /// Each aggregate's acceleration and torque from its members' loads
+    /// (docs/pkdgrav-physics.md §9.4), and, after a step's forces, its closing half kick.
     fn gather_aggregates(&mut self, kick: bool) {
         let Some(aggs) = self.aggregates.as_mut() else {
             return;
@@ -781,7 +785,7 @@ impl<'a> SoftStepper<'a> {
     }
 
     /// The particles stuck to walls carried with their walls' move, as pkdgrav moves
-    /// them in the wall move, before the forces (physics.md §6): with
+    /// them in the wall move, before the forces (docs/pkdgrav-physics.md §6): with
     /// [`Integrator::Pkdgrav`], which a particle meeting a stuck one then sees where the
     /// wall has taken it.
     fn carry_stuck(&mut self) {
@@ -797,7 +801,7 @@ impl<'a> SoftStepper<'a> {
     /// force and torque, its drift, and its free rotation over the step (kick-drift-kick
     /// as for the particles); its walls are placed where it has taken them.
     /// With [`Integrator::Pkdgrav`], pkdgrav's: the opening half kick of the velocity
-    /// alone, then [`Assembly::move_pkdgrav`] (physics.md §10).
+    /// alone, then [`Assembly::move_pkdgrav`] (docs/pkdgrav-physics.md §10).
     fn move_assemblies(&mut self) {
         let (g, dt) = (self.settings.gravity, self.settings.dt);
         for a in self.assemblies.iter_mut() {
@@ -871,7 +875,7 @@ impl<'a> SoftStepper<'a> {
         let aggregates = self.aggregates.as_ref();
         for &(i, j) in &self.candidates.pairs {
             let (i, j) = (i as usize, j as usize);
-            // Members of one aggregate never meet (physics.md §9.1).
+            // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
             if aggregates.is_some_and(|a| a.same(i, j)) {
                 continue;
             }
@@ -911,7 +915,7 @@ impl<'a> SoftStepper<'a> {
             };
             let ((vi, wi), (vj, wj)) = (seen(&states[i], free_i), seen(&states[j], free_j));
             // The levers: the radii, or pkdgrav's distances from each centre to the
-            // plane where the spheres intersect (physics.md §1.1).
+            // plane where the spheres intersect (docs/pkdgrav-physics.md §1.1).
             let (li, lj) = if pkdgrav_levers {
                 pair_levers(p.radius, q.radius, distance)
             } else {
@@ -937,8 +941,8 @@ impl<'a> SoftStepper<'a> {
                 && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
             {
                 // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
-                // towards j, velocities and spins are j's relative to i's (physics.md
-                // §1.1–§1.5).
+                // towards j, velocities and spins are j's relative to i's
+                // (docs/pkdgrav-physics.md §1.1–§1.5).
                 let a = (self.settings.contact_radius).then(|| lever_contact_radius(p.radius, li));
                 let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
                 let legacy = self.settings.legacy_roll;
@@ -951,7 +955,8 @@ impl<'a> SoftStepper<'a> {
                     levers: (li, lj),
                     mass: reduced,
                     radius: match a {
-                        // The contact radius is never worked out then (physics.md §1.6).
+                        // The contact radius is never worked out then
+                        // (docs/pkdgrav-physics.md §1.6).
                         Some(_) if legacy => 0.0,
                         Some(a) => a,
                         None => reduced_radius,
@@ -1148,7 +1153,7 @@ impl<'a> SoftStepper<'a> {
     }
 
     /// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
-    /// asserts, physics.md §9.5): the warning, in place of the event.
+    /// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
     fn aggregates_held(&mut self) -> bool {
         let mut held = false;
         for (i, report) in self.reports.iter_mut().enumerate() {
@@ -1261,10 +1266,10 @@ pub(super) fn run(
     run.outcome(None)
 }
 
-/// pkdgrav's aggregates of the particles (physics.md §9), when the run follows them: an
-/// `AGGS` build with pkdgrav's integrator. Members without that get a warning and run as
-/// free spheres; an aggregate of one member stops the run before it starts (the second
-/// value), as pkdgrav aborts.
+/// pkdgrav's aggregates of the particles (docs/pkdgrav-physics.md §9), when the run
+/// follows them: an `AGGS` build with pkdgrav's integrator. Members without that get a
+/// warning and run as free spheres; an aggregate of one member stops the run before it
+/// starts (the second value), as pkdgrav aborts.
 fn set_up_aggregates(
     states: &mut [State],
     settings: &Settings,
@@ -1356,9 +1361,9 @@ impl PairList {
     }
 }
 
-/// pkdgrav's levers of a pair contact (physics.md §1.1): the distances from the centres
-/// of spheres of radii `a` and `b`, `d` apart, to the plane where they intersect;
-/// exactly d/2 each when the radii are equal.
+/// pkdgrav's levers of a pair contact (docs/pkdgrav-physics.md §1.1): the distances from
+/// the centres of spheres of radii `a` and `b`, `d` apart, to the plane where they
+/// intersect; exactly d/2 each when the radii are equal.
 fn pair_levers(a: f64, b: f64, d: f64) -> (f64, f64) {
     if a == b {
         (0.5 * d, 0.5 * d)

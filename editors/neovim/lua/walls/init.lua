@@ -42,18 +42,38 @@ function M.attach(buf)
   end
 end
 
--- Registers the tree-sitter parser with nvim-treesitter, built from this repository's
--- grammar/tree-sitter-walls (`:TSInstall walls` after calling this).
+-- Registers the tree-sitter parser of this repository's grammar/tree-sitter-walls with
+-- nvim-treesitter, then `:TSInstall walls` builds and installs it. Both branches:
+--  * `master`: an entry in `get_parser_configs()`;
+--  * `main` (the rewrite): the `nvim-treesitter.parsers` module is the table of parsers,
+--    which nvim-treesitter reloads before each install or update and then fires the
+--    `User TSUpdate` autocommand; the entry is set now and again on that event. It names
+--    the grammar's `queries` folder, which `main` installs with the parser.
+-- Returns the branch ('master' or 'main'), or false without nvim-treesitter.
 function M.register_parser(grammar_dir)
   local ok, parsers = pcall(require, 'nvim-treesitter.parsers')
   if not ok then
     return false
   end
-  parsers.get_parser_configs().walls = {
-    install_info = { url = grammar_dir, files = { 'src/parser.c' } },
-    filetype = 'walls',
-  }
-  return true
+  if type(parsers.get_parser_configs) == 'function' then
+    parsers.get_parser_configs().walls = {
+      install_info = { url = grammar_dir, files = { 'src/parser.c' } },
+      filetype = 'walls',
+    }
+    return 'master'
+  end
+  local function register()
+    require('nvim-treesitter.parsers').walls = {
+      install_info = { path = grammar_dir, queries = 'queries' },
+    }
+  end
+  register()
+  vim.api.nvim_create_autocmd('User', {
+    group = vim.api.nvim_create_augroup('walls_treesitter', { clear = true }),
+    pattern = 'TSUpdate',
+    callback = register,
+  })
+  return 'main'
 end
 
 return M

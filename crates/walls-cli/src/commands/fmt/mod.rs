@@ -10,6 +10,7 @@
 
 pub mod safe_write;
 
+use super::settings::{Resolver, SettingsArgs};
 use crate::input;
 use clap::Parser;
 use rayon::prelude::*;
@@ -18,7 +19,7 @@ use std::io::Write;
 use std::os::unix::fs::MetadataExt;
 use std::path::Path;
 use walls_diagnostics::render::{self, FileReport};
-use walls_format::{FormatOptions, discover};
+use walls_format::FormatOptions;
 
 /// The command line of `walls-fmt`.
 #[derive(Parser)]
@@ -26,7 +27,7 @@ use walls_format::{FormatOptions, discover};
     name = "walls-fmt",
     version,
     about = "Rewrite pkdgrav walls files in the canonical layout, keeping every comment and number.",
-    after_help = "Options come from the nearest .walls-fmt.toml above each file (for -, above the current directory); flags override it.\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error, or a file not written (read-only, not yours, hard-linked or changed meanwhile: see docs/formatting.md)."
+    after_help = "Options come from the nearest walls.toml, .walls.toml, pyproject.toml [tool.walls] ([format] table) or .walls-fmt.toml above each file (for -, above the current directory); flags override them (docs/configuration.md).\nExit status: 0 success, 1 a file would change (--check, --diff) or could not be formatted, 2 usage or I/O error, or a file not written (read-only, not yours, hard-linked or changed meanwhile: see docs/formatting.md)."
 )]
 pub struct FmtArgs {
     /// Files to format in place; `-` formats standard input to standard output.
@@ -47,6 +48,12 @@ pub struct FmtArgs {
     /// Keep one of the blank lines the author wrote between statements.
     #[arg(long, value_name = "BOOL", num_args = 0..=1, default_missing_value = "true")]
     pub keep_blank_lines: Option<bool>,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
+    /// Where the settings come from.
+    #[command(flatten)]
+    pub settings: SettingsArgs,
 }
 
 /// What happened to one file.
@@ -67,9 +74,16 @@ enum Outcome {
 
 /// Formats the files `args` name and reports on them; the exit status.
 pub fn run(args: &FmtArgs) -> i32 {
+    let resolver = match Resolver::new(&args.settings) {
+        Ok(resolver) => resolver,
+        Err(e) => {
+            crate::errln!("walls-fmt: error: {e}");
+            return 2;
+        }
+    };
     let outcomes: Vec<(String, Outcome)> = distinct(&args.files)
         .par_iter()
-        .map(|f| (display(f), format_one(f, args)))
+        .map(|f| (input::display_name(f), format_one(f, args, &resolver)))
         .collect();
     let color = crate::console::color_stderr();
     let mut err = std::io::BufWriter::new(std::io::stderr().lock());
@@ -161,32 +175,11 @@ fn distinct(files: &[String]) -> Vec<&String> {
         .collect()
 }
 
-fn display(path: &str) -> String {
-    if path == "-" {
-        "<stdin>".into()
-    } else {
-        path.into()
-    }
-}
-
 /// Formats one file (or standard input) as the arguments ask.
-fn format_one(path: &str, args: &FmtArgs) -> Outcome {
+fn format_one(path: &str, args: &FmtArgs, resolver: &Resolver) -> Outcome {
     let stdin = path == "-";
-    let dir = if stdin {
-        std::env::current_dir().unwrap_or_default()
-    } else {
-        Path::new(path)
-            .parent()
-            .map(Path::to_path_buf)
-            .unwrap_or_default()
-    };
-    let dir = if dir.as_os_str().is_empty() {
-        ".".into()
-    } else {
-        dir
-    };
-    let options = match discover(&dir) {
-        Ok((options, _)) => override_with(options, args),
+    let options = match resolver.format_options(path) {
+        Ok(options) => override_with(options, args),
         Err(e) => return Outcome::Unreadable(e.to_string()),
     };
     let read = if stdin {
@@ -219,11 +212,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     };
     let changed = formatted != text;
     if args.diff && changed {
-        let name = display(path);
-        let diff = similar::TextDiff::from_lines(&text, &formatted)
-            .unified_diff()
-            .header(&name, &name)
-            .to_string();
+        let diff = unified_diff(&input::display_name(path), &text, &formatted);
         return Outcome::Changed { diff: Some(diff) };
     }
     let done = if changed {
@@ -249,13 +238,16 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     }
     match original.replace(formatted.as_bytes()) {
         Ok(()) => done,
-        Err(safe_write::WriteError::Refused(why)) => {
-            Outcome::NotWritten(format!("not writing {path}: {why}"))
-        }
-        Err(safe_write::WriteError::Io(e)) => {
-            Outcome::NotWritten(format!("cannot write {path}: {e}"))
-        }
+        Err(e) => Outcome::NotWritten(e.message(path, safe_write::Rewriter::Format)),
     }
+}
+
+/// The unified diff from `old` to `new`, the text of the file shown as `name`.
+pub(crate) fn unified_diff(name: &str, old: &str, new: &str) -> String {
+    similar::TextDiff::from_lines(old, new)
+        .unified_diff()
+        .header(name, name)
+        .to_string()
 }
 
 fn override_with(mut options: FormatOptions, args: &FmtArgs) -> FormatOptions {

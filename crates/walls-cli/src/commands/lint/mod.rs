@@ -5,16 +5,21 @@
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
 //! findings, and every format reports it. Human output goes to standard error, machine
 //! output (json, sarif, github) to standard output. Folders are walked as [`walk`] says.
+//! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first (`fix.rs`).
+//! Each file is checked with the settings found for it ([`super::settings`]); the flags
+//! win over them.
 
+mod fix;
 mod walk;
 
+use super::settings::{Resolver, SettingsArgs, absolute_file};
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
 use std::io::Write;
 use std::sync::Arc;
-use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo, Unreadable};
+use walls_diagnostics::{Diagnostic, Severity};
 use walls_model::Options;
 
 /// The command line of `walls-lint`.
@@ -23,7 +28,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile)."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -40,12 +45,13 @@ pub struct LintArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
-    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code lacks.
-    #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
-    pub mode: ContactModel,
-    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls.
-    #[arg(long, value_name = "N", default_value_t = 20)]
-    pub max_walls: usize,
+    /// The contact model the file is for: hsdem refuses what pkdgrav's hard-sphere code
+    /// lacks [default: ssdem].
+    #[arg(long, value_enum)]
+    pub mode: Option<ContactModel>,
+    /// pkdgrav's MAX_NUM_WALLS: warn when the file has more walls [default: 20].
+    #[arg(long, value_name = "N")]
+    pub max_walls: Option<usize>,
     /// The smallest particle radius (pkdgrav units): enables the SSDEM wall-speed check.
     #[arg(long, value_name = "R", value_parser = positive)]
     pub min_radius: Option<f64>,
@@ -61,6 +67,23 @@ pub struct LintArgs {
     /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
     #[arg(long, value_name = "CODE", conflicts_with = "files")]
     pub explain: Option<String>,
+    /// Apply the safe fixes the diagnostics carry (rewriting the files; standard input's
+    /// fixed text goes to standard output), then report what remains.
+    #[arg(long)]
+    pub fix: bool,
+    /// Apply the unsafe fixes too (guesses, such as a spelling suggestion); implies --fix.
+    #[arg(long)]
+    pub unsafe_fixes: bool,
+    /// Write nothing: print a unified diff of what the fixes would change, and exit 1 if
+    /// they would change anything; implies --fix.
+    #[arg(long, conflicts_with = "format")]
+    pub diff: bool,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
+    /// Where the settings come from.
+    #[command(flatten)]
+    pub settings: SettingsArgs,
 }
 
 /// `--format`: where and how diagnostics are reported.
@@ -86,6 +109,22 @@ pub enum Color {
 struct Linted {
     name: String,
     outcome: Result<(Arc<str>, Vec<Diagnostic>), String>,
+    /// Its warnings fail the check (`--deny-warnings`, or its settings' `deny-warnings`).
+    deny_warnings: bool,
+    /// The settings' ignores of codes it has errors of: they are reported anyway.
+    ignored_errors: Vec<String>,
+}
+
+impl Linted {
+    /// A file's outcome, before its settings say more of it.
+    fn new(name: String, outcome: Result<(Arc<str>, Vec<Diagnostic>), String>) -> Linted {
+        Linted {
+            name,
+            outcome,
+            deny_warnings: false,
+            ignored_errors: Vec::new(),
+        }
+    }
 }
 
 /// Checks the files `args` name and reports on them; the exit status.
@@ -93,24 +132,45 @@ pub fn run(args: &LintArgs) -> i32 {
     if let Some(query) = &args.explain {
         return explain(query);
     }
-    let options = Options {
-        mode: args.mode,
-        max_walls: args.max_walls,
-        min_radius: args.min_radius,
-        dt: args.dt,
+    let resolver = match Resolver::new(&args.settings) {
+        Ok(resolver) => resolver,
+        Err(e) => {
+            crate::errln!("walls-lint: error: {e}");
+            return 2;
+        }
     };
-    let targets = match walk::expand(&args.files, &args.include, &args.exclude) {
+    let globs = |folder: &str| {
+        let lint = &resolver.settings(folder).map_err(|e| e.to_string())?.lint;
+        let pick = |flag: &Vec<String>, set: &Vec<String>| {
+            if flag.is_empty() { set } else { flag }.clone()
+        };
+        Ok((
+            pick(&args.include, &lint.include),
+            pick(&args.exclude, &lint.exclude),
+        ))
+    };
+    let targets = match walk::expand(&args.files, globs) {
         Ok(targets) => targets,
         Err(e) => {
             crate::errln!("walls-lint: error: {e}");
             return 2;
         }
     };
-    let checked: Vec<Linted> = targets
+    let fixing = fix::Fixing::asked(args);
+    if let Some(clash) = fixing.and_then(|f| f.output_clash(args.format, &targets.files)) {
+        crate::errln!("walls-lint: error: {clash}");
+        return 2;
+    }
+    let (checked, fixes): (Vec<Linted>, Vec<fix::FileFixes>) = targets
         .files
         .par_iter()
-        .map(|p| lint(p, &options))
-        .collect();
+        .map(|p| lint(p, args, &resolver, fixing))
+        .unzip();
+    for c in &checked {
+        for e in &c.ignored_errors {
+            crate::errln!("walls-lint: warning: {e}");
+        }
+    }
 
     let mut unreadable: Vec<Unreadable> = Vec::new();
     for c in &checked {
@@ -124,8 +184,20 @@ pub fn run(args: &LintArgs) -> i32 {
     for (path, e) in &targets.errors {
         unreadable.push(Unreadable { path, error: e });
     }
+    for (c, f) in checked.iter().zip(&fixes) {
+        if let Some(e) = &f.not_written {
+            unreadable.push(Unreadable {
+                path: &c.name,
+                error: e,
+            });
+        }
+    }
+    // A broken settings file is every file's error: said once.
+    let mut said = std::collections::HashSet::new();
     for u in &unreadable {
-        crate::errln!("walls-lint: error: {}", u.error);
+        if said.insert(u.error) {
+            crate::errln!("walls-lint: error: {}", u.error);
+        }
     }
     let io_failed = !unreadable.is_empty();
     let reports: Vec<FileReport> = checked
@@ -140,7 +212,22 @@ pub fn run(args: &LintArgs) -> i32 {
         })
         .collect();
     let summary = render::summarize(&reports);
-    if let Err(e) = write_reports(args, &reports, &unreadable) {
+    let denied = checked.iter().any(|c| {
+        c.deny_warnings
+            && c.outcome.as_ref().is_ok_and(|(_, diagnostics)| {
+                diagnostics.iter().any(|d| d.severity == Severity::Warning)
+            })
+    });
+    let fixed = fixes.iter().map(|f| f.fixed).sum();
+    let diff = fixing.is_some_and(|f| f.diff);
+    let written = fix::write_outputs(&fixes).and_then(|()| {
+        if diff {
+            fix::write_diff_summary(&fixes)
+        } else {
+            write_reports(args, &reports, &unreadable, fixing.map(|_| fixed))
+        }
+    });
+    if let Err(e) = written {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-lint: error: cannot write output: {e}");
         }
@@ -150,23 +237,70 @@ pub fn run(args: &LintArgs) -> i32 {
     std::mem::forget(checked);
     if io_failed {
         2
-    } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
+    } else if diff {
+        i32::from(fixed > 0)
+    } else if summary.errors > 0 || denied {
         1
     } else {
         0
     }
 }
 
-fn lint(path: &str, options: &Options) -> Linted {
-    let read = input::read(path);
-    let outcome = read.bytes.map(|bytes| {
-        let checked = check_bytes(bytes, options);
-        (checked.text, checked.diagnostics)
-    });
-    Linted {
-        name: read.name,
-        outcome,
+/// Checks one file with its settings, the flags winning over them; with `fixing`, applies
+/// its fixes first (`fix.rs`). Diagnostics of ignored codes are dropped after every check,
+/// so their fixes are never applied either.
+fn lint(
+    path: &str,
+    args: &LintArgs,
+    resolver: &Resolver,
+    fixing: Option<fix::Fixing>,
+) -> (Linted, fix::FileFixes) {
+    let settings = match resolver.settings(path) {
+        Ok(settings) => settings,
+        Err(e) => {
+            let linted = Linted::new(input::display_name(path), Err(e.to_string()));
+            return (linted, fix::FileFixes::default());
+        }
+    };
+    let set = &settings.lint;
+    let defaults = Options::default();
+    let options = Options {
+        mode: args.mode.or(set.mode).unwrap_or(defaults.mode),
+        max_walls: args
+            .max_walls
+            .or(set.max_walls)
+            .unwrap_or(defaults.max_walls),
+        min_radius: args.min_radius.or(set.min_radius),
+        dt: args.dt.or(set.dt),
+    };
+    let file = absolute_file(path);
+    let keep = |diagnostics: &mut Vec<Diagnostic>| {
+        set.filter(file.as_deref(), diagnostics);
+    };
+    let (mut linted, fixes) = match fixing {
+        Some(fixing) => fix::lint(path, &options, &keep, fixing),
+        None => {
+            let read = input::read(path);
+            let outcome = read.bytes.map(|bytes| {
+                let mut checked = check_bytes(bytes, &options);
+                keep(&mut checked.diagnostics);
+                (checked.text, checked.diagnostics)
+            });
+            (Linted::new(read.name, outcome), fix::FileFixes::default())
+        }
+    };
+    // The errors of ignored codes are kept; filtering again names the settings that
+    // asked for them to be ignored.
+    if let Ok((_, diagnostics)) = &mut linted.outcome {
+        for i in set.filter(file.as_deref(), diagnostics) {
+            linted.ignored_errors.push(format!(
+                "{}: `{}` is ignored, but errors cannot be: its errors in {} are reported",
+                i.at, i.code.id, linted.name
+            ));
+        }
     }
+    linted.deny_warnings = args.deny_warnings || set.deny_warnings.unwrap_or(false);
+    (linted, fixes)
 }
 
 /// A strictly positive real, for `--min-radius` and `--dt`.
@@ -177,10 +311,13 @@ fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
+/// Writes the report in the format `args` ask for; human output ends with a summary,
+/// which says how many fixes were applied when `fixed` gives their number.
 fn write_reports(
     args: &LintArgs,
     reports: &[FileReport],
     unreadable: &[Unreadable],
+    fixed: Option<usize>,
 ) -> std::io::Result<()> {
     match args.format {
         Format::Human => {
@@ -195,8 +332,8 @@ fn write_reports(
                 render::human(&mut err, r, color)?;
             }
             let s = render::summarize(reports);
-            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 {
-                writeln!(
+            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 || fixed > Some(0) {
+                write!(
                     err,
                     "{} error{}, {} warning{} in {} file{}",
                     s.errors,
@@ -206,6 +343,10 @@ fn write_reports(
                     reports.len(),
                     plural(reports.len())
                 )?;
+                match fixed {
+                    Some(n) => writeln!(err, "; {n} fixed")?,
+                    None => writeln!(err)?,
+                }
             }
             err.flush()
         }

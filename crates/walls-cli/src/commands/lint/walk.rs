@@ -37,12 +37,15 @@ impl Targets {
     }
 }
 
-/// Expands `paths`: files stay as given, folders become the walls files in them.
-/// An invalid glob is a usage error.
+/// The include and exclude globs of a folder named on the command line.
+pub(super) type Globs = (Vec<String>, Vec<String>);
+
+/// Expands `paths`: files stay as given, folders become the walls files in them, walked
+/// with the include and exclude globs `globs` gives for each. An invalid glob (or a
+/// folder whose globs cannot be found) is a usage error.
 pub(super) fn expand(
     paths: &[String],
-    include: &[String],
-    exclude: &[String],
+    globs: impl Fn(&str) -> Result<Globs, String>,
 ) -> Result<Targets, String> {
     let mut targets = Targets::default();
     let mut seen = HashSet::new();
@@ -51,7 +54,8 @@ pub(super) fn expand(
             add(PathBuf::from(path), &mut seen, &mut targets);
             continue;
         }
-        if walk(Path::new(path), include, exclude, &mut seen, &mut targets)? == 0 {
+        let (include, exclude) = globs(path)?;
+        if walk(Path::new(path), &include, &exclude, &mut seen, &mut targets)? == 0 {
             let globs = if include.is_empty() {
                 DEFAULT_INCLUDE.to_string()
             } else {
@@ -83,8 +87,8 @@ fn walk(
     } else {
         include
     };
-    let includes = globs(root, include, "")?;
-    let excludes = globs(root, exclude, "!")?;
+    let includes = overrides(root, include, "")?;
+    let excludes = overrides(root, exclude, "!")?;
     let walker = WalkBuilder::new(root)
         .overrides(excludes)
         // A .gitignore counts outside a git repository too (a copied or unpacked tree).
@@ -141,7 +145,7 @@ fn add(path: PathBuf, seen: &mut HashSet<PathBuf>, targets: &mut Targets) {
 }
 
 /// The globs `patterns`, each prefixed (`!` to exclude), relative to `root`.
-fn globs(root: &Path, patterns: &[String], prefix: &str) -> Result<Override, String> {
+fn overrides(root: &Path, patterns: &[String], prefix: &str) -> Result<Override, String> {
     let mut builder = OverrideBuilder::new(root);
     for p in patterns {
         builder
@@ -199,8 +203,7 @@ mod tests {
                 r.to_string(),
                 format!("{r}/sub"),
             ],
-            &[],
-            &["old".to_string()],
+            |_| Ok((Vec::new(), vec!["old".to_string()])),
         )
         .unwrap();
         // scene.dat is named first, so the .par naming it adds nothing; the folder named

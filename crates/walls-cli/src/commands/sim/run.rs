@@ -11,7 +11,7 @@ use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
 use walls_sim::run::Settings;
 
-/// `walls-sim run`: the SPEC §2 command line.
+/// `walls-sim run`: the docs/spec.md §2 command line.
 #[derive(clap::Args)]
 pub struct RunArgs {
     /// The walls file (default: the --par file's achWallsFile, beside the .par file).
@@ -137,7 +137,7 @@ fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
 /// The SSDEM integrator.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum IntegratorArg {
-    /// pkdgrav's step order and contact law (physics.md §1–§2, §5).
+    /// pkdgrav's step order and contact law (docs/pkdgrav-physics.md §1–§2, §5).
     Pkdgrav,
     /// Kick-drift-kick leapfrog.
     Leapfrog,
@@ -150,7 +150,7 @@ pub enum IntegratorArg {
 /// How oscillating walls advance in a run.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum Oscillation {
-    /// The exact sinusoid of SPEC §1 at every step.
+    /// The exact sinusoid of docs/spec.md §1 at every step.
     Exact,
     /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
     Pkdgrav,

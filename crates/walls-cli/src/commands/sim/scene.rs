@@ -1,5 +1,6 @@
-//! `walls-sim scene`: prints the resolved scene as JSON (SPEC §2): every wall with the
-//! effective value of every token, in pkdgrav units; diagnostics go to standard error.
+//! `walls-sim scene`: prints the resolved scene as JSON (docs/spec.md §2): every wall
+//! with the effective value of every token, in pkdgrav units; diagnostics go to standard
+//! error.
 
 use super::error;
 use crate::{ContactModel, check_bytes, input};
