@@ -103,6 +103,25 @@ def test_a_closed_standard_output(case):
     assert (run.returncode, run.stderr) == (1, b"")
 
 
+def wait_until_the_tool_runs(child: subprocess.Popen) -> None:
+    """Waits until the script has loaded the extension and given SIGINT back to the
+    default (so that the signal reaches the tool, not Python's start-up)."""
+    start = time.monotonic()
+    proc = Path(f"/proc/{child.pid}")
+    while True:
+        assert time.monotonic() - start < LIMIT, "the script never started the tool"
+        assert child.poll() is None, "the script ended"
+        loaded = "_walls" in (proc / "maps").read_text()
+        caught = next(
+            int(line.split()[1], 16)
+            for line in (proc / "status").read_text().splitlines()
+            if line.startswith("SigCgt:")
+        )
+        if loaded and not caught & (1 << (signal.SIGINT - 1)):
+            return
+        time.sleep(0.01)
+
+
 def test_ctrl_c_ends_a_command_that_waits():
     # `walls-sim scene -` waits for standard input; Ctrl-C ends it as it ends the binary.
     with subprocess.Popen(
@@ -112,7 +131,7 @@ def test_ctrl_c_ends_a_command_that_waits():
         stderr=subprocess.PIPE,
     ) as child:
         try:
-            time.sleep(1)
+            wait_until_the_tool_runs(child)
             child.send_signal(signal.SIGINT)
             child.wait(timeout=LIMIT)
         finally:
