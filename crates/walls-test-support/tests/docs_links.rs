@@ -56,8 +56,8 @@ fn outside_folder() -> String {
 const MAY_NAME_THE_OUTSIDE_FOLDER: &str = ".ci/run";
 
 /// Old citations and what replaces them (`\u{a7}` is the section sign, so that this file
-/// does not cite them itself). A mention of `physics.md` counts only when `pkdgrav-` does
-/// not come right before it.
+/// does not cite them itself). A mention of `physics.md` counts only when `pkdgrav-` (in a
+/// man page, `pkdgrav\-`) does not come right before it.
 const OLD_CITATIONS: &[(&str, &str)] = &[
     ("SPEC \u{a7}", "docs/spec.md \u{a7}"),
     ("physics.md \u{a7}", "docs/pkdgrav-physics.md \u{a7}"),
@@ -92,7 +92,10 @@ fn mentions(path: &str, text: &str) -> Vec<String> {
     }
     for (old, new) in OLD_CITATIONS {
         for (at, _) in text.match_indices(old) {
-            if old.starts_with("physics") && text[..at].ends_with("pkdgrav-") {
+            let before = &text[..at];
+            if old.starts_with("physics")
+                && (before.ends_with("pkdgrav-") || before.ends_with("pkdgrav\\-"))
+            {
                 continue;
             }
             found.push(format!(
@@ -286,7 +289,7 @@ fn anchors_are_githubs() {
 fn each_rule_reports_its_line() {
     let outside = outside_folder();
     let text = format!(
-        "fine\nsee {outside}/SPEC.md\nSPEC \u{a7}2 and physics.md \u{a7}7, pkdgrav-physics.md \u{a7}7\n\
+        "fine, as a man page has it: pkdgrav\\-physics.md \u{a7}1\nsee {outside}/SPEC.md\nSPEC \u{a7}2 and physics.md \u{a7}7, pkdgrav-physics.md \u{a7}7\n\
          as reference/pkdgrav/physics.md \u{a7}4 says\n"
     );
     assert_eq!(
