@@ -1,13 +1,16 @@
-//! Shared pieces of the walls command-line tools: printing that never panics
-//! ([`console`]), Ctrl-C without leftovers ([`interrupt`]), reading inputs (files or
-//! standard input), a run's outputs as a movie's frames ([`movie`]) and the contact model
-//! that `--mode` takes. The whole check of one file and the registry of diagnostic codes that
-//! `--explain` and SARIF read are `walls-ide`'s, re-exported here for the tools.
+//! The walls command-line tools: each as a function from argv to exit status
+//! ([`entry`]), their commands ([`commands`]), and what they share: printing that never
+//! panics ([`console`]), Ctrl-C without leftovers ([`interrupt`]), reading inputs (files
+//! or standard input), a run's outputs as a movie's frames ([`movie`]) and the contact
+//! model that `--mode` takes. The whole check of one file and the registry of diagnostic
+//! codes that `--explain` and SARIF read are `walls-ide`'s, re-exported here for the
+//! tools.
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod commands;
 pub mod console;
+pub mod entry;
 pub mod input;
 pub mod interrupt;
 pub mod movie;

@@ -71,9 +71,10 @@ fn load(path: &Path) -> Result<FormatOptions, ConfigError> {
     })?;
     let defaults = FormatOptions::default();
     let indent_width = file.indent_width.unwrap_or(defaults.indent_width);
-    if indent_width > 16 {
+    if indent_width > FormatOptions::MAX_INDENT_WIDTH {
         return Err(error(format!(
-            "indent_width {indent_width} is more than 16"
+            "indent_width {indent_width} is more than {}",
+            FormatOptions::MAX_INDENT_WIDTH
         )));
     }
     Ok(FormatOptions {

@@ -33,6 +33,11 @@ pub struct FormatOptions {
     pub keep_blank_lines: bool,
 }
 
+impl FormatOptions {
+    /// The widest indentation a file may ask for.
+    pub const MAX_INDENT_WIDTH: usize = 16;
+}
+
 impl Default for FormatOptions {
     fn default() -> Self {
         FormatOptions {

@@ -4,7 +4,7 @@
 
 use crate::lines::Lines;
 use std::sync::Arc;
-use walls_diagnostics::Diagnostic;
+use walls_diagnostics::{Diagnostic, Severity};
 use walls_model::{Options, Scene};
 use walls_syntax::{Parse, SyntaxTree};
 
@@ -55,6 +55,17 @@ pub fn check_bytes(bytes: Vec<u8>, options: &Options) -> Checked {
                 diagnostics: vec![*diagnostic],
             }
         }
+    }
+}
+
+impl Checked {
+    /// The diagnostics of error severity, in order: what stops a run or a scene.
+    pub fn errors(&self) -> Vec<Diagnostic> {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .cloned()
+            .collect()
     }
 }
 

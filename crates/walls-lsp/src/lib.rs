@@ -28,6 +28,7 @@
 //! its version, and only if no newer version has arrived meanwhile.
 
 mod document;
+mod entry;
 mod features;
 pub mod position;
 mod transport;
@@ -72,6 +73,7 @@ pub struct ExplainParams {
     pub query: String,
 }
 
+pub use entry::{Args, entry};
 pub use transport::serve;
 
 /// Serves LSP over standard input and output until the client exits (or closes the

@@ -1,11 +1,9 @@
 //! `walls-lint`: check walls files for everything pkdgrav would reject or misread
-//! ([`walls_cli::commands::lint`]).
+//! ([`walls_cli::commands::lint`], run by [`walls_cli::entry::lint`]).
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
-use clap::Parser;
 use std::process::ExitCode;
-use walls_cli::commands::lint::{LintArgs, run};
 
 /// mimalloc: it maps memory in large chunks, so a large file's tokens and walls cost a
 /// few hundred page faults instead of twenty thousand (measured in docs/performance.md).
@@ -13,5 +11,5 @@ use walls_cli::commands::lint::{LintArgs, run};
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() -> ExitCode {
-    run(&LintArgs::parse())
+    ExitCode::from(walls_cli::entry::lint(std::env::args_os().collect()) as u8)
 }

@@ -17,7 +17,6 @@ use std::collections::HashSet;
 use std::io::Write;
 use std::os::unix::fs::MetadataExt;
 use std::path::Path;
-use std::process::ExitCode;
 use walls_diagnostics::render::{self, FileReport};
 use walls_format::{FormatOptions, discover};
 
@@ -67,7 +66,7 @@ enum Outcome {
 }
 
 /// Formats the files `args` name and reports on them; the exit status.
-pub fn run(args: &FmtArgs) -> ExitCode {
+pub fn run(args: &FmtArgs) -> i32 {
     let outcomes: Vec<(String, Outcome)> = distinct(&args.files)
         .par_iter()
         .map(|f| (display(f), format_one(f, args)))
@@ -133,14 +132,14 @@ pub fn run(args: &FmtArgs) -> ExitCode {
     }
     let _ = writeln!(err, "{summary}");
     if out.flush().is_err() || err.flush().is_err() {
-        return ExitCode::from(2);
+        return 2;
     }
     if unreadable + unwritten > 0 {
-        ExitCode::from(2)
+        2
     } else if broken > 0 || ((args.check || args.diff) && changed > 0) {
-        ExitCode::from(1)
+        1
     } else {
-        ExitCode::SUCCESS
+        0
     }
 }
 

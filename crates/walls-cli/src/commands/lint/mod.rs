@@ -12,7 +12,6 @@ use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
 use std::io::Write;
-use std::process::ExitCode;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
 use walls_diagnostics::render::{self, FileReport, ToolInfo, Unreadable};
@@ -91,7 +90,7 @@ struct Linted {
 }
 
 /// Checks the files `args` name and reports on them; the exit status.
-pub fn run(args: &LintArgs) -> ExitCode {
+pub fn run(args: &LintArgs) -> i32 {
     if let Some(query) = &args.explain {
         return explain(query);
     }
@@ -105,7 +104,7 @@ pub fn run(args: &LintArgs) -> ExitCode {
         Ok(targets) => targets,
         Err(e) => {
             crate::errln!("walls-lint: error: {e}");
-            return ExitCode::from(2);
+            return 2;
         }
     };
     let checked: Vec<Linted> = targets
@@ -146,16 +145,16 @@ pub fn run(args: &LintArgs) -> ExitCode {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-lint: error: cannot write output: {e}");
         }
-        return ExitCode::from(2);
+        return 2;
     }
     // The process ends here: freeing every tree and diagnostic first would only cost time.
     std::mem::forget(checked);
     if io_failed {
-        ExitCode::from(2)
+        2
     } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
-        ExitCode::from(1)
+        1
     } else {
-        ExitCode::SUCCESS
+        0
     }
 }
 
@@ -240,21 +239,21 @@ fn write_reports(
     }
 }
 
-fn explain(query: &str) -> ExitCode {
+fn explain(query: &str) -> i32 {
     if let Some(code) = find_code(query) {
         crate::outln!("{}", walls_ide::explain_code(code));
-        return ExitCode::SUCCESS;
+        return 0;
     }
     if let Some(keyword) = walls_keywords::keyword(query) {
         crate::out!("{}", keyword.markdown());
-        return ExitCode::SUCCESS;
+        return 0;
     }
     let known: Vec<&str> = all_codes().map(|c| c.id).collect();
     crate::errln!(
         "walls-lint: error: `{query}` is neither a diagnostic code ({}) nor a keyword of the language",
         known.join(", ")
     );
-    ExitCode::from(2)
+    2
 }
 
 fn plural(n: usize) -> &'static str {

@@ -4,7 +4,6 @@
 
 use super::ruled;
 use std::io::Write;
-use std::process::ExitCode;
 use walls_sim::io::par::Rule;
 
 /// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,
@@ -85,7 +84,7 @@ fn par_name(s: &str) -> Result<String, String> {
 }
 
 /// Prints the advice `args` ask for; the exit status.
-pub fn run(args: &AdviseArgs) -> ExitCode {
+pub fn run(args: &AdviseArgs) -> i32 {
     use walls_sim::advise::{self, Amount, Column, Contact, Inputs, UnitSystem};
     let inputs = Inputs {
         units: match args.units {
@@ -118,11 +117,11 @@ pub fn run(args: &AdviseArgs) -> ExitCode {
         Ok(a) => a,
         Err(e) if e.derived => {
             crate::errln!("walls-sim: error: {e}");
-            return ExitCode::from(2);
+            return 2;
         }
         Err(e) => {
             crate::errln!("walls-sim: error: --{e}");
-            return ExitCode::from(2);
+            return 2;
         }
     };
     let walls = args.walls.as_deref();
@@ -136,12 +135,12 @@ pub fn run(args: &AdviseArgs) -> ExitCode {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-sim: error: cannot write output: {e}");
         }
-        return ExitCode::from(2);
+        return 2;
     }
     if !args.json {
         for w in &advice.warnings {
             crate::errln!("walls-sim: warning: {w}");
         }
     }
-    ExitCode::SUCCESS
+    0
 }

@@ -1,6 +1,7 @@
-//! `walls-sim`'s commands, one module each: [`scene`], [`run`], [`plan`], [`advise`] and
-//! [`preview`]; and what they share: the value parser of numbers with a range, reading
-//! the walls file, and the exit statuses.
+//! `walls-sim`'s command line ([`SimArgs`], run by [`dispatch`]) and its commands, one
+//! module each: [`scene`], [`run`], [`plan`], [`advise`] and [`preview`]; and what they
+//! share: the value parser of numbers with a range, reading the walls file, and the exit
+//! statuses.
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
 //! from what parsed, with exit status 1, as does a run that stopped early; exit status
@@ -13,11 +14,70 @@ pub mod run;
 pub mod scene;
 
 use crate::{Checked, ContactModel, check_bytes, input};
-use std::process::ExitCode;
+use advise::AdviseArgs;
+use clap::{Parser, Subcommand};
+use preview::PreviewArgs;
+use run::RunArgs;
 use walls_diagnostics::Severity;
 use walls_geometry::units::System;
 use walls_model::Options;
 use walls_sim::io::par::Rule;
+
+/// The command line of `walls-sim`.
+#[allow(missing_docs, reason = "a field's doc comment would show in --help")]
+#[derive(Parser)]
+#[command(
+    name = "walls-sim",
+    version,
+    about = "Evaluate pkdgrav walls files: the resolved scene, wall motion, runs, and advice for pkdgrav's k_n and timestep.",
+    after_help = "Exit status: 0 success; 1 findings (the walls file has errors: the output is what could be resolved) or a run that stopped early (its JSON says why in \"stopped\"); 2 usage or I/O error, or input a run cannot use."
+)]
+pub struct SimArgs {
+    #[command(subcommand)]
+    pub command: SimCommand,
+}
+
+/// `walls-sim`'s commands (their doc comments are their help).
+#[derive(Subcommand)]
+pub enum SimCommand {
+    /// Run particles against the walls (SSDEM or HSDEM) and report where they end up,
+    /// what happened at walls, the energy and pkdgrav's warnings.
+    Run(Box<RunArgs>),
+    /// List the parts of the model a run would use (moving walls, spin, friction terms,
+    /// edges, particle contacts, reactive walls, sticky and death walls, gravity), with
+    /// the reason for each; takes the same options as `run`.
+    Plan(Box<RunArgs>),
+    /// Suggest the spring constants and timestep (dKn, dKt, dDelta) for the real
+    /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
+    Advise(Box<AdviseArgs>),
+    /// Draw the walls (and particles) at a time, or their motion over a span: SVG
+    /// (the default), POV-Ray, VTK or an interactive HTML page.
+    Preview(Box<PreviewArgs>),
+    /// Print the resolved scene as JSON: every wall with the effective value of every
+    /// token, in pkdgrav units.
+    Scene {
+        /// The walls file; `-` reads standard input.
+        #[arg(value_name = "FILE")]
+        file: String,
+        /// Also give each wall's `position` at this time (pkdgrav units).
+        #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
+        time: Option<f64>,
+        /// The contact model the file is for (it decides which values are errors).
+        #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
+        mode: ContactModel,
+    },
+}
+
+/// Runs the command `args` name; the exit status.
+pub fn dispatch(args: &SimArgs) -> i32 {
+    match &args.command {
+        SimCommand::Scene { file, time, mode } => scene::run(file, *time, *mode),
+        SimCommand::Run(args) => run::run(args),
+        SimCommand::Plan(args) => plan::run(args),
+        SimCommand::Preview(args) => preview::run(args),
+        SimCommand::Advise(args) => advise::run(args),
+    }
+}
 
 /// A value parser for a number that must obey `rule`, as the `.par` file's values must.
 pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
@@ -52,18 +112,14 @@ impl From<UnitsArg> for System {
 }
 
 /// Reports `e` as an error and gives exit status 2.
-fn error(e: impl std::fmt::Display) -> ExitCode {
+fn error(e: impl std::fmt::Display) -> i32 {
     crate::errln!("walls-sim: error: {e}");
-    ExitCode::from(2)
+    2
 }
 
 /// Exit status 1 when the walls file had `errors`, else success.
-fn exit_status(errors: usize) -> ExitCode {
-    if errors > 0 {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    }
+fn exit_status(errors: usize) -> i32 {
+    if errors > 0 { 1 } else { 0 }
 }
 
 /// Reads and checks the walls file at `path` in `mode`, with its number of errors;

@@ -4,10 +4,9 @@
 
 use super::run::{RunArgs, prepare};
 use super::{error, exit_status};
-use std::process::ExitCode;
 
 /// Prints the plan of the run `args` describe; the exit status.
-pub fn run(args: &RunArgs) -> ExitCode {
+pub fn run(args: &RunArgs) -> i32 {
     let prepared = match prepare(args) {
         Ok(p) => p,
         Err(e) => return error(e),

@@ -6,7 +6,6 @@
 use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
-use std::process::ExitCode;
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
@@ -158,7 +157,7 @@ pub enum Oscillation {
 }
 
 /// Runs particles as `args` say; the exit status.
-pub fn run(args: &RunArgs) -> ExitCode {
+pub fn run(args: &RunArgs) -> i32 {
     simulate(args).unwrap_or_else(error)
 }
 
@@ -282,7 +281,7 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
     }
 }
 
-fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
+fn simulate(args: &RunArgs) -> Result<i32, String> {
     use walls_sim::run::run_watched;
     let Prepared {
         walls,
@@ -423,7 +422,7 @@ fn simulate(args: &RunArgs) -> Result<ExitCode, String> {
             output_files(dir, args.ss_output, reactive).join(", ")
         );
     }
-    Ok(ExitCode::from(1))
+    Ok(1)
 }
 
 /// The output files a run with `--out dir` writes: the trajectory's, the `.ss` outputs

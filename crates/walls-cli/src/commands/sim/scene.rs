@@ -4,14 +4,13 @@
 use super::error;
 use crate::{ContactModel, check_bytes, input};
 use std::io::Write;
-use std::process::ExitCode;
 use walls_diagnostics::Severity;
 use walls_diagnostics::render::{self, FileReport};
 use walls_model::Options;
 
 /// Prints the scene of the walls file at `path` (`-`: standard input) as JSON, with each
 /// wall's position at `time` if given, checked in `mode`; the exit status.
-pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
+pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> i32 {
     let read = input::read(path);
     let bytes = match read.bytes {
         Ok(bytes) => bytes,
@@ -29,7 +28,7 @@ pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-sim: error: cannot write output: {e}");
         }
-        return ExitCode::from(2);
+        return 2;
     }
     let report = FileReport {
         path: &read.name,
@@ -45,8 +44,8 @@ pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> ExitCode {
         .iter()
         .any(|d| d.severity == Severity::Error)
     {
-        ExitCode::from(1)
+        1
     } else {
-        ExitCode::SUCCESS
+        0
     }
 }

@@ -9,7 +9,6 @@ use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use crate::movie::{self, Snapshot, VizSteps};
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
 
@@ -82,11 +81,11 @@ pub struct PreviewArgs {
 }
 
 /// Draws what `args` ask for; the exit status.
-pub fn run(args: &PreviewArgs) -> ExitCode {
+pub fn run(args: &PreviewArgs) -> i32 {
     draw(args).unwrap_or_else(error)
 }
 
-fn draw(args: &PreviewArgs) -> Result<ExitCode, String> {
+fn draw(args: &PreviewArgs) -> Result<i32, String> {
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;

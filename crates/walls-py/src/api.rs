@@ -1,0 +1,191 @@
+//! `walls.lint`, `walls.format` and `walls.scene`: a walls file's text (or bytes, read as
+//! a file is) to what `walls-lint --format json`, `walls-fmt` and `walls-sim scene` give
+//! for it, through the same library calls.
+
+use crate::diagnostics;
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyList, PyString};
+use walls_format::FormatOptions;
+use walls_ide::Checked;
+use walls_keywords::ContactModel;
+use walls_model::Options;
+
+/// Adds the functions of this file to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(lint, m)?)?;
+    m.add_function(wrap_pyfunction!(format, m)?)?;
+    m.add_function(wrap_pyfunction!(scene, m)?)?;
+    Ok(())
+}
+
+/// A walls file as Python hands it over: text, or bytes to decode as a file's are.
+enum Source {
+    Text(String),
+    Bytes(Vec<u8>),
+}
+
+impl Source {
+    /// The `text` argument: `str` or `bytes`, anything else a `TypeError`.
+    fn of(text: &Bound<'_, PyAny>) -> PyResult<Source> {
+        if text.is_instance_of::<PyString>() {
+            Ok(Source::Text(text.extract()?))
+        } else if let Ok(bytes) = text.cast::<PyBytes>() {
+            Ok(Source::Bytes(bytes.as_bytes().to_vec()))
+        } else {
+            Err(PyTypeError::new_err(format!(
+                "text must be str or bytes, not {}",
+                text.get_type().name()?
+            )))
+        }
+    }
+
+    /// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
+    /// released.
+    fn check(self, py: Python<'_>, options: &Options) -> Checked {
+        py.detach(|| match self {
+            Source::Text(text) => walls_ide::check_text(text, options),
+            Source::Bytes(bytes) => walls_ide::check_bytes(bytes, options),
+        })
+    }
+}
+
+/// `mode`: the contact model, by the name the tools' `--mode` takes.
+fn contact_model(mode: &str) -> PyResult<ContactModel> {
+    match mode {
+        "ssdem" => Ok(ContactModel::Ssdem),
+        "hsdem" => Ok(ContactModel::Hsdem),
+        _ => Err(PyValueError::new_err(format!(
+            "mode must be \"ssdem\" or \"hsdem\", not {mode:?}"
+        ))),
+    }
+}
+
+/// An optional argument that must be a positive, finite number (`min_radius`, `dt`).
+fn positive(name: &str, value: Option<f64>) -> PyResult<Option<f64>> {
+    match value {
+        Some(x) if !(x > 0.0 && x.is_finite()) => Err(PyValueError::new_err(format!(
+            "{name} must be a positive number, not {x}"
+        ))),
+        _ => Ok(value),
+    }
+}
+
+/// Checks a walls file as `walls-lint` does and returns its diagnostics, each a dict as
+/// `walls-lint --format json` gives it (`code`, `severity`, `message`, `line`,
+/// `column`, `end_line`, `end_column`, and `help` and `fix` where there are some).
+///
+/// `text` is a `str`, or `bytes` read as a file is (bytes that are not UTF-8 give S001).
+/// `mode` is "ssdem" or "hsdem"; `max_walls` is pkdgrav's MAX_NUM_WALLS (20 when None);
+/// `min_radius` (the smallest particle radius) turns on the SSDEM wall-speed check, with
+/// `dt` the timestep for walls whose `step` is 0.
+#[pyfunction]
+#[pyo3(signature = (text, mode = "ssdem", *, max_walls = None, min_radius = None, dt = None))]
+fn lint<'py>(
+    py: Python<'py>,
+    text: &Bound<'py, PyAny>,
+    mode: &str,
+    max_walls: Option<usize>,
+    min_radius: Option<f64>,
+    dt: Option<f64>,
+) -> PyResult<Bound<'py, PyList>> {
+    let defaults = Options::default();
+    let options = Options {
+        mode: contact_model(mode)?,
+        max_walls: max_walls.unwrap_or(defaults.max_walls),
+        min_radius: positive("min_radius", min_radius)?,
+        dt: positive("dt", dt)?,
+    };
+    let checked = Source::of(text)?.check(py, &options);
+    diagnostics::to_python(py, &checked.text, &checked.diagnostics)
+}
+
+/// What a `WallsError` of `format` says first.
+const NOT_FORMATTED: &str = "syntax errors prevent formatting";
+
+/// Formats a walls file as `walls-fmt` does and returns the canonical text.
+///
+/// The options are `.walls-fmt.toml`'s (None keeps the default): `indent_width` (2, at
+/// most 16), `align_trailing_comments` (False) and `keep_blank_lines` (True). Raises
+/// `WallsError`, with the diagnostics, when syntax errors leave the file's statements
+/// unclear (or the bytes are not UTF-8).
+#[pyfunction]
+#[pyo3(signature = (text, *, indent_width = None, align_trailing_comments = None, keep_blank_lines = None))]
+fn format(
+    py: Python<'_>,
+    text: &Bound<'_, PyAny>,
+    indent_width: Option<usize>,
+    align_trailing_comments: Option<bool>,
+    keep_blank_lines: Option<bool>,
+) -> PyResult<String> {
+    let defaults = FormatOptions::default();
+    let options = FormatOptions {
+        indent_width: indent_width.unwrap_or(defaults.indent_width),
+        align_trailing_comments: align_trailing_comments
+            .unwrap_or(defaults.align_trailing_comments),
+        keep_blank_lines: keep_blank_lines.unwrap_or(defaults.keep_blank_lines),
+    };
+    if options.indent_width > FormatOptions::MAX_INDENT_WIDTH {
+        return Err(PyValueError::new_err(format!(
+            "indent_width {} is more than {}",
+            options.indent_width,
+            FormatOptions::MAX_INDENT_WIDTH
+        )));
+    }
+    let text = match Source::of(text)? {
+        Source::Text(text) => text,
+        Source::Bytes(bytes) => match walls_syntax::decode(bytes) {
+            Ok(text) => text,
+            Err((prefix, d)) => {
+                return Err(diagnostics::error(py, NOT_FORMATTED, &prefix, &[*d]));
+            }
+        },
+    };
+    let formatted = py.detach(|| {
+        walls_format::format(&walls_syntax::parse(text.as_str()), &options).map(|f| f.text)
+    });
+    formatted.map_err(|e| diagnostics::error(py, NOT_FORMATTED, &text, &e.diagnostics))
+}
+
+/// Resolves a walls file as `walls-sim scene` does and returns the scene it prints: a
+/// dict with every wall and the effective value of every token, in pkdgrav units, and
+/// with `time`, each wall's position then.
+///
+/// With `strict` (the default) a file with errors raises `WallsError` with them;
+/// `strict=False` gives the scene resolved from what parsed, as `walls-sim scene` does
+/// beside its exit status 1. `mode` is "ssdem" or "hsdem".
+#[pyfunction]
+#[pyo3(signature = (text, time = None, strict = true, *, mode = "ssdem"))]
+fn scene<'py>(
+    py: Python<'py>,
+    text: &Bound<'py, PyAny>,
+    time: Option<f64>,
+    strict: bool,
+    mode: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    if let Some(t) = time.filter(|t| !t.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "time must be a finite number, not {t}"
+        )));
+    }
+    let options = Options {
+        mode: contact_model(mode)?,
+        ..Options::default()
+    };
+    let checked = Source::of(text)?.check(py, &options);
+    if strict {
+        let errors = checked.errors();
+        if !errors.is_empty() {
+            return Err(diagnostics::error(
+                py,
+                "the walls file has errors",
+                &checked.text,
+                &errors,
+            ));
+        }
+    }
+    let mut json = Vec::new();
+    py.detach(|| walls_geometry::json::write_scene(&mut json, &checked.scene, &checked.text, time))
+        .map_err(|e| PyRuntimeError::new_err(format!("writing the scene: {e}")))?;
+    diagnostics::from_json(py, &json)
+}

@@ -1,0 +1,25 @@
+//! `walls._walls`, the extension module of the `walls` Python package
+//! ([docs/python.md](../../../docs/python.md)).
+//!
+//! Every function here calls the library the command-line tools call, and none checks,
+//! formats or resolves on its own: [`api`] is `walls.lint`, `walls.format` and
+//! `walls.scene` over text; [`diagnostics`] is `walls.WallsError` and the diagnostics as
+//! `walls-lint --format json` gives them. The work runs with the GIL released, so
+//! threads may lint files side by side.
+//!
+//! Each file of the module adds its own functions in its `register`; a new one is a
+//! `mod` line and a `register` call in [`_walls`].
+
+mod api;
+mod diagnostics;
+
+use pyo3::prelude::*;
+
+/// The module's initialisation: the version, then each file's functions and types.
+#[pymodule]
+fn _walls(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    diagnostics::register(m)?;
+    api::register(m)?;
+    Ok(())
+}
