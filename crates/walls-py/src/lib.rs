@@ -4,14 +4,16 @@
 //! Every function here calls the library the command-line tools call, and none checks,
 //! formats or resolves on its own: [`api`] is `walls.lint`, `walls.format` and
 //! `walls.scene` over text; [`diagnostics`] is `walls.WallsError` and the diagnostics as
-//! `walls-lint --format json` gives them. The work runs with the GIL released, so
-//! threads may lint files side by side.
+//! `walls-lint --format json` gives them; [`tools`] runs the command-line tools for the
+//! wheel's console scripts. The work runs with the GIL released, so threads may lint
+//! files side by side.
 //!
 //! Each file of the module adds its own functions in its `register`; a new one is a
 //! `mod` line and a `register` call in [`_walls`].
 
 mod api;
 mod diagnostics;
+mod tools;
 
 use pyo3::prelude::*;
 
@@ -21,5 +23,6 @@ fn _walls(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     diagnostics::register(m)?;
     api::register(m)?;
+    tools::register(m)?;
     Ok(())
 }
