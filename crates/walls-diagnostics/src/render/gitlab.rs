@@ -17,6 +17,7 @@
 //! not change when unrelated lines are added or removed above the issue. It is the
 //! SHA-256 of the path, the code, the text the diagnostic covers and the number of
 //! earlier diagnostics of that file with the same code and text; never a line number.
+//! For a file that could not be read, the error message stands for the text.
 //! An empty span (something missing, such as a value at the end of a line) covers no
 //! text, so the text before it on its line, at most [`CONTEXT`] bytes, stands for it.
 
@@ -57,10 +58,13 @@ struct Issues<'a> {
 impl Serialize for Issues<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut seq = serializer.serialize_seq(None)?;
+        // How many issues each path has had so far with each check and text; a path
+        // given twice (standard input, say) goes on counting.
+        let mut seen: HashMap<String, HashMap<(&str, &str), usize>> = HashMap::new();
         for file in self.files {
             let path = report_path(file.path);
             let index = LineIndex::new(file.source);
-            let mut seen: HashMap<(&str, &str), usize> = HashMap::new();
+            let seen = seen.entry(path.to_string()).or_default();
             for d in file.diagnostics {
                 let text = covered_text(file.source, d);
                 let occurrence = seen.entry((d.code.id, text)).or_default();
@@ -70,16 +74,22 @@ impl Serialize for Issues<'_> {
         }
         for u in self.unreadable {
             let path = report_path(u.path);
+            let occurrence = seen
+                .entry(path.to_string())
+                .or_default()
+                .entry((UNREADABLE, u.error))
+                .or_default();
             seq.serialize_element(&Issue {
                 description: Cow::Borrowed(u.error),
                 check_name: UNREADABLE,
-                fingerprint: fingerprint(&path, UNREADABLE, "", 0),
+                fingerprint: fingerprint(&path, UNREADABLE, u.error, *occurrence),
                 severity: "blocker",
                 location: Location {
                     path: &path,
                     lines: Lines { begin: 1, end: 1 },
                 },
             })?;
+            *occurrence += 1;
         }
         seq.end()
     }
@@ -270,11 +280,34 @@ mod tests {
             [json!({
                 "description": "cannot read ./gone.walls: No such file or directory (os error 2)",
                 "check_name": "unreadable-file",
-                "fingerprint": fingerprint("gone.walls", "unreadable-file", "", 0),
+                "fingerprint": fingerprint("gone.walls", "unreadable-file", u.error, 0),
                 "severity": "blocker",
                 "location": {"path": "gone.walls", "lines": {"begin": 1, "end": 1}}
             })]
         );
+    }
+
+    #[test]
+    fn a_path_twice_keeps_its_fingerprints_apart() {
+        let errors = ["cannot read a: denied", "cannot read a: denied", "a: other"];
+        let unreadable: Vec<Unreadable> = errors
+            .iter()
+            .map(|error| Unreadable { path: "a", error })
+            .collect();
+        let diags = [Diagnostic::error(&UNKNOWN_WORD, 0..1, "x")];
+        let file = FileReport {
+            path: "-",
+            source: "x",
+            diagnostics: &diags,
+        };
+        let mut out = Vec::new();
+        gitlab(&mut out, &[file, file], &unreadable).unwrap();
+        let issues = issues(std::str::from_utf8(&out).unwrap());
+        let fingerprints: std::collections::HashSet<&str> = issues
+            .iter()
+            .map(|i| i["fingerprint"].as_str().unwrap())
+            .collect();
+        assert_eq!(fingerprints.len(), 5);
     }
 
     /// Two unknown words on lines 2 and 4 and a missing value at the end of line 3.
