@@ -4,43 +4,99 @@
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
 //! A command line clap refuses prints clap's message to standard error and returns 2;
-//! `--help` and `--version` print to standard output and return 0. Nothing here ends the
-//! process.
+//! `--help` and `--version` print to standard output and return 0, as does
+//! `--completions SHELL` (the shell's completion script, from the clap definitions).
+//! Nothing here ends the process; what the commands share can, as the binaries expect:
+//! a standard output closed by its reader ends it with status 0, one that fails with 2
+//! ([`crate::console`]), and a signal while `walls-sim run` runs, or while a file is
+//! written through a named temporary file, with 128 + the signal ([`crate::interrupt`]).
 
 use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, sim::SimArgs};
 use clap::Parser;
+use clap_complete::Shell;
 use std::ffi::OsString;
+use std::io::Write;
 
 /// `walls-lint` with the command line `argv`; the exit status.
 pub fn lint(argv: Vec<OsString>) -> i32 {
-    match parse::<LintArgs>(argv) {
-        Ok(args) => commands::lint::run(&args),
-        Err(status) => status,
-    }
+    tool::<LintArgs>(argv)
 }
 
 /// `walls-fmt` with the command line `argv`; the exit status.
 pub fn fmt(argv: Vec<OsString>) -> i32 {
-    match parse::<FmtArgs>(argv) {
-        Ok(args) => commands::fmt::run(&args),
-        Err(status) => status,
-    }
+    tool::<FmtArgs>(argv)
 }
 
 /// `walls-sim` with the command line `argv`; the exit status.
 pub fn sim(argv: Vec<OsString>) -> i32 {
-    match parse::<SimArgs>(argv) {
-        Ok(args) => commands::sim::dispatch(&args),
-        Err(status) => status,
+    tool::<SimArgs>(argv)
+}
+
+/// A tool's command line: what it runs, and the `--completions` every tool has.
+trait Tool: Parser {
+    /// The shell whose completion script `--completions` asks for.
+    fn completions(&self) -> Option<Shell>;
+    /// Runs the tool; the exit status.
+    fn run(&self) -> i32;
+}
+
+impl Tool for LintArgs {
+    fn completions(&self) -> Option<Shell> {
+        self.completions
+    }
+    fn run(&self) -> i32 {
+        commands::lint::run(self)
     }
 }
 
-/// The arguments `argv` gives, or, when clap refuses them or has answered `--help` or
-/// `--version`, the exit status after its message is printed.
-fn parse<A: Parser>(argv: Vec<OsString>) -> Result<A, i32> {
-    A::try_parse_from(argv).map_err(|e| {
-        // A closed stream leaves nobody to tell; the status still says what happened.
-        let _ = e.print();
-        e.exit_code()
-    })
+impl Tool for FmtArgs {
+    fn completions(&self) -> Option<Shell> {
+        self.completions
+    }
+    fn run(&self) -> i32 {
+        commands::fmt::run(self)
+    }
+}
+
+impl Tool for SimArgs {
+    fn completions(&self) -> Option<Shell> {
+        self.completions
+    }
+    fn run(&self) -> i32 {
+        commands::sim::dispatch(self)
+    }
+}
+
+/// Parses `argv` as `T`'s command line and runs it, or prints clap's answer, or the
+/// completion script; the exit status.
+fn tool<T: Tool>(argv: Vec<OsString>) -> i32 {
+    let args = match T::try_parse_from(argv) {
+        Ok(args) => args,
+        Err(e) => {
+            // A closed stream leaves nobody to tell; the status still says what happened.
+            let _ = e.print();
+            return e.exit_code();
+        }
+    };
+    match args.completions() {
+        Some(shell) => completions(shell, T::command()),
+        None => args.run(),
+    }
+}
+
+/// Prints the completion script of `command` for `shell` to standard output; the exit
+/// status.
+fn completions(shell: Shell, mut command: clap::Command) -> i32 {
+    let name = command.get_name().to_string();
+    let mut script = Vec::new();
+    clap_complete::generate(shell, &mut command, name, &mut script);
+    let mut out = std::io::stdout().lock();
+    match out.write_all(&script).and_then(|()| out.flush()) {
+        Ok(()) => 0,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
+        Err(e) => {
+            crate::errln!("error: cannot write standard output: {e}");
+            2
+        }
+    }
 }

@@ -81,6 +81,41 @@ fn codes_are_unique_and_found_by_id_or_name() {
     }
 }
 
+/// What `docs/diagnostics.md` says about `walls-lint --fix`.
+const FIXING: &str = "
+## Fixing
+
+Many diagnostics carry a fix (the JSON and SARIF reports list it, and editors offer it).
+A fix is *safe* when it keeps what the author evidently meant (a missing final newline,
+a comment glued to a word, a repeated token) and *unsafe* when it is a guess (a spelling
+suggestion, a unit axis computed from the values given).
+
+* `walls-lint --fix PATH…` applies the safe fixes and rewrites the files, then reports
+  what remains, with the number of fixes applied in the summary (`1 error, 0 warnings in
+  1 file; 3 fixed`). The exit status is that of what remains: 0 when no error remains
+  (nor a warning, with `--deny-warnings`), 1 when some do, 2 as above, or when a fixed
+  file could not be written.
+* `--unsafe-fixes` applies the unsafe fixes too (it implies `--fix`).
+* `--diff` (with or without `--fix`, and with `--unsafe-fixes` for those) writes nothing:
+  it prints a unified diff of what the fixes would change on standard output and their
+  number on standard error, and exits 1 if they would change anything, 0 if not. It
+  reports no diagnostics, and takes no `--format`.
+* On standard input (`-`), the fixed text (or, with nothing to fix, the text as read) goes
+  to standard output and the report to standard error; a machine format would share
+  standard output with the text, so `--fix` on `-` takes only `--format human` (or
+  `--diff`).
+
+The fixes are applied in rounds: each round takes every applicable fix whose edits do
+not overlap an edit already taken (the first in the file wins), and the file is checked
+again; the next round applies what an overlap held back or what a fix made possible, up
+to 10 rounds. The diagnostics reported are those of the fixed text. A file is rewritten as
+`walls-fmt` rewrites one ([docs/formatting.md](formatting.md#what-walls-fmt-promises-about-your-files)): keeping its owner, group,
+mode and links, atomically, and never over an edit saved meanwhile; a file it refuses is
+reported with its unchanged text's diagnostics and an error, with exit status 2. A file
+that is not UTF-8 is never rewritten (its only diagnostic, the encoding error, has no
+fix).
+";
+
 /// What `docs/diagnostics.md` says about `walls-lint`'s inputs and exit statuses.
 const LINT_COMMAND: &str = "
 ## Files, folders and exit statuses
@@ -128,6 +163,7 @@ fn docs_list_every_code() {
         ));
     }
     doc.push_str(LINT_COMMAND);
+    doc.push_str(FIXING);
     for c in all_codes() {
         doc.push_str(&format!(
             "\n## {}\n\n`{}`: {}.\n\n{}",

@@ -537,8 +537,8 @@ fn a_folder_nobody_may_write_is_named() {
         stderr(&out),
         format!(
             "walls-fmt: error: cannot write mine.walls: cannot make a new file in {} to put \
-             in its place (Permission denied (os error 13)): walls-fmt needs to write its \
-             folder too\n0 files reformatted, 0 unchanged, 1 not written\n",
+             in its place (Permission denied (os error 13)): rewriting a file needs \
+             permission to write its folder too\n0 files reformatted, 0 unchanged, 1 not written\n",
             dir.path().canonicalize().unwrap().display()
         )
     );

@@ -185,7 +185,17 @@ impl Diagnostic {
 /// Applies every fix of the given applicability (and, with `Unsafe`, the safe ones too)
 /// whose edits do not overlap an edit already taken; returns the new text.
 pub fn apply_fixes(source: &str, diagnostics: &[Diagnostic], level: Applicability) -> String {
+    apply_fixes_counted(source, diagnostics, level).0
+}
+
+/// [`apply_fixes`], with the number of fixes it applied.
+pub fn apply_fixes_counted(
+    source: &str,
+    diagnostics: &[Diagnostic],
+    level: Applicability,
+) -> (String, usize) {
     let mut edits: Vec<&Edit> = Vec::new();
+    let mut applied = 0;
     for fix in diagnostics.iter().filter_map(|d| d.fix.as_ref()) {
         if level == Applicability::Safe && fix.applicability == Applicability::Unsafe {
             continue;
@@ -196,6 +206,7 @@ pub fn apply_fixes(source: &str, diagnostics: &[Diagnostic], level: Applicabilit
             .any(|e| edits.iter().any(|t| edits_overlap(e, t)));
         if !overlaps {
             edits.extend(fix.edits.iter());
+            applied += 1;
         }
     }
     edits.sort_by_key(|e| (e.span.start, e.span.end));
@@ -207,10 +218,52 @@ pub fn apply_fixes(source: &str, diagnostics: &[Diagnostic], level: Applicabilit
         at = e.span.end;
     }
     out.push_str(&source[at..]);
-    out
+    (out, applied)
 }
 
 /// Two edits conflict when their ranges share a byte, or both insert at one place.
 fn edits_overlap(a: &Edit, b: &Edit) -> bool {
     (a.span.start < b.span.end && b.span.start < a.span.end) || a.span.start == b.span.start
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CODE: Code = Code {
+        id: "T001",
+        name: "test",
+        summary: "a test",
+        explanation: "",
+    };
+
+    fn fixed(span: Range<usize>, applicability: Applicability, with: &str) -> Diagnostic {
+        let edit = Edit {
+            span: span.clone(),
+            replacement: with.into(),
+        };
+        Diagnostic::warning(&CODE, span, "m").with_fix(applicability, "f", vec![edit])
+    }
+
+    #[test]
+    fn fixes_are_counted_the_first_of_overlapping_ones_taken_unsafe_ones_only_if_asked() {
+        let diagnostics = [
+            fixed(0..1, Applicability::Safe, "A"),
+            fixed(0..2, Applicability::Safe, "overlaps the first"),
+            fixed(2..3, Applicability::Unsafe, "C"),
+            fixed(3..3, Applicability::Safe, "+"),
+        ];
+        assert_eq!(
+            apply_fixes_counted("abc", &diagnostics, Applicability::Safe),
+            ("Abc+".to_string(), 2)
+        );
+        assert_eq!(
+            apply_fixes_counted("abc", &diagnostics, Applicability::Unsafe),
+            ("AbC+".to_string(), 3)
+        );
+        assert_eq!(
+            apply_fixes("abc", &diagnostics, Applicability::Safe),
+            "Abc+"
+        );
+    }
 }

@@ -12,8 +12,12 @@
 //! [`scenes::packed`], a crowd of particles at rest packed into a scene, for benchmarks
 //! and stress runs; and [`scenes::sphere_hull`], a closed hull of many triangles as
 //! walls-file text, for the wall index.
+//!
+//! [`cli`] checks a tool's command line as shells and `man` see it: its completion
+//! scripts, and its man pages in `docs/man/`.
 
 pub mod arbitrary;
+pub mod cli;
 pub mod scenes;
 mod walls;
 

@@ -47,6 +47,9 @@ pub struct FmtArgs {
     /// Keep one of the blank lines the author wrote between statements.
     #[arg(long, value_name = "BOOL", num_args = 0..=1, default_missing_value = "true")]
     pub keep_blank_lines: Option<bool>,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
 }
 
 /// What happened to one file.
@@ -219,11 +222,7 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     };
     let changed = formatted != text;
     if args.diff && changed {
-        let name = display(path);
-        let diff = similar::TextDiff::from_lines(&text, &formatted)
-            .unified_diff()
-            .header(&name, &name)
-            .to_string();
+        let diff = unified_diff(&display(path), &text, &formatted);
         return Outcome::Changed { diff: Some(diff) };
     }
     let done = if changed {
@@ -249,13 +248,16 @@ fn format_one(path: &str, args: &FmtArgs) -> Outcome {
     }
     match original.replace(formatted.as_bytes()) {
         Ok(()) => done,
-        Err(safe_write::WriteError::Refused(why)) => {
-            Outcome::NotWritten(format!("not writing {path}: {why}"))
-        }
-        Err(safe_write::WriteError::Io(e)) => {
-            Outcome::NotWritten(format!("cannot write {path}: {e}"))
-        }
+        Err(e) => Outcome::NotWritten(e.message(path, safe_write::Rewriter::Format)),
     }
+}
+
+/// The unified diff from `old` to `new`, the text of the file shown as `name`.
+pub(crate) fn unified_diff(name: &str, old: &str, new: &str) -> String {
+    similar::TextDiff::from_lines(old, new)
+        .unified_diff()
+        .header(name, name)
+        .to_string()
 }
 
 fn override_with(mut options: FormatOptions, args: &FmtArgs) -> FormatOptions {

@@ -1,5 +1,7 @@
 //! Replacing a file with its formatted text without losing or stealing it
-//! (docs/formatting.md, "What walls-fmt promises about your files").
+//! (docs/formatting.md, "What walls-fmt promises about your files"); `walls-lint --fix`
+//! replaces a file with its fixed text the same way, and the messages name the command
+//! ([`Rewriter`]).
 //!
 //! [`read`] opens the file (following symbolic links), notes its [`Stamp`] (identity,
 //! size, times, owner, group, mode, links) and reads it. [`Original::replace`] then:
@@ -19,7 +21,6 @@
 //! Any failure before the rename leaves the original as it was.
 
 use crate::interrupt::{self, Registration};
-use std::fmt;
 use std::fs::{File, Metadata};
 use std::io::{self, Write};
 use std::os::fd::AsRawFd;
@@ -99,34 +100,67 @@ pub enum Refusal {
     Changed,
 }
 
-impl fmt::Display for Refusal {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// The command that rewrites files, whose name and verb the messages use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rewriter {
+    /// `walls-fmt`, formatting.
+    Format,
+    /// `walls-lint --fix`, fixing.
+    Fix,
+}
+
+impl Rewriter {
+    /// The command line that rewrites a file.
+    fn command(self) -> &'static str {
         match self {
-            Refusal::NotRegular => write!(f, "it is not a regular file"),
-            Refusal::ReadOnly { mode } => write!(
-                f,
+            Rewriter::Format => "walls-fmt",
+            Rewriter::Fix => "walls-lint --fix",
+        }
+    }
+
+    /// What it does to a file: "format" or "fix".
+    fn verb(self) -> &'static str {
+        match self {
+            Rewriter::Format => "format",
+            Rewriter::Fix => "fix",
+        }
+    }
+
+    /// What a file undergoes: "formatted" or "fixed".
+    fn done(self) -> &'static str {
+        match self {
+            Rewriter::Format => "formatted",
+            Rewriter::Fix => "fixed",
+        }
+    }
+}
+
+impl Refusal {
+    /// Why the file is not replaced, with advice for the user of `rewriter`.
+    pub fn describe(&self, rewriter: Rewriter) -> String {
+        let (command, verb) = (rewriter.command(), rewriter.verb());
+        match self {
+            Refusal::NotRegular => "it is not a regular file".into(),
+            Refusal::ReadOnly { mode } => format!(
                 "it is read-only (mode {:04o}); make it writable first (chmod u+w)",
                 mode & 0o7777
             ),
-            Refusal::NoPermission => write!(f, "you do not have permission to write it"),
-            Refusal::HardLinks { links } => write!(
-                f,
-                "it has {links} hard links, which a rewrite would part; format a copy \
-                 (walls-fmt - < FILE > COPY) and copy it back over the file"
+            Refusal::NoPermission => "you do not have permission to write it".into(),
+            Refusal::HardLinks { links } => format!(
+                "it has {links} hard links, which a rewrite would part; {verb} a copy \
+                 ({command} - < FILE > COPY) and copy it back over the file"
             ),
-            Refusal::Owner { uid, gid } => write!(
-                f,
+            Refusal::Owner { uid, gid } => format!(
                 "a rewrite would change its owner or group (uid {uid}, gid {gid}), which you \
-                 cannot keep; format it as its owner"
+                 cannot keep; {verb} it as its owner"
             ),
-            Refusal::Attribute { name } => write!(
-                f,
+            Refusal::Attribute { name } => format!(
                 "its extended attribute {name} cannot be kept (it may be an ACL or a \
                  security label that only root can set)"
             ),
-            Refusal::Changed => write!(
-                f,
-                "it changed while it was being formatted; run walls-fmt again"
+            Refusal::Changed => format!(
+                "it changed while it was being {}; run {command} again",
+                rewriter.done()
             ),
         }
     }
@@ -139,6 +173,17 @@ pub enum WriteError {
     Refused(Refusal),
     /// An input or output error (a full disk, a folder the user may not write).
     Io(io::Error),
+}
+
+impl WriteError {
+    /// What to tell the user of `rewriter` about the file at `path`, which was not
+    /// written.
+    pub fn message(&self, path: &str, rewriter: Rewriter) -> String {
+        match self {
+            WriteError::Refused(why) => format!("not writing {path}: {}", why.describe(rewriter)),
+            WriteError::Io(e) => format!("cannot write {path}: {e}"),
+        }
+    }
 }
 
 impl From<Refusal> for WriteError {
@@ -238,8 +283,8 @@ impl Original {
             io::Error::new(
                 e.kind(),
                 format!(
-                    "cannot make a new file in {} to put in its place ({e}): walls-fmt needs \
-                     to write its folder too",
+                    "cannot make a new file in {} to put in its place ({e}): rewriting a \
+                     file needs permission to write its folder too",
                     dir.display()
                 ),
             )

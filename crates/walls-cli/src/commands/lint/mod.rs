@@ -5,7 +5,9 @@
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
 //! findings, and every format reports it. Human output goes to standard error, machine
 //! output (json, sarif, github, gitlab) to standard output. Folders are walked as [`walk`] says.
+//! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first (`fix.rs`).
 
+mod fix;
 mod walk;
 
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
@@ -61,6 +63,20 @@ pub struct LintArgs {
     /// Explain a diagnostic code (`S101` or `unknown-word`) or a keyword (`osc-vec`) and exit.
     #[arg(long, value_name = "CODE", conflicts_with = "files")]
     pub explain: Option<String>,
+    /// Apply the safe fixes the diagnostics carry (rewriting the files; standard input's
+    /// fixed text goes to standard output), then report what remains.
+    #[arg(long)]
+    pub fix: bool,
+    /// Apply the unsafe fixes too (guesses, such as a spelling suggestion); implies --fix.
+    #[arg(long)]
+    pub unsafe_fixes: bool,
+    /// Write nothing: print a unified diff of what the fixes would change, and exit 1 if
+    /// they would change anything; implies --fix.
+    #[arg(long, conflicts_with = "format")]
+    pub diff: bool,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
 }
 
 /// `--format`: where and how diagnostics are reported.
@@ -107,11 +123,19 @@ pub fn run(args: &LintArgs) -> i32 {
             return 2;
         }
     };
-    let checked: Vec<Linted> = targets
+    let fixing = fix::Fixing::asked(args);
+    if let Some(clash) = fixing.and_then(|f| f.output_clash(args.format, &targets.files)) {
+        crate::errln!("walls-lint: error: {clash}");
+        return 2;
+    }
+    let (checked, fixes): (Vec<Linted>, Vec<fix::FileFixes>) = targets
         .files
         .par_iter()
-        .map(|p| lint(p, &options))
-        .collect();
+        .map(|p| match fixing {
+            Some(fixing) => fix::lint(p, &options, fixing),
+            None => (lint(p, &options), fix::FileFixes::default()),
+        })
+        .unzip();
 
     let mut unreadable: Vec<Unreadable> = Vec::new();
     for c in &checked {
@@ -124,6 +148,14 @@ pub fn run(args: &LintArgs) -> i32 {
     }
     for (path, e) in &targets.errors {
         unreadable.push(Unreadable { path, error: e });
+    }
+    for (c, f) in checked.iter().zip(&fixes) {
+        if let Some(e) = &f.not_written {
+            unreadable.push(Unreadable {
+                path: &c.name,
+                error: e,
+            });
+        }
     }
     for u in &unreadable {
         crate::errln!("walls-lint: error: {}", u.error);
@@ -141,7 +173,16 @@ pub fn run(args: &LintArgs) -> i32 {
         })
         .collect();
     let summary = render::summarize(&reports);
-    if let Err(e) = write_reports(args, &reports, &unreadable) {
+    let fixed = fixes.iter().map(|f| f.fixed).sum();
+    let diff = fixing.is_some_and(|f| f.diff);
+    let written = fix::write_outputs(&fixes).and_then(|()| {
+        if diff {
+            fix::write_diff_summary(&fixes)
+        } else {
+            write_reports(args, &reports, &unreadable, fixing.map(|_| fixed))
+        }
+    });
+    if let Err(e) = written {
         if e.kind() != std::io::ErrorKind::BrokenPipe {
             crate::errln!("walls-lint: error: cannot write output: {e}");
         }
@@ -151,6 +192,8 @@ pub fn run(args: &LintArgs) -> i32 {
     std::mem::forget(checked);
     if io_failed {
         2
+    } else if diff {
+        i32::from(fixed > 0)
     } else if summary.errors > 0 || (args.deny_warnings && summary.warnings > 0) {
         1
     } else {
@@ -178,10 +221,13 @@ fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
+/// Writes the report in the format `args` ask for; human output ends with a summary,
+/// which says how many fixes were applied when `fixed` gives their number.
 fn write_reports(
     args: &LintArgs,
     reports: &[FileReport],
     unreadable: &[Unreadable],
+    fixed: Option<usize>,
 ) -> std::io::Result<()> {
     match args.format {
         Format::Human => {
@@ -196,8 +242,8 @@ fn write_reports(
                 render::human(&mut err, r, color)?;
             }
             let s = render::summarize(reports);
-            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 {
-                writeln!(
+            if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 || fixed > Some(0) {
+                write!(
                     err,
                     "{} error{}, {} warning{} in {} file{}",
                     s.errors,
@@ -207,6 +253,10 @@ fn write_reports(
                     reports.len(),
                     plural(reports.len())
                 )?;
+                match fixed {
+                    Some(n) => writeln!(err, "; {n} fixed")?,
+                    None => writeln!(err)?,
+                }
             }
             err.flush()
         }

@@ -30,11 +30,16 @@ use walls_sim::io::par::Rule;
     name = "walls-sim",
     version,
     about = "Evaluate pkdgrav walls files: the resolved scene, wall motion, runs, and advice for pkdgrav's k_n and timestep.",
+    arg_required_else_help = true,
+    args_conflicts_with_subcommands = true,
     after_help = "Exit status: 0 success; 1 findings (the walls file has errors: the output is what could be resolved) or a run that stopped early (its JSON says why in \"stopped\"); 2 usage or I/O error, or input a run cannot use."
 )]
 pub struct SimArgs {
     #[command(subcommand)]
-    pub command: SimCommand,
+    pub command: Option<SimCommand>,
+    /// Print the completion script for SHELL to standard output and exit.
+    #[arg(long, value_name = "SHELL", exclusive = true)]
+    pub completions: Option<clap_complete::Shell>,
 }
 
 /// `walls-sim`'s commands (their doc comments are their help).
@@ -71,11 +76,13 @@ pub enum SimCommand {
 /// Runs the command `args` name; the exit status.
 pub fn dispatch(args: &SimArgs) -> i32 {
     match &args.command {
-        SimCommand::Scene { file, time, mode } => scene::run(file, *time, *mode),
-        SimCommand::Run(args) => run::run(args),
-        SimCommand::Plan(args) => plan::run(args),
-        SimCommand::Preview(args) => preview::run(args),
-        SimCommand::Advise(args) => advise::run(args),
+        Some(SimCommand::Scene { file, time, mode }) => scene::run(file, *time, *mode),
+        Some(SimCommand::Run(args)) => run::run(args),
+        Some(SimCommand::Plan(args)) => plan::run(args),
+        Some(SimCommand::Preview(args)) => preview::run(args),
+        Some(SimCommand::Advise(args)) => advise::run(args),
+        // Only for arguments built in code: clap shows the help when no command is given.
+        None => error("no command given: scene, run, plan, advise or preview"),
     }
 }
 

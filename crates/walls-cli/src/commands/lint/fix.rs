@@ -1,0 +1,164 @@
+//! `walls-lint --fix`, `--unsafe-fixes` and `--diff`: applying the fixes the diagnostics
+//! carry (docs/diagnostics.md, "Fixing").
+//!
+//! A round applies every fix of the level asked for (safe ones; unsafe ones too with
+//! `--unsafe-fixes`) whose edits do not overlap an edit already taken, then checks the new
+//! text again; rounds go on until one applies nothing, at most [`MAX_ROUNDS`], so that the
+//! fixes an overlap held back, or that a fix made possible, are applied too. The
+//! diagnostics reported are those of the fixed text.
+//!
+//! A file is replaced through walls-fmt's [`safe_write`] (kept owner, group, mode and
+//! links, atomic, never over an edit made meanwhile); a file not written is reported with
+//! the diagnostics of its unchanged text and an error. Standard input's fixed text goes to
+//! standard output. `--diff` writes nothing: it prints what the fixes would change.
+
+use super::{Format, LintArgs, Linted, plural};
+use crate::commands::fmt::{safe_write, unified_diff};
+use crate::{Checked, check_bytes, input};
+use clap::ValueEnum;
+use std::io::Write;
+use std::path::Path;
+use walls_diagnostics::{Applicability, apply_fixes_counted};
+use walls_ide::check_text;
+use walls_model::Options;
+
+/// The most rounds of fixes on one file.
+pub const MAX_ROUNDS: usize = 10;
+
+/// What the command line asks of the fixes.
+#[derive(Clone, Copy)]
+pub(super) struct Fixing {
+    /// Safe fixes only, or unsafe ones too.
+    pub level: Applicability,
+    /// Print a diff instead of writing.
+    pub diff: bool,
+}
+
+impl Fixing {
+    /// The fixing `args` ask for, if any: `--fix`, `--unsafe-fixes` or `--diff`.
+    pub(super) fn asked(args: &LintArgs) -> Option<Fixing> {
+        (args.fix || args.unsafe_fixes || args.diff).then_some(Fixing {
+            level: if args.unsafe_fixes {
+                Applicability::Unsafe
+            } else {
+                Applicability::Safe
+            },
+            diff: args.diff,
+        })
+    }
+
+    /// Why fixing `files` cannot be reported in `format`: standard input's fixed text
+    /// and a machine format's report would both go to standard output.
+    pub(super) fn output_clash(self, format: Format, files: &[String]) -> Option<String> {
+        let machine = !matches!(format, Format::Human);
+        (machine && !self.diff && files.iter().any(|f| f == "-")).then(|| {
+            let format = format.to_possible_value().map(|v| v.get_name().to_string());
+            format!(
+                "--fix on standard input writes the fixed text to standard output, where \
+                 --format {} writes its report too: use --format human (it goes to standard \
+                 error) or --diff",
+                format.unwrap_or_default()
+            )
+        })
+    }
+}
+
+/// What fixing one file did.
+#[derive(Default)]
+pub(super) struct FileFixes {
+    /// How many fixes were applied (with `--diff`: would be).
+    pub fixed: usize,
+    /// What goes to standard output: the diff, or standard input's fixed text.
+    pub output: Option<String>,
+    /// Why the fixed file could not be written.
+    pub not_written: Option<String>,
+}
+
+/// Reads the file at `path` (`-`: standard input), checks it, applies its fixes as
+/// `fixing` says and writes the result (or makes its diff).
+pub(super) fn lint(path: &str, options: &Options, fixing: Fixing) -> (Linted, FileFixes) {
+    let (name, read) = if path == "-" {
+        let read = input::read(path);
+        (read.name, read.bytes.map(|bytes| (None, bytes)))
+    } else {
+        let read = safe_write::read(Path::new(path));
+        (
+            path.to_string(),
+            read.map(|(file, bytes)| (Some(file), bytes)),
+        )
+    };
+    let (file, bytes) = match read {
+        Ok(read) => read,
+        Err(e) => {
+            let outcome = Err(e);
+            return (Linted { name, outcome }, FileFixes::default());
+        }
+    };
+    // Bytes that are not UTF-8 give only the encoding error, which has no fix: such a file
+    // is never written.
+    let checked = check_bytes(bytes, options);
+    let after = fix(&checked, options, fixing.level);
+    let mut fixes = FileFixes {
+        fixed: after.as_ref().map_or(0, |(_, fixed)| *fixed),
+        ..FileFixes::default()
+    };
+    let kept = if fixing.diff {
+        fixes.output = after.map(|(after, _)| unified_diff(&name, &checked.text, &after.text));
+        checked
+    } else if let Some(file) = file {
+        match after.map(|(after, _)| (file.replace(after.text.as_bytes()), after)) {
+            None => checked,
+            Some((Ok(()), after)) => after,
+            Some((Err(e), _)) => {
+                fixes.fixed = 0;
+                fixes.not_written = Some(e.message(path, safe_write::Rewriter::Fix));
+                checked
+            }
+        }
+    } else {
+        let after = after.map_or(checked, |(after, _)| after);
+        fixes.output = Some(after.text.to_string());
+        after
+    };
+    let outcome = Ok((kept.text, kept.diagnostics));
+    (Linted { name, outcome }, fixes)
+}
+
+/// The text of `first` with the fixes of `level` applied, round after round, checked
+/// again, and how many fixes were applied; `None` if there was nothing to apply.
+fn fix(first: &Checked, options: &Options, level: Applicability) -> Option<(Checked, usize)> {
+    let mut fixed: Option<Checked> = None;
+    let mut count = 0;
+    for _ in 0..MAX_ROUNDS {
+        let current = fixed.as_ref().unwrap_or(first);
+        let (text, applied) = apply_fixes_counted(&current.text, &current.diagnostics, level);
+        if applied == 0 || *text == *current.text {
+            break;
+        }
+        count += applied;
+        fixed = Some(check_text(text, options));
+    }
+    fixed.map(|checked| (checked, count))
+}
+
+/// Writes to standard output what fixing gave for it, file after file: the diffs, or
+/// standard input's fixed text.
+pub(super) fn write_outputs(fixes: &[FileFixes]) -> std::io::Result<()> {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    for text in fixes.iter().filter_map(|f| f.output.as_deref()) {
+        out.write_all(text.as_bytes())?;
+    }
+    out.flush()
+}
+
+/// `--diff`'s summary on standard error: how many fixes the diffs hold, in how many files.
+pub(super) fn write_diff_summary(fixes: &[FileFixes]) -> std::io::Result<()> {
+    let fixed: usize = fixes.iter().map(|f| f.fixed).sum();
+    let files = fixes.iter().filter(|f| f.fixed > 0).count();
+    writeln!(
+        std::io::stderr().lock(),
+        "{fixed} fix{} would be applied to {files} file{}",
+        if fixed == 1 { "" } else { "es" },
+        plural(files)
+    )
+}
