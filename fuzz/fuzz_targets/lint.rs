@@ -54,6 +54,7 @@ fuzz_target!(|data: &[u8]| {
     let mut sink = Vec::new();
     render::human(&mut sink, &files[0], false).unwrap();
     render::github(&mut sink, &files, &[]).unwrap();
+    render::gitlab(&mut sink, &files, &[]).unwrap();
     render::json(&mut sink, &files, &[]).unwrap();
     let tool = ToolInfo { name: "walls-lint", version: "0", information_uri: None };
     let rules: Vec<_> = walls_cli::all_codes().collect();

@@ -134,7 +134,7 @@ Every format reports I/O errors: human output on standard error; `--format json`
 file entry `{\"path\", \"error\": \"why\", \"diagnostics\": []}` after the files read;
 `--format sarif` as `toolExecutionNotifications` of the run's invocation (with
 `executionSuccessful: false`); `--format github` as an `::error file=PATH,title=walls-lint::why`
-line.
+line; `--format gitlab` as a `blocker` issue named `unreadable-file` at line 1.
 
 | status | meaning |
 |---|---|

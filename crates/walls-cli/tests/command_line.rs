@@ -37,7 +37,7 @@ fn bash_loads_the_scripts_and_completes_options_values_and_commands() {
     );
     assert_eq!(
         complete("walls-lint", &["--format", ""])[1..],
-        ["human", "json", "sarif", "github"]
+        ["human", "json", "sarif", "github", "gitlab"]
     );
     assert_eq!(complete("walls-fmt", &["--che"])[1..], ["--check"]);
     assert_eq!(complete("walls-sim", &["sc"])[1..], ["scene"]);

@@ -4,7 +4,8 @@
 //! span, secondary [`Label`]s, a message, optional help and an optional [`Fix`]. Stages
 //! that find problems (lexer, parser, checker) build them; the [`render`] module turns
 //! them into text for people (ariadne) or for machines (JSON, SARIF 2.1.0, GitHub
-//! workflow annotations). Spans are byte ranges everywhere; [`LineIndex`] turns them into
+//! workflow annotations, GitLab Code Quality). Spans are byte ranges everywhere;
+//! [`LineIndex`] turns them into
 //! 1-based lines and character columns only when rendering.
 
 mod line_index;

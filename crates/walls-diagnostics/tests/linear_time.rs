@@ -54,7 +54,7 @@ fn long_line(n: usize) -> (String, Vec<Diagnostic>) {
 
 type Renderer = fn(&mut Vec<u8>, &[FileReport]);
 
-fn renderers() -> [(&'static str, Renderer); 4] {
+fn renderers() -> [(&'static str, Renderer); 5] {
     [
         ("human", |out, files| {
             for f in files {
@@ -72,6 +72,9 @@ fn renderers() -> [(&'static str, Renderer); 4] {
         }),
         ("github", |out, files| {
             render::github(out, files, &[]).unwrap()
+        }),
+        ("gitlab", |out, files| {
+            render::gitlab(out, files, &[]).unwrap()
         }),
     ]
 }

@@ -6,11 +6,12 @@
 //! * [`human`]: ariadne reports with source snippets, for terminals;
 //! * [`json`]: the `walls-lint --format json` object of the command-line contract;
 //! * [`sarif`]: a SARIF 2.1.0 log for code-scanning services;
-//! * [`github`]: GitHub Actions workflow commands (`::error file=…::…`).
+//! * [`github`]: GitHub Actions workflow commands (`::error file=…::…`);
+//! * [`gitlab`]: a GitLab Code Quality report (a JSON array of issues).
 //!
 //! The machine formats also report the files that could not be read ([`Unreadable`]).
 //!
-//! The machine formats ([`json`], [`sarif`], [`github`]) write straight to a
+//! The machine formats ([`json`], [`sarif`], [`github`], [`gitlab`]) write straight to a
 //! [`std::io::Write`] as they go, without building the whole output in memory first;
 //! give them a buffered writer.
 //!
@@ -19,11 +20,13 @@
 //! 1-based and columns count characters, as [`LineIndex::line_col`] computes them.
 
 mod github;
+mod gitlab;
 mod human;
 mod json;
 mod sarif;
 
 pub use github::github;
+pub use gitlab::gitlab;
 pub use human::human;
 pub use json::json;
 pub use sarif::sarif;
@@ -44,7 +47,8 @@ pub struct FileReport<'a> {
 }
 
 /// A file that could not be read: the machine formats report it (JSON: a file entry
-/// with an `error`; SARIF: a tool execution notification; GitHub: an `::error` line).
+/// with an `error`; SARIF: a tool execution notification; GitHub: an `::error` line;
+/// GitLab: a `blocker` issue).
 #[derive(Debug, Clone, Copy)]
 pub struct Unreadable<'a> {
     /// The path as the user gave it.

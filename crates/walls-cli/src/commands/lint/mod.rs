@@ -4,7 +4,7 @@
 //! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
 //! findings, and every format reports it. Human output goes to standard error, machine
-//! output (json, sarif, github) to standard output. Folders are walked as [`walk`] says.
+//! output (json, sarif, github, gitlab) to standard output. Folders are walked as [`walk`] says.
 //! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first (`fix.rs`).
 //! Each file is checked with the settings found for it ([`super::settings`]); the flags
 //! win over them.
@@ -28,7 +28,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif and github to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -94,6 +94,7 @@ pub enum Format {
     Json,
     Sarif,
     Github,
+    Gitlab,
 }
 
 /// `--color`: when to colour human output.
@@ -369,6 +370,11 @@ fn write_reports(
         Format::Github => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
             render::github(&mut out, reports, unreadable)?;
+            out.flush()
+        }
+        Format::Gitlab => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            render::gitlab(&mut out, reports, unreadable)?;
             out.flush()
         }
     }
