@@ -1,4 +1,4 @@
-//! The settings of `walls-lint`, `walls-fmt` and the language server's formatting
+//! The settings of `walls-lint`, `walls-fmt` and the language server
 //! (docs/configuration.md).
 //!
 //! A settings file is `walls.toml`, `.walls.toml` or a `pyproject.toml` with a
