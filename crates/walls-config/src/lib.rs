@@ -1,4 +1,4 @@
-//! The settings of `walls-lint`, `walls-fmt` and the language server's formatting
+//! The settings of `walls-lint`, `walls-fmt` and the language server
 //! (docs/configuration.md).
 //!
 //! A settings file is `walls.toml`, `.walls.toml` or a `pyproject.toml` with a
@@ -21,6 +21,7 @@ use std::path::{Path, PathBuf};
 use walls_diagnostics::{Code, Diagnostic, Severity};
 use walls_format::FormatOptions;
 use walls_keywords::ContactModel;
+use walls_model::Options;
 
 /// The names of a settings file, in the order [`find`] looks for them in a folder.
 pub const SETTINGS_FILES: [&str; 3] = ["walls.toml", ".walls.toml", "pyproject.toml"];
@@ -125,6 +126,18 @@ pub struct PerFile {
 }
 
 impl Lint {
+    /// The checker's options: `base` (the defaults, or an editor's settings) with each
+    /// value this table sets in its place. Command-line flags win over the table: the
+    /// linter applies them to the result.
+    pub fn options(&self, base: &Options) -> Options {
+        Options {
+            mode: self.mode.unwrap_or(base.mode),
+            max_walls: self.max_walls.unwrap_or(base.max_walls),
+            min_radius: self.min_radius.or(base.min_radius),
+            dt: self.dt.or(base.dt),
+        }
+    }
+
     /// The ignores that apply to the file at `file` (an absolute path; `None` for
     /// standard input, which only `ignore` applies to).
     pub fn ignores_for<'a>(&'a self, file: Option<&'a Path>) -> impl Iterator<Item = &'a Ignore> {

@@ -187,3 +187,32 @@ fn load_reads_the_file_named() {
         "{e}"
     );
 }
+
+#[test]
+fn the_values_the_table_sets_replace_the_base_options() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    write(root, "walls.toml", "[lint]\nmode = \"hsdem\"\ndt = 0.5\n");
+    let base = walls_model::Options {
+        mode: ContactModel::Ssdem,
+        max_walls: 30,
+        min_radius: Some(0.1),
+        dt: Some(2.0),
+    };
+    let options = find(root).unwrap().lint.options(&base);
+    assert_eq!(options.mode, ContactModel::Hsdem);
+    assert_eq!(options.max_walls, 30);
+    assert_eq!(options.min_radius, Some(0.1));
+    assert_eq!(options.dt, Some(0.5));
+    // An empty table changes nothing.
+    let options = Lint::default().options(&base);
+    assert_eq!(
+        (
+            options.mode,
+            options.max_walls,
+            options.min_radius,
+            options.dt
+        ),
+        (ContactModel::Ssdem, 30, Some(0.1), Some(2.0))
+    );
+}

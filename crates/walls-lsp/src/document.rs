@@ -1,22 +1,28 @@
-//! An open document: its version and its analysis, recomputed on each change.
+//! An open document: its version and its analysis, recomputed on each change with the
+//! settings found for it then.
 
+use crate::settings::Check;
+use tower_lsp_server::ls_types::Diagnostic;
 use walls_ide::Analysis;
-use walls_model::Options;
 
 /// One open walls file, analysed.
 pub struct Document {
     /// The client's version of the text.
     pub version: i32,
-    /// The text checked (tree, scene, sorted diagnostics) and its lines.
+    /// The text checked (tree, scene, sorted diagnostics less the ignored ones) and its
+    /// lines.
     pub analysis: Analysis,
+    /// The diagnostic naming its settings file, if that file is unusable.
+    pub settings_problem: Option<Diagnostic>,
 }
 
 impl Document {
-    /// Parses, resolves and checks `text`.
-    pub fn new(version: i32, text: String, options: &Options) -> Self {
+    /// Parses, resolves and checks `text` as `check` says.
+    pub fn new(version: i32, text: String, check: &Check) -> Self {
         Document {
             version,
-            analysis: Analysis::of_text(text, options),
+            analysis: check.run(text),
+            settings_problem: check.problem(),
         }
     }
 

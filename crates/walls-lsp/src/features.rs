@@ -39,12 +39,14 @@ fn byte_range(a: &Analysis, r: Range) -> std::ops::Range<usize> {
     offset(&a.lines, a.text(), r.start)..offset(&a.lines, a.text(), r.end)
 }
 
-/// The document's diagnostics, as the client shows them.
+/// The document's diagnostics, as the client shows them: first the one naming an
+/// unusable settings file, if any.
 pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
-    doc.analysis
-        .diagnostics()
+    let checked = doc.analysis.diagnostics().iter();
+    doc.settings_problem
         .iter()
-        .map(|d| to_lsp(uri, &doc.analysis, d))
+        .cloned()
+        .chain(checked.map(|d| to_lsp(uri, &doc.analysis, d)))
         .collect()
 }
 
@@ -93,45 +95,6 @@ pub fn hover(doc: &Document, at: Position) -> Option<Hover> {
         }),
         range: Some(lsp_range(a, &hover.range)),
     })
-}
-
-/// The formatting options for a document: from the settings file (`walls.toml`'s
-/// `[format]`, …, or `.walls-fmt.toml`) above its file, as `walls-fmt` would find them
-/// (defaults for other URIs), or why that file is unusable.
-pub fn format_options(uri: &Uri) -> Result<FormatOptions, walls_config::SettingsError> {
-    let path = uri
-        .as_str()
-        .strip_prefix("file://")
-        .map(|p| std::path::PathBuf::from(percent_decode(p)));
-    match path.as_deref().and_then(std::path::Path::parent) {
-        Some(dir) => walls_config::find_format(dir).map(|(options, _)| options),
-        None => Ok(FormatOptions::default()),
-    }
-}
-
-/// `%xx` escapes of a URI path decoded (UTF-8 assumed; anything else kept as written).
-fn percent_decode(s: &str) -> String {
-    let b = s.as_bytes();
-    let mut out = Vec::with_capacity(b.len());
-    let mut i = 0;
-    while i < b.len() {
-        let hex = |c: u8| (c as char).to_digit(16);
-        match (
-            b[i],
-            b.get(i + 1).copied().and_then(hex),
-            b.get(i + 2).copied().and_then(hex),
-        ) {
-            (b'%', Some(h), Some(l)) => {
-                out.push((h * 16 + l) as u8);
-                i += 3;
-            }
-            (c, _, _) => {
-                out.push(c);
-                i += 1;
-            }
-        }
-    }
-    String::from_utf8(out).unwrap_or_else(|_| s.to_string())
 }
 
 /// The edit that formats the whole document, if it changes anything.

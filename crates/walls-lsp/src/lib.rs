@@ -3,10 +3,16 @@
 //! A thin adapter: it keeps the open documents (each checked by `walls-ide`), converts
 //! LSP positions (UTF-16) to byte offsets and back ([`position`]), and maps the plain
 //! answers of `walls-ide`'s feature functions into LSP values:
-//! - diagnostics come from the syntax check and the checker;
+//! - diagnostics come from the syntax check and the checker, with the `[lint]` settings
+//!   found for the document (`walls.toml`, …, above its file; the workspace folder's for
+//!   a document that is not a file): the values the file sets win over the editor's
+//!   `mode` and `maxWalls`, its `ignore` and `per-file-ignores` hide warnings as in
+//!   `walls-lint`, and an unusable settings file is one error diagnostic naming it (the
+//!   editor's settings apply meanwhile). They are found again at every check
+//!   ([`settings`]), so a saved change to them shows at the next edit;
 //! - hovers show the keyword's documentation and its effective value;
 //! - formatting and range formatting use `walls-format` (options from the settings
-//!   file above the document's file, as `walls-fmt` finds them: `walls.toml`'s `[format]`
+//!   file found for the document, as `walls-fmt` finds them: `walls.toml`'s `[format]`
 //!   or `.walls-fmt.toml`; an unusable one is named in a message to the user, and the
 //!   defaults are used);
 //! - code actions apply the checker's fixes, plus a "fix all safe" action;
@@ -32,10 +38,13 @@ mod document;
 mod entry;
 mod features;
 pub mod position;
+mod settings;
 mod transport;
 
 use document::Document;
+use settings::Check;
 use std::collections::HashMap;
+use std::path::PathBuf;
 use std::sync::Mutex;
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types::*;
@@ -52,7 +61,11 @@ pub struct Backend {
 #[derive(Default)]
 struct State {
     documents: HashMap<Uri, Document>,
+    /// The editor's options (what a settings file does not set).
     options: Options,
+    /// The (first) workspace folder: where the settings of a document that is not a file
+    /// are looked for.
+    folder: Option<PathBuf>,
     /// What was wrong with the initialization options, told once initialized.
     init_problems: Vec<String>,
 }
@@ -164,7 +177,8 @@ impl Backend {
     /// The formatting options of `uri`'s project; the defaults, and a message to the
     /// user naming the file and what is wrong, if its settings file is unusable.
     async fn format_options(&self, uri: &Uri) -> FormatOptions {
-        match features::format_options(uri) {
+        let folder = self.lock().folder.clone();
+        match settings::format_options(uri, folder.as_deref()) {
             Ok(options) => options,
             Err(e) => {
                 let message = format!("walls: {e}; formatting with the default options");
@@ -176,6 +190,12 @@ impl Backend {
         }
     }
 
+    /// Checks `text` as the document at `uri`, with the settings found for it now.
+    fn document(state: &State, uri: &Uri, version: i32, text: String) -> Document {
+        let check = Check::find(uri, state.folder.as_deref(), &state.options);
+        Document::new(version, text, &check)
+    }
+
     fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {
         self.lock().documents.get(uri).map(f)
     }
@@ -183,9 +203,19 @@ impl Backend {
 
 impl LanguageServer for Backend {
     async fn initialize(&self, params: InitializeParams) -> Result<InitializeResult> {
-        if let Some(init) = &params.initialization_options {
+        {
             let mut state = self.lock();
-            (state.options, state.init_problems) = options_from(init, state.options.clone());
+            if let Some(init) = &params.initialization_options {
+                (state.options, state.init_problems) = options_from(init, state.options.clone());
+            }
+            #[allow(deprecated)] // `root_uri`: what clients without workspace folders send.
+            let root = params.root_uri.as_ref();
+            let folders = params.workspace_folders.as_deref().unwrap_or_default();
+            state.folder = folders
+                .first()
+                .map(|f| &f.uri)
+                .or(root)
+                .and_then(settings::file_path);
         }
         Ok(InitializeResult {
             capabilities: ServerCapabilities {
@@ -243,7 +273,7 @@ impl LanguageServer for Backend {
         let doc = params.text_document;
         {
             let mut state = self.lock();
-            let document = Document::new(doc.version, doc.text, &state.options);
+            let document = Self::document(&state, &doc.uri, doc.version, doc.text);
             state.documents.insert(doc.uri.clone(), document);
         }
         self.publish(doc.uri, doc.version).await;
@@ -265,7 +295,7 @@ impl LanguageServer for Backend {
             {
                 return;
             }
-            let document = Document::new(version, change.text, &state.options);
+            let document = Self::document(&state, &uri, version, change.text);
             state.documents.insert(uri.clone(), document);
         }
         self.publish(uri, version).await;
@@ -286,16 +316,15 @@ impl LanguageServer for Backend {
         let (versions, problems): (Vec<(Uri, i32)>, _) = {
             let mut state = self.lock();
             let (options, problems) = options_from(&section, state.options.clone());
-            // Every open document is checked again with the new options.
-            let versions = state
-                .documents
-                .iter_mut()
-                .map(|(uri, doc)| {
-                    *doc = Document::new(doc.version, doc.text().to_string(), &options);
-                    (uri.clone(), doc.version)
-                })
-                .collect();
             state.options = options;
+            // Every open document is checked again with the new options.
+            let documents = std::mem::take(&mut state.documents);
+            let mut versions = Vec::with_capacity(documents.len());
+            for (uri, doc) in documents {
+                let doc = Self::document(&state, &uri, doc.version, doc.text().to_string());
+                versions.push((uri.clone(), doc.version));
+                state.documents.insert(uri, doc);
+            }
             (versions, problems)
         };
         if let Some(message) = settings_message(&problems) {

@@ -16,16 +16,22 @@ struct Client {
 
 impl Client {
     async fn start(init: Value) -> Self {
+        Client::start_in(init, None).await
+    }
+
+    /// Starts the server with the workspace folder at `folder`, if one is given.
+    async fn start_in(init: Value, folder: Option<&str>) -> Self {
         let (service, socket) = walls_lsp::service();
         let mut c = Client {
             service,
             socket,
             next_id: 1,
         };
+        let folders = folder.map(|uri| json!([{"uri": uri, "name": "project"}]));
         let caps = c
             .request(
                 "initialize",
-                json!({"capabilities": {}, "initializationOptions": init}),
+                json!({"capabilities": {}, "initializationOptions": init, "workspaceFolders": folders}),
             )
             .await;
         assert_eq!(caps["serverInfo"]["name"], "walls-lsp");
@@ -94,6 +100,28 @@ impl Client {
         self.diagnostics().await
     }
 
+    /// Replaces the text of the document at `uri` with `text` at `version`; its
+    /// diagnostics.
+    async fn change(&mut self, uri: &str, version: i32, text: &str) -> Value {
+        self.notify(
+            "textDocument/didChange",
+            json!({"textDocument": {"uri": uri, "version": version}, "contentChanges": [{"text": text}]}),
+        )
+        .await;
+        self.diagnostics().await
+    }
+
+    /// The code actions of the document at `uri` for the range from `start` to `end`
+    /// (line, character).
+    async fn actions(&mut self, uri: &str, start: (u32, u32), end: (u32, u32)) -> Value {
+        let at = |(line, character): (u32, u32)| json!({"line": line, "character": character});
+        self.request(
+            "textDocument/codeAction",
+            json!({"textDocument": {"uri": uri}, "range": {"start": at(start), "end": at(end)}, "context": {"diagnostics": []}}),
+        )
+        .await
+    }
+
     /// The edits of `textDocument/formatting` for the document at `uri`.
     async fn format(&mut self, uri: &str) -> Value {
         self.request(
@@ -104,12 +132,23 @@ impl Client {
     }
 }
 
+/// The titles of code actions.
+fn titles(actions: &Value) -> Vec<&str> {
+    actions
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["title"].as_str().unwrap())
+        .collect()
+}
+
+/// The codes of published diagnostics (`-` for one without a code).
 fn codes(published: &Value) -> Vec<String> {
     published["diagnostics"]
         .as_array()
         .unwrap()
         .iter()
-        .map(|d| d["code"].as_str().unwrap().to_string())
+        .map(|d| d["code"].as_str().unwrap_or("-").to_string())
         .collect()
 }
 
@@ -181,20 +220,9 @@ async fn hover_formatting_actions_symbols_folding() {
         "lengthunit 2\ndefaults radius 0.25\n\nwall type disk\n  radius 0.5\n  color 3\n\nwall type plane\n  radius 1\n"
     );
 
-    let actions = c
-        .request(
-            "textDocument/codeAction",
-            json!({"textDocument": {"uri": URI}, "range": {"start": {"line": 6, "character": 0}, "end": {"line": 6, "character": 10}}, "context": {"diagnostics": []}}),
-        )
-        .await;
-    let titles: Vec<&str> = actions
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|a| a["title"].as_str().unwrap())
-        .collect();
+    let actions = c.actions(URI, (6, 0), (6, 10)).await;
     assert_eq!(
-        titles,
+        titles(&actions),
         [
             "remove `radius`, which has no effect (C201)",
             "Fix all safe problems (2)"
@@ -547,4 +575,123 @@ async fn hover_and_diagnostics_agree_on_lines_with_lone_carriage_returns() {
         .await;
     assert_eq!(folds[0]["startLine"], 0);
     assert_eq!(folds[0]["endLine"], 2);
+}
+
+/// A folder with `walls.toml` holding `settings`, and the `file:` URI of `name` in it.
+fn project(settings: &str, name: &str) -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("walls.toml"), settings).unwrap();
+    let uri = format!("file://{}/{name}", dir.path().display());
+    (dir, uri)
+}
+
+/// A plane's `radius` (the C201 warning) and a misspelt keyword (the S101 error).
+const WARNING_AND_ERROR: &str = "wall type plane\n  radius 2\n  raduis 1\n";
+
+/// Two walls: the C209 warning with `maxWalls` 1; in HSDEM, the M003 errors (both walls
+/// leave `epsn` and `epst` at 99: one error for each coefficient).
+const TWO_WALLS: &str = "wall type disk radius 1\nwall type plane\n";
+
+#[tokio::test]
+async fn the_settings_ignores_hide_warnings_but_never_errors() {
+    let mut c = Client::start(json!({})).await;
+    assert_eq!(codes(&c.open(WARNING_AND_ERROR).await), ["C201", "S101"]);
+    let (dir, uri) = project(
+        "[lint]\nmax-walls = 1\nignore = [\"ignored-by-type\", \"S101\"]\n\n[lint.per-file-ignores]\n\"old/*.walls\" = [\"C209\"]\n",
+        "scene.walls",
+    );
+    assert_eq!(codes(&c.open_at(&uri, WARNING_AND_ERROR).await), ["S101"]);
+    // Nor are the fixes of ignored diagnostics offered: the error's fix only.
+    let actions = c.actions(&uri, (0, 0), (9, 0)).await;
+    assert_eq!(titles(&actions), ["replace with `radius` (S101)"]);
+    // Per-file ignores: only in the files their glob matches.
+    assert_eq!(codes(&c.change(&uri, 2, TWO_WALLS).await), ["C209"]);
+    let old = format!("file://{}/old/a.walls", dir.path().display());
+    assert!(codes(&c.open_at(&old, TWO_WALLS).await).is_empty());
+}
+
+#[tokio::test]
+async fn the_settings_file_wins_over_the_editor_where_it_says_something() {
+    let mut c = Client::start(json!({"mode": "ssdem", "maxWalls": 1})).await;
+    let (dir, uri) = project("[lint]\nmode = \"hsdem\"\n", "scene.walls");
+    // hsdem from the file, and the editor's maxWalls, which the file does not set.
+    let published = c.open_at(&uri, TWO_WALLS).await;
+    assert_eq!(codes(&published), ["M003", "M003", "C209"]);
+    // A saved change to the settings file is seen at the next check.
+    std::fs::write(dir.path().join("walls.toml"), "[lint]\nmax-walls = 2\n").unwrap();
+    let published = c.change(&uri, 2, TWO_WALLS).await;
+    assert!(codes(&published).is_empty(), "{published}");
+    // And when the editor's settings change, the file still wins where it speaks.
+    c.notify(
+        "workspace/didChangeConfiguration",
+        json!({"settings": {"walls": {"mode": "hsdem", "maxWalls": 1}}}),
+    )
+    .await;
+    let published = c.diagnostics().await;
+    assert_eq!(codes(&published), ["M003", "M003"]);
+}
+
+#[tokio::test]
+async fn a_broken_settings_file_is_named_and_the_editor_settings_apply() {
+    let mut c = Client::start(json!({"maxWalls": 1})).await;
+    let (dir, uri) = project("[lint]\nmode = \"hsdem\"\n  mdoe = 1\n", "scene.walls");
+    let published = c.open_at(&uri, TWO_WALLS).await;
+    let settings = std::fs::canonicalize(dir.path().join("walls.toml")).unwrap();
+    let d = &published["diagnostics"][0];
+    assert_eq!(
+        d["message"],
+        format!(
+            "{}:3:3: unknown field `mdoe`, expected one of `mode`, `max-walls`, `min-radius`, `dt`, `deny-warnings`, `ignore`, `per-file-ignores`, `include`, `exclude`\n\
+             this file is checked with the editor's settings instead",
+            settings.display()
+        )
+    );
+    assert_eq!(d["severity"], 1);
+    assert_eq!(
+        d["range"],
+        json!({"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 0}})
+    );
+    let related = &d["relatedInformation"][0]["location"];
+    assert_eq!(related["uri"], format!("file://{}", settings.display()));
+    assert_eq!(
+        related["range"]["start"],
+        json!({"line": 2, "character": 2})
+    );
+    // The rest: ssdem and maxWalls 1, the editor's.
+    assert_eq!(d.get("code"), None);
+    assert_eq!(codes(&published), ["-", "C209"]);
+    // Fixed and saved: the file applies, and the diagnostic is gone.
+    std::fs::write(&settings, "[lint]\nmode = \"hsdem\"\n").unwrap();
+    let published = c.change(&uri, 2, TWO_WALLS).await;
+    assert_eq!(codes(&published), ["M003", "M003", "C209"]);
+}
+
+#[tokio::test]
+async fn an_untitled_document_takes_the_workspace_folder_settings() {
+    let (dir, _) = project(
+        "[lint]\nignore = [\"C201\"]\n[lint.per-file-ignores]\n\"*\" = [\"C209\"]\n",
+        "",
+    );
+    let folder = format!("file://{}", dir.path().display());
+    let mut c = Client::start_in(json!({"maxWalls": 1}), Some(&folder)).await;
+    // `ignore` applies; per-file ignores do not, with no file to match.
+    let published = c.open_at("untitled:Untitled-1", WARNING_AND_ERROR).await;
+    assert_eq!(codes(&published), ["S101"]);
+    let published = c.open_at("untitled:Untitled-2", TWO_WALLS).await;
+    assert_eq!(codes(&published), ["C209"]);
+    // Without a workspace folder, no settings file.
+    let mut c = Client::start(json!({})).await;
+    let published = c.open_at("untitled:Untitled-1", WARNING_AND_ERROR).await;
+    assert_eq!(codes(&published), ["C201", "S101"]);
+}
+
+#[tokio::test]
+async fn without_a_settings_file_the_editor_settings_alone_apply() {
+    let dir = tempfile::tempdir().unwrap();
+    let uri = format!("file://{}/scene.walls", dir.path().display());
+    let mut c = Client::start(json!({"mode": "hsdem", "maxWalls": 1})).await;
+    let published = c.open_at(&uri, TWO_WALLS).await;
+    assert_eq!(codes(&published), ["M003", "M003", "C209"]);
+    let published = c.open_at(&uri, WARNING_AND_ERROR).await;
+    assert_eq!(codes(&published), ["M003", "M003", "C201", "S101"]);
 }
