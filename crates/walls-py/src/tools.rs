@@ -1,7 +1,7 @@
 //! The command-line tools run in this process, for the wheel's console scripts
 //! (`python/walls/_cli.py`): maturin puts either an extension or binaries in a wheel, so
-//! `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and `walls-lsp` are Python scripts that call
-//! the tools' own entry points here, with the GIL released.
+//! `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and `walls-lsp` are Python scripts
+//! that call the tools' own entry points here, with the GIL released.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -14,9 +14,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 }
 
 /// Runs the tool `tool` ("walls-lint", "walls-fmt", "walls-sim", "walls-mesh" or
-/// "walls-lsp") with the
-/// command line `argv` (argv[0] is the program's name) and returns the status its binary
-/// would exit with.
+/// "walls-lsp") with the command line `argv` (argv[0] is the program's name) and returns
+/// the status its binary would exit with.
 #[pyfunction]
 fn run_tool(py: Python<'_>, tool: &str, argv: Vec<OsString>) -> PyResult<i32> {
     let entry: fn(Vec<OsString>) -> i32 = match tool {
