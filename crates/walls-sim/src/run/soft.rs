@@ -197,7 +197,11 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     let indexed = indexed || walls.near.is_some();
     let open = &mut load.walls;
-    let count = if indexed { visit.len() } else { walls.now.len() };
+    let count = if indexed {
+        visit.len()
+    } else {
+        walls.now.len()
+    };
     for at in 0..count {
         let w = if indexed { visit[at] } else { at };
         let wall = &walls.now[w];
@@ -786,7 +790,12 @@ impl<'a> SoftStepper<'a> {
                 .map(kick_drift)
                 .reduce(|| false, |a, b| a || b)
         } else {
-            states.zip(built_at).map(kick_drift).fold(false, |a, b| a || b)
+            // Every particle is kicked and drifted: no short cut.
+            let mut drifted = false;
+            for each in states.zip(built_at) {
+                drifted |= kick_drift(each);
+            }
+            drifted
         };
         self.candidates.drifted = drifted;
     }
@@ -1124,7 +1133,10 @@ impl<'a> SoftStepper<'a> {
 
     /// The first particle whose numbers overflowed in the last step, if any.
     fn not_finite(&self) -> Option<usize> {
-        self.reports.iter().find(|(_, r)| r.not_finite).map(|(i, _)| *i)
+        self.reports
+            .iter()
+            .find(|(_, r)| r.not_finite)
+            .map(|(i, _)| *i)
     }
 
     /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
