@@ -765,34 +765,39 @@ impl<'a> SoftStepper<'a> {
         let g = self.settings.gravity;
         let Kicks { opening, late, .. } = self.kicks;
         let limit = self.candidates.limit();
-        let built_at = &self.candidates.built_at;
-        let kick_drift = |((s, load), at): ((&mut State, &mut Load), &Vec3)| {
-            load.force = g * s.particle.mass;
-            load.torque = Vec3::zeros();
-            if s.free() && !s.member {
-                s.particle.vel += s.acc * (dt * opening);
-                s.particle.spin += s.alpha * (dt * opening);
-                let v = s.particle.vel;
-                s.particle.pos += v * dt;
-                s.particle.vel += s.acc * (dt * late);
-                s.particle.spin += s.alpha * (dt * late);
-                PairList::moved_far(s, at, limit)
-            } else {
-                false
-            }
-        };
+        let PairList {
+            built_at, spheres, ..
+        } = &mut self.candidates;
+        let kick_drift =
+            |(((s, load), at), sphere): (((&mut State, &mut Load), &Vec3), &mut [f64; 4])| {
+                load.force = g * s.particle.mass;
+                load.torque = Vec3::zeros();
+                if s.free() && !s.member {
+                    s.particle.vel += s.acc * (dt * opening);
+                    s.particle.spin += s.alpha * (dt * opening);
+                    let v = s.particle.vel;
+                    s.particle.pos += v * dt;
+                    s.particle.vel += s.acc * (dt * late);
+                    s.particle.spin += s.alpha * (dt * late);
+                    *sphere = PairList::sphere(s);
+                    PairList::moved_far(s, at, limit)
+                } else {
+                    false
+                }
+            };
         let states = self.states.iter_mut().zip(self.loads.iter_mut());
         let drifted = if self.parallel {
             self.states
                 .par_iter_mut()
                 .zip(self.loads.par_iter_mut())
                 .zip(built_at.par_iter())
+                .zip(spheres.par_iter_mut())
                 .map(kick_drift)
                 .reduce(|| false, |a, b| a || b)
         } else {
             // Every particle is kicked and drifted: no short cut.
             let mut drifted = false;
-            for each in states.zip(built_at) {
+            for each in states.zip(built_at.iter()).zip(spheres.iter_mut()) {
                 drifted |= kick_drift(each);
             }
             drifted
@@ -914,13 +919,15 @@ impl<'a> SoftStepper<'a> {
             pairs,
             slots,
             contacts,
+            spheres,
             ..
         } = &mut self.candidates;
         for (&(i, j), slot) in pairs.iter().zip(slots.iter_mut()) {
             let (i, j) = (i as usize, j as usize);
-            let (p, q) = (&states[i].particle, &states[j].particle);
-            let d = p.pos - q.pos;
-            let reach = p.radius + q.radius;
+            // The spheres alone first: 32 bytes a particle, not its whole state.
+            let (a, b) = (&spheres[i], &spheres[j]);
+            let d = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+            let reach = a[3] + b[3];
             let d2 = d.norm_squared();
             // Most candidates do not touch: the square of the distance tells, with a
             // margin for round-off; the contact, if open, ends.
@@ -938,6 +945,7 @@ impl<'a> SoftStepper<'a> {
                 contacts.close(slot);
                 continue;
             }
+            let (p, q) = (&states[i].particle, &states[j].particle);
             let (free_i, free_j) = (states[i].free(), states[j].free());
             if self.overlaps.check(
                 overlap / p.radius.min(q.radius),
@@ -1371,6 +1379,9 @@ fn set_up_aggregates(
 /// a settled pile the list lasts many steps (docs/performance.md).
 struct PairList {
     pairs: Vec<(u32, u32)>,
+    /// Each particle's centre and radius (x, y, z, r) as it is now: the pairs' first
+    /// test reads these, compact, rather than the states.
+    spheres: Vec<[f64; 4]>,
     /// Each pair's open contact in `contacts`, or [`NO_CONTACT`].
     slots: Vec<u32>,
     /// The open contacts' records.
@@ -1395,6 +1406,7 @@ impl PairList {
         let mut list = PairList {
             pairs: Vec::new(),
             slots: Vec::new(),
+            spheres: Vec::new(),
             contacts: PairContacts::default(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
@@ -1416,6 +1428,8 @@ impl PairList {
         }
         self.built_at.clear();
         self.built_at.extend(states.iter().map(|s| s.particle.pos));
+        self.spheres.clear();
+        self.spheres.extend(states.iter().map(Self::sphere));
         if !self.wanted {
             return;
         }
@@ -1443,6 +1457,13 @@ impl PairList {
         self.pairs = pairs;
     }
 
+    /// A particle's centre and radius, as the pairs' first test reads them.
+    #[inline]
+    fn sphere(s: &State) -> [f64; 4] {
+        let p = &s.particle;
+        [p.pos.x, p.pos.y, p.pos.z, p.radius]
+    }
+
     /// The square of half the skin: how far a particle may move before a rebuild.
     fn limit(&self) -> f64 {
         (self.skin / 2.0).powi(2)
@@ -1465,6 +1486,12 @@ impl PairList {
         }
         let limit = self.limit();
         let moved = |(s, at): (&State, &Vec3)| Self::moved_far(s, at, limit);
+        if self.held {
+            // Particles the drift did not move may have been carried.
+            for (sphere, s) in self.spheres.iter_mut().zip(states) {
+                *sphere = Self::sphere(s);
+            }
+        }
         let stale = self.drifted
             || (self.held
                 && if states.len() >= PARALLEL_FROM {
