@@ -1,12 +1,15 @@
 //! For any point, no point of the shape's material is nearer than the one `nearest`
 //! returns: checked against thousands of points sampled over each shape, with the
-//! returned point itself on the material and the normal a unit vector.
+//! returned point itself on the material and the normal a unit vector. The cheap test
+//! before the query ([`Cull`]) never calls clear a point the query finds within reach.
 
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use walls_geometry::Shape;
-use walls_geometry::shape::{Disk, FiniteCylinder, Rectangle, Shell, Triangle};
+use walls_geometry::shape::{
+    Cull, Disk, FiniteCylinder, InfiniteCylinder, Plane, Rectangle, Shell, Triangle,
+};
 
 type Vec3 = Vector3<f64>;
 
@@ -159,5 +162,63 @@ proptest! {
         prop_assert!(n.distance <= best + 1e-9, "{s:?} at {p:?}: {n:?} but a sample is {best} away");
         let on_material = points.iter().map(|q| (n.point - q).norm()).fold(f64::INFINITY, f64::min);
         prop_assert!(on_material < 0.15, "{s:?}: nearest point {:?} is {on_material} from the material", n.point);
+    }
+
+    #[test]
+    fn the_cheap_test_never_hides_a_reachable_point(
+        s in every_shape(),
+        p in (-3.0..3.0f64, -3.0..3.0f64, -3.0..3.0f64),
+        reach in 0.0..2.0f64,
+    ) {
+        let p = Vec3::new(p.0, p.1, p.2);
+        if Cull::of(&s).clear_of(&p, reach) {
+            let n = s.nearest(&p);
+            prop_assert!(n.distance > reach, "{s:?} at {p:?}: called clear at {reach}, {n:?}");
+        }
+    }
+}
+
+/// The finite shapes, and planes and infinite cylinders.
+fn every_shape() -> impl Strategy<Value = Shape> {
+    let c = || (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64).prop_map(|(x, y, z)| Vec3::new(x, y, z));
+    prop_oneof![
+        shapes(),
+        (c(), unit()).prop_map(|(origin, normal)| Shape::Plane(Plane { origin, normal })),
+        (c(), unit(), 0.0..2.0f64).prop_map(|(origin, axis, radius)| {
+            Shape::InfiniteCylinder(InfiniteCylinder {
+                origin,
+                axis,
+                radius,
+            })
+        }),
+    ]
+}
+
+/// The cheap test answers clear far from each kind of shape, and not at its surface.
+#[test]
+fn the_cheap_test_clears_far_points() {
+    let plane = Shape::Plane(Plane {
+        origin: Vec3::zeros(),
+        normal: Vec3::z(),
+    });
+    let tube = Shape::InfiniteCylinder(InfiniteCylinder {
+        origin: Vec3::zeros(),
+        axis: Vec3::z(),
+        radius: 1.0,
+    });
+    let square = Shape::Rectangle(Rectangle {
+        origin: Vec3::zeros(),
+        e1: Vec3::x(),
+        e2: Vec3::y(),
+    });
+    for (shape, far, near) in [
+        (&plane, Vec3::new(5.0, 5.0, 0.2), Vec3::new(5.0, 5.0, 0.09)),
+        (&tube, Vec3::new(0.0, 0.5, 7.0), Vec3::new(0.0, 0.95, 7.0)),
+        (&tube, Vec3::new(0.0, 1.2, 7.0), Vec3::new(0.0, 1.05, 7.0)),
+        (&square, Vec3::new(0.5, 1.2, 0.0), Vec3::new(0.5, 0.5, 0.05)),
+    ] {
+        let cull = Cull::of(shape);
+        assert!(cull.clear_of(&far, 0.1), "{shape:?} at {far:?}");
+        assert!(!cull.clear_of(&near, 0.1), "{shape:?} at {near:?}");
     }
 }

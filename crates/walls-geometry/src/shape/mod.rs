@@ -12,6 +12,7 @@
 //! line (or a segment), a finite cylinder of length 0 a ring, taper 1 a cone to a point,
 //! a shell of radius 0 or opening 180° a point.
 
+pub mod cull;
 pub mod disk;
 pub mod finite_cylinder;
 pub mod infinite_cylinder;
@@ -20,6 +21,7 @@ pub mod rectangle;
 pub mod shell;
 pub mod triangle;
 
+pub use cull::Cull;
 pub use disk::Disk;
 pub use finite_cylinder::FiniteCylinder;
 pub use infinite_cylinder::InfiniteCylinder;

@@ -291,6 +291,9 @@ pub struct State {
     /// A member of a rigid aggregate (docs/pkdgrav-physics.md §9): moved with it, never
     /// kicked or drifted on its own.
     pub(crate) member: bool,
+    /// 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once: a division costs
+    /// as much as the rest of a free particle's step.
+    pub(crate) inverse: (f64, f64),
 }
 
 impl State {
@@ -303,7 +306,22 @@ impl State {
             acc: Vec3::zeros(),
             alpha: Vec3::zeros(),
             member: false,
+            inverse: (
+                1.0 / particle.mass,
+                1.0 / (0.4 * particle.mass * particle.radius * particle.radius),
+            ),
         }
+    }
+
+    /// Whether it is out of the run, or its position, velocity and spin are all finite.
+    #[inline]
+    pub(crate) fn finite(&self) -> bool {
+        let p = &self.particle;
+        // A sum of finite numbers is finite unless it overflows: only then look closer.
+        let sum = p.pos.sum() + p.vel.sum() + p.spin.sum();
+        !self.alive
+            || sum.is_finite()
+            || (p.pos.iter().chain(p.vel.iter()).chain(p.spin.iter())).all(|x| x.is_finite())
     }
 
     /// The particle as pkdgrav writes it in an output: its colour −1 − the wall's number
@@ -402,19 +420,19 @@ impl std::fmt::Display for Stop {
 
 /// The first particle still in the run whose position, velocity or spin is not finite.
 fn first_not_finite(states: &[State]) -> Option<usize> {
-    states.iter().position(|s| {
-        s.alive
-            && !(s.particle.pos.iter())
-                .chain(s.particle.vel.iter())
-                .chain(s.particle.spin.iter())
-                .all(|x| x.is_finite())
-    })
+    states.iter().position(|s| !s.finite())
 }
 
 /// How a stepper asks whether to go on after a step: [`Stop::NotFinite`] when a
 /// particle's numbers overflowed, [`Stop::Interrupted`] when `interrupted` says so.
 fn halt(states: &[State], interrupted: &dyn Fn() -> bool) -> Option<Stop> {
-    if let Some(i) = first_not_finite(states) {
+    halt_at(first_not_finite(states), interrupted)
+}
+
+/// [`halt`] when the stepper has already found the first particle whose numbers
+/// overflowed, if any.
+fn halt_at(not_finite: Option<usize>, interrupted: &dyn Fn() -> bool) -> Option<Stop> {
+    if let Some(i) = not_finite {
         return Some(Stop::NotFinite(i));
     }
     interrupted().then_some(Stop::Interrupted)
@@ -598,27 +616,32 @@ struct WallNow {
     shape: Shape,
     velocity: Vec3,
     spin: Vec3,
+    /// The cheap test of whether a particle is out of reach, before any nearest-point
+    /// query.
+    cull: walls_geometry::shape::Cull,
 }
 
 impl WallNow {
-    /// `wall` at time `t` with its origin at `origin`.
-    fn new(wall: &Wall, origin: Vec3, t: f64) -> WallNow {
+    /// `shape` placed with its origin at `origin`, moving at `velocity` and spinning at
+    /// `spin`.
+    fn placed(origin: Vec3, shape: Shape, velocity: Vec3, spin: Vec3) -> WallNow {
         WallNow {
             origin,
-            shape: wall.shape.at(origin),
-            velocity: wall.motion.origin_velocity(t),
-            spin: wall.motion.spin(),
+            cull: walls_geometry::shape::Cull::of(&shape),
+            shape,
+            velocity,
+            spin,
         }
+    }
+
+    /// `wall` at time `t` with its origin at `origin`.
+    fn new(wall: &Wall, origin: Vec3, t: f64) -> WallNow {
+        Self::moving(wall, origin, wall.motion.origin_velocity(t))
     }
 
     /// `wall` with its origin at `origin` and its origin's velocity `velocity`.
     fn moving(wall: &Wall, origin: Vec3, velocity: Vec3) -> WallNow {
-        WallNow {
-            origin,
-            shape: wall.shape.at(origin),
-            velocity,
-            spin: wall.motion.spin(),
-        }
+        Self::placed(origin, wall.shape.at(origin), velocity, wall.motion.spin())
     }
 
     /// The velocity of the wall's material at `q`.

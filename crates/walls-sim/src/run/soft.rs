@@ -42,44 +42,12 @@ use walls_geometry::Wall;
 
 type Vec3 = Vector3<f64>;
 
-/// An open contact: its springs (the tangential spring alone, but with
-/// [`Integrator::Pkdgrav`] every spring pkdgrav keeps), the normal speed it began with,
-/// and the last step it was seen.
+/// An open wall contact: its springs (the tangential spring alone, but with
+/// [`Integrator::Pkdgrav`] every spring pkdgrav keeps) and the normal speed it began
+/// with.
 struct Open {
     record: Record,
     vn_in: f64,
-    seen: u64,
-}
-
-/// The open contacts of each particle with particles of higher index. A particle touches
-/// a few others at most, so a short list per particle is faster than a map keyed by pairs
-/// (docs/performance.md); its wall contacts are kept the same way, in its [`Load`].
-struct OpenContacts(Vec<Vec<(usize, Open)>>);
-
-impl OpenContacts {
-    fn new(n: usize) -> Self {
-        OpenContacts((0..n).map(|_| Vec::new()).collect())
-    }
-
-    /// The contact of particle `i` with `other`, opened with `new` if it is not.
-    fn entry(&mut self, i: usize, other: usize, new: impl FnOnce() -> Open) -> &mut Open {
-        let list = &mut self.0[i];
-        let k = match list.iter().position(|(o, _)| *o == other) {
-            Some(k) => k,
-            None => {
-                list.push((other, new()));
-                list.len() - 1
-            }
-        };
-        &mut list[k].1
-    }
-
-    /// Closes every contact not seen at `step`.
-    fn sweep(&mut self, step: u64) {
-        for list in &mut self.0 {
-            list.retain(|(_, o)| o.seen == step);
-        }
-    }
 }
 
 /// The inertia of a solid sphere.
@@ -99,6 +67,9 @@ struct Walls<'a> {
     origins: &'a [Vec3],
     /// The wall index, when the plan uses one.
     index: Option<&'a WallIndex>,
+    /// Without a wall index, the fixed walls near each particle and the walls that
+    /// move ([`NearWalls`]).
+    near: Option<&'a NearWalls>,
     plan: &'a Plan,
     /// Each wall's normal damping over √m, worked out once.
     damping: &'a [f64],
@@ -124,10 +95,9 @@ struct Walls<'a> {
     acc_crit: f64,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
     optional: &'a OptionalPhysics,
-    /// The time at the step's end, the timestep, and the step's number.
+    /// The time at the step's end, and the timestep.
     t: f64,
     dt: f64,
-    step: u64,
     /// pkdgrav's aggregates, if any (for their members' rolling pseudo-forces).
     aggregates: Option<&'a Aggregates>,
 }
@@ -155,12 +125,26 @@ struct ParticleStep {
     /// The reactions on reactive walls' assemblies: (assembly, force, torque about its
     /// centre of gravity).
     reactions: Vec<(usize, Vec3, Vec3)>,
+    /// Its position, velocity or spin is no longer finite.
+    not_finite: bool,
+}
+
+impl ParticleStep {
+    /// Whether there is nothing to note (the particle touched no wall and is well).
+    fn is_empty(&self) -> bool {
+        self.events.is_empty()
+            && self.deepest.is_none()
+            && self.touching == 0
+            && self.too_fast.is_none()
+            && self.reactions.is_empty()
+            && !self.not_finite
+    }
 }
 
 /// One particle's contacts with the walls at the step's time, added to its `load` (which
 /// holds gravity and the particle contacts already), then the closing kick.
 fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
-    let (t, dt, step) = (walls.t, walls.dt, walls.step);
+    let (t, dt) = (walls.t, walls.dt);
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
@@ -174,15 +158,16 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         return out;
     }
     let (m, r) = (s.particle.mass, s.particle.radius);
-    let travel = s.particle.vel.norm() * dt / r;
-    if travel > 1.0 {
-        out.too_fast = Some(travel);
+    let moved = s.particle.vel.norm_squared() * dt * dt;
+    if moved > r * r {
+        out.too_fast = Some(moved.sqrt() / r);
     }
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     // The walls within reach (from the wall index, when the plan uses one), and those
     // the particle touched last step, whose contacts may end; in wall order either way.
     let mut visit = std::mem::take(&mut load.visit);
     visit.clear();
+    let indexed = walls.index.is_some();
     match walls.index {
         Some(index) => {
             index.for_each_candidate(&s.particle.pos, r, walls.origins, |w| visit.push(w));
@@ -196,19 +181,43 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             }
             visit.sort_unstable();
         }
-        None => visit.extend(0..walls.now.len()),
+        None => {
+            if let Some(near) = walls.near {
+                visit.extend(near.of(i));
+                visit.extend(near.moving.iter().copied());
+                for (w, _) in &load.walls {
+                    visit.push(*w);
+                }
+                if visit.len() > 1 {
+                    visit.sort_unstable();
+                    visit.dedup();
+                }
+            }
+        }
     }
+    let indexed = indexed || walls.near.is_some();
     let open = &mut load.walls;
-    for &w in &visit {
+    let count = if indexed {
+        visit.len()
+    } else {
+        walls.now.len()
+    };
+    for at in 0..count {
+        let w = if indexed { visit[at] } else { at };
         let wall = &walls.now[w];
+        let k = open.iter().position(|(o, _)| *o == w);
+        // Most particles are far from most walls: a cheap test first, unless a contact
+        // is open (its end is an event).
+        if k.is_none() && wall.cull.clear_of(&s.particle.pos, r) {
+            continue;
+        }
         let near = wall.shape.nearest(&s.particle.pos);
         let overlap = r - near.distance;
         let n = near.normal;
-        let wall_v = wall.point_velocity(&near.point);
-        let k = open.iter().position(|(o, _)| *o == w);
         if overlap <= 0.0 {
             if let Some(k) = k {
                 let o = open.swap_remove(k).1;
+                let wall_v = wall.point_velocity(&near.point);
                 out.events.push(Event {
                     t,
                     particle: i,
@@ -220,6 +229,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             }
             continue;
         }
+        let wall_v = wall.point_velocity(&near.point);
         out.touching += 1;
         if out.deepest.is_none_or(|(f, _)| overlap / r > f) {
             out.deepest = Some((overlap / r, w));
@@ -239,7 +249,6 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 Open {
                     record: Record::default(),
                     vn_in: -n.dot(&u),
-                    seen: step,
                 },
             ));
             open.len() - 1
@@ -382,7 +391,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     // Each contact's resistance is capped, but together they must not reverse the spin
     // either (a corner's floor and side on one spin component).
-    if resist.norm() > stop {
+    if resist != Vec3::zeros() && resist.norm() > stop {
         resist *= stop / resist.norm();
     }
     load.torque += resist;
@@ -391,8 +400,8 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
         return out;
     }
-    s.acc = load.force / m;
-    s.alpha = load.torque / inertia(m, r);
+    s.acc = load.force * s.inverse.0;
+    s.alpha = load.torque * s.inverse.1;
     if walls.acc_crit > 0.0 {
         zero_small_motions(s, walls.acc_crit, dt);
     }
@@ -519,10 +528,10 @@ struct SoftStepper<'a> {
     /// Set up failed (an aggregate of one member): the run stops before it starts.
     halted: bool,
     loads: Vec<Load>,
-    pairs_open: OpenContacts,
     candidates: PairList,
-    /// What each particle's wall contacts did this step (kept to save allocating).
-    reports: Vec<ParticleStep>,
+    /// What the wall contacts of each particle with something to note did this step,
+    /// in particle order (kept to save allocating).
+    reports: Vec<(usize, ParticleStep)>,
     /// Whether a step runs on rayon's threads.
     parallel: bool,
     /// The energy at the start.
@@ -565,8 +574,7 @@ impl<'a> SoftStepper<'a> {
             };
         let n = states.len();
         let loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
-        let pairs_open = OpenContacts::new(n);
-        let candidates = PairList::new(&states);
+        let candidates = PairList::new(&states, plan.particle_contacts);
         let mut warnings = Vec::new();
         let oscillating: Vec<bool> = scene
             .iter()
@@ -575,6 +583,8 @@ impl<'a> SoftStepper<'a> {
         warnings.extend(super::stability::soft_warnings(scene, &states, settings));
         let mut states = states;
         let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
+        let mut candidates = candidates;
+        candidates.held |= aggregates.is_some();
         let origins = Origins::new(scene, settings.stepping, settings.t_start());
         let now = if settings.integrator == Integrator::Pkdgrav {
             origins.walls_pkdgrav(scene, settings.t_start())
@@ -609,6 +619,13 @@ impl<'a> SoftStepper<'a> {
             }
         }
         let index = plan.wall_index.then(|| WallIndex::new(scene));
+        if index.is_none() && !scene.is_empty() {
+            let fixed = (0..scene.len())
+                .map(|w| !scene[w].motion.translates() && assembly_of[w].is_none())
+                .collect();
+            candidates.near = Some(NearWalls::new(fixed));
+            candidates.build(&states, &now);
+        }
         let optional = OptionalPhysics::new(scene, &states, settings);
         let damping: Vec<f64> = materials
             .iter()
@@ -634,7 +651,6 @@ impl<'a> SoftStepper<'a> {
             assemblies,
             assembly_of,
             loads,
-            pairs_open,
             candidates,
             reports: Vec::with_capacity(n),
             parallel: n >= PARALLEL_FROM,
@@ -693,7 +709,7 @@ impl<'a> SoftStepper<'a> {
             self.carry_stuck();
         }
         self.move_assemblies();
-        self.gravity_loads();
+        self.candidates.update(&self.states, &self.now);
         if self.plan.particle_contacts
             && self.settings.forces
             && self.states.len() > 1
@@ -740,25 +756,53 @@ impl<'a> SoftStepper<'a> {
     }
 
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
-    /// drift, and the kick after it (explicit Euler's), for the free particles.
+    /// drift, and the kick after it (explicit Euler's), for the free particles; in the
+    /// same pass, each particle's load starts the step with gravity alone
+    /// ([`SoftStepper::gravity_loads`]), and the candidate pairs learn whether a
+    /// drifted particle has moved far enough to rebuild them ([`PairList::drifted`]).
     fn kick_drift(&mut self) {
         let dt = self.settings.dt;
+        let g = self.settings.gravity;
         let Kicks { opening, late, .. } = self.kicks;
-        let kick_drift = |s: &mut State| {
-            if s.free() && !s.member {
-                s.particle.vel += s.acc * (dt * opening);
-                s.particle.spin += s.alpha * (dt * opening);
-                let v = s.particle.vel;
-                s.particle.pos += v * dt;
-                s.particle.vel += s.acc * (dt * late);
-                s.particle.spin += s.alpha * (dt * late);
-            }
-        };
-        if self.parallel {
-            self.states.par_iter_mut().for_each(kick_drift);
+        let limit = self.candidates.limit();
+        let PairList {
+            built_at, spheres, ..
+        } = &mut self.candidates;
+        let kick_drift =
+            |(((s, load), at), sphere): (((&mut State, &mut Load), &Vec3), &mut [f64; 4])| {
+                load.force = g * s.particle.mass;
+                load.torque = Vec3::zeros();
+                if s.free() && !s.member {
+                    s.particle.vel += s.acc * (dt * opening);
+                    s.particle.spin += s.alpha * (dt * opening);
+                    let v = s.particle.vel;
+                    s.particle.pos += v * dt;
+                    s.particle.vel += s.acc * (dt * late);
+                    s.particle.spin += s.alpha * (dt * late);
+                    *sphere = PairList::sphere(s);
+                    PairList::moved_far(s, at, limit)
+                } else {
+                    false
+                }
+            };
+        let states = self.states.iter_mut().zip(self.loads.iter_mut());
+        let drifted = if self.parallel {
+            self.states
+                .par_iter_mut()
+                .zip(self.loads.par_iter_mut())
+                .zip(built_at.par_iter())
+                .zip(spheres.par_iter_mut())
+                .map(kick_drift)
+                .reduce(|| false, |a, b| a || b)
         } else {
-            self.states.iter_mut().for_each(kick_drift);
-        }
+            // Every particle is kicked and drifted: no short cut.
+            let mut drifted = false;
+            for each in states.zip(built_at.iter()).zip(spheres.iter_mut()) {
+                drifted |= kick_drift(each);
+            }
+            drifted
+        };
+        self.candidates.drifted = drifted;
     }
 
     /// The clock moves on a step, and the moving walls with it.
@@ -830,19 +874,20 @@ impl<'a> SoftStepper<'a> {
     fn place_assemblies(&mut self) {
         for a in &self.assemblies {
             for (k, &w) in a.walls.iter().enumerate() {
-                self.now[w] = WallNow {
-                    origin: a.cog,
-                    shape: a.shape(&self.scene[w].shape, k),
-                    velocity: a.velocity,
-                    spin: a.spin(),
-                };
+                self.now[w] = WallNow::placed(
+                    a.cog,
+                    a.shape(&self.scene[w].shape, k),
+                    a.velocity,
+                    a.spin(),
+                );
             }
         }
         self.cogs.clear();
         self.cogs.extend(self.assemblies.iter().map(|a| a.cog));
     }
 
-    /// Each particle's load starts the step with gravity alone.
+    /// Each particle's load starts the step with gravity alone (in a step,
+    /// [`SoftStepper::kick_drift`] does it).
     fn gravity_loads(&mut self) {
         let g = self.settings.gravity;
         for (s, load) in self.states.iter().zip(&mut self.loads) {
@@ -855,15 +900,12 @@ impl<'a> SoftStepper<'a> {
     /// or a free one and one held by a wall) to their loads, and closes the contacts
     /// not seen; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
     fn pair_contacts(&mut self) -> Flow {
-        self.candidates.update(&self.states);
-        let flow = self.pair_forces();
-        self.pairs_open.sweep(self.steps);
-        flow
+        self.pair_forces()
     }
 
     /// The forces of the candidate pairs that overlap, in the list's order.
     fn pair_forces(&mut self) -> Flow {
-        let (dt, step, t, plan) = (self.settings.dt, self.steps, self.t, self.plan);
+        let (dt, t, plan) = (self.settings.dt, self.t, self.plan);
         let Kicks {
             predict_all,
             pkdgrav_levers,
@@ -873,25 +915,38 @@ impl<'a> SoftStepper<'a> {
         let states = &self.states;
         let loads = &mut self.loads;
         let aggregates = self.aggregates.as_ref();
-        for &(i, j) in &self.candidates.pairs {
+        let PairList {
+            pairs,
+            slots,
+            contacts,
+            spheres,
+            ..
+        } = &mut self.candidates;
+        for (&(i, j), slot) in pairs.iter().zip(slots.iter_mut()) {
             let (i, j) = (i as usize, j as usize);
-            // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
-            if aggregates.is_some_and(|a| a.same(i, j)) {
-                continue;
-            }
-            // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
-            // rule); two stuck ones, or a removed one, meet nothing.
-            let (free_i, free_j) = (states[i].free(), states[j].free());
-            if !states[i].alive || !states[j].alive || !(free_i || free_j) {
+            // The spheres alone first: 32 bytes a particle, not its whole state.
+            let (a, b) = (&spheres[i], &spheres[j]);
+            let d = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+            let reach = a[3] + b[3];
+            let d2 = d.norm_squared();
+            // Most candidates do not touch: the square of the distance tells, with a
+            // margin for round-off; the contact, if open, ends.
+            let apart = d2 > reach * reach * (1.0 + 1e-9)
+                // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
+                || aggregates.is_some_and(|a| a.same(i, j))
+                // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
+                // rule); two stuck ones, or a removed one, meet nothing.
+                || !states[i].alive
+                || !states[j].alive
+                || !(states[i].free() || states[j].free());
+            let distance = d2.sqrt();
+            let overlap = reach - distance;
+            if apart || overlap <= 0.0 {
+                contacts.close(slot);
                 continue;
             }
             let (p, q) = (&states[i].particle, &states[j].particle);
-            let d = p.pos - q.pos;
-            let distance = d.norm();
-            let overlap = p.radius + q.radius - distance;
-            if overlap <= 0.0 {
-                continue;
-            }
+            let (free_i, free_j) = (states[i].free(), states[j].free());
             if self.overlaps.check(
                 overlap / p.radius.min(q.radius),
                 Overlapping::Particles(i, j),
@@ -927,16 +982,7 @@ impl<'a> SoftStepper<'a> {
                 (true, false) => p.mass,
                 _ => q.mass,
             };
-            let began = &mut self.pair_contacts;
-            let entry = self.pairs_open.entry(i, j, || {
-                *began += 1;
-                Open {
-                    record: Record::default(),
-                    vn_in: -n.dot(&u),
-                    seen: step,
-                }
-            });
-            entry.seen = step;
+            let record = contacts.open(slot, &mut self.pair_contacts);
             if pkdgrav_levers
                 && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
             {
@@ -982,7 +1028,7 @@ impl<'a> SoftStepper<'a> {
                     }),
                 };
                 let extra = self.optional.pair(i, j, p.radius, q.radius, a, mat);
-                let c = dashpot_contact_with(&dashpot, &mut entry.record, dt, mat, &extra);
+                let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
                 if free_i {
                     loads[i].force += c.force;
                     loads[i].torque += c.torque;
@@ -999,7 +1045,7 @@ impl<'a> SoftStepper<'a> {
                 velocity: u,
             };
             let c = if plan.sliding_friction {
-                contact(reduced, li, &touch, &mut entry.record.spring, dt, mat)
+                contact(reduced, li, &touch, &mut record.spring, dt, mat)
             } else {
                 let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
                 normal_contact(&touch, mat.k_n, c_n)
@@ -1051,6 +1097,7 @@ impl<'a> SoftStepper<'a> {
             cogs: &self.cogs,
             origins: &self.origins.now,
             index: self.index.as_ref().filter(|_| forces),
+            near: self.candidates.near.as_ref().filter(|_| forces),
             plan: self.plan,
             damping: &self.damping,
             materials: &self.materials,
@@ -1065,27 +1112,39 @@ impl<'a> SoftStepper<'a> {
             optional: &self.optional,
             t: self.t,
             dt: self.settings.dt,
-            step: self.steps,
             aggregates: self.aggregates.as_ref(),
         };
-        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| wall_step(i, s, load, &walls);
+        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
+            let mut report = wall_step(i, s, load, &walls);
+            report.not_finite = !s.finite();
+            (!report.is_empty()).then_some((i, report))
+        };
+        self.reports.clear();
         if self.parallel {
-            self.states
-                .par_iter_mut()
-                .zip(self.loads.par_iter_mut())
-                .enumerate()
-                .map(each)
-                .collect_into_vec(&mut self.reports);
+            self.reports.par_extend(
+                self.states
+                    .par_iter_mut()
+                    .zip(self.loads.par_iter_mut())
+                    .enumerate()
+                    .filter_map(each),
+            );
         } else {
-            self.reports.clear();
             self.reports.extend(
                 self.states
                     .iter_mut()
                     .zip(self.loads.iter_mut())
                     .enumerate()
-                    .map(each),
+                    .filter_map(each),
             );
         }
+    }
+
+    /// The first particle whose numbers overflowed in the last step, if any.
+    fn not_finite(&self) -> Option<usize> {
+        self.reports
+            .iter()
+            .find(|(_, r)| r.not_finite)
+            .map(|(i, _)| *i)
     }
 
     /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
@@ -1094,7 +1153,8 @@ impl<'a> SoftStepper<'a> {
     fn note_wall_contacts(&mut self) -> Flow {
         let t = self.t;
         let mut stop = self.aggregates.is_some() && self.aggregates_held();
-        for (i, report) in self.reports.iter_mut().enumerate() {
+        for (i, report) in self.reports.iter_mut() {
+            let i = *i;
             if let Some((fraction, w)) = report.deepest {
                 stop |= self.overlaps.check(
                     fraction,
@@ -1139,6 +1199,9 @@ impl<'a> SoftStepper<'a> {
                     });
                 }
             }
+            if report.events.iter().any(|e| e.kind == EventKind::Stick) {
+                self.candidates.held = true;
+            }
             self.events.append(&mut report.events);
             if report.touching > 3 && !self.once.crowd {
                 self.once.crowd = true;
@@ -1156,7 +1219,8 @@ impl<'a> SoftStepper<'a> {
     /// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
     fn aggregates_held(&mut self) -> bool {
         let mut held = false;
-        for (i, report) in self.reports.iter_mut().enumerate() {
+        for (i, report) in self.reports.iter_mut() {
+            let i = *i;
             if !self.states[i].member {
                 continue;
             }
@@ -1196,7 +1260,7 @@ impl<'a> SoftStepper<'a> {
             a.force = Vec3::zeros();
             a.torque = Vec3::zeros();
         }
-        for report in &self.reports {
+        for (_, report) in &self.reports {
             for (a, f, tq) in &report.reactions {
                 self.assemblies[*a].force += f;
                 self.assemblies[*a].torque += tq;
@@ -1259,7 +1323,7 @@ pub(super) fn run(
             break;
         }
         observe(run.steps, run.t, &run.states, &run.assemblies);
-        if let Some(stop) = super::halt(&run.states, interrupted) {
+        if let Some(stop) = super::halt_at(run.not_finite(), interrupted) {
             return run.outcome(Some(stop));
         }
     }
@@ -1315,48 +1379,224 @@ fn set_up_aggregates(
 /// a settled pile the list lasts many steps (docs/performance.md).
 struct PairList {
     pairs: Vec<(u32, u32)>,
+    /// Each particle's centre and radius (x, y, z, r) as it is now: the pairs' first
+    /// test reads these, compact, rather than the states.
+    spheres: Vec<[f64; 4]>,
+    /// Each pair's open contact in `contacts`, or [`NO_CONTACT`].
+    slots: Vec<u32>,
+    /// The open contacts' records.
+    contacts: PairContacts,
     built_at: Vec<Vec3>,
     skin: f64,
+    /// Whether a particle drifted this step has moved more than half the skin (worked
+    /// out in the drift, [`SoftStepper::kick_drift`]).
+    drifted: bool,
+    /// Whether some particle may be moved other than by the drift (stuck to a wall, or
+    /// a member of an aggregate): then every particle is looked at.
+    held: bool,
+    /// Whether the pairs are wanted (particles meet each other).
+    wanted: bool,
+    /// The walls near each particle, when the run keeps them.
+    near: Option<NearWalls>,
 }
 
 impl PairList {
-    fn new(states: &[State]) -> PairList {
+    fn new(states: &[State], wanted: bool) -> PairList {
         let largest = states.iter().map(|s| s.particle.radius).fold(0.0, f64::max);
         let mut list = PairList {
             pairs: Vec::new(),
+            slots: Vec::new(),
+            spheres: Vec::new(),
+            contacts: PairContacts::default(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
+            drifted: false,
+            held: states.iter().any(|s| s.stuck_to.is_some() || s.member),
+            wanted,
+            near: None,
         };
-        list.build(states);
+        list.build(states, &[]);
         list
     }
 
-    fn build(&mut self, states: &[State]) {
+    /// The candidate pairs (when wanted) and the walls near each particle (when kept)
+    /// where the particles are now, against the walls as they stand.
+    fn build(&mut self, states: &[State], walls: &[WallNow]) {
         let half = self.skin / 2.0;
+        if let Some(near) = &mut self.near {
+            near.build(states, walls, half);
+        }
+        self.built_at.clear();
+        self.built_at.extend(states.iter().map(|s| s.particle.pos));
+        self.spheres.clear();
+        self.spheres.extend(states.iter().map(Self::sphere));
+        if !self.wanted {
+            return;
+        }
         let grid = CellGrid::from_fn(states.len(), |i| {
             let s = &states[i];
             s.alive
                 .then_some((s.particle.pos, s.particle.radius + half))
         });
-        self.pairs = grid.pairs();
-        self.built_at = states.iter().map(|s| s.particle.pos).collect();
+        let pairs = grid.pairs();
+        // The open contacts go with their pairs into the new list (every pair that
+        // touches is in it); any other ends.
+        let mut open: std::collections::HashMap<(u32, u32), u32> = (self.pairs.iter())
+            .zip(&self.slots)
+            .filter(|(_, slot)| **slot != NO_CONTACT)
+            .map(|(pair, slot)| (*pair, *slot))
+            .collect();
+        let mut slots: Vec<u32> = pairs
+            .iter()
+            .map(|pair| open.remove(pair).unwrap_or(NO_CONTACT))
+            .collect();
+        for (_, mut slot) in open {
+            self.contacts.close(&mut slot);
+        }
+        std::mem::swap(&mut self.slots, &mut slots);
+        self.pairs = pairs;
+    }
+
+    /// A particle's centre and radius, as the pairs' first test reads them.
+    #[inline]
+    fn sphere(s: &State) -> [f64; 4] {
+        let p = &s.particle;
+        [p.pos.x, p.pos.y, p.pos.z, p.radius]
+    }
+
+    /// The square of half the skin: how far a particle may move before a rebuild.
+    fn limit(&self) -> f64 {
+        (self.skin / 2.0).powi(2)
+    }
+
+    /// Whether `s`, in the run, has moved more than √`limit` from `at` (or its position
+    /// is not a number).
+    #[inline]
+    fn moved_far(s: &State, at: &Vec3, limit: f64) -> bool {
+        let d2 = (s.particle.pos - at).norm_squared();
+        s.alive && (d2 > limit || d2.is_nan())
     }
 
     /// Rebuilds the list if some particle (free, or carried by its wall) has moved more
-    /// than half the skin.
-    fn update(&mut self, states: &[State]) {
-        let limit = (self.skin / 2.0).powi(2);
-        let moved = |(s, at): (&State, &Vec3)| {
-            let d2 = (s.particle.pos - at).norm_squared();
-            s.alive && (d2 > limit || d2.is_nan())
-        };
-        let stale = if states.len() >= PARALLEL_FROM {
-            states.par_iter().zip(&self.built_at).any(moved)
-        } else {
-            states.iter().zip(&self.built_at).any(moved)
-        };
+    /// than half the skin: the drift has said so of the free ones; the others are looked
+    /// at only once some particle is held (stuck, or in an aggregate), and then all.
+    fn update(&mut self, states: &[State], walls: &[WallNow]) {
+        if !self.wanted && self.near.is_none() {
+            return;
+        }
+        let limit = self.limit();
+        let moved = |(s, at): (&State, &Vec3)| Self::moved_far(s, at, limit);
+        if self.held {
+            // Particles the drift did not move may have been carried.
+            for (sphere, s) in self.spheres.iter_mut().zip(states) {
+                *sphere = Self::sphere(s);
+            }
+        }
+        let stale = self.drifted
+            || (self.held
+                && if states.len() >= PARALLEL_FROM {
+                    states.par_iter().zip(&self.built_at).any(moved)
+                } else {
+                    states.iter().zip(&self.built_at).any(moved)
+                });
+        self.drifted = false;
         if stale {
-            self.build(states);
+            self.build(states, walls);
+        }
+    }
+}
+
+/// The fixed walls within reach of each particle, found when the candidate pairs are
+/// (a Verlet list of walls): a particle moves at most half the skin before they are
+/// found again, so a fixed wall farther than its radius and half the skin when they
+/// were cannot touch it. The walls that move are visited by every particle.
+struct NearWalls {
+    /// Whether each wall is fixed: it does not move, and is not part of a reactive
+    /// assembly.
+    fixed: Vec<bool>,
+    /// The walls that move.
+    moving: Vec<usize>,
+    /// Where each particle's walls start in `walls` (one more entry than particles).
+    starts: Vec<u32>,
+    walls: Vec<usize>,
+}
+
+impl NearWalls {
+    fn new(fixed: Vec<bool>) -> NearWalls {
+        let moving = (0..fixed.len()).filter(|&w| !fixed[w]).collect();
+        NearWalls {
+            fixed,
+            moving,
+            starts: Vec::new(),
+            walls: Vec::new(),
+        }
+    }
+
+    /// The fixed walls within reach of each particle in the run, `margin` beyond its
+    /// radius, in ascending order.
+    fn build(&mut self, states: &[State], walls: &[WallNow], margin: f64) {
+        self.starts.clear();
+        self.walls.clear();
+        self.starts.push(0);
+        for s in states {
+            if s.alive {
+                let reach = s.particle.radius + margin;
+                for (w, wall) in walls.iter().enumerate() {
+                    if self.fixed[w] && !wall.cull.clear_of(&s.particle.pos, reach) {
+                        self.walls.push(w);
+                    }
+                }
+            }
+            self.starts.push(self.walls.len() as u32);
+        }
+    }
+
+    /// The fixed walls near particle `i`.
+    fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
+        self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
+            .iter()
+            .copied()
+    }
+}
+
+/// A pair without an open contact.
+const NO_CONTACT: u32 = u32::MAX;
+
+/// The records of the open contacts between particles, in slots that the candidate
+/// pairs point to ([`PairList::slots`]); a closed contact's slot is reused.
+#[derive(Default)]
+struct PairContacts {
+    records: Vec<Record>,
+    free: Vec<u32>,
+}
+
+impl PairContacts {
+    /// The record of the contact in `slot`, opened (and counted in `began`) if it is
+    /// not.
+    #[inline]
+    fn open(&mut self, slot: &mut u32, began: &mut u64) -> &mut Record {
+        if *slot == NO_CONTACT {
+            *began += 1;
+            *slot = match self.free.pop() {
+                Some(k) => {
+                    self.records[k as usize] = Record::default();
+                    k
+                }
+                None => {
+                    self.records.push(Record::default());
+                    (self.records.len() - 1) as u32
+                }
+            };
+        }
+        &mut self.records[*slot as usize]
+    }
+
+    /// Ends the contact in `slot`, if one is open.
+    #[inline]
+    fn close(&mut self, slot: &mut u32) {
+        if *slot != NO_CONTACT {
+            self.free.push(*slot);
+            *slot = NO_CONTACT;
         }
     }
 }
