@@ -2,9 +2,9 @@
 //! (`contact::ssdem::dashpot_contact`, docs/pkdgrav-physics.md §1.3–§1.5), on the details
 //! the golden scenes do not pin one by one: the shear spring's reset when the contact
 //! slides, the capped dashpot that remains, the Coulomb clamp that can replace the reset
-//! (`Sliding::Clamp`), the turn of the springs with the normal (the
-//! other way for a wall), the rolling and twisting sliders (the twisting limit's extra
-//! μ_s), and where β_s and the contact radius come from.
+//! (`Sliding::Clamp`), the turn of the springs with the normal (the other way for a
+//! wall), the rolling and twisting sliders (the twisting limit's extra μ_s), and where
+//! β_s and the contact radius come from.
 
 use nalgebra::Vector3;
 use walls_geometry::{BETA_S_DEFAULT, Material};
