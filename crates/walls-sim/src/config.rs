@@ -18,6 +18,7 @@
 
 use crate::OscillationStepping;
 use crate::build::Build;
+use crate::contact::ssdem::Sliding;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
@@ -70,6 +71,8 @@ pub struct Flags {
     pub stepping: OscillationStepping,
     /// `--integrator`.
     pub integrator: Integrator,
+    /// `--sliding` (pkdgrav's reset unless given; the `.par` file has no such key).
+    pub sliding: Sliding,
     /// `--all-parts`.
     pub planning: Planning,
     /// `--max-steps` (default [`MAX_STEPS`]).
@@ -292,6 +295,7 @@ pub fn resolve(
         acc_crit: par.and_then(|p| p.acc_crit).unwrap_or(0.0),
         stepping: flags.stepping,
         integrator: flags.integrator,
+        sliding: flags.sliding,
         planning: flags.planning,
         start_step,
         last_step,
@@ -321,6 +325,18 @@ fn check(
     let s = &run.settings;
     let m = &s.material;
     let fail = |why: String| Err(ConfigError::Unusable(why));
+    if s.sliding == Sliding::Clamp {
+        if s.method() == ContactModel::Hsdem {
+            return fail(
+                "--sliding clamp is a rule of the soft-sphere shear spring; hard spheres have none: leave it out, or run --method ssdem".to_string(),
+            );
+        }
+        if s.integrator != Integrator::Pkdgrav {
+            return fail(
+                "--sliding clamp changes pkdgrav's contact law, which only --integrator pkdgrav runs (the comparison integrators' law resets the spring): leave one of them out".to_string(),
+            );
+        }
+    }
     let k_from = if flags.k_n.is_some() {
         "--k-n"
     } else if par.is_some_and(|p| p.k_n.is_some()) {

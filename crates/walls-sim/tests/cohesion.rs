@@ -14,7 +14,7 @@ use walls_sim::contact::cohesion::{
     Cohesion, Colours, Model, Rule, against_wall, between_particles,
 };
 use walls_sim::contact::ssdem::{
-    Dashpot, Layers, Material, Optional, Record, dashpot_contact, dashpot_contact_with,
+    Dashpot, Layers, Material, Optional, Record, Sliding, dashpot_contact, dashpot_contact_with,
 };
 use walls_sim::io::cohesion::{read_cohesion, read_file};
 use walls_sim::io::par::{KT_PER_KN, read_par as parse_par};
@@ -101,6 +101,7 @@ fn pressed(x: f64, slip: Vec3) -> Dashpot {
         radius: 0.1,
         wall: true,
         constant_torque: None,
+        sliding: Sliding::Reset,
     }
 }
 

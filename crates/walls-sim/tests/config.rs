@@ -301,3 +301,36 @@ fn the_walls_file_from_the_argument_else_beside_the_par_file() {
     assert_eq!(walls_file(None, &flags, Some(&Params::default())), None);
     assert_eq!(walls_file(None, &Flags::default(), None), None);
 }
+
+#[test]
+fn the_sliding_rule_is_pkdgrav_s_reset_unless_given_and_the_clamp_needs_its_contact_law() {
+    use walls_sim::contact::ssdem::Sliding;
+    use walls_sim::run::{ContactModel, Integrator};
+    let run = resolve(&Flags::default(), Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.sliding, Sliding::Reset);
+    let clamp = Flags {
+        sliding: Sliding::Clamp,
+        ..Flags::default()
+    };
+    let run = resolve(&clamp, None, &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(run.settings.sliding, Sliding::Clamp);
+    let refused = |flags: Flags| {
+        resolve(&flags, None, &scene(FLOOR), Some(ball()))
+            .unwrap_err()
+            .to_string()
+    };
+    assert_eq!(
+        refused(Flags {
+            integrator: Integrator::Leapfrog,
+            ..clamp.clone()
+        }),
+        "--sliding clamp changes pkdgrav's contact law, which only --integrator pkdgrav runs (the comparison integrators' law resets the spring): leave one of them out"
+    );
+    assert_eq!(
+        refused(Flags {
+            method: ContactModel::Hsdem,
+            ..clamp
+        }),
+        "--sliding clamp is a rule of the soft-sphere shear spring; hard spheres have none: leave it out, or run --method ssdem"
+    );
+}

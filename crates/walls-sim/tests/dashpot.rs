@@ -1,14 +1,15 @@
 //! pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting
 //! (`contact::ssdem::dashpot_contact`, docs/pkdgrav-physics.md §1.3–§1.5), on the details
 //! the golden scenes do not pin one by one: the shear spring's reset when the contact
-//! slides, the capped dashpot that remains, the turn of the springs with the normal (the
-//! other way for a wall), the rolling and twisting sliders (the twisting limit's extra
-//! μ_s), and where β_s and the contact radius come from.
+//! slides, the capped dashpot that remains, the Coulomb clamp that can replace the reset
+//! (`Sliding::Clamp`), the turn of the springs with the normal (the other way for a
+//! wall), the rolling and twisting sliders (the twisting limit's extra μ_s), and where
+//! β_s and the contact radius come from.
 
 use nalgebra::Vector3;
 use walls_geometry::{BETA_S_DEFAULT, Material};
 use walls_sim::config::{Flags, resolve};
-use walls_sim::contact::ssdem::{Dashpot, Record, damping, dashpot_contact};
+use walls_sim::contact::ssdem::{Dashpot, Record, Sliding, damping, dashpot_contact};
 use walls_sim::io::par::{Params, read_par};
 use walls_test_support::{ball, scene};
 
@@ -43,6 +44,7 @@ fn pair(u: Vec3, spin: Vec3) -> Dashpot {
         radius: 0.05,
         wall: false,
         constant_torque: None,
+        sliding: Sliding::Reset,
     }
 }
 
@@ -96,6 +98,54 @@ fn sliding_resets_the_spring_and_keeps_only_the_capped_dashpot() {
     let f_t = c.force - Vec3::z() * c.force.z;
     assert_eq!(record.spring, Vec3::zeros());
     assert!(close(f_t.y, mat.mu_s * n_force) && f_t.x == 0.0, "{f_t}");
+}
+
+/// A contact of [`pair`] slipping at `u` under `rule`, with its shear spring at
+/// `spring` before the step: the force, and the spring after.
+fn slid(u: Vec3, spring: Vec3, rule: Sliding) -> (Vec3, Vec3) {
+    let mut record = Record {
+        spring,
+        normal: Vec3::z(),
+        ..Record::default()
+    };
+    let c = Dashpot {
+        sliding: rule,
+        ..pair(u, Vec3::zeros())
+    };
+    let f = dashpot_contact(&c, &mut record, DT, &material()).force;
+    (f, record.spring)
+}
+
+#[test]
+fn the_clamp_holds_a_sliding_force_at_mu_n_along_the_force_it_had() {
+    let mat = material();
+    let c_t = damping(mat.eps_t, mat.k_t, 0.5);
+    let (u, spring) = (Vec3::new(0.3, 0.1, 0.0), Vec3::new(4e-3, -1e-3, 0.0));
+    let (force, after) = slid(u, spring, Sliding::Clamp);
+    let cap = mat.mu_s * force.z.abs();
+    let stretched = spring + u * DT;
+    let unlimited = stretched * mat.k_t + u * c_t;
+    assert!(unlimited.norm() > cap, "it slides");
+    let f_t = force - Vec3::z() * force.z;
+    assert!(close(f_t.norm(), cap), "{f_t} against μ_s·N = {cap}");
+    assert!((f_t.normalize() - unlimited.normalize()).norm() < 1e-14);
+    // The spring is rescaled (LAMMPS's rule), so that with this step's dashpot it gives
+    // that force: S ← (μ_s N/|F_t|)(S + C_t u_t/k_t) − C_t u_t/k_t.
+    let lag = u * (c_t / mat.k_t);
+    let expected = (stretched + lag) * (cap / unlimited.norm()) - lag;
+    assert!(
+        (after - expected).norm() < 1e-15,
+        "{after} against {expected}"
+    );
+    assert!((after * mat.k_t + u * c_t - f_t).norm() < 1e-14 * cap);
+}
+
+#[test]
+fn below_the_cap_the_reset_and_the_clamp_agree() {
+    let (u, spring) = (Vec3::new(1e-3, 0.0, 0.0), Vec3::new(1e-5, 2e-5, 0.0));
+    let reset = slid(u, spring, Sliding::Reset);
+    assert_eq!(reset, slid(u, spring, Sliding::Clamp));
+    assert_eq!(reset.1, spring + u * DT, "stretched, not limited");
 }
 
 #[test]

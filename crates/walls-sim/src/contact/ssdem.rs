@@ -13,7 +13,8 @@
 //! [`dashpot_contact`] is pkdgrav's own law instead (its default `DEM_ROTATION_DASHPOT`
 //! build, docs/pkdgrav-physics.md §1.3–§1.5), which `Integrator::Pkdgrav` runs for walls
 //! and pairs: the springs kept in a [`Record`] turn with the contact, the shear spring
-//! resets when the contact slides, and rolling and twisting are spring–dashpot–sliders
+//! resets when the contact slides (or, as an option, [`Sliding::Clamp`], is held at the
+//! Coulomb limit), and rolling and twisting are spring–dashpot–sliders
 //! scaled by (β_s R*)². [`dashpot_contact_with`] adds what pkdgrav's optional builds
 //! change in it ([`Optional`]): cohesion (§7) and two-layer springs ([`Layers`], §8).
 //!
@@ -271,6 +272,25 @@ pub struct Dashpot {
     /// constant torques of docs/pkdgrav-physics.md §1.6 instead of §1.4's springs
     /// (`None`: springs).
     pub constant_torque: Option<ConstantTorque>,
+    /// What the shear spring does when the contact slides: pkdgrav's reset, or the
+    /// Coulomb clamp.
+    pub sliding: Sliding,
+}
+
+/// What the shear spring of a sliding contact does, when |k_t S + C_t u_t| > μ_s N
+/// (docs/accuracy.md, "Sliding friction").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Sliding {
+    /// pkdgrav's rule (docs/pkdgrav-physics.md §1.3 step 5): the spring is reset to zero
+    /// and the force is the dashpot's, capped at μ_s N. The spring rebuilds over the next
+    /// steps, during which the force is below the cap: a slow slip decelerates less than
+    /// μ_s g.
+    #[default]
+    Reset,
+    /// The Coulomb clamp (LAMMPS's `gran/hooke/history`, LIGGGHTS): the spring is
+    /// rescaled so that the force is exactly μ_s N along the force it had,
+    /// S ← (μ_s N/|F_t|)(S + C_t u_t/k_t) − C_t u_t/k_t.
+    Clamp,
 }
 
 /// What the directional constant torques of a build without `DEM_ROTATION_DASHPOT`
@@ -377,11 +397,43 @@ fn turn(v: &Vec3, axis: &Vec3, sin: f64, cos: f64) -> Vec3 {
     v * cos + axis.cross(v) * sin + axis * (axis.dot(v) * (1.0 - cos))
 }
 
+/// The shear force k_t S + C_t u_t of a contact whose spring `spring` has been stretched
+/// this step and whose tangential velocity is `ut`, limited to `cap` (μ_s N) as `rule`
+/// says when it exceeds it: pkdgrav's reset (the spring to zero, the force the dashpot's
+/// capped at `cap`) or the Coulomb clamp (the spring rescaled so that the force is `cap`
+/// along the force it had).
+fn slide(spring: &mut Vec3, ut: &Vec3, k_t: f64, c_t: f64, cap: f64, rule: Sliding) -> Vec3 {
+    let f_t = *spring * k_t + ut * c_t;
+    if f_t.norm_squared() <= cap * cap {
+        return f_t;
+    }
+    match rule {
+        Sliding::Reset => {
+            *spring = Vec3::zeros();
+            let speed = ut.norm();
+            if speed > 0.0 {
+                ut * (cap.min(c_t * speed) / speed)
+            } else {
+                Vec3::zeros()
+            }
+        }
+        Sliding::Clamp => {
+            let scale = cap / f_t.norm();
+            if k_t > 0.0 {
+                let dashpot = ut * (c_t / k_t);
+                *spring = (*spring + dashpot) * scale - dashpot;
+            }
+            f_t * scale
+        }
+    }
+}
+
 /// pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting
 /// (docs/pkdgrav-physics.md §1.2–§1.5): the springs in `record` turned with the contact
 /// (about the mean normal by the mean spin over `dt`, then with the normal's change, the
 /// other way for a wall), stretched, and limited (the shear spring reset when the contact
-/// slides, the rolling and twisting springs held at their slider limits).
+/// slides, or clamped at the Coulomb limit as [`Dashpot::sliding`] says; the rolling and
+/// twisting springs held at their slider limits).
 pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material) -> DashpotForce {
     dashpot_contact_with(c, record, dt, mat, &Optional::default())
 }
@@ -440,19 +492,16 @@ pub fn dashpot_contact_with(
     let c_t = damping(mat.eps_t, k_t, c.mass);
     let f_n = n * -spring_force + un * c_n;
     let normal_force = f_n.norm();
-    // Step 4 and 5: the shear spring, and the slide (spring reset, capped dashpot).
+    // Step 4 and 5: the shear spring, and the slide.
     record.spring += ut * dt;
-    let mut f_t = record.spring * k_t + ut * c_t;
-    let cap = mat.mu_s * normal_force;
-    if f_t.norm_squared() > cap * cap {
-        record.spring = Vec3::zeros();
-        let speed = ut.norm();
-        f_t = if speed > 0.0 {
-            ut * (cap.min(c_t * speed) / speed)
-        } else {
-            Vec3::zeros()
-        };
-    }
+    let f_t = slide(
+        &mut record.spring,
+        &ut,
+        k_t,
+        c_t,
+        mat.mu_s * normal_force,
+        c.sliding,
+    );
     let shear = n.cross(&f_t);
     // §7: cohesion pulls along n̂, added after the limits.
     let cohesion = if extra.cohesion != 0.0 {

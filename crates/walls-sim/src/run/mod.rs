@@ -132,6 +132,10 @@ pub struct Settings {
     /// for pkdgrav's defaults (no boundary, every constant from k_n): followed when the
     /// build has `DEM_TWOLAYERS` and the integrator is [`Integrator::Pkdgrav`].
     pub two_layer: Option<crate::io::par::TwoLayer>,
+    /// [`Integrator::Pkdgrav`]: what the shear spring of a sliding contact does:
+    /// pkdgrav's reset (the default) or the Coulomb clamp (docs/accuracy.md, "Sliding
+    /// friction").
+    pub sliding: crate::contact::ssdem::Sliding,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -170,6 +174,7 @@ impl Settings {
             acc_crit: 0.0,
             cohesion: crate::contact::cohesion::Cohesion::default(),
             two_layer: None,
+            sliding: crate::contact::ssdem::Sliding::Reset,
         }
     }
 

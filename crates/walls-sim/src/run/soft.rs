@@ -28,7 +28,7 @@ use super::{
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    ConstantTorque, Dashpot, Material, Record, Rolling, Touch, contact, contact_radius,
+    ConstantTorque, Dashpot, Material, Record, Rolling, Sliding, Touch, contact, contact_radius,
     damping_per_root_mass, dashpot_contact_with, lever_contact_radius, normal_contact, resistance,
 };
 use crate::dynamics::aggregate::{self, Aggregates};
@@ -93,6 +93,8 @@ struct Walls<'a> {
     constant_torque: Option<bool>,
     /// pkdgrav's `dAccCrit` (0: off).
     acc_crit: f64,
+    /// What the shear spring of a sliding contact does.
+    sliding: Sliding,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
     optional: &'a OptionalPhysics,
     /// The time at the step's end, and the timestep.
@@ -328,6 +330,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                     twist_radius: a.unwrap_or(0.0),
                     inertias: (inertia(m, r), f64::INFINITY),
                 }),
+                sliding: walls.sliding,
             };
             let extra = walls.optional.wall(w, i, r, a, mat);
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
@@ -1026,6 +1029,7 @@ impl<'a> SoftStepper<'a> {
                             ),
                         }
                     }),
+                    sliding: self.settings.sliding,
                 };
                 let extra = self.optional.pair(i, j, p.radius, q.radius, a, mat);
                 let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
@@ -1109,6 +1113,7 @@ impl<'a> SoftStepper<'a> {
             constant_torque: (!self.settings.build.rotation_dashpot)
                 .then_some(self.settings.legacy_roll),
             acc_crit: self.settings.acc_crit,
+            sliding: self.settings.sliding,
             optional: &self.optional,
             t: self.t,
             dt: self.settings.dt,

@@ -105,6 +105,11 @@ pub struct RunArgs {
     /// with the dashpot velocity predicted to the step's end, or explicit Euler.
     #[arg(long, value_enum, default_value_t = IntegratorArg::Pkdgrav)]
     pub integrator: IntegratorArg,
+    /// SSDEM with --integrator pkdgrav: what the shear spring of a sliding contact does:
+    /// pkdgrav's reset (the default), or the Coulomb clamp of LAMMPS and LIGGGHTS (a
+    /// sliding contact's friction is exactly μ_s·N). Not a .par key: pkdgrav has none.
+    #[arg(long, value_enum, default_value_t = SlidingArg::Reset)]
+    pub sliding: SlidingArg,
     /// Run every part of the model, whatever the scene needs (for comparison; see
     /// `walls-sim plan`).
     #[arg(long)]
@@ -145,6 +150,16 @@ pub enum IntegratorArg {
     LeapfrogPredicted,
     /// Explicit Euler.
     Euler,
+}
+
+/// What the shear spring of a sliding SSDEM contact does.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum SlidingArg {
+    /// pkdgrav's rule: the spring is reset to zero, the force is the dashpot's capped at
+    /// μ_s·N (docs/pkdgrav-physics.md §1.3).
+    Reset,
+    /// The Coulomb clamp: the spring is rescaled so that the force is exactly μ_s·N.
+    Clamp,
 }
 
 /// How oscillating walls advance in a run.
@@ -240,6 +255,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
 
 /// The options of `args` that settle the run's settings.
 fn flags(args: &RunArgs) -> walls_sim::config::Flags {
+    use walls_sim::contact::ssdem::Sliding;
     use walls_sim::run::{Integrator, Planning};
     walls_sim::config::Flags {
         particles: args.particles.clone(),
@@ -271,6 +287,10 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
             IntegratorArg::Leapfrog => Integrator::Leapfrog,
             IntegratorArg::LeapfrogPredicted => Integrator::LeapfrogPredicted,
             IntegratorArg::Euler => Integrator::ExplicitEuler,
+        },
+        sliding: match args.sliding {
+            SlidingArg::Reset => Sliding::Reset,
+            SlidingArg::Clamp => Sliding::Clamp,
         },
         planning: if args.all_parts {
             Planning::Everything
