@@ -28,8 +28,9 @@ use super::{
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    ConstantTorque, Dashpot, Material, Record, Rolling, Sliding, Touch, contact, contact_radius,
-    damping_per_root_mass, dashpot_contact_with, lever_contact_radius, normal_contact, resistance,
+    ConstantTorque, Dashpot, Material, Optional, Record, Restitution, Rolling, Sliding, Touch,
+    contact, contact_radius, damping_per_root_mass, dashpot_contact_with, lever_contact_radius,
+    normal_contact, resistance,
 };
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
@@ -73,6 +74,8 @@ struct Walls<'a> {
     plan: &'a Plan,
     /// Each wall's normal damping over √m, worked out once.
     damping: &'a [f64],
+    /// Each wall's normal and tangential restitutions, worked out once.
+    restitutions: &'a [(Restitution, Restitution)],
     materials: &'a [Material],
     /// The fraction of a step the kick after the forces covers.
     closing_kick: f64,
@@ -146,7 +149,7 @@ impl ParticleStep {
 /// One particle's contacts with the walls at the step's time, added to its `load` (which
 /// holds gravity and the particle contacts already), then the closing kick.
 fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
-    let (t, dt) = (walls.t, walls.dt);
+    let dt = walls.dt;
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
@@ -159,11 +162,46 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         }
         return out;
     }
-    let (m, r) = (s.particle.mass, s.particle.radius);
+    let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * dt * dt;
     if moved > r * r {
         out.too_fast = Some(moved.sqrt() / r);
     }
+    // Most particles are far from every wall and touch none: nothing to look at.
+    let clear = walls.index.is_none()
+        && load.walls.is_empty()
+        && walls
+            .near
+            .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none());
+    if !clear && touch_walls(i, s, load, walls, &mut out) {
+        return out;
+    }
+    if s.member {
+        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
+        return out;
+    }
+    s.acc = load.force * s.inverse.0;
+    s.alpha = load.torque * s.inverse.1;
+    if walls.acc_crit > 0.0 {
+        zero_small_motions(s, walls.acc_crit, dt);
+    }
+    s.particle.vel += s.acc * (dt * walls.closing_kick);
+    s.particle.spin += s.alpha * (dt * walls.closing_kick);
+    out
+}
+
+/// Particle `i`'s contacts with the walls it may touch, added to its `load`; what they
+/// did goes into `out`. Whether the particle was held or removed by a wall (its step
+/// ends there).
+fn touch_walls(
+    i: usize,
+    s: &mut State,
+    load: &mut Load,
+    walls: &Walls,
+    out: &mut ParticleStep,
+) -> bool {
+    let (t, dt) = (walls.t, walls.dt);
+    let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     // The walls within reach (from the wall index, when the plan uses one), and those
     // the particle touched last step, whose contacts may end; in wall order either way.
@@ -273,7 +311,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 });
                 open.swap_remove(k);
                 load.visit = visit;
-                return out;
+                return true;
             }
             // A death wall removes the particle; a sticky wall holds it.
             let kind = if mat.eps_n < 0.0 {
@@ -295,7 +333,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             });
             open.swap_remove(k);
             load.visit = visit;
-            return out;
+            return true;
         }
         let plan = walls.plan;
         if walls.pkdgrav_levers
@@ -332,7 +370,10 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 }),
                 sliding: walls.sliding,
             };
-            let extra = walls.optional.wall(w, i, r, a, mat);
+            let extra = Optional {
+                restitution: Some(walls.restitutions[w]),
+                ..walls.optional.wall(w, i, r, a, mat)
+            };
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
             load.force += c.force;
             load.torque += c.torque;
@@ -399,18 +440,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     load.torque += resist;
     load.visit = visit;
-    if s.member {
-        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
-        return out;
-    }
-    s.acc = load.force * s.inverse.0;
-    s.alpha = load.torque * s.inverse.1;
-    if walls.acc_crit > 0.0 {
-        zero_small_motions(s, walls.acc_crit, dt);
-    }
-    s.particle.vel += s.acc * (dt * walls.closing_kick);
-    s.particle.spin += s.alpha * (dt * walls.closing_kick);
-    out
+    false
 }
 
 /// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, docs/pkdgrav-physics.md
@@ -507,6 +537,8 @@ struct SoftStepper<'a> {
     materials: Vec<Material>,
     /// Each wall's normal damping over √m, worked out once.
     damping: Vec<f64>,
+    /// Each wall's normal and tangential restitutions, worked out once.
+    restitutions: Vec<(Restitution, Restitution)>,
     /// The particles' material, for their contacts with each other.
     between: Material,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
@@ -634,7 +666,12 @@ impl<'a> SoftStepper<'a> {
             .iter()
             .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
             .collect();
+        let restitutions = materials
+            .iter()
+            .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
+            .collect();
         SoftStepper {
+            restitutions,
             scene,
             settings,
             plan,
@@ -780,8 +817,10 @@ impl<'a> SoftStepper<'a> {
                     s.particle.spin += s.alpha * (dt * opening);
                     let v = s.particle.vel;
                     s.particle.pos += v * dt;
-                    s.particle.vel += s.acc * (dt * late);
-                    s.particle.spin += s.alpha * (dt * late);
+                    if late != 0.0 {
+                        s.particle.vel += s.acc * (dt * late);
+                        s.particle.spin += s.alpha * (dt * late);
+                    }
                     *sphere = PairList::sphere(s);
                     PairList::moved_far(s, at, limit)
                 } else {
@@ -962,6 +1001,10 @@ impl<'a> SoftStepper<'a> {
             plan: self.plan,
             kicks: self.kicks,
             mat: &self.between,
+            restitution: (
+                Restitution::new(self.between.eps_n),
+                Restitution::new(self.between.eps_t),
+            ),
             optional: &self.optional,
         };
         let loads = &mut self.loads;
@@ -1010,6 +1053,7 @@ impl<'a> SoftStepper<'a> {
             near: self.candidates.near.as_ref().filter(|_| forces),
             plan: self.plan,
             damping: &self.damping,
+            restitutions: &self.restitutions,
             materials: &self.materials,
             closing_kick: self.kicks.closing,
             predict: self.kicks.predict,
@@ -1452,6 +1496,8 @@ struct PairContext<'a> {
     plan: &'a Plan,
     kicks: Kicks,
     mat: &'a Material,
+    /// The particles' normal and tangential restitutions.
+    restitution: (Restitution, Restitution),
     optional: &'a OptionalPhysics,
 }
 
@@ -1548,7 +1594,10 @@ impl PairContext<'_> {
                 }),
                 sliding: self.settings.sliding,
             };
-            let extra = self.optional.pair(i, j, p.radius, q.radius, a, mat);
+            let extra = Optional {
+                restitution: Some(self.restitution),
+                ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
+            };
             let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
             return PairForce {
                 force: c.force,
