@@ -118,7 +118,7 @@ fn cohesion_pulls_along_the_normal_and_does_not_raise_the_friction_limit() {
         &mat,
         &Optional {
             cohesion: pull,
-            layers: None,
+            ..Optional::default()
         },
     );
     // Towards the wall (n̂ points from the particle to the wall), by exactly `pull`.
@@ -257,6 +257,7 @@ fn the_two_layer_normal_force_is_continuous_at_the_boundary() {
         let extra = Optional {
             cohesion: 0.0,
             layers: Some(l),
+            ..Optional::default()
         };
         dashpot_contact_with(&c, &mut Record::default(), 1e-4, &mat, &extra)
             .force
@@ -273,6 +274,7 @@ fn crossing_the_boundary_rescales_the_shear_spring_and_keeps_its_energy() {
     let extra = Optional {
         cohesion: 0.0,
         layers: Some(l),
+        ..Optional::default()
     };
     let spring = Vec3::new(2e-4, -1e-4, 0.0);
     let energy = |k: f64, s: &Vec3| 0.5 * k * s.norm_squared();

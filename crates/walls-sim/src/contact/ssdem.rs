@@ -31,11 +31,40 @@ pub use walls_geometry::Material;
 
 /// The damping coefficient for restitution `eps` of a spring `k` on mass `m`.
 pub fn damping(eps: f64, k: f64, m: f64) -> f64 {
-    if eps <= 0.0 || eps >= 1.0 {
-        return 0.0;
+    Restitution::new(eps).damping(k, m)
+}
+
+/// A restitution ε with ln ε and π² + ln²ε worked out once: the damping coefficient of
+/// any spring and mass is then [`damping`]'s, bit for bit, without a logarithm per
+/// contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Restitution {
+    /// ε ≤ 0 or ε ≥ 1: no damping.
+    undamped: bool,
+    ln: f64,
+    denominator: f64,
+}
+
+impl Restitution {
+    /// The restitution `eps`.
+    pub fn new(eps: f64) -> Restitution {
+        let undamped = eps <= 0.0 || eps >= 1.0;
+        let ln = if undamped { 0.0 } else { eps.ln() };
+        Restitution {
+            undamped,
+            ln,
+            denominator: std::f64::consts::PI.powi(2) + ln * ln,
+        }
     }
-    let l = eps.ln();
-    -2.0 * l * (m * k / (std::f64::consts::PI.powi(2) + l * l)).sqrt()
+
+    /// The damping coefficient of a spring `k` on mass `m`.
+    #[inline]
+    pub fn damping(&self, k: f64, m: f64) -> f64 {
+        if self.undamped {
+            return 0.0;
+        }
+        -2.0 * self.ln * (m * k / self.denominator).sqrt()
+    }
 }
 
 /// The force and torque on a particle from one wall contact.
@@ -213,6 +242,9 @@ pub struct Optional {
     pub cohesion: f64,
     /// The two-layer spring constants, which replace the material's k_n and k_t.
     pub layers: Option<Layers>,
+    /// The material's normal and tangential restitutions, worked out beforehand (else
+    /// from the material, per contact).
+    pub restitution: Option<(Restitution, Restitution)>,
 }
 
 impl Layers {
@@ -428,6 +460,18 @@ fn slide(spring: &mut Vec3, ut: &Vec3, k_t: f64, c_t: f64, cap: f64, rule: Slidi
     }
 }
 
+/// The shear and rolling springs of `record` turned about `axis` (a zero spring stays
+/// zero: it is left alone).
+#[inline]
+fn turn_springs(record: &mut Record, axis: &Vec3, sin: f64, cos: f64) {
+    if record.spring != Vec3::zeros() {
+        record.spring = turn(&record.spring, axis, sin, cos);
+    }
+    if record.roll != Vec3::zeros() {
+        record.roll = turn(&record.roll, axis, sin, cos);
+    }
+}
+
 /// pkdgrav's contact law with its `DEM_ROTATION_DASHPOT` rolling and twisting
 /// (docs/pkdgrav-physics.md §1.2–§1.5): the springs in `record` turned with the contact
 /// (about the mean normal by the mean spin over `dt`, then with the normal's change, the
@@ -466,8 +510,7 @@ pub fn dashpot_contact_with(
             let angle = 0.5 * dt * c.turn.dot(&mean);
             if angle != 0.0 {
                 let (sin, cos) = angle.sin_cos();
-                record.spring = turn(&record.spring, &mean, sin, cos);
-                record.roll = turn(&record.roll, &mean, sin, cos);
+                turn_springs(record, &mean, sin, cos);
             }
         }
         // Step 2: with the change of normal (against it for a wall).
@@ -480,16 +523,18 @@ pub fn dashpot_contact_with(
         if sin > 0.0 {
             let axis = a / sin;
             let cos = n.dot(&record.normal);
-            record.spring = turn(&record.spring, &axis, sin, cos);
-            record.roll = turn(&record.roll, &axis, sin, cos);
+            turn_springs(record, &axis, sin, cos);
         }
     }
     record.normal = *n;
     let u = &c.velocity;
     let un = n * n.dot(u);
     let ut = u - un;
-    let c_n = damping(mat.eps_n, k_n, c.mass);
-    let c_t = damping(mat.eps_t, k_t, c.mass);
+    let (eps_n, eps_t) = extra
+        .restitution
+        .unwrap_or_else(|| (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t)));
+    let c_n = eps_n.damping(k_n, c.mass);
+    let c_t = eps_t.damping(k_t, c.mass);
     let f_n = n * -spring_force + un * c_n;
     let normal_force = f_n.norm();
     // Step 4 and 5: the shear spring, and the slide.

@@ -135,7 +135,11 @@ impl OptionalPhysics {
             let r_eff = if r1 == r2 { r1 } else { 0.5 * (r1 + r2) };
             layers_of(&t, r_eff)
         });
-        Optional { cohesion, layers }
+        Optional {
+            cohesion,
+            layers,
+            restitution: None,
+        }
     }
 
     /// What they add to the contact of particle `i` (radius `r`, the contact radius `a`
@@ -154,7 +158,11 @@ impl OptionalPhysics {
             None => 0.0,
         };
         let layers = self.layers.map(|_| layers_of(&values.layers, r));
-        Optional { cohesion, layers }
+        Optional {
+            cohesion,
+            layers,
+            restitution: None,
+        }
     }
 }
 

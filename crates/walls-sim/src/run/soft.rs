@@ -28,8 +28,9 @@ use super::{
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    ConstantTorque, Dashpot, Material, Record, Rolling, Sliding, Touch, contact, contact_radius,
-    damping_per_root_mass, dashpot_contact_with, lever_contact_radius, normal_contact, resistance,
+    ConstantTorque, Dashpot, Material, Optional, Record, Restitution, Rolling, Sliding, Touch,
+    contact, contact_radius, damping_per_root_mass, dashpot_contact_with, lever_contact_radius,
+    normal_contact, resistance,
 };
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
@@ -73,6 +74,8 @@ struct Walls<'a> {
     plan: &'a Plan,
     /// Each wall's normal damping over √m, worked out once.
     damping: &'a [f64],
+    /// Each wall's normal and tangential restitutions, worked out once.
+    restitutions: &'a [(Restitution, Restitution)],
     materials: &'a [Material],
     /// The fraction of a step the kick after the forces covers.
     closing_kick: f64,
@@ -146,7 +149,7 @@ impl ParticleStep {
 /// One particle's contacts with the walls at the step's time, added to its `load` (which
 /// holds gravity and the particle contacts already), then the closing kick.
 fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
-    let (t, dt) = (walls.t, walls.dt);
+    let dt = walls.dt;
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
@@ -159,11 +162,46 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
         }
         return out;
     }
-    let (m, r) = (s.particle.mass, s.particle.radius);
+    let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * dt * dt;
     if moved > r * r {
         out.too_fast = Some(moved.sqrt() / r);
     }
+    // Most particles are far from every wall and touch none: nothing to look at.
+    let clear = walls.index.is_none()
+        && load.walls.is_empty()
+        && walls
+            .near
+            .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none());
+    if !clear && touch_walls(i, s, load, walls, &mut out) {
+        return out;
+    }
+    if s.member {
+        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
+        return out;
+    }
+    s.acc = load.force * s.inverse.0;
+    s.alpha = load.torque * s.inverse.1;
+    if walls.acc_crit > 0.0 {
+        zero_small_motions(s, walls.acc_crit, dt);
+    }
+    s.particle.vel += s.acc * (dt * walls.closing_kick);
+    s.particle.spin += s.alpha * (dt * walls.closing_kick);
+    out
+}
+
+/// Particle `i`'s contacts with the walls it may touch, added to its `load`; what they
+/// did goes into `out`. Whether the particle was held or removed by a wall (its step
+/// ends there).
+fn touch_walls(
+    i: usize,
+    s: &mut State,
+    load: &mut Load,
+    walls: &Walls,
+    out: &mut ParticleStep,
+) -> bool {
+    let (t, dt) = (walls.t, walls.dt);
+    let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     // The walls within reach (from the wall index, when the plan uses one), and those
     // the particle touched last step, whose contacts may end; in wall order either way.
@@ -273,7 +311,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 });
                 open.swap_remove(k);
                 load.visit = visit;
-                return out;
+                return true;
             }
             // A death wall removes the particle; a sticky wall holds it.
             let kind = if mat.eps_n < 0.0 {
@@ -295,7 +333,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
             });
             open.swap_remove(k);
             load.visit = visit;
-            return out;
+            return true;
         }
         let plan = walls.plan;
         if walls.pkdgrav_levers
@@ -332,7 +370,10 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
                 }),
                 sliding: walls.sliding,
             };
-            let extra = walls.optional.wall(w, i, r, a, mat);
+            let extra = Optional {
+                restitution: Some(walls.restitutions[w]),
+                ..walls.optional.wall(w, i, r, a, mat)
+            };
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
             load.force += c.force;
             load.torque += c.torque;
@@ -399,18 +440,7 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     load.torque += resist;
     load.visit = visit;
-    if s.member {
-        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
-        return out;
-    }
-    s.acc = load.force * s.inverse.0;
-    s.alpha = load.torque * s.inverse.1;
-    if walls.acc_crit > 0.0 {
-        zero_small_motions(s, walls.acc_crit, dt);
-    }
-    s.particle.vel += s.acc * (dt * walls.closing_kick);
-    s.particle.spin += s.alpha * (dt * walls.closing_kick);
-    out
+    false
 }
 
 /// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, docs/pkdgrav-physics.md
@@ -507,6 +537,8 @@ struct SoftStepper<'a> {
     materials: Vec<Material>,
     /// Each wall's normal damping over √m, worked out once.
     damping: Vec<f64>,
+    /// Each wall's normal and tangential restitutions, worked out once.
+    restitutions: Vec<(Restitution, Restitution)>,
     /// The particles' material, for their contacts with each other.
     between: Material,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
@@ -634,7 +666,12 @@ impl<'a> SoftStepper<'a> {
             .iter()
             .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
             .collect();
+        let restitutions = materials
+            .iter()
+            .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
+            .collect();
         SoftStepper {
+            restitutions,
             scene,
             settings,
             plan,
@@ -780,8 +817,10 @@ impl<'a> SoftStepper<'a> {
                     s.particle.spin += s.alpha * (dt * opening);
                     let v = s.particle.vel;
                     s.particle.pos += v * dt;
-                    s.particle.vel += s.acc * (dt * late);
-                    s.particle.spin += s.alpha * (dt * late);
+                    if late != 0.0 {
+                        s.particle.vel += s.acc * (dt * late);
+                        s.particle.spin += s.alpha * (dt * late);
+                    }
                     *sphere = PairList::sphere(s);
                     PairList::moved_far(s, at, limit)
                 } else {
@@ -906,35 +945,33 @@ impl<'a> SoftStepper<'a> {
         self.pair_forces()
     }
 
-    /// The forces of the candidate pairs that overlap, in the list's order.
+    /// The forces of the candidate pairs that overlap: which overlap, in the list's
+    /// order (their overlaps checked, their contacts opened and the others' closed);
+    /// then, block by block, their forces (in parallel for many particles) and those
+    /// added to the loads in the list's order, so that the outcome does not depend on
+    /// the threads.
     fn pair_forces(&mut self) -> Flow {
-        let (dt, t, plan) = (self.settings.dt, self.t, self.plan);
-        let Kicks {
-            predict_all,
-            pkdgrav_levers,
-            ..
-        } = self.kicks;
-        let mat = &self.between;
+        let t = self.t;
         let states = &self.states;
-        let loads = &mut self.loads;
         let aggregates = self.aggregates.as_ref();
         let PairList {
             pairs,
             slots,
             contacts,
             spheres,
+            touching,
+            forces,
             ..
         } = &mut self.candidates;
-        for (&(i, j), slot) in pairs.iter().zip(slots.iter_mut()) {
+        touching.clear();
+        for (k, (&(i, j), slot)) in pairs.iter().zip(slots.iter_mut()).enumerate() {
             let (i, j) = (i as usize, j as usize);
             // The spheres alone first: 32 bytes a particle, not its whole state.
-            let (a, b) = (&spheres[i], &spheres[j]);
-            let d = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-            let reach = a[3] + b[3];
-            let d2 = d.norm_squared();
+            let (d, _, overlap) = separation(&spheres[i], &spheres[j]);
             // Most candidates do not touch: the square of the distance tells, with a
             // margin for round-off; the contact, if open, ends.
-            let apart = d2 > reach * reach * (1.0 + 1e-9)
+            let reach = spheres[i][3] + spheres[j][3];
+            let apart = d.norm_squared() > reach * reach * (1.0 + 1e-9)
                 // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
                 || aggregates.is_some_and(|a| a.same(i, j))
                 // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
@@ -942,14 +979,11 @@ impl<'a> SoftStepper<'a> {
                 || !states[i].alive
                 || !states[j].alive
                 || !(states[i].free() || states[j].free());
-            let distance = d2.sqrt();
-            let overlap = reach - distance;
             if apart || overlap <= 0.0 {
                 contacts.close(slot);
                 continue;
             }
             let (p, q) = (&states[i].particle, &states[j].particle);
-            let (free_i, free_j) = (states[i].free(), states[j].free());
             if self.overlaps.check(
                 overlap / p.radius.min(q.radius),
                 Overlapping::Particles(i, j),
@@ -958,133 +992,48 @@ impl<'a> SoftStepper<'a> {
             ) {
                 return Flow::Stop;
             }
-            let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
-            // The velocities and spins the contact sees: as they are, or (pkdgrav's)
-            // predicted to the step's end, for a free particle; a stuck one's as they are.
-            let seen = |s: &State, free: bool| {
-                if predict_all != 0.0 && free {
-                    (
-                        s.particle.vel + s.acc * (dt * predict_all),
-                        s.particle.spin + s.alpha * (dt * predict_all),
-                    )
-                } else {
-                    (s.particle.vel, s.particle.spin)
-                }
+            contacts.open(slot, &mut self.pair_contacts);
+            touching.push(k as u32);
+        }
+        let context = PairContext {
+            states,
+            settings: self.settings,
+            plan: self.plan,
+            kicks: self.kicks,
+            mat: &self.between,
+            restitution: (
+                Restitution::new(self.between.eps_n),
+                Restitution::new(self.between.eps_t),
+            ),
+            optional: &self.optional,
+        };
+        let loads = &mut self.loads;
+        for block in touching.chunks(PAIR_BLOCK) {
+            let each = |&k: &u32| {
+                let k = k as usize;
+                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+                let mut record = contacts.records[slots[k] as usize];
+                let force = context.force(i, j, &spheres[i], &spheres[j], &mut record);
+                (record, force)
             };
-            let ((vi, wi), (vj, wj)) = (seen(&states[i], free_i), seen(&states[j], free_j));
-            // The levers: the radii, or pkdgrav's distances from each centre to the
-            // plane where the spheres intersect (docs/pkdgrav-physics.md §1.1).
-            let (li, lj) = if pkdgrav_levers {
-                pair_levers(p.radius, q.radius, distance)
+            if self.parallel {
+                block.par_iter().map(each).collect_into_vec(forces);
             } else {
-                (p.radius, q.radius)
-            };
-            let u = vi + wi.cross(&(-n * li)) - vj - wj.cross(&(n * lj));
-            let reduced = match (free_i, free_j) {
-                (true, true) => p.mass * q.mass / (p.mass + q.mass),
-                (true, false) => p.mass,
-                _ => q.mass,
-            };
-            let record = contacts.open(slot, &mut self.pair_contacts);
-            if pkdgrav_levers
-                && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
-            {
-                // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
-                // towards j, velocities and spins are j's relative to i's
-                // (docs/pkdgrav-physics.md §1.1–§1.5).
-                let a = (self.settings.contact_radius).then(|| lever_contact_radius(p.radius, li));
-                let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
-                let legacy = self.settings.legacy_roll;
-                let dashpot = Dashpot {
-                    overlap,
-                    normal: -n,
-                    velocity: -u,
-                    spin: wj - wi,
-                    turn: p.spin + q.spin,
-                    levers: (li, lj),
-                    mass: reduced,
-                    radius: match a {
-                        // The contact radius is never worked out then
-                        // (docs/pkdgrav-physics.md §1.6).
-                        Some(_) if legacy => 0.0,
-                        Some(a) => a,
-                        None => reduced_radius,
-                    },
-                    wall: false,
-                    constant_torque: (!self.settings.build.rotation_dashpot).then(|| {
-                        let inertia_of = |free: bool, m: f64, r: f64| {
-                            if free { inertia(m, r) } else { f64::INFINITY }
-                        };
-                        ConstantTorque {
-                            spins: (wi, wj),
-                            roll_levers: match (a, legacy) {
-                                (Some(a), _) => (a, a),
-                                (None, true) => (li, lj),
-                                (None, false) => (reduced_radius, reduced_radius),
-                            },
-                            twist_radius: a.unwrap_or(0.0),
-                            inertias: (
-                                inertia_of(free_i, p.mass, p.radius),
-                                inertia_of(free_j, q.mass, q.radius),
-                            ),
-                        }
-                    }),
-                    sliding: self.settings.sliding,
-                };
-                let extra = self.optional.pair(i, j, p.radius, q.radius, a, mat);
-                let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
-                if free_i {
-                    loads[i].force += c.force;
-                    loads[i].torque += c.torque;
+                forces.clear();
+                forces.extend(block.iter().map(each));
+            }
+            for (&k, (record, f)) in block.iter().zip(forces.iter()) {
+                let k = k as usize;
+                contacts.records[slots[k] as usize] = *record;
+                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+                if f.free.0 {
+                    loads[i].force += f.force;
+                    loads[i].torque += f.torques.0;
                 }
-                if free_j {
-                    loads[j].force -= c.force;
-                    loads[j].torque += c.partner_torque;
+                if f.free.1 {
+                    loads[j].force -= f.force;
+                    loads[j].torque += f.torques.1;
                 }
-                continue;
-            }
-            let touch = Touch {
-                overlap,
-                normal: n,
-                velocity: u,
-            };
-            let c = if plan.sliding_friction {
-                contact(reduced, li, &touch, &mut record.spring, dt, mat)
-            } else {
-                let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
-                normal_contact(&touch, mat.k_n, c_n)
-            };
-            // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂
-            // from j.
-            let mut torque = (c.torque, c.torque * (lj / li));
-            if plan.rolling || plan.twisting {
-                let lever = p.radius * q.radius / (p.radius + q.radius);
-                // Equal and opposite torques change the relative spin through the
-                // reduced inertia (or the free one's, against a stuck particle).
-                let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
-                let rolling = Rolling {
-                    spin: wi - wj,
-                    normal: n,
-                    normal_force: n.dot(&c.force).abs(),
-                    lever,
-                    contact_radius: lens_radius(p.radius, q.radius, distance),
-                    inertia: match (free_i, free_j) {
-                        (true, true) => ii * ij / (ii + ij),
-                        (true, false) => ii,
-                        _ => ij,
-                    },
-                };
-                let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
-                torque.0 += m;
-                torque.1 -= m;
-            }
-            if free_i {
-                loads[i].force += c.force;
-                loads[i].torque += torque.0;
-            }
-            if free_j {
-                loads[j].force -= c.force;
-                loads[j].torque += torque.1;
             }
         }
         Flow::Continue
@@ -1104,6 +1053,7 @@ impl<'a> SoftStepper<'a> {
             near: self.candidates.near.as_ref().filter(|_| forces),
             plan: self.plan,
             damping: &self.damping,
+            restitutions: &self.restitutions,
             materials: &self.materials,
             closing_kick: self.kicks.closing,
             predict: self.kicks.predict,
@@ -1391,6 +1341,10 @@ struct PairList {
     slots: Vec<u32>,
     /// The open contacts' records.
     contacts: PairContacts,
+    /// The pairs that touch this step (kept to save allocating).
+    touching: Vec<u32>,
+    /// A block of their new records and forces (kept to save allocating).
+    forces: Vec<(Record, PairForce)>,
     built_at: Vec<Vec3>,
     skin: f64,
     /// Whether a particle drifted this step has moved more than half the skin (worked
@@ -1413,6 +1367,8 @@ impl PairList {
             slots: Vec::new(),
             spheres: Vec::new(),
             contacts: PairContacts::default(),
+            touching: Vec::new(),
+            forces: Vec::new(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
             drifted: false,
@@ -1507,6 +1463,187 @@ impl PairList {
         self.drifted = false;
         if stale {
             self.build(states, walls);
+        }
+    }
+}
+
+/// How many touching pairs get their forces at once: the forces of a block are kept
+/// until they are added to the loads, in order.
+const PAIR_BLOCK: usize = 4096;
+
+/// The force of one particle contact and its torques on particles i and j, and
+/// whether each is free (a stuck one takes nothing).
+#[derive(Clone, Copy)]
+struct PairForce {
+    force: Vec3,
+    torques: (Vec3, Vec3),
+    free: (bool, bool),
+}
+
+/// The vector from sphere b's centre to sphere a's, its length, and how far the two
+/// overlap (x, y, z, r each).
+#[inline]
+fn separation(a: &[f64; 4], b: &[f64; 4]) -> (Vec3, f64, f64) {
+    let d = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    let distance = d.norm_squared().sqrt();
+    (d, distance, a[3] + b[3] - distance)
+}
+
+/// What the force of a particle contact depends on besides the two particles.
+struct PairContext<'a> {
+    states: &'a [State],
+    settings: &'a Settings,
+    plan: &'a Plan,
+    kicks: Kicks,
+    mat: &'a Material,
+    /// The particles' normal and tangential restitutions.
+    restitution: (Restitution, Restitution),
+    optional: &'a OptionalPhysics,
+}
+
+impl PairContext<'_> {
+    /// The force of the contact between particles i and j (spheres `a` and `b`, which
+    /// overlap), with its springs in `record`.
+    fn force(
+        &self,
+        i: usize,
+        j: usize,
+        a: &[f64; 4],
+        b: &[f64; 4],
+        record: &mut Record,
+    ) -> PairForce {
+        let (d, distance, overlap) = separation(a, b);
+        let states = self.states;
+        let (p, q) = (&states[i].particle, &states[j].particle);
+        let (free_i, free_j) = (states[i].free(), states[j].free());
+        let (dt, plan, mat) = (self.settings.dt, self.plan, self.mat);
+        let Kicks {
+            predict_all,
+            pkdgrav_levers,
+            ..
+        } = self.kicks;
+        let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
+        // The velocities and spins the contact sees: as they are, or (pkdgrav's)
+        // predicted to the step's end, for a free particle; a stuck one's as they are.
+        let seen = |s: &State, free: bool| {
+            if predict_all != 0.0 && free {
+                (
+                    s.particle.vel + s.acc * (dt * predict_all),
+                    s.particle.spin + s.alpha * (dt * predict_all),
+                )
+            } else {
+                (s.particle.vel, s.particle.spin)
+            }
+        };
+        let ((vi, wi), (vj, wj)) = (seen(&self.states[i], free_i), seen(&self.states[j], free_j));
+        // The levers: the radii, or pkdgrav's distances from each centre to the
+        // plane where the spheres intersect (docs/pkdgrav-physics.md §1.1).
+        let (li, lj) = if pkdgrav_levers {
+            pair_levers(p.radius, q.radius, distance)
+        } else {
+            (p.radius, q.radius)
+        };
+        let u = vi + wi.cross(&(-n * li)) - vj - wj.cross(&(n * lj));
+        let reduced = match (free_i, free_j) {
+            (true, true) => p.mass * q.mass / (p.mass + q.mass),
+            (true, false) => p.mass,
+            _ => q.mass,
+        };
+        if pkdgrav_levers
+            && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
+        {
+            // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
+            // towards j, velocities and spins are j's relative to i's
+            // (docs/pkdgrav-physics.md §1.1–§1.5).
+            let a = (self.settings.contact_radius).then(|| lever_contact_radius(p.radius, li));
+            let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
+            let legacy = self.settings.legacy_roll;
+            let dashpot = Dashpot {
+                overlap,
+                normal: -n,
+                velocity: -u,
+                spin: wj - wi,
+                turn: p.spin + q.spin,
+                levers: (li, lj),
+                mass: reduced,
+                radius: match a {
+                    // The contact radius is never worked out then
+                    // (docs/pkdgrav-physics.md §1.6).
+                    Some(_) if legacy => 0.0,
+                    Some(a) => a,
+                    None => reduced_radius,
+                },
+                wall: false,
+                constant_torque: (!self.settings.build.rotation_dashpot).then(|| {
+                    let inertia_of = |free: bool, m: f64, r: f64| {
+                        if free { inertia(m, r) } else { f64::INFINITY }
+                    };
+                    ConstantTorque {
+                        spins: (wi, wj),
+                        roll_levers: match (a, legacy) {
+                            (Some(a), _) => (a, a),
+                            (None, true) => (li, lj),
+                            (None, false) => (reduced_radius, reduced_radius),
+                        },
+                        twist_radius: a.unwrap_or(0.0),
+                        inertias: (
+                            inertia_of(free_i, p.mass, p.radius),
+                            inertia_of(free_j, q.mass, q.radius),
+                        ),
+                    }
+                }),
+                sliding: self.settings.sliding,
+            };
+            let extra = Optional {
+                restitution: Some(self.restitution),
+                ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
+            };
+            let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
+            return PairForce {
+                force: c.force,
+                torques: (c.torque, c.partner_torque),
+                free: (free_i, free_j),
+            };
+        }
+        let touch = Touch {
+            overlap,
+            normal: n,
+            velocity: u,
+        };
+        let c = if plan.sliding_friction {
+            contact(reduced, li, &touch, &mut record.spring, dt, mat)
+        } else {
+            let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
+            normal_contact(&touch, mat.k_n, c_n)
+        };
+        // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂
+        // from j.
+        let mut torque = (c.torque, c.torque * (lj / li));
+        if plan.rolling || plan.twisting {
+            let lever = p.radius * q.radius / (p.radius + q.radius);
+            // Equal and opposite torques change the relative spin through the
+            // reduced inertia (or the free one's, against a stuck particle).
+            let (ii, ij) = (inertia(p.mass, p.radius), inertia(q.mass, q.radius));
+            let rolling = Rolling {
+                spin: wi - wj,
+                normal: n,
+                normal_force: n.dot(&c.force).abs(),
+                lever,
+                contact_radius: lens_radius(p.radius, q.radius, distance),
+                inertia: match (free_i, free_j) {
+                    (true, true) => ii * ij / (ii + ij),
+                    (true, false) => ii,
+                    _ => ij,
+                },
+            };
+            let m = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+            torque.0 += m;
+            torque.1 -= m;
+        }
+        PairForce {
+            force: c.force,
+            torques: torque,
+            free: (free_i, free_j),
         }
     }
 }
