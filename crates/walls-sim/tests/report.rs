@@ -1,7 +1,8 @@
 //! The run's JSON (`walls-sim run --json`), written as it is serialised: the same bytes
 //! as the document built whole as a `serde_json::Value`, whose map sorts the keys, for a
 //! run of many particles with every kind of event, particles stuck and removed, warnings
-//! and the output files.
+//! and the output files, and for numbers JSON cannot hold (null) and −0; and a writer
+//! that fails ends it with its error.
 
 use nalgebra::Vector3;
 use walls_geometry::Particle;
@@ -58,17 +59,31 @@ fn a_streamed_report_is_the_document_built_whole() {
     assert!(outcome.particles.iter().any(|s| s.stuck_to.is_some()));
     assert!(outcome.particles.iter().any(|s| !s.alive));
 
-    let outputs = ["out/particles.csv".to_string(), "out/walls.csv".to_string()];
-    for report in [
-        Report::new(used.clone(), &settings, &outcome),
-        Report::new(used, &settings, &outcome).with_outputs(&outputs),
-    ] {
+    let same_as_whole = |report: Report| {
         let mut streamed = Vec::new();
         report.write_json(&mut streamed).unwrap();
         let value = serde_json::to_value(&report).unwrap();
         let whole = serde_json::to_string_pretty(&value).unwrap() + "\n";
         assert_eq!(String::from_utf8(streamed).unwrap(), whole);
-    }
+    };
+    let outputs = ["out/particles.csv".to_string(), "out/walls.csv".to_string()];
+    same_as_whole(Report::new(used.clone(), &settings, &outcome));
+    same_as_whole(Report::new(used.clone(), &settings, &outcome).with_outputs(&outputs));
+    // Numbers JSON has no word for are null, as they were; −0 keeps its sign.
+    let mut odd = outcome.clone();
+    odd.energy = (f64::NAN, f64::INFINITY);
+    odd.t = -0.0;
+    let mut text = Vec::new();
+    Report::new(used.clone(), &settings, &odd)
+        .write_json(&mut text)
+        .unwrap();
+    let text = String::from_utf8(text).unwrap();
+    assert!(
+        text.contains("\"final\": null,\n    \"initial\": null\n"),
+        "{text}"
+    );
+    assert!(text.contains("\n  \"t\": -0.0,\n"), "{text}");
+    same_as_whole(Report::new(used, &settings, &odd));
 }
 
 #[test]
