@@ -147,7 +147,10 @@ impl Trajectory {
         scene: &[Wall],
         assemblies: &[crate::dynamics::reactive::Assembly],
     ) -> io::Result<()> {
-        let rows = (states.iter().enumerate()).map(|(i, s)| ParticleRow::new(step, t, i, s));
+        let rows = states
+            .iter()
+            .enumerate()
+            .map(|(i, s)| ParticleRow::new(step, t, i, s));
         self.write_step(step, t, rows, scene, assemblies)
     }
 
@@ -161,8 +164,10 @@ impl Trajectory {
         particles: &[Particle],
         scene: &[Wall],
     ) -> io::Result<()> {
-        let rows =
-            (particles.iter().enumerate()).map(|(i, p)| ParticleRow::of(step, t, i, true, p));
+        let rows = particles
+            .iter()
+            .enumerate()
+            .map(|(i, p)| ParticleRow::of(step, t, i, true, p));
         self.write_step(step, t, rows, scene, &[])
     }
 

@@ -489,7 +489,9 @@ pub fn run_watched(
         })
         .collect();
     // Negative colours naming no wall, warned about after the run.
-    let nowhere: Vec<usize> = (states.iter().enumerate())
+    let nowhere: Vec<usize> = states
+        .iter()
+        .enumerate()
         .filter(|(_, s)| s.particle.color < 0 && s.stuck_to.is_none())
         .map(|(i, _)| i)
         .collect();

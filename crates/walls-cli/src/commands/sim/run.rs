@@ -332,7 +332,9 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // A failed write stops the run after its step: nothing more would be written.
     let write_failed = std::cell::Cell::new(written.is_err());
     // The parts of the model the report names, from the particles the run is given.
-    let model = (args.json).then(|| walls_sim::report::model(scene, &particles, &settings));
+    let model = args
+        .json
+        .then(|| walls_sim::report::model(scene, &particles, &settings));
     let outcome = run_watched(
         scene,
         particles,
@@ -389,7 +391,10 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         ));
     }
     if let Some(model) = model {
-        let outputs = (args.out.as_ref()).map(|dir| output_files(dir, args.ss_output, reactive));
+        let outputs = args
+            .out
+            .as_ref()
+            .map(|dir| output_files(dir, args.ss_output, reactive));
         let report = walls_sim::report::Report::new(model, &settings, &outcome);
         let report = match &outputs {
             Some(files) => report.with_outputs(files),
