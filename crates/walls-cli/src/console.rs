@@ -18,17 +18,33 @@ use std::io::{ErrorKind, IsTerminal, Write};
 pub fn out(args: Arguments<'_>) {
     let mut stdout = std::io::stdout().lock();
     if let Err(e) = stdout.write_fmt(args).and_then(|()| stdout.flush()) {
-        if e.kind() == ErrorKind::BrokenPipe {
-            std::process::exit(0);
-        }
-        // Any other failure of standard output (a full disk behind a redirect) is for the
-        // user to see; standard error may still be open.
-        let _ = writeln!(
-            std::io::stderr(),
-            "error: cannot write to standard output: {e}"
-        );
-        std::process::exit(2);
+        out_failed(&e);
     }
+}
+
+/// Lets `write` write to standard output through a buffer, as it produces its text (a
+/// large report is never held whole), then flushes it; a failed write ends the process
+/// as in [`out`].
+pub fn out_streamed(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+    let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    if let Err(e) = write(&mut stdout).and_then(|()| stdout.flush()) {
+        out_failed(&e);
+    }
+}
+
+/// Ends the process after a failed write to standard output: quietly with status 0 when
+/// its reader has gone, else with status 2 and the error on standard error.
+fn out_failed(e: &std::io::Error) -> ! {
+    if e.kind() == ErrorKind::BrokenPipe {
+        std::process::exit(0);
+    }
+    // Any other failure of standard output (a full disk behind a redirect) is for the
+    // user to see; standard error may still be open.
+    let _ = writeln!(
+        std::io::stderr(),
+        "error: cannot write to standard output: {e}"
+    );
+    std::process::exit(2);
 }
 
 /// Writes to standard error, dropping the text if it cannot be written.

@@ -276,6 +276,13 @@ fn long_run(dir: &Path) -> Command {
     cmd
 }
 
+/// What is left to read of a child's piped stream.
+fn rest_of(stream: Option<impl Read>) -> String {
+    let mut text = String::new();
+    stream.unwrap().read_to_string(&mut text).unwrap();
+    text
+}
+
 /// Every line of `path` has `columns` fields; the number of rows.
 fn whole_rows(path: &Path, columns: usize) -> usize {
     let text = std::fs::read_to_string(path).unwrap();
@@ -312,20 +319,8 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
         .status()
         .unwrap();
     assert!(killed.success());
-    let mut stdout = String::new();
-    let mut stderr = String::new();
-    child
-        .stdout
-        .take()
-        .unwrap()
-        .read_to_string(&mut stdout)
-        .unwrap();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut stderr)
-        .unwrap();
+    let stdout = rest_of(child.stdout.take());
+    let stderr = rest_of(child.stderr.take());
     let status = child.wait().unwrap();
     assert_eq!(status.code(), Some(1), "{stderr}");
     assert!(stdout.contains("\"stopped\": \"interrupted\""), "{stdout}");
@@ -365,13 +360,7 @@ fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
         assert!(start.elapsed() < LIMIT, "the run went on");
         std::thread::sleep(Duration::from_millis(10));
     }
-    let mut stderr = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut stderr)
-        .unwrap();
+    let stderr = rest_of(child.stderr.take());
     assert_eq!(child.wait().unwrap().code(), Some(2), "{stderr}");
     assert!(
         stderr.contains("cannot write the outputs to out: No space left on device")
@@ -434,4 +423,53 @@ fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
     // The overlap stop is exit 1; stdout gone ends quietly (0); never 101.
     assert!(matches!(status.code(), Some(0 | 1)), "{status:?}");
     assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
+}
+
+/// `walls-sim run --json` over 2,000 particles falling onto a floor, with standard output
+/// as `stdout` says: its exit status and standard error.
+fn json_run(stdout: Stdio, reader: impl FnOnce(&mut std::process::Child)) -> (i32, String) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("w.walls"), "wall type plane\n").unwrap();
+    let rows: String = (0..2000)
+        .map(|k| format!("1,0.1,{},{},0.3,0,0,-2\n", k % 50, k / 50))
+        .collect();
+    std::fs::write(
+        dir.path().join("p.csv"),
+        format!("mass,radius,x,y,z,vx,vy,vz\n{rows}"),
+    )
+    .unwrap();
+    let mut child = Command::new(bin("walls-sim"))
+        .current_dir(dir.path())
+        .args(["run", "w.walls", "--particles", "p.csv", "--t-end", "0.01"])
+        .args(["--json"])
+        .stdout(stdout)
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    reader(&mut child);
+    let stderr = rest_of(child.stderr.take());
+    (child.wait().unwrap().code().unwrap(), stderr)
+}
+
+#[test]
+fn a_json_report_that_cannot_be_written_is_an_error_or_a_quiet_end_never_a_panic() {
+    // A full disk behind the redirect: the error, exit 2.
+    let full = std::fs::File::create("/dev/full").unwrap();
+    let (status, stderr) = json_run(full.into(), |_| {});
+    assert_eq!(
+        (status, stderr.as_str()),
+        (
+            2,
+            "error: cannot write to standard output: No space left on device (os error 28)\n"
+        )
+    );
+    // A reader that takes the first line and goes (`| head -1`): the report is cut off
+    // by a broken pipe, which ends the run quietly, as for every command.
+    let (status, stderr) = json_run(Stdio::piped(), |child| {
+        let mut first = [0u8; 2];
+        let mut out = child.stdout.take().unwrap();
+        out.read_exact(&mut first).unwrap();
+        assert_eq!(&first, b"{\n");
+    });
+    assert_eq!((status, stderr.as_str()), (0, ""));
 }

@@ -1,10 +1,9 @@
 //! What a run reports: the parts of the model it used, its outcome as JSON
-//! (`walls-sim run --json`, in pkdgrav units) and its one-line summary for people (its
-//! times in the units a [`Readout`] shows).
+//! (`walls-sim run --json`, in pkdgrav units; a [`Report`] serialised as it is written)
+//! and its one-line summary for people (its times in the units a [`Readout`] shows).
 
-use crate::run::{ContactModel, EventKind, Outcome, Planning, Settings};
-use nalgebra::Vector3;
-use serde_json::{Value, json};
+use crate::run::{ContactModel, Event, EventKind, Outcome, Planning, Settings, State, Warning};
+use serde::{Serialize, Serializer};
 use walls_geometry::Particle;
 use walls_geometry::Wall;
 use walls_geometry::units::Readout;
@@ -28,37 +27,143 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
     model
 }
 
-/// The outcome as JSON: the time and steps, each particle's state, the wall events, the
-/// particle contacts, the energy, the parts of the model used, the pkdgrav build, the
-/// warnings, and why the run stopped early (`stopped`: null when it ran to its end).
-pub fn json(scene: &[Wall], particles: &[Particle], settings: &Settings, out: &Outcome) -> Value {
-    let kind = |k: EventKind| match k {
-        EventKind::Bounce => "bounce",
-        EventKind::Stick => "stick",
-        EventKind::Remove => "remove",
-    };
-    let v3 = |v: &Vector3<f64>| json!([v.x, v.y, v.z]);
-    json!({
-        "t": out.t,
-        "steps": out.steps,
-        "particles": out.particles.iter().map(|s| json!({
-            "pos": v3(&s.particle.pos),
-            "vel": v3(&s.particle.vel),
-            "spin": v3(&s.particle.spin),
-            "alive": s.alive,
-            "stuck_to": s.stuck_to.map(|(w, _)| w),
-        })).collect::<Vec<_>>(),
-        "events": out.events.iter().map(|e| json!({
-            "t": e.t, "particle": e.particle, "wall": e.wall, "kind": kind(e.kind),
-            "vn_in": e.vn_in, "vn_out": e.vn_out,
-        })).collect::<Vec<_>>(),
-        "pair_contacts": out.pair_contacts,
-        "energy": {"initial": out.energy.0, "final": out.energy.1},
-        "model": model(scene, particles, settings),
-        "build": settings.build.names(),
-        "warnings": out.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
-        "stopped": out.stopped.map(crate::run::Stop::code),
-    })
+/// The outcome as `walls-sim run --json` writes it: the time and steps, each particle's
+/// state, the wall events, the particle contacts, the energy, the parts of the model used,
+/// the pkdgrav build, the warnings, why the run stopped early (`stopped`: null when it ran
+/// to its end), and, when the run wrote some, its output files (`outputs`).
+///
+/// It borrows the outcome and serialises it as it goes (`serde_json::to_writer_pretty`
+/// into a buffered writer): a run of 10⁵ particles never holds its JSON whole. The keys
+/// are in alphabetical order (the fields' order here), as serde_json's map wrote them.
+#[derive(Serialize)]
+pub struct Report<'a> {
+    build: String,
+    energy: Energy,
+    events: Each<'a, Event, EventView>,
+    model: Vec<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    outputs: Option<&'a [String]>,
+    pair_contacts: u64,
+    particles: Each<'a, State, StateView>,
+    steps: u64,
+    stopped: Option<&'static str>,
+    t: f64,
+    warnings: Each<'a, Warning, Shown<'a, Warning>>,
+}
+
+impl<'a> Report<'a> {
+    /// The report of `out`, a run with `settings` that used the parts `model` (its
+    /// [`model`], found before the run: the particles are the run's then).
+    pub fn new(model: Vec<&'static str>, settings: &Settings, out: &'a Outcome) -> Report<'a> {
+        Report {
+            build: settings.build.names(),
+            energy: Energy {
+                final_: out.energy.1,
+                initial: out.energy.0,
+            },
+            events: Each(&out.events, EventView::new),
+            model,
+            outputs: None,
+            pair_contacts: out.pair_contacts,
+            particles: Each(&out.particles, StateView::new),
+            steps: out.steps,
+            stopped: out.stopped.map(crate::run::Stop::code),
+            t: out.t,
+            warnings: Each(&out.warnings, Shown),
+        }
+    }
+
+    /// The report with the files the run wrote (`outputs`).
+    pub fn with_outputs(self, outputs: &'a [String]) -> Report<'a> {
+        Report {
+            outputs: Some(outputs),
+            ..self
+        }
+    }
+
+    /// Writes the report to `w` as indented JSON and a newline, as it is serialised;
+    /// the first error of `w` ends it.
+    pub fn write_json(&self, mut w: impl std::io::Write) -> std::io::Result<()> {
+        serde_json::to_writer_pretty(&mut w, self)?;
+        w.write_all(b"\n")
+    }
+}
+
+/// The energy at the start and the end.
+#[derive(Serialize)]
+struct Energy {
+    #[serde(rename = "final")]
+    final_: f64,
+    initial: f64,
+}
+
+/// One wall event.
+#[derive(Serialize)]
+struct EventView {
+    kind: &'static str,
+    particle: usize,
+    t: f64,
+    vn_in: f64,
+    vn_out: f64,
+    wall: usize,
+}
+
+impl EventView {
+    fn new(e: &Event) -> EventView {
+        EventView {
+            kind: match e.kind {
+                EventKind::Bounce => "bounce",
+                EventKind::Stick => "stick",
+                EventKind::Remove => "remove",
+            },
+            particle: e.particle,
+            t: e.t,
+            vn_in: e.vn_in,
+            vn_out: e.vn_out,
+            wall: e.wall,
+        }
+    }
+}
+
+/// One particle at the end: vectors as three numbers, the sticky wall holding it.
+#[derive(Serialize)]
+struct StateView {
+    alive: bool,
+    pos: [f64; 3],
+    spin: [f64; 3],
+    stuck_to: Option<usize>,
+    vel: [f64; 3],
+}
+
+impl StateView {
+    fn new(s: &State) -> StateView {
+        let p = &s.particle;
+        StateView {
+            alive: s.alive,
+            pos: p.pos.into(),
+            spin: p.spin.into(),
+            stuck_to: s.stuck_to.map(|(w, _)| w),
+            vel: p.vel.into(),
+        }
+    }
+}
+
+/// A list written item by item, each as `view` shows it: never built whole.
+struct Each<'a, T, V>(&'a [T], fn(&'a T) -> V);
+
+impl<'a, T, V: Serialize> Serialize for Each<'a, T, V> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.0.iter().map(self.1))
+    }
+}
+
+/// A value as the string it displays, written as it is formatted.
+struct Shown<'a, T>(&'a T);
+
+impl<T: std::fmt::Display> Serialize for Shown<'_, T> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self.0)
+    }
 }
 
 /// One line for people: the time reached and the timestep (as `readout` shows times),

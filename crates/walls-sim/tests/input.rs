@@ -216,7 +216,23 @@ fn ss_files_written_read_back_exactly_with_pkdgrav_s_names() {
     let ps = vec![a, b];
     let bytes = write_ss(1.4743270000000004e-10, &ps);
     assert_eq!(bytes.len(), 16 + 2 * 96);
-    assert_eq!(read_ss(&bytes).unwrap(), (1.4743270000000004e-10, ps));
+    assert_eq!(
+        read_ss(&bytes).unwrap(),
+        (1.4743270000000004e-10, ps.clone())
+    );
+    // A run's output: the living particles, stuck ones with the colour that says so,
+    // written record by record as the file made whole.
+    use walls_sim::run::State;
+    let mut states: Vec<State> = ps.iter().map(State::new).collect();
+    let mut gone = states[1].clone();
+    gone.alive = false;
+    states.push(gone);
+    states[1].stuck_to = Some((4, nalgebra::Vector3::zeros()));
+    let mut streamed = Vec::new();
+    walls_sim::io::particles::write_ss_output(&mut streamed, 0.5, &states).unwrap();
+    let written: Vec<_> = states[..2].iter().map(State::as_written).collect();
+    assert_eq!(written[1].color, -5);
+    assert_eq!(streamed, write_ss(0.5, &written));
     assert_eq!(ss_file_name("ss", 5, 120), "ss.00120");
     assert_eq!(ss_file_name("run", 6, 1234567), "run.1234567");
 }

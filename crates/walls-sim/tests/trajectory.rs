@@ -9,6 +9,24 @@ use walls_sim::run::State;
 use walls_test_support::{ball as particle, scene};
 
 #[test]
+fn the_start_written_from_the_particles_is_their_first_states() {
+    let floor = scene("wall type plane origin 0 0 0\nwall type disk origin 0 0 1 radius 2\n");
+    let particles = [particle([0.0, 0.0, 0.3], [0.25, -1e-300, 7.0])];
+    let write = |record: &dyn Fn(&mut Trajectory)| {
+        let dir = tempfile::tempdir().unwrap();
+        let mut out = Trajectory::create(dir.path()).unwrap();
+        record(&mut out);
+        out.finish().unwrap();
+        ["particles.csv", "walls.csv"].map(|f| std::fs::read_to_string(dir.path().join(f)).unwrap())
+    };
+    let states: Vec<State> = particles.iter().map(State::new).collect();
+    assert_eq!(
+        write(&|out| out.record_start(5, 0.5, &particles, &floor).unwrap()),
+        write(&|out| out.record(5, 0.5, &states, &floor, &[]).unwrap()),
+    );
+}
+
+#[test]
 fn written_rows_read_back_the_same() {
     let dir = tempfile::tempdir().unwrap();
     let floor = scene("wall type plane origin 0 0 0\nwall type disk origin 0 0 1 radius 2\n");

@@ -7,13 +7,15 @@
 //!   mass, radius, pos[3], vel[3], spin[3]; int32 color, original index) or 28 bytes
 //!   (float mass, radius, pos[3]; int32 color, index).
 //!
-//! [`write_ss`] writes the `.ss` files of a run's outputs, named as pkdgrav names them
-//! ([`ss_file_name`]).
+//! [`write_ss_output`] writes the `.ss` files of a run's outputs, named as pkdgrav names
+//! them ([`ss_file_name`]), record by record; [`write_ss`] makes one in memory.
 //!
 //! Every error says where: the CSV line or the `.ss` byte offset.
 
 use super::{FileError, InputError, error};
+use crate::run::State;
 use nalgebra::Vector3;
+use std::io::{self, Write};
 use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
@@ -244,23 +246,43 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
 /// what [`read_ss`] reads back exactly.
 pub fn write_ss(time: f64, particles: &[Particle]) -> Vec<u8> {
     let mut out = Vec::with_capacity(16 + 96 * particles.len());
-    out.extend_from_slice(&time.to_be_bytes());
-    let count = i32::try_from(particles.len()).unwrap_or(i32::MAX);
-    out.extend_from_slice(&count.to_be_bytes());
-    out.extend_from_slice(&STANDARD.to_be_bytes());
-    for p in particles.iter().take(count as usize) {
+    // Writing to memory cannot fail.
+    let _ = write_records(&mut out, time, particles.len(), particles.iter().cloned());
+    out
+}
+
+/// A run's output after a step, as pkdgrav writes it: the living particles of `states`,
+/// in input order, as [`State::as_written`] shows them, at `time`; written to `w` record
+/// by record, as [`write_ss`] would make it.
+pub fn write_ss_output(w: impl Write, time: f64, states: &[State]) -> io::Result<()> {
+    let alive = || states.iter().filter(|s| s.alive);
+    write_records(w, time, alive().count(), alive().map(State::as_written))
+}
+
+/// The `.ss` file of the first `count` of `particles` (at most `i32::MAX`) at `time`.
+fn write_records(
+    mut w: impl Write,
+    time: f64,
+    count: usize,
+    particles: impl Iterator<Item = Particle>,
+) -> io::Result<()> {
+    let count = i32::try_from(count).unwrap_or(i32::MAX);
+    w.write_all(&time.to_be_bytes())?;
+    w.write_all(&count.to_be_bytes())?;
+    w.write_all(&STANDARD.to_be_bytes())?;
+    for p in particles.take(count as usize) {
         for x in [p.mass, p.radius]
             .into_iter()
             .chain(p.pos.iter().copied())
             .chain(p.vel.iter().copied())
             .chain(p.spin.iter().copied())
         {
-            out.extend_from_slice(&x.to_be_bytes());
+            w.write_all(&x.to_be_bytes())?;
         }
-        out.extend_from_slice(&p.color.to_be_bytes());
-        out.extend_from_slice(&p.index.to_be_bytes());
+        w.write_all(&p.color.to_be_bytes())?;
+        w.write_all(&p.index.to_be_bytes())?;
     }
-    out
+    Ok(())
 }
 
 /// The name pkdgrav gives the output after `step`: `name.NNNNN`, the step with at least

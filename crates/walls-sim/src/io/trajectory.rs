@@ -18,7 +18,7 @@ use nalgebra::Vector3;
 use std::fs::File;
 use std::io::{self, BufWriter};
 use std::path::Path;
-use walls_geometry::Wall;
+use walls_geometry::{Particle, Wall};
 
 type Vec3 = Vector3<f64>;
 
@@ -57,12 +57,16 @@ pub struct ParticleRow {
 impl ParticleRow {
     /// The row for particle `particle` in `state` at `step`, time `t`.
     pub fn new(step: u64, t: f64, particle: usize, state: &State) -> Self {
-        let p = &state.particle;
+        Self::of(step, t, particle, state.alive, &state.particle)
+    }
+
+    /// The row for particle number `particle`, `p`, alive or not, at `step`, time `t`.
+    fn of(step: u64, t: f64, particle: usize, alive: bool, p: &Particle) -> Self {
         ParticleRow {
             step,
             t,
             particle,
-            alive: state.alive,
+            alive,
             mass: p.mass,
             radius: p.radius,
             pos: p.pos,
@@ -143,8 +147,41 @@ impl Trajectory {
         scene: &[Wall],
         assemblies: &[crate::dynamics::reactive::Assembly],
     ) -> io::Result<()> {
-        for (i, s) in states.iter().enumerate() {
-            self.write_particle(&ParticleRow::new(step, t, i, s))?;
+        let rows = states
+            .iter()
+            .enumerate()
+            .map(|(i, s)| ParticleRow::new(step, t, i, s));
+        self.write_step(step, t, rows, scene, assemblies)
+    }
+
+    /// Writes `particles` as a run starts with them (all alive), and the walls, at
+    /// `step`, time `t`: what [`Trajectory::record`] writes for their first states,
+    /// without making them.
+    pub fn record_start(
+        &mut self,
+        step: u64,
+        t: f64,
+        particles: &[Particle],
+        scene: &[Wall],
+    ) -> io::Result<()> {
+        let rows = particles
+            .iter()
+            .enumerate()
+            .map(|(i, p)| ParticleRow::of(step, t, i, true, p));
+        self.write_step(step, t, rows, scene, &[])
+    }
+
+    /// Writes the particles' `rows`, then the walls at `step`, time `t`.
+    fn write_step(
+        &mut self,
+        step: u64,
+        t: f64,
+        rows: impl Iterator<Item = ParticleRow>,
+        scene: &[Wall],
+        assemblies: &[crate::dynamics::reactive::Assembly],
+    ) -> io::Result<()> {
+        for row in rows {
+            self.write_particle(&row)?;
         }
         for (w, wall) in scene.iter().enumerate() {
             let moved = assemblies.iter().find_map(|a| {

@@ -304,18 +304,7 @@ pub struct State {
 impl State {
     /// A particle at the start of a run: alive, free, not yet accelerated.
     pub fn new(particle: &Particle) -> State {
-        State {
-            particle: particle.clone(),
-            alive: true,
-            stuck_to: None,
-            acc: Vec3::zeros(),
-            alpha: Vec3::zeros(),
-            member: false,
-            inverse: (
-                1.0 / particle.mass,
-                1.0 / (0.4 * particle.mass * particle.radius * particle.radius),
-            ),
-        }
+        State::from(particle.clone())
     }
 
     /// Whether it is out of the run, or its position, velocity and spin are all finite.
@@ -344,6 +333,25 @@ impl State {
     /// Whether it moves freely: alive and not held by a sticky wall.
     fn free(&self) -> bool {
         self.alive && self.stuck_to.is_none()
+    }
+}
+
+impl From<Particle> for State {
+    /// The particle at the start of a run ([`State::new`]), taken rather than copied.
+    fn from(particle: Particle) -> State {
+        let inverse = (
+            1.0 / particle.mass,
+            1.0 / (0.4 * particle.mass * particle.radius * particle.radius),
+        );
+        State {
+            particle,
+            alive: true,
+            stuck_to: None,
+            acc: Vec3::zeros(),
+            alpha: Vec3::zeros(),
+            member: false,
+            inverse,
+        }
     }
 }
 
@@ -476,7 +484,7 @@ pub fn run_watched(
     let dt = settings.dt;
     let t0 = settings.t_start();
     if !(dt > 0.0 && dt.is_finite()) {
-        let states: Vec<State> = particles.iter().map(State::new).collect();
+        let states: Vec<State> = particles.into_iter().map(State::from).collect();
         let e = energy(&states, &settings.gravity);
         return Outcome {
             t: t0,
@@ -490,19 +498,27 @@ pub fn run_watched(
             stopped: Some(Stop::Timestep),
         };
     }
-    let states: Vec<State> = particles
-        .iter()
-        .map(|p| State {
-            acc: settings.gravity,
-            stuck_to: stuck_from_the_start(p, walls, t0),
-            ..State::new(p)
-        })
-        .collect();
     let plan = match settings.planning {
         Planning::Needed => Plan::for_run(walls, &particles, settings),
         Planning::Everything => Plan::everything(),
         Planning::Exactly(plan) => plan,
     };
+    // The particles become the states: the run does not keep them twice.
+    let states: Vec<State> = particles
+        .into_iter()
+        .map(|p| State {
+            acc: settings.gravity,
+            stuck_to: stuck_from_the_start(&p, walls, t0),
+            ..State::from(p)
+        })
+        .collect();
+    // Negative colours naming no wall, warned about after the run.
+    let nowhere: Vec<usize> = states
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.particle.color < 0 && s.stuck_to.is_none())
+        .map(|(i, _)| i)
+        .collect();
     let mut outcome = match settings.method() {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe, interrupted),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe, interrupted),
@@ -519,12 +535,6 @@ pub fn run_watched(
     // Walls' tokens the build (or the integrator) does not follow come first, then
     // negative colours naming no wall.
     let mut first = optional::token_warnings(walls, settings);
-    let nowhere: Vec<usize> = particles
-        .iter()
-        .enumerate()
-        .filter(|(_, p)| p.color < 0 && stuck_from_the_start(p, walls, t0).is_none())
-        .map(|(i, _)| i)
-        .collect();
     if !nowhere.is_empty() {
         first.push(Warning::StuckToNoWall {
             particles: nowhere,

@@ -331,8 +331,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // The step and time of the last output written: where the outputs end.
     let mut last_output = (first, settings.t_start());
     if let Some(out) = &mut trajectory {
-        let start: Vec<_> = particles.iter().map(walls_sim::run::State::new).collect();
-        written = out.record(first, settings.t_start(), &start, scene, &[]);
+        written = out.record_start(first, settings.t_start(), &particles, scene);
     }
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
     // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
@@ -352,9 +351,13 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     crate::interrupt::install_graceful();
     // A failed write stops the run after its step: nothing more would be written.
     let write_failed = std::cell::Cell::new(written.is_err());
+    // The parts of the model the report names, from the particles the run is given.
+    let model = args
+        .json
+        .then(|| walls_sim::report::model(scene, &particles, &settings));
     let outcome = run_watched(
         scene,
-        particles.clone(),
+        particles,
         &settings,
         &mut |step, t, states, assemblies| {
             if let Some(bar) = &progress {
@@ -407,15 +410,17 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             uncut.concat()
         ));
     }
-    if args.json {
-        let mut report = walls_sim::report::json(scene, &particles, &settings, &outcome);
-        if let Some(dir) = &args.out {
-            report["outputs"] = serde_json::json!(output_files(dir, args.ss_output, reactive));
-        }
-        crate::outln!(
-            "{}",
-            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
-        );
+    if let Some(model) = model {
+        let outputs = args
+            .out
+            .as_ref()
+            .map(|dir| output_files(dir, args.ss_output, reactive));
+        let report = walls_sim::report::Report::new(model, &settings, &outcome);
+        let report = match &outputs {
+            Some(files) => report.with_outputs(files),
+            None => report,
+        };
+        crate::console::out_streamed(|w| report.write_json(w));
     } else {
         crate::errln!(
             "walls-sim: {}",
@@ -468,17 +473,18 @@ fn write_ss(
     t: f64,
     states: &[walls_sim::run::State],
 ) -> std::io::Result<()> {
-    use walls_sim::io::particles::{ss_file_name, write_ss};
-    let alive: Vec<Particle> = states
-        .iter()
-        .filter(|s| s.alive)
-        .map(walls_sim::run::State::as_written)
-        .collect();
+    use walls_sim::io::particles::{ss_file_name, write_ss_output};
     let path = dir.join(ss_file_name(name, *digits, step));
-    std::fs::write(&path, write_ss(t, &alive)).inspect_err(|_| {
-        // Cut short, it is no .ss file: it goes.
-        let _ = std::fs::remove_file(&path);
-    })
+    std::fs::File::create(&path)
+        .and_then(|file| {
+            let mut out = std::io::BufWriter::new(file);
+            write_ss_output(&mut out, t, states)?;
+            std::io::Write::flush(&mut out)
+        })
+        .inspect_err(|_| {
+            // Cut short, it is no .ss file: it goes.
+            let _ = std::fs::remove_file(&path);
+        })
 }
 
 /// Cuts the file at `path` after its last whole line, where a write that failed may
