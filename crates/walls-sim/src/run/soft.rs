@@ -167,19 +167,48 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     if moved > r * r {
         out.too_fast = Some(moved.sqrt() / r);
     }
-    // Most particles are far from every wall and touch none: nothing to look at.
-    let clear = walls.index.is_none()
-        && load.walls.is_empty()
-        && walls
-            .near
-            .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none());
-    if !clear && touch_walls(i, s, load, walls, &mut out) {
+    if !clear_of_walls(i, load, walls) && touch_walls(i, s, load, walls, &mut out) {
         return out;
     }
     if s.member {
         // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
         return out;
     }
+    close_step(s, load, walls);
+    out
+}
+
+/// Whether particle `i` is far from every wall and touches none: nothing to look at.
+#[inline]
+fn clear_of_walls(i: usize, load: &Load, walls: &Walls) -> bool {
+    walls.index.is_none()
+        && load.walls.is_empty()
+        && walls
+            .near
+            .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none())
+}
+
+/// [`wall_step`] for a free particle clear of every wall (most of them): the closing
+/// kick alone, and a report only if there is something to note.
+#[inline]
+fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
+    let r = s.particle.radius;
+    let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
+    close_step(s, load, walls);
+    let too_fast = (moved > r * r).then(|| moved.sqrt() / r);
+    let not_finite = !s.finite();
+    (too_fast.is_some() || not_finite).then(|| ParticleStep {
+        too_fast,
+        not_finite,
+        ..ParticleStep::default()
+    })
+}
+
+/// The accelerations of a free particle from its load, pkdgrav's `dAccCrit`, and the
+/// kick after the forces.
+#[inline]
+fn close_step(s: &mut State, load: &Load, walls: &Walls) {
+    let dt = walls.dt;
     s.acc = load.force * s.inverse.0;
     s.alpha = load.torque * s.inverse.1;
     if walls.acc_crit > 0.0 {
@@ -187,7 +216,6 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     }
     s.particle.vel += s.acc * (dt * walls.closing_kick);
     s.particle.spin += s.alpha * (dt * walls.closing_kick);
-    out
 }
 
 /// Particle `i`'s contacts with the walls it may touch, added to its `load`; what they
@@ -1070,6 +1098,9 @@ impl<'a> SoftStepper<'a> {
             aggregates: self.aggregates.as_ref(),
         };
         let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
+            if s.free() && !s.member && clear_of_walls(i, load, &walls) {
+                return clear_step(s, load, &walls).map(|report| (i, report));
+            }
             let mut report = wall_step(i, s, load, &walls);
             report.not_finite = !s.finite();
             (!report.is_empty()).then_some((i, report))
