@@ -233,12 +233,15 @@ async fn write_out<W: AsyncWrite + Unpin>(
 ) {
     let mut frames = Frames::new(from_server);
     loop {
+        // The answers first: an answer is queued before the frame after the bad one
+        // reaches the server, so the client gets them in the order it sent them.
         let bytes = tokio::select! {
+            biased;
+            Some(reply) = replies.recv() => reply,
             frame = frames.next() => match frame {
                 Some(Frame::Body(body)) => framed(&body),
                 _ => break,
             },
-            Some(reply) = replies.recv() => reply,
         };
         if write(&mut output, &bytes).await.is_err() {
             return;

@@ -989,39 +989,72 @@ impl<'a> SoftStepper<'a> {
             spheres,
             touching,
             forces,
+            scans,
             ..
         } = &mut self.candidates;
+        // Which pairs touch and which stopped touching, in chunks of the list (in
+        // parallel for many particles)…
+        let size = if self.parallel {
+            pairs.len().div_ceil(SCAN_CHUNKS).max(1)
+        } else {
+            pairs.len().max(1)
+        };
+        scans.resize_with(pairs.len().div_ceil(size), Scan::default);
+        let scan = |(c, scan): (usize, &mut Scan)| {
+            scan.touching.clear();
+            scan.apart.clear();
+            let first = c * size;
+            let end = (first + size).min(pairs.len());
+            for k in first..end {
+                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+                // The spheres alone first: 32 bytes a particle, not its whole state.
+                let (d, _, overlap) = separation(&spheres[i], &spheres[j]);
+                // Most candidates do not touch: the square of the distance tells, with
+                // a margin for round-off; the contact, if open, ends.
+                let reach = spheres[i][3] + spheres[j][3];
+                let apart = d.norm_squared() > reach * reach * (1.0 + 1e-9)
+                    // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
+                    || aggregates.is_some_and(|a| a.same(i, j))
+                    // A particle stuck to a wall is an obstacle of infinite mass
+                    // (pkdgrav's rule); two stuck ones, or a removed one, meet nothing.
+                    || !states[i].alive
+                    || !states[j].alive
+                    || !(states[i].free() || states[j].free());
+                if apart || overlap <= 0.0 {
+                    if slots[k] != NO_CONTACT {
+                        scan.apart.push(k as u32);
+                    }
+                } else {
+                    scan.touching.push((k as u32, overlap));
+                }
+            }
+        };
+        if self.parallel {
+            scans.par_iter_mut().enumerate().for_each(scan);
+        } else {
+            scans.iter_mut().enumerate().for_each(scan);
+        }
+        // …then, in the list's order, the contacts closed and opened and the overlaps
+        // checked.
         touching.clear();
-        for (k, (&(i, j), slot)) in pairs.iter().zip(slots.iter_mut()).enumerate() {
-            let (i, j) = (i as usize, j as usize);
-            // The spheres alone first: 32 bytes a particle, not its whole state.
-            let (d, _, overlap) = separation(&spheres[i], &spheres[j]);
-            // Most candidates do not touch: the square of the distance tells, with a
-            // margin for round-off; the contact, if open, ends.
-            let reach = spheres[i][3] + spheres[j][3];
-            let apart = d.norm_squared() > reach * reach * (1.0 + 1e-9)
-                // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
-                || aggregates.is_some_and(|a| a.same(i, j))
-                // A particle stuck to a wall is an obstacle of infinite mass (pkdgrav's
-                // rule); two stuck ones, or a removed one, meet nothing.
-                || !states[i].alive
-                || !states[j].alive
-                || !(states[i].free() || states[j].free());
-            if apart || overlap <= 0.0 {
-                contacts.close(slot);
-                continue;
+        for scan in scans.iter() {
+            for &k in &scan.apart {
+                contacts.close(&mut slots[k as usize]);
             }
-            let (p, q) = (&states[i].particle, &states[j].particle);
-            if self.overlaps.check(
-                overlap / p.radius.min(q.radius),
-                Overlapping::Particles(i, j),
-                t,
-                &mut self.warnings,
-            ) {
-                return Flow::Stop;
+            for &(k, overlap) in &scan.touching {
+                let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
+                let (p, q) = (&states[i].particle, &states[j].particle);
+                if self.overlaps.check(
+                    overlap / p.radius.min(q.radius),
+                    Overlapping::Particles(i, j),
+                    t,
+                    &mut self.warnings,
+                ) {
+                    return Flow::Stop;
+                }
+                contacts.open(&mut slots[k as usize], &mut self.pair_contacts);
+                touching.push(k);
             }
-            contacts.open(slot, &mut self.pair_contacts);
-            touching.push(k as u32);
         }
         let context = PairContext {
             states,
@@ -1376,6 +1409,8 @@ struct PairList {
     touching: Vec<u32>,
     /// A block of their new records and forces (kept to save allocating).
     forces: Vec<(Record, PairForce)>,
+    /// What each chunk of the list found this step (kept to save allocating).
+    scans: Vec<Scan>,
     built_at: Vec<Vec3>,
     skin: f64,
     /// Whether a particle drifted this step has moved more than half the skin (worked
@@ -1400,6 +1435,7 @@ impl PairList {
             contacts: PairContacts::default(),
             touching: Vec::new(),
             forces: Vec::new(),
+            scans: Vec::new(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
             drifted: false,
@@ -1496,6 +1532,17 @@ impl PairList {
             self.build(states, walls);
         }
     }
+}
+
+/// Into how many chunks the candidate pairs are cut to find, in parallel, which touch.
+const SCAN_CHUNKS: usize = 64;
+
+/// What one chunk of the candidate pairs found in a step: the pairs that touch, with
+/// their overlaps, and those with an open contact that no longer touch.
+#[derive(Default)]
+struct Scan {
+    touching: Vec<(u32, f64)>,
+    apart: Vec<u32>,
 }
 
 /// How many touching pairs get their forces at once: the forces of a block are kept
