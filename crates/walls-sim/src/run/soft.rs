@@ -856,10 +856,7 @@ impl<'a> SoftStepper<'a> {
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
         // no short cut), chunks in parallel for many particles.
-        let chunk = |(((states, loads), built_at), spheres): (
-            ((&mut [State], &mut [Load]), &[Vec3]),
-            &mut [[f64; 4]],
-        )| {
+        let chunk = |(((states, loads), built_at), spheres): DriftChunk| {
             let mut drifted = false;
             for (((s, load), at), sphere) in states.iter_mut().zip(loads).zip(built_at).zip(spheres)
             {
@@ -1553,6 +1550,13 @@ impl PairList {
         }
     }
 }
+
+/// A chunk of the particles as the drift takes it: their states and loads, where the
+/// candidate pairs were found, and their spheres.
+type DriftChunk<'a> = (
+    ((&'a mut [State], &'a mut [Load]), &'a [Vec3]),
+    &'a mut [[f64; 4]],
+);
 
 /// How many particles a thread takes at a time in the passes over all of them.
 const CHUNK: usize = 512;
