@@ -594,7 +594,7 @@ struct SoftStepper<'a> {
     candidates: PairList,
     /// What the wall contacts of each particle with something to note did this step,
     /// in particle order (kept to save allocating).
-    reports: Vec<(usize, ParticleStep)>,
+    reports: Vec<Vec<(usize, ParticleStep)>>,
     /// Whether a step runs on rayon's threads.
     parallel: bool,
     /// The energy at the start.
@@ -720,7 +720,7 @@ impl<'a> SoftStepper<'a> {
             assembly_of,
             loads,
             candidates,
-            reports: Vec::with_capacity(n),
+            reports: Vec::new(),
             parallel: n >= PARALLEL_FROM,
             initial,
             events: Vec::new(),
@@ -836,41 +836,44 @@ impl<'a> SoftStepper<'a> {
         let PairList {
             built_at, spheres, ..
         } = &mut self.candidates;
-        let kick_drift =
-            |(((s, load), at), sphere): (((&mut State, &mut Load), &Vec3), &mut [f64; 4])| {
-                load.force = g * s.particle.mass;
-                load.torque = Vec3::zeros();
-                if s.free() && !s.member {
-                    s.particle.vel += s.acc * (dt * opening);
-                    s.particle.spin += s.alpha * (dt * opening);
-                    let v = s.particle.vel;
-                    s.particle.pos += v * dt;
-                    if late != 0.0 {
-                        s.particle.vel += s.acc * (dt * late);
-                        s.particle.spin += s.alpha * (dt * late);
-                    }
-                    *sphere = PairList::sphere(s);
-                    PairList::moved_far(s, at, limit)
-                } else {
-                    false
+        let kick_drift = |s: &mut State, load: &mut Load, at: &Vec3, sphere: &mut [f64; 4]| {
+            load.force = g * s.particle.mass;
+            load.torque = Vec3::zeros();
+            if s.free() && !s.member {
+                s.particle.vel += s.acc * (dt * opening);
+                s.particle.spin += s.alpha * (dt * opening);
+                let v = s.particle.vel;
+                s.particle.pos += v * dt;
+                if late != 0.0 {
+                    s.particle.vel += s.acc * (dt * late);
+                    s.particle.spin += s.alpha * (dt * late);
                 }
-            };
-        let states = self.states.iter_mut().zip(self.loads.iter_mut());
-        let drifted = if self.parallel {
-            self.states
-                .par_iter_mut()
-                .zip(self.loads.par_iter_mut())
-                .zip(built_at.par_iter())
-                .zip(spheres.par_iter_mut())
-                .map(kick_drift)
-                .reduce(|| false, |a, b| a || b)
-        } else {
-            // Every particle is kicked and drifted: no short cut.
+                *sphere = PairList::sphere(s);
+                PairList::moved_far(s, at, limit)
+            } else {
+                false
+            }
+        };
+        // A plain loop over a chunk of the particles (every one is kicked and drifted:
+        // no short cut), chunks in parallel for many particles.
+        let chunk = |(((states, loads), built_at), spheres): DriftChunk| {
             let mut drifted = false;
-            for each in states.zip(built_at.iter()).zip(spheres.iter_mut()) {
-                drifted |= kick_drift(each);
+            for (((s, load), at), sphere) in states.iter_mut().zip(loads).zip(built_at).zip(spheres)
+            {
+                drifted |= kick_drift(s, load, at, sphere);
             }
             drifted
+        };
+        let drifted = if self.parallel {
+            self.states
+                .par_chunks_mut(CHUNK)
+                .zip(self.loads.par_chunks_mut(CHUNK))
+                .zip(built_at.par_chunks(CHUNK))
+                .zip(spheres.par_chunks_mut(CHUNK))
+                .map(chunk)
+                .reduce(|| false, |a, b| a || b)
+        } else {
+            chunk((((&mut self.states, &mut self.loads), built_at), spheres))
         };
         self.candidates.drifted = drifted;
     }
@@ -1138,23 +1141,36 @@ impl<'a> SoftStepper<'a> {
             report.not_finite = !s.finite();
             (!report.is_empty()).then_some((i, report))
         };
-        self.reports.clear();
+        // A plain loop over each chunk of the particles, its reports kept with it (in
+        // particle order within the chunk), chunks in parallel for many particles.
+        let chunk = |(c, ((states, loads), reports)): (
+            usize,
+            ((&mut [State], &mut [Load]), &mut Vec<(usize, ParticleStep)>),
+        )| {
+            reports.clear();
+            let first = c * CHUNK;
+            for (k, (s, load)) in states.iter_mut().zip(loads).enumerate() {
+                if let Some(report) = each((first + k, (s, load))) {
+                    reports.push(report);
+                }
+            }
+        };
+        self.reports
+            .resize_with(self.states.len().div_ceil(CHUNK), Vec::new);
         if self.parallel {
-            self.reports.par_extend(
-                self.states
-                    .par_iter_mut()
-                    .zip(self.loads.par_iter_mut())
-                    .enumerate()
-                    .filter_map(each),
-            );
+            self.states
+                .par_chunks_mut(CHUNK)
+                .zip(self.loads.par_chunks_mut(CHUNK))
+                .zip(self.reports.par_iter_mut())
+                .enumerate()
+                .for_each(chunk);
         } else {
-            self.reports.extend(
-                self.states
-                    .iter_mut()
-                    .zip(self.loads.iter_mut())
-                    .enumerate()
-                    .filter_map(each),
-            );
+            self.states
+                .chunks_mut(CHUNK)
+                .zip(self.loads.chunks_mut(CHUNK))
+                .zip(self.reports.iter_mut())
+                .enumerate()
+                .for_each(chunk);
         }
     }
 
@@ -1162,6 +1178,7 @@ impl<'a> SoftStepper<'a> {
     fn not_finite(&self) -> Option<usize> {
         self.reports
             .iter()
+            .flatten()
             .find(|(_, r)| r.not_finite)
             .map(|(i, _)| *i)
     }
@@ -1172,7 +1189,7 @@ impl<'a> SoftStepper<'a> {
     fn note_wall_contacts(&mut self) -> Flow {
         let t = self.t;
         let mut stop = self.aggregates.is_some() && self.aggregates_held();
-        for (i, report) in self.reports.iter_mut() {
+        for (i, report) in self.reports.iter_mut().flatten() {
             let i = *i;
             if let Some((fraction, w)) = report.deepest {
                 stop |= self.overlaps.check(
@@ -1238,7 +1255,7 @@ impl<'a> SoftStepper<'a> {
     /// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
     fn aggregates_held(&mut self) -> bool {
         let mut held = false;
-        for (i, report) in self.reports.iter_mut() {
+        for (i, report) in self.reports.iter_mut().flatten() {
             let i = *i;
             if !self.states[i].member {
                 continue;
@@ -1279,7 +1296,7 @@ impl<'a> SoftStepper<'a> {
             a.force = Vec3::zeros();
             a.torque = Vec3::zeros();
         }
-        for (_, report) in &self.reports {
+        for (_, report) in self.reports.iter().flatten() {
             for (a, f, tq) in &report.reactions {
                 self.assemblies[*a].force += f;
                 self.assemblies[*a].torque += tq;
@@ -1533,6 +1550,16 @@ impl PairList {
         }
     }
 }
+
+/// A chunk of the particles as the drift takes it: their states and loads, where the
+/// candidate pairs were found, and their spheres.
+type DriftChunk<'a> = (
+    ((&'a mut [State], &'a mut [Load]), &'a [Vec3]),
+    &'a mut [[f64; 4]],
+);
+
+/// How many particles a thread takes at a time in the passes over all of them.
+const CHUNK: usize = 512;
 
 /// Into how many chunks the candidate pairs are cut to find, in parallel, which touch.
 const SCAN_CHUNKS: usize = 64;
