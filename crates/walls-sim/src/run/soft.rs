@@ -1143,10 +1143,7 @@ impl<'a> SoftStepper<'a> {
         };
         // A plain loop over each chunk of the particles, its reports kept with it (in
         // particle order within the chunk), chunks in parallel for many particles.
-        let chunk = |(c, ((states, loads), reports)): (
-            usize,
-            ((&mut [State], &mut [Load]), &mut Vec<(usize, ParticleStep)>),
-        )| {
+        let chunk = |(c, ((states, loads), reports)): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
             for (k, (s, load)) in states.iter_mut().zip(loads).enumerate() {
@@ -1556,6 +1553,16 @@ impl PairList {
 type DriftChunk<'a> = (
     ((&'a mut [State], &'a mut [Load]), &'a [Vec3]),
     &'a mut [[f64; 4]],
+);
+
+/// A chunk of the particles as the wall pass takes it: its number, their states and
+/// loads, and its reports.
+type WallChunk<'a> = (
+    usize,
+    (
+        (&'a mut [State], &'a mut [Load]),
+        &'a mut Vec<(usize, ParticleStep)>,
+    ),
 );
 
 /// How many particles a thread takes at a time in the passes over all of them.
