@@ -336,3 +336,15 @@ fn constant_torques_oppose_rolling_and_twisting_with_the_levers_given() {
     let out = dashpot_contact(&c, &mut Record::default(), DT, &mat);
     assert!(close(out.resistance.y, -0.5e-6 / DT), "{out:?}");
 }
+
+proptest::proptest! {
+    /// The series for the small angles a contact turns by agrees with the library's
+    /// sine and cosine to an ulp or two, and is the library's beyond 2⁻⁷.
+    #[test]
+    fn small_angles_turn_as_the_library_turns(x in -0.02..0.02f64) {
+        let (sin, cos) = walls_sim::contact::ssdem::small_sin_cos(x);
+        let (want_sin, want_cos) = x.sin_cos();
+        proptest::prop_assert!((sin - want_sin).abs() <= 2.0 * f64::EPSILON * want_sin.abs(), "sin {x}: {sin} against {want_sin}");
+        proptest::prop_assert!((cos - want_cos).abs() <= 2.0 * f64::EPSILON, "cos {x}: {cos} against {want_cos}");
+    }
+}

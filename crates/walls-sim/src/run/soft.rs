@@ -1634,7 +1634,12 @@ impl PairContext<'_> {
             pkdgrav_levers,
             ..
         } = self.kicks;
-        let n = d.try_normalize(0.0).unwrap_or_else(Vec3::z);
+        // `d`'s own normalisation, with its length already known.
+        let n = if distance > 0.0 {
+            d / distance
+        } else {
+            Vec3::z()
+        };
         // The velocities and spins the contact sees: as they are, or (pkdgrav's)
         // predicted to the step's end, for a free particle; a stuck one's as they are.
         let seen = |s: &State, free: bool| {
