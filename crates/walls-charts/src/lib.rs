@@ -95,6 +95,13 @@ pub fn write(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
         }
     }
     csv.flush()?;
+    write_pictures(dir, chart, series)
+}
+
+/// Writes `chart` of `series` as `<name>.svg` and `<name>.png` in `dir`, without the
+/// CSV (for a chart drawn from data measured elsewhere).
+pub fn write_pictures(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
+    std::fs::create_dir_all(dir)?;
     register_font();
     let svg = dir.join(format!("{}.svg", chart.name));
     draw(
