@@ -388,13 +388,18 @@ def write_liggghts(folder: Path, scene: Scene, parts, lay: Layout) -> None:
 
 
 def write_floor_stl(path: Path, side: float) -> None:
-    """The floor as two triangles (ASCII STL), a sphere's width beyond the box."""
-    lo, hi = number(-2 * RADIUS), number(side + 2 * RADIUS)
-    corners = [(lo, lo), (hi, lo), (hi, hi), (lo, hi)]
-    lines = ["solid floor"]
-    for tri in ((0, 1, 2), (0, 2, 3)):
-        lines += ["  facet normal 0 0 1", "    outer loop"]
-        lines += [f"      vertex {corners[i][0]} {corners[i][1]} 0" for i in tri]
-        lines += ["    endloop", "  endfacet"]
-    lines.append("endsolid floor")
+    """The floor as one triangle (ASCII STL) covering the box with room to spare: a mesh
+    edge under the spheres would be met as an edge, not as the plane the others see."""
+    lo, hi = number(-side), number(4 * side)
+    lines = [
+        "solid floor",
+        "  facet normal 0 0 1",
+        "    outer loop",
+        f"      vertex {lo} {lo} 0",
+        f"      vertex {hi} {lo} 0",
+        f"      vertex {lo} {hi} 0",
+        "    endloop",
+        "  endfacet",
+        "endsolid floor",
+    ]
     path.write_text("\n".join(lines) + "\n")
