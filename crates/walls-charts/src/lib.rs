@@ -1,7 +1,8 @@
 //! What the chart binaries share: drawing a chart of named series to SVG and PNG with
 //! its data as CSV beside them, in `docs/charts/`, and finding a Pareto front.
 //!
-//! Each binary under `src/bin` measures one thing and writes one or more charts;
+//! Each binary under `src/bin` measures one thing and writes one or more charts (but
+//! `peers`, which draws what `scripts/bench-peers` measured with LAMMPS and LIGGGHTS);
 //! `scripts/charts` runs them all. PNGs are drawn with the DejaVu Sans font embedded
 //! here (`assets/`, under its own licence), so nothing depends on the fonts a machine
 //! has.
