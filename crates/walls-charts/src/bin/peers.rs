@@ -4,8 +4,9 @@
 //! It measures nothing: `scripts/bench-peers run` times the three tools and writes
 //! `docs/charts/peers.csv` (tool, scene, particles, steps, seconds, particle_steps_per_s,
 //! max_rss_mib, round), and this binary draws that file, the median over the rounds of
-//! each tool, scene and count, as `peers.svg` and `peers.png` in docs/charts. So it runs
-//! where LAMMPS is not installed.
+//! each tool, scene and count: `peers.svg` and `peers.png` in docs/charts for the drop,
+//! `peers_oscillating.{svg,png}` for the oscillating floor. So it runs where LAMMPS is
+//! not installed.
 
 use std::collections::BTreeMap;
 use std::io;
@@ -106,7 +107,7 @@ fn main() -> io::Result<()> {
     })?;
     let runs = parse(&text).map_err(|e| io::Error::other(format!("{}: {e}", path.display())))?;
     let medians = medians(&runs);
-    let mut series = Vec::new();
+    let mut by_scene: BTreeMap<&str, Vec<Series>> = BTreeMap::new();
     for ((scene, tool), by_count) in &medians {
         for (n, (steps, rate, mib)) in by_count {
             println!(
@@ -115,23 +116,30 @@ fn main() -> io::Result<()> {
             );
         }
         let points = by_count.iter().map(|(n, v)| (*n as f64, v.1)).collect();
-        let mark = if scene == "drop" {
-            Mark::Line
-        } else {
-            Mark::Dots
-        };
-        series.push(Series::new(format!("{tool}, {scene}"), points, mark));
+        by_scene
+            .entry(scene)
+            .or_default()
+            .push(Series::new(tool.as_str(), points, Mark::Line));
     }
-    draw(&dir, &series)
+    for (scene, series) in by_scene {
+        draw(&dir, scene, &series)?;
+    }
+    Ok(())
 }
 
-/// Writes `peers.svg` and `peers.png`.
-fn draw(dir: &Path, series: &[Series]) -> io::Result<()> {
+/// Writes one scene's chart: `peers` for the drop, `peers_<scene>` for another. Each
+/// chart lists the tools in the same order, so a tool has the same colour in each.
+fn draw(dir: &Path, scene: &str, series: &[Series]) -> io::Result<()> {
+    let name = if scene == "drop" {
+        "peers".to_string()
+    } else {
+        format!("peers_{scene}")
+    };
     write_pictures(
         dir,
         &Chart {
-            name: "peers".into(),
-            title: "the same scenes in walls-sim, LAMMPS and LIGGGHTS (one core, median)".into(),
+            name,
+            title: format!("scene {scene}: walls-sim, LAMMPS and LIGGGHTS, one core (median)"),
             x_label: "particles".into(),
             y_label: "particle-steps per second".into(),
             log_x: true,
