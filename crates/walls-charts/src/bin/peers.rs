@@ -139,7 +139,7 @@ fn draw(dir: &Path, scene: &str, series: &[Series]) -> io::Result<()> {
         dir,
         &Chart {
             name,
-            title: format!("scene {scene}: walls-sim, LAMMPS and LIGGGHTS, one core (median)"),
+            title: format!("scene {scene}: walls-sim, LAMMPS, LIGGGHTS (median of the rounds)"),
             x_label: "particles".into(),
             y_label: "particle-steps per second".into(),
             log_x: true,
