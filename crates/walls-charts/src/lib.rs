@@ -1,7 +1,8 @@
 //! What the chart binaries share: drawing a chart of named series to SVG and PNG with
 //! its data as CSV beside them, in `docs/charts/`, and finding a Pareto front.
 //!
-//! Each binary under `src/bin` measures one thing and writes one or more charts;
+//! Each binary under `src/bin` measures one thing and writes one or more charts (but
+//! `peers`, which draws what `scripts/bench-peers` measured with LAMMPS and LIGGGHTS);
 //! `scripts/charts` runs them all. PNGs are drawn with the DejaVu Sans font embedded
 //! here (`assets/`, under its own licence), so nothing depends on the fonts a machine
 //! has.
@@ -95,6 +96,13 @@ pub fn write(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
         }
     }
     csv.flush()?;
+    write_pictures(dir, chart, series)
+}
+
+/// Writes `chart` of `series` as `<name>.svg` and `<name>.png` in `dir`, without the
+/// CSV (for a chart drawn from data measured elsewhere).
+pub fn write_pictures(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
+    std::fs::create_dir_all(dir)?;
     register_font();
     let svg = dir.join(format!("{}.svg", chart.name));
     draw(
