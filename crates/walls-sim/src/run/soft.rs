@@ -683,10 +683,9 @@ impl<'a> SoftStepper<'a> {
         }
         let index = plan.wall_index.then(|| WallIndex::new(scene));
         if index.is_none() && !scene.is_empty() {
-            let fixed = (0..scene.len())
-                .map(|w| !scene[w].motion.translates() && assembly_of[w].is_none())
-                .collect();
-            candidates.near = Some(NearWalls::new(fixed));
+            let listed = assembly_of.iter().map(Option::is_none).collect();
+            let translating = scene.iter().map(|w| w.motion.translates()).collect();
+            candidates.near = Some(NearWalls::new(listed, translating));
             candidates.build(&states, &now);
         }
         let optional = OptionalPhysics::new(scene, &states, settings);
@@ -1534,7 +1533,9 @@ impl PairList {
                 *sphere = Self::sphere(s);
             }
         }
+        let walls_moved = (self.near.as_ref()).is_some_and(|n| n.moved(walls, self.skin / 2.0));
         let stale = self.drifted
+            || walls_moved
             || (self.held
                 && if states.len() >= PARALLEL_FROM {
                     states.par_iter().zip(&self.built_at).any(moved)
@@ -1765,43 +1766,59 @@ impl PairContext<'_> {
     }
 }
 
-/// The fixed walls within reach of each particle, found when the candidate pairs are
-/// (a Verlet list of walls): a particle moves at most half the skin before they are
-/// found again, so a fixed wall farther than its radius and half the skin when they
-/// were cannot touch it. The walls that move are visited by every particle.
+/// The walls within reach of each particle, found when the candidate pairs are (a
+/// Verlet list of walls): a particle moves at most half the skin before they are found
+/// again, and so does a wall that translates (the lists are found again when one has),
+/// so a fixed wall farther than the particle's radius and half the skin when they were,
+/// or a translating one farther than its radius and the skin, cannot touch it. The
+/// walls of reactive assemblies, which turn as well, are visited by every particle.
 struct NearWalls {
-    /// Whether each wall is fixed: it does not move, and is not part of a reactive
-    /// assembly.
-    fixed: Vec<bool>,
-    /// The walls that move.
+    /// Whether each wall is kept in the lists: every wall but those of reactive
+    /// assemblies.
+    listed: Vec<bool>,
+    /// Whether each wall translates.
+    translating: Vec<bool>,
+    /// The walls of reactive assemblies.
     moving: Vec<usize>,
+    /// Each wall's origin when the lists were found.
+    built_origins: Vec<Vec3>,
     /// Where each particle's walls start in `walls` (one more entry than particles).
     starts: Vec<u32>,
     walls: Vec<usize>,
 }
 
 impl NearWalls {
-    fn new(fixed: Vec<bool>) -> NearWalls {
-        let moving = (0..fixed.len()).filter(|&w| !fixed[w]).collect();
+    fn new(listed: Vec<bool>, translating: Vec<bool>) -> NearWalls {
+        let moving = (0..listed.len()).filter(|&w| !listed[w]).collect();
         NearWalls {
-            fixed,
+            listed,
+            translating,
             moving,
+            built_origins: Vec::new(),
             starts: Vec::new(),
             walls: Vec::new(),
         }
     }
 
-    /// The fixed walls within reach of each particle in the run, `margin` beyond its
-    /// radius, in ascending order.
-    fn build(&mut self, states: &[State], walls: &[WallNow], margin: f64) {
+    /// The listed walls within reach of each particle in the run, `half` (half the
+    /// skin) beyond its radius for a fixed wall and twice that for a translating one,
+    /// in ascending order.
+    fn build(&mut self, states: &[State], walls: &[WallNow], half: f64) {
+        self.built_origins.clear();
+        self.built_origins.extend(walls.iter().map(|w| w.origin));
         self.starts.clear();
         self.walls.clear();
         self.starts.push(0);
         for s in states {
             if s.alive {
-                let reach = s.particle.radius + margin;
+                let r = s.particle.radius;
                 for (w, wall) in walls.iter().enumerate() {
-                    if self.fixed[w] && !wall.cull.clear_of(&s.particle.pos, reach) {
+                    let reach = if self.translating[w] {
+                        r + 2.0 * half
+                    } else {
+                        r + half
+                    };
+                    if self.listed[w] && !wall.cull.clear_of(&s.particle.pos, reach) {
                         self.walls.push(w);
                     }
                 }
@@ -1810,7 +1827,16 @@ impl NearWalls {
         }
     }
 
-    /// The fixed walls near particle `i`.
+    /// Whether a listed wall has translated more than `half` since the lists were
+    /// found.
+    fn moved(&self, walls: &[WallNow], half: f64) -> bool {
+        (0..walls.len()).any(|w| {
+            let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
+            self.listed[w] && self.translating[w] && (d2 > half * half || d2.is_nan())
+        })
+    }
+
+    /// The listed walls near particle `i`.
     fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
         self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
             .iter()
