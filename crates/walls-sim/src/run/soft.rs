@@ -8,12 +8,14 @@
 //! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
 //! on one particle is a warning, as are a particle too fast for the timestep and a wall
 //! contact that gains energy (the `W1xx` of [`super::Warning`]). Candidate particle
-//! pairs are kept in a Verlet list ([`PairList`]), rebuilt on a cell grid
-//! ([`crate::broad::grid`]) when particles have moved far enough.
+//! pairs, with their open contacts, and the walls near each particle are kept in a
+//! Verlet list ([`PairList`], [`NearWalls`]), found again on a cell grid
+//! ([`crate::broad::grid`]) when a particle or a translating wall has moved half the skin.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
-//! the pipeline of [`SoftStepper::step`]: `kick_drift`, `move_aggregates`, `move_walls`,
-//! `move_assemblies`, `gravity_loads`, `pair_contacts`, `wall_contacts` (with the closing
+//! the pipeline of [`SoftStepper::step`]: `kick_drift` (with each load's gravity and the
+//! list's staleness), `move_aggregates`, `move_walls`, `move_assemblies`, the list's
+//! update, `pair_contacts`, `wall_contacts` (with the closing
 //! kick), `note_wall_contacts` (events and warnings, in particle order),
 //! `kick_assemblies` and `gather_aggregates`; with [`Integrator::Pkdgrav`],
 //! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
