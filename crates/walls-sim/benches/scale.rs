@@ -23,7 +23,7 @@ use nalgebra::Vector3;
 use std::time::Instant;
 use walls_sim::run::defaults;
 use walls_sim::run::{ContactModel, ParticleMaterial, Settings, default_dt, run};
-use walls_test_support::scenes::packed;
+use walls_test_support::scenes::{box_of_spheres, packed};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -91,40 +91,7 @@ fn timed<T: Send>(threads: usize, run: impl FnOnce() -> T + Send) -> (f64, T) {
 
 /// The peer benchmark's box with `n` spheres, for `steps` steps on each thread count.
 fn drop_into_a_box(n: usize, steps: usize, threads: &[usize]) {
-    let r = 1e-3;
-    let spacing = 2.2 * r;
-    // A square lattice about 1.25 times as tall as it is wide.
-    let side = (1..).find(|s| s * s * (5 * s / 4) >= n).expect("a side");
-    let width = side as f64 * spacing;
-    let mut walls = String::from("wall type plane\n  origin 0 0 0\n  orient 0 0 1\n");
-    for (origin, normal) in [
-        ([0.0, 0.0], [1, 0]),
-        ([width, 0.0], [-1, 0]),
-        ([0.0, 0.0], [0, 1]),
-        ([0.0, width], [0, -1]),
-    ] {
-        walls += &format!(
-            "wall type plane\n  origin {} {} 0\n  orient {} {} 0\n",
-            origin[0], origin[1], normal[0], normal[1]
-        );
-    }
-    let scene = walls_test_support::scene(&walls);
-    let mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
-    let particles: Vec<_> = (0..n)
-        .map(|k| {
-            let (i, j, l) = (k % side, (k / side) % side, k / (side * side));
-            let at = Vector3::new(
-                (i as f64 + 0.5) * spacing,
-                (j as f64 + 0.5) * spacing,
-                1.1 * r + l as f64 * spacing,
-            );
-            walls_geometry::Particle {
-                mass,
-                vel: scattered(k) * 0.1,
-                ..walls_geometry::Particle::at_rest(r, at, k)
-            }
-        })
-        .collect();
+    let (scene, particles) = box_of_spheres(n, 0.1);
     let k_n = 1000.0;
     let material = ParticleMaterial {
         eps_n: 0.5,

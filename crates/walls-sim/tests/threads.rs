@@ -6,34 +6,11 @@
 //! warnings).
 
 use nalgebra::Vector3;
-use walls_geometry::Particle;
 use walls_sim::run::{Outcome, ParticleMaterial, Settings, defaults, run};
+use walls_test_support::scenes::box_of_spheres;
 
 fn dropped(threads: usize) -> Outcome {
-    let scene = walls_test_support::scene(
-        "wall type plane\n  origin 0 0 0\n  orient 0 0 1\n\
-         wall type plane\n  origin 0 0 0\n  orient 1 0 0\n\
-         wall type plane\n  origin 0.0264 0 0\n  orient -1 0 0\n\
-         wall type plane\n  origin 0 0 0\n  orient 0 1 0\n\
-         wall type plane\n  origin 0 0.0264 0\n  orient 0 -1 0\n",
-    );
-    let (r, spacing, side) = (1e-3, 2.2e-3, 12);
-    let particles: Vec<Particle> = (0..2000)
-        .map(|k| {
-            let (i, j, l) = (k % side, (k / side) % side, k / (side * side));
-            let at = Vector3::new(
-                (i as f64 + 0.5) * spacing,
-                (j as f64 + 0.5) * spacing,
-                1.1 * r + l as f64 * spacing,
-            );
-            let wobble = |a: f64| ((k as f64 * a).fract() - 0.5) * 2.0;
-            Particle {
-                mass: 1.047e-5,
-                vel: Vector3::new(wobble(0.7549), wobble(0.5698), wobble(0.4302)),
-                ..Particle::at_rest(r, at, k)
-            }
-        })
-        .collect();
+    let (scene, particles) = box_of_spheres(2000, 2.0);
     let material = ParticleMaterial {
         eps_n: 0.5,
         mu_s: 0.5,

@@ -81,3 +81,45 @@ pub fn sphere_hull(m: usize) -> String {
     }
     text
 }
+
+/// The peer benchmark's box (docs/performance.md, "Against LAMMPS and LIGGGHTS"): `n`
+/// spheres of radius 1 mm and 2500 kg/m³ on a square lattice of spacing 2.2 mm about
+/// 1.25 times as tall as it is wide, the lowest layer 1.1 mm above the floor, each with
+/// a velocity of components within ±`speed`/2 that differs from sphere to sphere; and
+/// the five planes around them (the floor z = 0 and four sides). Deterministic.
+pub fn box_of_spheres(n: usize, speed: f64) -> (Vec<Wall>, Vec<Particle>) {
+    let (r, spacing): (f64, f64) = (1e-3, 2.2e-3);
+    let side = (1..).find(|s| s * s * (5 * s / 4) >= n).expect("a side");
+    let width = side as f64 * spacing;
+    let mut walls = String::from("wall type plane\n  origin 0 0 0\n  orient 0 0 1\n");
+    for (x, y, nx, ny) in [
+        (0.0, 0.0, 1, 0),
+        (width, 0.0, -1, 0),
+        (0.0, 0.0, 0, 1),
+        (0.0, width, 0, -1),
+    ] {
+        walls += &format!("wall type plane\n  origin {x} {y} 0\n  orient {nx} {ny} 0\n");
+    }
+    let mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
+    let particles = (0..n)
+        .map(|k| {
+            let (i, j, l) = (k % side, (k / side) % side, k / (side * side));
+            let at = Vec3::new(
+                (i as f64 + 0.5) * spacing,
+                (j as f64 + 0.5) * spacing,
+                1.1 * r + l as f64 * spacing,
+            );
+            let part = |a: f64| ((k as f64 * a).fract() - 0.5) * speed;
+            Particle {
+                mass,
+                vel: Vec3::new(
+                    part(0.754_877_666),
+                    part(0.569_840_291),
+                    part(0.430_159_709),
+                ),
+                ..Particle::at_rest(r, at, k)
+            }
+        })
+        .collect();
+    (crate::scene(&walls), particles)
+}
