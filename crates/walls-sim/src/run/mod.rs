@@ -310,9 +310,16 @@ impl State {
     /// Whether it is out of the run, or its position, velocity and spin are all finite.
     #[inline]
     pub(crate) fn finite(&self) -> bool {
+        self.finite_with(self.particle.vel.sum() + self.particle.spin.sum())
+    }
+
+    /// [`State::finite`], given the sum of the velocity's and spin's components (which
+    /// the stepper has in hand after a kick).
+    #[inline]
+    pub(crate) fn finite_with(&self, motion: f64) -> bool {
         let p = &self.particle;
         // A sum of finite numbers is finite unless it overflows: only then look closer.
-        let sum = p.pos.sum() + p.vel.sum() + p.spin.sum();
+        let sum = p.pos.sum() + motion;
         !self.alive
             || sum.is_finite()
             || (p.pos.iter().chain(p.vel.iter()).chain(p.spin.iter())).all(|x| x.is_finite())

@@ -109,15 +109,13 @@ struct Walls<'a> {
     aggregates: Option<&'a Aggregates>,
 }
 
-/// What acts on one particle in a step: the force and torque summed so far, and its
-/// open wall contacts.
-#[derive(Default)]
+/// What acts on one particle in a step: the force and torque summed so far. Every pass
+/// over the particles touches it, so it holds nothing else: the open wall contacts are
+/// kept beside it ([`SoftStepper::open_walls`]).
+#[derive(Default, Clone, Copy)]
 struct Load {
     force: Vec3,
     torque: Vec3,
-    walls: Vec<(usize, Open)>,
-    /// The walls to look at this step, kept to save allocating.
-    visit: Vec<usize>,
 }
 
 /// What one particle's wall contacts did in a step.
@@ -148,9 +146,17 @@ impl ParticleStep {
     }
 }
 
-/// One particle's contacts with the walls at the step's time, added to its `load` (which
+/// What the wall pass works on for one particle besides its state: its load, its open
+/// wall contacts (wall, contact), and its chunk's scratch list of the walls to visit.
+struct WallWork<'a> {
+    load: &'a mut Load,
+    open: &'a mut Vec<(usize, Open)>,
+    visit: &'a mut Vec<usize>,
+}
+
+/// One particle's contacts with the walls at the step's time, added to its load (which
 /// holds gravity and the particle contacts already), then the closing kick.
-fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> ParticleStep {
+fn wall_step(i: usize, s: &mut State, mut work: WallWork, walls: &Walls) -> ParticleStep {
     let dt = walls.dt;
     let mut out = ParticleStep::default();
     if !s.alive {
@@ -169,22 +175,22 @@ fn wall_step(i: usize, s: &mut State, load: &mut Load, walls: &Walls) -> Particl
     if moved > r * r {
         out.too_fast = Some(moved.sqrt() / r);
     }
-    if !clear_of_walls(i, load, walls) && touch_walls(i, s, load, walls, &mut out) {
+    if !clear_of_walls(i, work.open, walls) && touch_walls(i, s, &mut work, walls, &mut out) {
         return out;
     }
     if s.member {
         // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
         return out;
     }
-    close_step(s, load, walls);
+    close_step(s, work.load, walls);
     out
 }
 
 /// Whether particle `i` is far from every wall and touches none: nothing to look at.
 #[inline]
-fn clear_of_walls(i: usize, load: &Load, walls: &Walls) -> bool {
+fn clear_of_walls(i: usize, open: &[(usize, Open)], walls: &Walls) -> bool {
     walls.index.is_none()
-        && load.walls.is_empty()
+        && open.is_empty()
         && walls
             .near
             .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none())
@@ -196,9 +202,9 @@ fn clear_of_walls(i: usize, load: &Load, walls: &Walls) -> bool {
 fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
     let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
-    close_step(s, load, walls);
+    let motion = close_step(s, load, walls);
     let too_fast = (moved > r * r).then(|| moved.sqrt() / r);
-    let not_finite = !s.finite();
+    let not_finite = !s.finite_with(motion);
     (too_fast.is_some() || not_finite).then(|| ParticleStep {
         too_fast,
         not_finite,
@@ -207,35 +213,40 @@ fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep>
 }
 
 /// The accelerations of a free particle from its load, pkdgrav's `dAccCrit`, and the
-/// kick after the forces.
+/// kick after the forces; the sum of the new velocity's and spin's components, for
+/// [`State::finite_with`] (from registers: reading back what was just stored, in wider
+/// loads than it was stored with, stalls the processor).
 #[inline]
-fn close_step(s: &mut State, load: &Load, walls: &Walls) {
+fn close_step(s: &mut State, load: &Load, walls: &Walls) -> f64 {
     let dt = walls.dt;
     s.acc = load.force * s.inverse.0;
     s.alpha = load.torque * s.inverse.1;
     if walls.acc_crit > 0.0 {
         zero_small_motions(s, walls.acc_crit, dt);
     }
-    s.particle.vel += s.acc * (dt * walls.closing_kick);
-    s.particle.spin += s.alpha * (dt * walls.closing_kick);
+    let vel = s.particle.vel + s.acc * (dt * walls.closing_kick);
+    let spin = s.particle.spin + s.alpha * (dt * walls.closing_kick);
+    s.particle.vel = vel;
+    s.particle.spin = spin;
+    vel.sum() + spin.sum()
 }
 
-/// Particle `i`'s contacts with the walls it may touch, added to its `load`; what they
-/// did goes into `out`. Whether the particle was held or removed by a wall (its step
-/// ends there).
+/// Particle `i`'s contacts with the walls it may touch, added to its load (its open
+/// contacts opened and closed); what they did goes into `out`. Whether the particle was
+/// held or removed by a wall (its step ends there).
 fn touch_walls(
     i: usize,
     s: &mut State,
-    load: &mut Load,
+    work: &mut WallWork,
     walls: &Walls,
     out: &mut ParticleStep,
 ) -> bool {
+    let WallWork { load, open, visit } = work;
     let (t, dt) = (walls.t, walls.dt);
     let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     // The walls within reach (from the wall index, when the plan uses one), and those
     // the particle touched last step, whose contacts may end; in wall order either way.
-    let mut visit = std::mem::take(&mut load.visit);
     visit.clear();
     let indexed = walls.index.is_some();
     match walls.index {
@@ -244,7 +255,7 @@ fn touch_walls(
             // The candidates come ascending; search only them (the walls pushed after
             // them are not in order), so no wall is visited twice.
             let candidates = visit.len();
-            for (w, _) in &load.walls {
+            for (w, _) in open.iter() {
                 if visit[..candidates].binary_search(w).is_err() {
                     visit.push(*w);
                 }
@@ -255,7 +266,7 @@ fn touch_walls(
             if let Some(near) = walls.near {
                 visit.extend(near.of(i));
                 visit.extend(near.moving.iter().copied());
-                for (w, _) in &load.walls {
+                for (w, _) in open.iter() {
                     visit.push(*w);
                 }
                 if visit.len() > 1 {
@@ -266,14 +277,14 @@ fn touch_walls(
         }
     }
     let indexed = indexed || walls.near.is_some();
-    let open = &mut load.walls;
     let count = if indexed {
         visit.len()
     } else {
         walls.now.len()
     };
+    let listed = |at: usize| if indexed { visit[at] } else { at };
     for at in 0..count {
-        let w = if indexed { visit[at] } else { at };
+        let w = listed(at);
         let wall = &walls.now[w];
         let k = open.iter().position(|(o, _)| *o == w);
         // Most particles are far from most walls: a cheap test first, unless a contact
@@ -340,7 +351,6 @@ fn touch_walls(
                     vn_out: 0.0,
                 });
                 open.swap_remove(k);
-                load.visit = visit;
                 return true;
             }
             // A death wall removes the particle; a sticky wall holds it.
@@ -362,7 +372,6 @@ fn touch_walls(
                 vn_out: 0.0,
             });
             open.swap_remove(k);
-            load.visit = visit;
             return true;
         }
         let plan = walls.plan;
@@ -469,7 +478,6 @@ fn touch_walls(
         resist *= stop / resist.norm();
     }
     load.torque += resist;
-    load.visit = visit;
     false
 }
 
@@ -593,6 +601,11 @@ struct SoftStepper<'a> {
     /// Set up failed (an aggregate of one member): the run stops before it starts.
     halted: bool,
     loads: Vec<Load>,
+    /// Each particle's open wall contacts: (wall, contact), kept apart from its load so
+    /// that the passes that do not need them do not carry them.
+    open_walls: Vec<Vec<(usize, Open)>>,
+    /// Each chunk's scratch list of the walls to visit (kept to save allocating).
+    visits: Vec<Vec<usize>>,
     candidates: PairList,
     /// What the wall contacts of each particle with something to note did this step,
     /// in particle order (kept to save allocating).
@@ -638,7 +651,7 @@ impl<'a> SoftStepper<'a> {
                 0.0
             };
         let n = states.len();
-        let loads: Vec<Load> = (0..n).map(|_| Load::default()).collect();
+        let loads = vec![Load::default(); n];
         let candidates = PairList::new(&states, plan.particle_contacts);
         let mut warnings = Vec::new();
         let oscillating: Vec<bool> = scene
@@ -720,6 +733,8 @@ impl<'a> SoftStepper<'a> {
             assemblies,
             assembly_of,
             loads,
+            open_walls: (0..n).map(|_| Vec::new()).collect(),
+            visits: Vec::new(),
             candidates,
             reports: Vec::new(),
             parallel: n >= PARALLEL_FROM,
@@ -907,6 +922,10 @@ impl<'a> SoftStepper<'a> {
     /// [`Integrator::Pkdgrav`], which a particle meeting a stuck one then sees where the
     /// wall has taken it.
     fn carry_stuck(&mut self) {
+        // None is stuck until some particle is held ([`PairList::held`]): no pass then.
+        if !self.candidates.held {
+            return;
+        }
         let dt = self.settings.dt;
         for s in &mut self.states {
             if let (true, Some((w, _))) = (s.alive, s.stuck_to) {
@@ -1012,11 +1031,12 @@ impl<'a> SoftStepper<'a> {
             for k in first..end {
                 let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
                 // The spheres alone first: 32 bytes a particle, not its whole state.
-                let (d, _, overlap) = separation(&spheres[i], &spheres[j]);
+                let (a, b) = (&spheres[i], &spheres[j]);
+                let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
                 // Most candidates do not touch: the square of the distance tells, with
                 // a margin for round-off; the contact, if open, ends.
-                let reach = spheres[i][3] + spheres[j][3];
-                let apart = d.norm_squared() > reach * reach * (1.0 + 1e-9)
+                let reach = a[3] + b[3];
+                let apart = d2 > reach * reach * (1.0 + 1e-9)
                     // Members of one aggregate never meet (docs/pkdgrav-physics.md §9.1).
                     || aggregates.is_some_and(|a| a.same(i, j))
                     // A particle stuck to a wall is an obstacle of infinite mass
@@ -1024,7 +1044,9 @@ impl<'a> SoftStepper<'a> {
                     || !states[i].alive
                     || !states[j].alive
                     || !(states[i].free() || states[j].free());
-                if apart || overlap <= 0.0 {
+                // As [`separation`] has it, without its square root for the many apart.
+                let overlap = if apart { 0.0 } else { reach - d2.sqrt() };
+                if overlap <= 0.0 {
                     if slots[k] != NO_CONTACT {
                         scan.apart.push(k as u32);
                     }
@@ -1134,39 +1156,46 @@ impl<'a> SoftStepper<'a> {
             dt: self.settings.dt,
             aggregates: self.aggregates.as_ref(),
         };
-        let each = |(i, (s, load)): (usize, (&mut State, &mut Load))| {
-            if s.free() && !s.member && clear_of_walls(i, load, &walls) {
+        let each = |i: usize,
+                    s: &mut State,
+                    load: &mut Load,
+                    open: &mut Vec<(usize, Open)>,
+                    visit: &mut Vec<usize>| {
+            if s.free() && !s.member && clear_of_walls(i, open, &walls) {
                 return clear_step(s, load, &walls).map(|report| (i, report));
             }
-            let mut report = wall_step(i, s, load, &walls);
+            let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
             report.not_finite = !s.finite();
             (!report.is_empty()).then_some((i, report))
         };
         // A plain loop over each chunk of the particles, its reports kept with it (in
         // particle order within the chunk), chunks in parallel for many particles.
-        let chunk = |(c, ((states, loads), reports)): WallChunk| {
+        let chunk = |(c, (((states, loads), opens), (reports, visit))): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
-            for (k, (s, load)) in states.iter_mut().zip(loads).enumerate() {
-                if let Some(report) = each((first + k, (s, load))) {
+            for (k, ((s, load), open)) in states.iter_mut().zip(loads).zip(opens).enumerate() {
+                if let Some(report) = each(first + k, s, load, open, visit) {
                     reports.push(report);
                 }
             }
         };
-        self.reports
-            .resize_with(self.states.len().div_ceil(CHUNK), Vec::new);
+        let chunks = self.states.len().div_ceil(CHUNK);
+        self.reports.resize_with(chunks, Vec::new);
+        self.visits.resize_with(chunks, Vec::new);
         if self.parallel {
             self.states
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
-                .zip(self.reports.par_iter_mut())
+                .zip(self.open_walls.par_chunks_mut(CHUNK))
+                .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
                 .for_each(chunk);
         } else {
             self.states
                 .chunks_mut(CHUNK)
                 .zip(self.loads.chunks_mut(CHUNK))
-                .zip(self.reports.iter_mut())
+                .zip(self.open_walls.chunks_mut(CHUNK))
+                .zip(self.reports.iter_mut().zip(&mut self.visits))
                 .enumerate()
                 .for_each(chunk);
         }
@@ -1558,13 +1587,16 @@ type DriftChunk<'a> = (
     &'a mut [[f64; 4]],
 );
 
-/// A chunk of the particles as the wall pass takes it: its number, their states and
-/// loads, and its reports.
+/// A chunk of the particles as the wall pass takes it: its number, their states, loads
+/// and open wall contacts, and its reports and scratch list of walls.
 type WallChunk<'a> = (
     usize,
     (
-        (&'a mut [State], &'a mut [Load]),
-        &'a mut Vec<(usize, ParticleStep)>,
+        (
+            (&'a mut [State], &'a mut [Load]),
+            &'a mut [Vec<(usize, Open)>],
+        ),
+        (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
     ),
 );
 
