@@ -118,6 +118,17 @@ struct Load {
     torque: Vec3,
 }
 
+impl Load {
+    /// The load a step starts with: gravity alone.
+    #[inline]
+    fn gravity(s: &State, g: &Vec3) -> Load {
+        Load {
+            force: g * s.particle.mass,
+            torque: Vec3::zeros(),
+        }
+    }
+}
+
 /// What one particle's wall contacts did in a step.
 #[derive(Default)]
 struct ParticleStep {
@@ -841,9 +852,10 @@ impl<'a> SoftStepper<'a> {
 
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
     /// drift, and the kick after it (explicit Euler's), for the free particles; in the
-    /// same pass, each particle's load starts the step with gravity alone
-    /// ([`SoftStepper::gravity_loads`]), and the candidate pairs learn whether a
-    /// drifted particle has moved far enough to rebuild them ([`PairList::drifted`]).
+    /// same pass, the loads of an aggregate's members start the step with gravity alone
+    /// (the others' were started by the last wall pass), and the candidate pairs learn
+    /// whether a drifted particle has moved far enough to rebuild them
+    /// ([`PairList::drifted`]).
     fn kick_drift(&mut self) {
         let dt = self.settings.dt;
         let g = self.settings.gravity;
@@ -853,9 +865,11 @@ impl<'a> SoftStepper<'a> {
             built_at, spheres, ..
         } = &mut self.candidates;
         let kick_drift = |s: &mut State, load: &mut Load, at: &Vec3, sphere: &mut [f64; 4]| {
-            load.force = g * s.particle.mass;
-            load.torque = Vec3::zeros();
-            if s.free() && !s.member {
+            if s.member {
+                // The others' loads were started in the last wall pass, once used.
+                *load = Load::gravity(s, &g);
+                false
+            } else if s.free() {
                 s.particle.vel += s.acc * (dt * opening);
                 s.particle.spin += s.alpha * (dt * opening);
                 let v = s.particle.vel;
@@ -979,13 +993,12 @@ impl<'a> SoftStepper<'a> {
         self.cogs.extend(self.assemblies.iter().map(|a| a.cog));
     }
 
-    /// Each particle's load starts the step with gravity alone (in a step,
-    /// [`SoftStepper::kick_drift`] does it).
+    /// Each particle's load starts the run with gravity alone (in a step, the last wall
+    /// pass does it, or [`SoftStepper::kick_drift`] for an aggregate's members).
     fn gravity_loads(&mut self) {
         let g = self.settings.gravity;
         for (s, load) in self.states.iter().zip(&mut self.loads) {
-            load.force = g * s.particle.mass;
-            load.torque = Vec3::zeros();
+            *load = Load::gravity(s, &g);
         }
     }
 
@@ -1131,6 +1144,7 @@ impl<'a> SoftStepper<'a> {
     fn wall_contacts(&mut self) {
         // Without forces (`bDoGravity = 0`) the walls are not looked at.
         let forces = self.settings.forces;
+        let gravity = self.settings.gravity;
         let walls = Walls {
             now: if forces { &self.now } else { &[] },
             assembly_of: &self.assembly_of,
@@ -1167,6 +1181,20 @@ impl<'a> SoftStepper<'a> {
             let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
             report.not_finite = !s.finite();
             (!report.is_empty()).then_some((i, report))
+        };
+        // The load, once used, starts the next step with gravity alone (while it is at
+        // hand: [`SoftStepper::kick_drift`] need not touch it); an aggregate's members'
+        // loads are kept for it ([`SoftStepper::gather_aggregates`]).
+        let each = |i: usize,
+                    s: &mut State,
+                    load: &mut Load,
+                    open: &mut Vec<(usize, Open)>,
+                    visit: &mut Vec<usize>| {
+            let report = each(i, s, load, open, visit);
+            if !s.member {
+                *load = Load::gravity(s, &gravity);
+            }
+            report
         };
         // A plain loop over each chunk of the particles, its reports kept with it (in
         // particle order within the chunk), chunks in parallel for many particles.
