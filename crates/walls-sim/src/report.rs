@@ -142,7 +142,7 @@ impl StateView {
             alive: s.alive,
             pos: p.pos.into(),
             spin: p.spin.into(),
-            stuck_to: s.stuck_to.map(|(w, _)| w),
+            stuck_to: s.stuck_to.as_deref().map(|&(w, _)| w),
             vel: p.vel.into(),
         }
     }

@@ -495,7 +495,7 @@ fn particles_held_by_walls_are_obstacles() {
     );
     assert_eq!(out.pair_contacts, 1);
     let (a, b) = (&out.particles[0], &out.particles[1]);
-    assert_eq!(a.stuck_to.map(|s| s.0), Some(0));
+    assert_eq!(a.stuck_to.as_deref().map(|s| s.0), Some(0));
     assert!(close(a.particle.pos.z, 0.1), "{a:?}");
     assert!(close(b.particle.vel.z, 1.0), "{b:?}");
     // It met A at z = 0.3 at t = 0.3, and rose for 0.7 after.

@@ -227,7 +227,7 @@ fn ss_files_written_read_back_exactly_with_pkdgrav_s_names() {
     let mut gone = states[1].clone();
     gone.alive = false;
     states.push(gone);
-    states[1].stuck_to = Some((4, nalgebra::Vector3::zeros()));
+    states[1].stuck_to = Some(Box::new((4, nalgebra::Vector3::zeros())));
     let mut streamed = Vec::new();
     walls_sim::io::particles::write_ss_output(&mut streamed, 0.5, &states).unwrap();
     let written: Vec<_> = states[..2].iter().map(State::as_written).collect();
@@ -256,7 +256,7 @@ fn a_negative_colour_is_stuck_from_the_start_and_stuck_particles_are_written_so(
     s.particle_contacts = false;
     let out = run(&walls, vec![held, falling], &s);
     let (held, falling) = (&out.particles[0], &out.particles[1]);
-    assert_eq!(held.stuck_to.map(|(w, _)| w), Some(1));
+    assert_eq!(held.stuck_to.as_deref().map(|&(w, _)| w), Some(1));
     let plate = walls[1].motion.position_or_origin(out.t);
     assert!(
         (held.particle.pos.x - plate.x).abs() < 1e-9,
@@ -264,7 +264,7 @@ fn a_negative_colour_is_stuck_from_the_start_and_stuck_particles_are_written_so(
         held.particle.pos
     );
     assert_eq!(held.as_written().color, -2);
-    assert_eq!(falling.stuck_to.map(|(w, _)| w), Some(0));
+    assert_eq!(falling.stuck_to.as_deref().map(|&(w, _)| w), Some(0));
     assert_eq!(falling.as_written().color, -1);
     assert_eq!(
         falling.particle.color, 4,

@@ -406,7 +406,7 @@ fn a_particle_stuck_to_a_wall_is_an_obstacle_to_the_others() {
     );
     assert_eq!(out.pair_contacts, 1);
     let (a, b) = (&out.particles[0], &out.particles[1]);
-    assert_eq!(a.stuck_to.map(|s| s.0), Some(0));
+    assert_eq!(a.stuck_to.as_deref().map(|s| s.0), Some(0));
     assert!((a.particle.pos.z - 0.1).abs() < 1e-3, "{a:?}");
     // Against an infinite mass the pair rebounds at the pair's εn.
     assert!((b.particle.vel.z / 0.9 - 1.0).abs() < 0.01, "{b:?}");

@@ -409,7 +409,7 @@ fn wall_collision(d: &mut Drift, i: usize, w: usize, tau: f64, t0: f64) -> Event
             // spin over the whole step, so start it turned back by τ's worth.
             turned(&wall.start.spin, -tau, p.pos - wall.origin(tau))
         };
-        s.stuck_to = Some((w, offset));
+        s.stuck_to = Some(Box::new((w, offset)));
         s.particle.vel = wall_v;
         s.particle.spin = wall.start.spin;
         EventKind::Stick
@@ -647,7 +647,7 @@ impl<'a> HardStepper<'a> {
             if s.free() {
                 s.particle.vel += g * (dt / 2.0);
             } else if s.alive
-                && let Some((w, _)) = s.stuck_to
+                && let Some(&(w, _)) = s.stuck_to.as_deref()
             {
                 carry(
                     s,

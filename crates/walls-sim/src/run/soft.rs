@@ -173,7 +173,7 @@ fn wall_step(i: usize, s: &mut State, mut work: WallWork, walls: &Walls) -> Part
     if !s.alive {
         return out;
     }
-    if let Some((w, _)) = s.stuck_to {
+    if let Some(&(w, _)) = s.stuck_to.as_deref() {
         // pkdgrav carries a stuck particle with its wall's move, before the forces
         // (docs/pkdgrav-physics.md §6; `SoftStepper::carry_stuck`).
         if !walls.pkdgrav_levers {
@@ -209,7 +209,7 @@ fn clear_of_walls(i: usize, open: &[(usize, Open)], walls: &Walls) -> bool {
 
 /// [`wall_step`] for a free particle clear of every wall (most of them): the closing
 /// kick alone, and a report only if there is something to note.
-#[inline]
+#[inline(always)]
 fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
     let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
@@ -227,7 +227,7 @@ fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep>
 /// kick after the forces; the sum of the new velocity's and spin's components, for
 /// [`State::finite_with`] (from registers: reading back what was just stored, in wider
 /// loads than it was stored with, stalls the processor).
-#[inline]
+#[inline(always)]
 fn close_step(s: &mut State, load: &Load, walls: &Walls) -> f64 {
     let dt = walls.dt;
     s.acc = load.force * s.inverse.0;
@@ -369,7 +369,7 @@ fn touch_walls(
                 s.alive = false;
                 EventKind::Remove
             } else {
-                s.stuck_to = Some((w, s.particle.pos - wall.origin));
+                s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
                 s.particle.vel = wall_v;
                 s.particle.spin = wall.spin;
                 EventKind::Stick
@@ -942,7 +942,7 @@ impl<'a> SoftStepper<'a> {
         }
         let dt = self.settings.dt;
         for s in &mut self.states {
-            if let (true, Some((w, _))) = (s.alive, s.stuck_to) {
+            if let (true, Some(&(w, _))) = (s.alive, s.stuck_to.as_deref()) {
                 carry(s, &self.now[w], dt);
             }
         }
@@ -1170,40 +1170,31 @@ impl<'a> SoftStepper<'a> {
             dt: self.settings.dt,
             aggregates: self.aggregates.as_ref(),
         };
-        let each = |i: usize,
-                    s: &mut State,
-                    load: &mut Load,
-                    open: &mut Vec<(usize, Open)>,
-                    visit: &mut Vec<usize>| {
-            if s.free() && !s.member && clear_of_walls(i, open, &walls) {
-                return clear_step(s, load, &walls).map(|report| (i, report));
-            }
-            let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
-            report.not_finite = !s.finite();
-            (!report.is_empty()).then_some((i, report))
-        };
-        // The load, once used, starts the next step with gravity alone (while it is at
-        // hand: [`SoftStepper::kick_drift`] need not touch it); an aggregate's members'
-        // loads are kept for it ([`SoftStepper::gather_aggregates`]).
-        let each = |i: usize,
-                    s: &mut State,
-                    load: &mut Load,
-                    open: &mut Vec<(usize, Open)>,
-                    visit: &mut Vec<usize>| {
-            let report = each(i, s, load, open, visit);
-            if !s.member {
-                *load = Load::gravity(s, &gravity);
-            }
-            report
-        };
         // A plain loop over each chunk of the particles, its reports kept with it (in
-        // particle order within the chunk), chunks in parallel for many particles.
+        // particle order within the chunk), chunks in parallel for many particles. Each
+        // load, once used, starts the next step with gravity alone (while it is at hand:
+        // [`SoftStepper::kick_drift`] need not touch it); an aggregate's members' loads
+        // are kept for it ([`SoftStepper::gather_aggregates`]).
         let chunk = |(c, (((states, loads), opens), (reports, visit))): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
             for (k, ((s, load), open)) in states.iter_mut().zip(loads).zip(opens).enumerate() {
-                if let Some(report) = each(first + k, s, load, open, visit) {
-                    reports.push(report);
+                let i = first + k;
+                if s.free() && !s.member && clear_of_walls(i, open, &walls) {
+                    // Most particles: the closing kick alone.
+                    if let Some(report) = clear_step(s, load, &walls) {
+                        reports.push((i, report));
+                    }
+                    *load = Load::gravity(s, &gravity);
+                    continue;
+                }
+                let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
+                report.not_finite = !s.finite();
+                if !s.member {
+                    *load = Load::gravity(s, &gravity);
+                }
+                if !report.is_empty() {
+                    reports.push((i, report));
                 }
             }
         };
