@@ -1036,15 +1036,20 @@ impl<'a> SoftStepper<'a> {
             pairs.len().max(1)
         };
         scans.resize_with(pairs.len().div_ceil(size), Scan::default);
+        // Plain slices in the loop (not the list's vectors behind references, which the
+        // compiler would read again at every pair).
+        let (list, open, centres) = (pairs.as_slice(), slots.as_slice(), spheres.as_slice());
         let scan = |(c, scan): (usize, &mut Scan)| {
             scan.touching.clear();
             scan.apart.clear();
             let first = c * size;
-            let end = (first + size).min(pairs.len());
-            for k in first..end {
-                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+            let end = (first + size).min(list.len());
+            for (k, (&(i, j), &slot)) in
+                (first..end).zip(list[first..end].iter().zip(&open[first..end]))
+            {
+                let (i, j) = (i as usize, j as usize);
                 // The spheres alone first: 32 bytes a particle, not its whole state.
-                let (a, b) = (&spheres[i], &spheres[j]);
+                let (a, b) = (&centres[i], &centres[j]);
                 let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
                 // Most candidates do not touch: the square of the distance tells, with
                 // a margin for round-off; the contact, if open, ends.
@@ -1060,7 +1065,7 @@ impl<'a> SoftStepper<'a> {
                 // As [`separation`] has it, without its square root for the many apart.
                 let overlap = if apart { 0.0 } else { reach - d2.sqrt() };
                 if overlap <= 0.0 {
-                    if slots[k] != NO_CONTACT {
+                    if slot != NO_CONTACT {
                         scan.apart.push(k as u32);
                     }
                 } else {
@@ -1082,9 +1087,9 @@ impl<'a> SoftStepper<'a> {
             }
             for &(k, overlap) in &scan.touching {
                 let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-                let (p, q) = (&states[i].particle, &states[j].particle);
+                // The radii from the spheres, at hand, not the states.
                 if self.overlaps.check(
-                    overlap / p.radius.min(q.radius),
+                    overlap / spheres[i][3].min(spheres[j][3]),
                     Overlapping::Particles(i, j),
                     t,
                     &mut self.warnings,
@@ -1537,14 +1542,25 @@ impl PairList {
             .filter(|(_, slot)| **slot != NO_CONTACT)
             .map(|(pair, slot)| (*pair, *slot))
             .collect();
-        let mut slots: Vec<u32> = pairs
+        // Their records are laid out again in the new list's order, which the force
+        // pass follows: one after the other in memory rather than where each happened
+        // to open. The others are dropped.
+        let mut records = Vec::with_capacity(open.len());
+        let slots: Vec<u32> = pairs
             .iter()
-            .map(|pair| open.remove(pair).unwrap_or(NO_CONTACT))
+            .map(|pair| match open.remove(pair) {
+                Some(slot) => {
+                    records.push(self.contacts.records[slot as usize]);
+                    (records.len() - 1) as u32
+                }
+                None => NO_CONTACT,
+            })
             .collect();
-        for (_, mut slot) in open {
-            self.contacts.close(&mut slot);
-        }
-        std::mem::swap(&mut self.slots, &mut slots);
+        self.contacts = PairContacts {
+            records,
+            free: Vec::new(),
+        };
+        self.slots = slots;
         self.pairs = pairs;
     }
 
