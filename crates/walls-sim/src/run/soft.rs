@@ -621,7 +621,8 @@ struct SoftStepper<'a> {
     /// What the wall contacts of each particle with something to note did this step,
     /// in particle order (kept to save allocating).
     reports: Vec<Vec<(usize, ParticleStep)>>,
-    /// Whether a step runs on rayon's threads.
+    /// Whether a step runs on rayon's threads (many particles, and more than one
+    /// thread).
     parallel: bool,
     /// The energy at the start.
     initial: f64,
@@ -748,7 +749,9 @@ impl<'a> SoftStepper<'a> {
             visits: Vec::new(),
             candidates,
             reports: Vec::new(),
-            parallel: n >= PARALLEL_FROM,
+            // With one thread, the plain loops: the same outcome, without rayon's
+            // splitting and collecting.
+            parallel: n >= PARALLEL_FROM && rayon::current_num_threads() > 1,
             initial,
             events: Vec::new(),
             pair_contacts: 0,
