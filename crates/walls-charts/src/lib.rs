@@ -153,6 +153,60 @@ fn range(series: &[Series], pick: fn(&(f64, f64)) -> f64, log: bool) -> (f64, f6
     }
 }
 
+/// Where the legend hides the fewest points of the series (and of the midpoints of their
+/// lines): the middle of the right side unless something is under it, then the
+/// corners. The legend is taken as a box of 30 % of the plot's width and 5 % of its
+/// height a series.
+fn legend_place(
+    series: &[Series],
+    chart: &Chart,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> SeriesLabelPosition {
+    let unit = |v: f64, lo: f64, hi: f64, log: bool| {
+        if log {
+            (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for s in series {
+        let placed: Vec<(f64, f64)> = (s.points.iter())
+            .filter(|(x, y)| {
+                x.is_finite()
+                    && y.is_finite()
+                    && (!chart.log_x || *x > 0.0)
+                    && (!chart.log_y || *y > 0.0)
+            })
+            .map(|&(x, y)| (unit(x, x0, x1, chart.log_x), unit(y, y0, y1, chart.log_y)))
+            .collect();
+        points.extend(
+            placed
+                .windows(2)
+                .map(|w| (0.5 * (w[0].0 + w[1].0), 0.5 * (w[0].1 + w[1].1))),
+        );
+        points.extend(placed);
+    }
+    let (w, h) = (0.3, (0.05 * series.len() as f64 + 0.04).min(1.0));
+    let candidates = [
+        (SeriesLabelPosition::MiddleRight, 1.0 - w, 0.5 - h / 2.0),
+        (SeriesLabelPosition::UpperRight, 1.0 - w, 1.0 - h),
+        (SeriesLabelPosition::UpperLeft, 0.0, 1.0 - h),
+        (SeriesLabelPosition::LowerRight, 1.0 - w, 0.0),
+        (SeriesLabelPosition::LowerLeft, 0.0, 0.0),
+        (SeriesLabelPosition::MiddleLeft, 0.0, 0.5 - h / 2.0),
+    ];
+    let hidden = |&(_, left, bottom): &(SeriesLabelPosition, f64, f64)| {
+        (points.iter())
+            .filter(|(x, y)| (left..=left + w).contains(x) && (bottom..=bottom + h).contains(y))
+            .count()
+    };
+    // The first of the least hidden (`min_by_key` keeps the first of equals).
+    let best = candidates.iter().min_by_key(|c| hidden(c));
+    best.map_or(SeriesLabelPosition::MiddleRight, |c| c.0.clone())
+}
+
 /// Picks the axis type for each scale and draws.
 fn draw<DB: DrawingBackend>(
     area: DrawingArea<DB, Shift>,
@@ -227,6 +281,7 @@ where
                     });
             }
             ctx.configure_series_labels()
+                .position(legend_place(series, chart, (x0, x1), (y0, y1)))
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK)
                 .label_font(("sans-serif", 13))

@@ -45,3 +45,54 @@ fn the_pareto_front_keeps_the_undominated_points() {
         vec![(1.0, 5.0), (2.0, 3.0), (4.0, 1.0)]
     );
 }
+
+/// The x coordinate of the SVG text that reads `label`.
+fn text_x(svg: &str, label: &str) -> f64 {
+    let end = svg
+        .find(&format!(">\n{label}\n</text>"))
+        .expect("the label is drawn");
+    let start = svg[..end].rfind("<text").unwrap();
+    let tag = &svg[start..end];
+    let x = tag.split("x=\"").nth(1).unwrap();
+    x[..x.find('"').unwrap()].parse().unwrap()
+}
+
+#[test]
+fn the_legend_goes_where_it_hides_no_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let chart = |name: &str| Chart {
+        name: name.into(),
+        title: "Legend".into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        log_x: false,
+        log_y: false,
+    };
+    // Lines down the left side and across the bottom: the middle of the right side is
+    // free, and keeps the legend.
+    let low = vec![Series::new(
+        "low line",
+        vec![(0.0, 10.0), (0.0, 0.0), (10.0, 0.1)],
+        Mark::Line,
+    )];
+    write(dir.path(), &chart("low"), &low).unwrap();
+    let svg = std::fs::read_to_string(dir.path().join("low.svg")).unwrap();
+    assert!(
+        text_x(&svg, "low line") > 400.0,
+        "{}",
+        text_x(&svg, "low line")
+    );
+    // Points all over the right side: the legend moves to the left.
+    let right: Vec<(f64, f64)> = (0..=20).map(|k| (10.0, f64::from(k) / 2.0)).collect();
+    let crowded = vec![
+        Series::new("right side", right, Mark::Dots),
+        Series::new("corner", vec![(0.0, 0.0)], Mark::Dots),
+    ];
+    write(dir.path(), &chart("crowded"), &crowded).unwrap();
+    let svg = std::fs::read_to_string(dir.path().join("crowded.svg")).unwrap();
+    assert!(
+        text_x(&svg, "right side") < 400.0,
+        "{}",
+        text_x(&svg, "right side")
+    );
+}

@@ -1,8 +1,8 @@
 //! The soft-sphere run (SSDEM): kick-drift-kick leapfrog (or pkdgrav's variant that
 //! feeds the wall dashpot velocities predicted to the step's end; or pkdgrav's whole
-//! order of operations, [`Integrator::Pkdgrav`]; or, to compare, explicit Euler), with the spring–dashpot of [`crate::contact::ssdem`] against every wall and
-//! every particle a particle overlaps, and rolling and twisting resistance where the
-//! material has them.
+//! order of operations, [`Integrator::Pkdgrav`]; or, to compare, explicit Euler), with
+//! the spring–dashpot of [`crate::contact::ssdem`] against every wall and every particle
+//! a particle overlaps, and rolling and twisting resistance where the material has them.
 //!
 //! pkdgrav's overlap warnings (3 % and 15 % of the radius) are reported once each; an
 //! overlap above 50 % stops the run, as pkdgrav aborts; more than 3 wall contacts at once
@@ -13,11 +13,15 @@
 //! ([`crate::broad::grid`]) when a particle or a translating wall has moved half the skin.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
-//! the pipeline of [`SoftStepper::step`]: `kick_drift` (with each load's gravity and the
-//! list's staleness), `move_aggregates`, `move_walls`, `move_assemblies`, the list's
-//! update, `pair_contacts`, `wall_contacts` (with the closing
-//! kick), `note_wall_contacts` (events and warnings, in particle order),
-//! `kick_assemblies` and `gather_aggregates`; with [`Integrator::Pkdgrav`],
+//! the pipeline of [`SoftStepper::step`]: `kick_drift` (with the list's staleness),
+//! `move_aggregates`, `move_walls`, `carry_stuck` (only once a particle is held),
+//! `move_assemblies`, the list's update, `pair_contacts`, `wall_contacts` (with the
+//! closing kick, after which each load starts the next step with gravity),
+//! `note_wall_contacts` (events and warnings, in particle order), `kick_assemblies` and
+//! `gather_aggregates`. The passes over all the particles are plain loops over chunks,
+//! in parallel only with many particles and more than one thread; what they carry per
+//! particle is kept small (a 176-byte [`State`], a 48-byte load, a 32-byte sphere), as
+//! memory, not arithmetic, bounds them. With [`Integrator::Pkdgrav`],
 //! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
 //! does. pkdgrav's aggregates (`AGGS`, [`crate::dynamics::aggregate`]) run only with
 //! [`Integrator::Pkdgrav`]; their members are placed by their aggregate, not kicked or
