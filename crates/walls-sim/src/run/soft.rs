@@ -1018,9 +1018,10 @@ impl<'a> SoftStepper<'a> {
 
     /// The forces of the candidate pairs that overlap: which overlap, in the list's
     /// order (their overlaps checked, their contacts opened and the others' closed);
-    /// then, block by block, their forces (in parallel for many particles) and those
-    /// added to the loads in the list's order, so that the outcome does not depend on
-    /// the threads.
+    /// then their forces, added to the loads in the list's order: one by one on one
+    /// thread, each record changed in place; block by block in parallel otherwise, the
+    /// new records and forces collected, then written and added. The outcome does not
+    /// depend on the threads.
     fn pair_forces(&mut self) -> Flow {
         let t = self.t;
         let states = &self.states;
@@ -1120,6 +1121,18 @@ impl<'a> SoftStepper<'a> {
             optional: &self.optional,
         };
         let loads = &mut self.loads;
+        if !self.parallel {
+            // One thread: each contact's record changed where it lies, and its force
+            // added at once, in the list's order as below.
+            for &k in touching.iter() {
+                let k = k as usize;
+                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+                let record = &mut contacts.records[slots[k] as usize];
+                let f = context.force(i, j, &spheres[i], &spheres[j], record);
+                f.add_to(loads, i, j);
+            }
+            return Flow::Continue;
+        }
         for block in touching.chunks(PAIR_BLOCK) {
             let each = |&k: &u32| {
                 let k = k as usize;
@@ -1128,24 +1141,11 @@ impl<'a> SoftStepper<'a> {
                 let force = context.force(i, j, &spheres[i], &spheres[j], &mut record);
                 (record, force)
             };
-            if self.parallel {
-                block.par_iter().map(each).collect_into_vec(forces);
-            } else {
-                forces.clear();
-                forces.extend(block.iter().map(each));
-            }
+            block.par_iter().map(each).collect_into_vec(forces);
             for (&k, (record, f)) in block.iter().zip(forces.iter()) {
                 let k = k as usize;
                 contacts.records[slots[k] as usize] = *record;
-                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
-                if f.free.0 {
-                    loads[i].force += f.force;
-                    loads[i].torque += f.torques.0;
-                }
-                if f.free.1 {
-                    loads[j].force -= f.force;
-                    loads[j].torque += f.torques.1;
-                }
+                f.add_to(loads, pairs[k].0 as usize, pairs[k].1 as usize);
             }
         }
         Flow::Continue
@@ -1482,7 +1482,7 @@ struct PairList {
     contacts: PairContacts,
     /// The pairs that touch this step (kept to save allocating).
     touching: Vec<u32>,
-    /// A block of their new records and forces (kept to save allocating).
+    /// A block of their new records and forces, in parallel (kept to save allocating).
     forces: Vec<(Record, PairForce)>,
     /// What each chunk of the list found this step (kept to save allocating).
     scans: Vec<Scan>,
@@ -1667,6 +1667,21 @@ struct PairForce {
     force: Vec3,
     torques: (Vec3, Vec3),
     free: (bool, bool),
+}
+
+impl PairForce {
+    /// Adds the force and torques to the loads of particles i and j (of the free ones).
+    #[inline]
+    fn add_to(&self, loads: &mut [Load], i: usize, j: usize) {
+        if self.free.0 {
+            loads[i].force += self.force;
+            loads[i].torque += self.torques.0;
+        }
+        if self.free.1 {
+            loads[j].force -= self.force;
+            loads[j].torque += self.torques.1;
+        }
+    }
 }
 
 /// The vector from sphere b's centre to sphere a's, its length, and how far the two
