@@ -56,8 +56,8 @@ const PLAIN: &str = "DEM DEM_ROTATION_DASHPOT";
 /// Runs, keeping every step's states.
 fn run_all(walls: &[Wall], particles: Vec<Particle>, s: &Settings) -> (Outcome, Vec<Vec<State>>) {
     let mut seen = Vec::new();
-    let out = run_observed(walls, particles, s, &mut |_, _, states, _| {
-        seen.push(states.to_vec())
+    let out = run_observed(walls, particles, s, &mut |_, _, snapshot| {
+        seen.push(snapshot.look().0.to_vec())
     });
     (out, seen)
 }
@@ -133,7 +133,7 @@ fn without_aggs_the_members_run_free_with_a_warning() {
         &[],
         particles.clone(),
         &settings(PLAIN, 1e-3, 10, [0.0, 0.0, -9.81], 0.0),
-        &mut |_, _, _, _| {},
+        &mut |_, _, _| {},
     );
     assert_eq!(out.warnings[0].code(), "W601", "{:?}", out.warnings);
     assert!(
@@ -151,7 +151,7 @@ fn without_aggs_the_members_run_free_with_a_warning() {
         &[],
         apart,
         &settings(PLAIN, 1e-3, 10, [0.0, 0.0, -9.81], 0.0),
-        &mut |_, _, _, _| {},
+        &mut |_, _, _| {},
     );
     assert_eq!(out.steps, 10);
     assert_eq!(out.warnings.len(), 1);

@@ -231,7 +231,7 @@ fn istartstep_sets_the_first_step_number_and_the_start_time() {
         &scene(FLOOR),
         run.particles,
         &run.settings,
-        &mut |step, _, _, _| seen.push(step),
+        &mut |step, _, _| seen.push(step),
     );
     assert_eq!(seen, (6..=25).collect::<Vec<u64>>());
     assert_eq!(out.steps, 20);

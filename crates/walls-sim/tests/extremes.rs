@@ -201,7 +201,7 @@ fn an_interrupted_run_stops_after_the_step_it_is_in() {
         &walls,
         vec![ball([0.0, 0.0, 1.0], [0.0; 3])],
         &settings,
-        &mut |_, _, _, _| seen += 1,
+        &mut |_, _, _| seen += 1,
         &|| {
             count.set(count.get() + 1);
             count.get() >= 5

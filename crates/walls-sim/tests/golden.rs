@@ -226,9 +226,9 @@ fn measure_as(scene: &str, change: impl Fn(&mut Settings)) -> Measured {
         &s.walls,
         s.particles.clone(),
         &s.settings,
-        &mut |step, _, states, _| {
+        &mut |step, _, snapshot| {
             if s.expected.contains_key(&step) {
-                seen.insert(step, states.to_vec());
+                seen.insert(step, snapshot.look().0.to_vec());
             }
         },
     );
@@ -376,8 +376,9 @@ fn reactive_files_error(scene: &str) -> (f64, f64) {
         &s.walls,
         s.particles.clone(),
         &s.settings,
-        &mut |step, _, _, assemblies| {
+        &mut |step, _, snapshot| {
             if labels[1..].contains(&step) {
+                let (_, assemblies) = snapshot.look();
                 out.record_assemblies(step, &s.walls, assemblies).unwrap();
             }
         },

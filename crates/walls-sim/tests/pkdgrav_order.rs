@@ -166,7 +166,7 @@ fn walls_move_in_steps_to_the_sinusoid_with_the_velocity_half_a_step_later() {
             &walls,
             vec![p],
             &settings(material(0.8, 1.0, 0.0), 40.0),
-            &mut |step, t, states, _| seen.push((step, t, states[0].particle.clone())),
+            &mut |step, t, snapshot| seen.push((step, t, snapshot.look().0[0].particle.clone())),
         );
         assert_eq!(out.events[0].kind, EventKind::Stick);
         assert_eq!(out.events[0].t, 0.0);

@@ -52,7 +52,8 @@ fn slide(v0: f64, eps_t: f64, rule: Sliding) -> Vec<(f64, f64, f64)> {
     };
     let walls = scene("wall type plane origin 0 0 0 orient 0 0 1\n");
     let mut rows = vec![(0.0, v0, v0)];
-    let out = run_observed(&walls, vec![sphere], &settings, &mut |_, t, states, _| {
+    let out = run_observed(&walls, vec![sphere], &settings, &mut |_, t, snapshot| {
+        let (states, _) = snapshot.look();
         let p = &states[0].particle;
         // The contact point, −R ẑ from the centre, moves at v + ω × (−R ẑ).
         rows.push((t, p.vel.x, p.vel.x - p.spin.y * R));

@@ -131,8 +131,8 @@ fn errors(method: ContactModel, integrator: Integrator, dt: f64) -> (f64, f64, f
         };
         let s = settings(method, integrator, 0.5, dt, 3.0 * t_c + lift);
         let mut deepest = 0.0f64;
-        let out = run_observed(&scene, start(1), &s, &mut |_, _, states, _| {
-            deepest = deepest.max(RADIUS - states[0].particle.pos.z);
+        let out = run_observed(&scene, start(1), &s, &mut |_, _, snapshot| {
+            deepest = deepest.max(RADIUS - snapshot.look().0[0].particle.pos.z);
         });
         let e = out.particles[0].particle.vel.z;
         let restitution = (e / 0.5 - 1.0).abs();

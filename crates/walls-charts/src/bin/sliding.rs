@@ -52,8 +52,8 @@ fn run_slide(v0: f64, eps_t: f64, rule: Sliding) -> Vec<[f64; 3]> {
     };
     let floor = scene("wall type plane origin 0 0 0 orient 0 0 1\n");
     let mut steps = vec![[0.0, v0, v0]];
-    run_observed(&floor, vec![sphere], &settings, &mut |_, t, states, _| {
-        let p = &states[0].particle;
+    run_observed(&floor, vec![sphere], &settings, &mut |_, t, snapshot| {
+        let p = &snapshot.look().0[0].particle;
         steps.push([t, p.vel.x, p.vel.x - RADIUS * p.spin.y]);
     });
     steps

@@ -120,7 +120,9 @@ fn main() -> std::io::Result<()> {
             &plane(),
             vec![ball(RADIUS, v)],
             &settings(ContactModel::Ssdem, k_n, dt, 3.0 * t_c),
-            &mut |_, _, states, _| deepest = deepest.max(RADIUS - states[0].particle.pos.z),
+            &mut |_, _, snapshot| {
+                deepest = deepest.max(RADIUS - snapshot.look().0[0].particle.pos.z)
+            },
         );
         let stop = out
             .warnings

@@ -686,7 +686,7 @@ pub(super) fn run(
     let mut run = HardStepper::new(scene, states, settings, plan);
     while run.running() {
         run.step();
-        observe(run.steps, run.t, &run.states, &[]);
+        observe(run.steps, run.t, &mut super::Settled(&run.states, &[]));
         if let Some(stop) = super::halt(&run.states, interrupted) {
             return run.outcome(Some(stop));
         }

@@ -190,25 +190,57 @@ fn wall_step(i: usize, s: &mut State, mut work: WallWork, walls: &Walls) -> Part
     if moved > r * r {
         out.too_fast = Some(moved.sqrt() / r);
     }
-    if !clear_of_walls(i, work.open, walls) && touch_walls(i, s, &mut work, walls, &mut out) {
+    if !clear_of_walls(i, s, work.open, walls) && touch_walls(i, s, &mut work, walls, &mut out) {
         return out;
     }
     if s.member {
         // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
         return out;
     }
-    close_step(s, work.load, walls);
+    close_step(s, work.load, walls.closing());
     out
 }
 
-/// Whether particle `i` is far from every wall and touches none: nothing to look at.
+/// The closing kick of a step, as [`close_step`] gives it: the timestep, the fraction of
+/// it the kick covers, and pkdgrav's `dAccCrit`.
+#[derive(Clone, Copy)]
+struct Closing {
+    dt: f64,
+    fraction: f64,
+    acc_crit: f64,
+}
+
+impl Walls<'_> {
+    /// This step's closing kick.
+    fn closing(&self) -> Closing {
+        Closing {
+            dt: self.dt,
+            fraction: self.closing_kick,
+            acc_crit: self.acc_crit,
+        }
+    }
+}
+
+/// Whether particle `i` (state `s`) touches no wall and cannot: no contact open, and
+/// every wall near it surely out of its reach ([`walls_geometry::shape::Cull::clear_of`], the test
+/// [`touch_walls`] makes first): nothing to look at. Most particles near a wall are not
+/// touching it.
 #[inline]
-fn clear_of_walls(i: usize, open: &[(usize, Open)], walls: &Walls) -> bool {
-    walls.index.is_none()
-        && open.is_empty()
-        && walls
-            .near
-            .is_none_or(|near| near.moving.is_empty() && near.of(i).next().is_none())
+fn clear_of_walls(i: usize, s: &State, open: &[(usize, Open)], walls: &Walls) -> bool {
+    walls.index.is_none() && open.is_empty() && clear_of_near(i, s, walls.near, walls.now)
+}
+
+/// [`clear_of_walls`] for a particle without a wall index and with no contact open: its
+/// near walls (`near`, as they stand: `now`) all surely out of its reach, and none
+/// moving.
+#[inline]
+fn clear_of_near(i: usize, s: &State, near: Option<&NearWalls>, now: &[WallNow]) -> bool {
+    near.is_none_or(|near| {
+        near.moving.is_empty()
+            && near
+                .of(i)
+                .all(|w| now[w].cull.clear_of(&s.particle.pos, s.particle.radius))
+    })
 }
 
 /// [`wall_step`] for a free particle clear of every wall (most of them): the closing
@@ -217,7 +249,7 @@ fn clear_of_walls(i: usize, open: &[(usize, Open)], walls: &Walls) -> bool {
 fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
     let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
-    let motion = close_step(s, load, walls);
+    let motion = close_step(s, load, walls.closing());
     let too_fast = (moved > r * r).then(|| moved.sqrt() / r);
     let not_finite = !s.finite_with(motion);
     (too_fast.is_some() || not_finite).then(|| ParticleStep {
@@ -232,15 +264,19 @@ fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep>
 /// [`State::finite_with`] (from registers: reading back what was just stored, in wider
 /// loads than it was stored with, stalls the processor).
 #[inline(always)]
-fn close_step(s: &mut State, load: &Load, walls: &Walls) -> f64 {
-    let dt = walls.dt;
+fn close_step(s: &mut State, load: &Load, kick: Closing) -> f64 {
+    let Closing {
+        dt,
+        fraction,
+        acc_crit,
+    } = kick;
     s.acc = load.force * s.inverse.0;
     s.alpha = load.torque * s.inverse.1;
-    if walls.acc_crit > 0.0 {
-        zero_small_motions(s, walls.acc_crit, dt);
+    if acc_crit > 0.0 {
+        zero_small_motions(s, acc_crit, dt);
     }
-    let vel = s.particle.vel + s.acc * (dt * walls.closing_kick);
-    let spin = s.particle.spin + s.alpha * (dt * walls.closing_kick);
+    let vel = s.particle.vel + s.acc * (dt * fraction);
+    let spin = s.particle.spin + s.alpha * (dt * fraction);
     s.particle.vel = vel;
     s.particle.spin = spin;
     vel.sum() + spin.sum()
@@ -616,6 +652,25 @@ struct SoftStepper<'a> {
     /// Set up failed (an aggregate of one member): the run stops before it starts.
     halted: bool,
     loads: Vec<Load>,
+    /// Whether each particle's closing kick is owed: a free particle clear of the walls
+    /// gets it in the next drift ([`SoftStepper::kick_drift`]) rather than in the wall
+    /// pass, which saves a pass over the particles; [`SoftStepper::settle`] gives it
+    /// when the particles are looked at. Marked in the drift; owed once the wall pass
+    /// has run (`owing`).
+    owed: Vec<bool>,
+    /// Whether the wall pass has run since the drift marked the kicks it may owe.
+    owing: bool,
+    /// The closing kick owed.
+    owed_kick: Closing,
+    /// The first particle whose numbers overflowed in an owed kick given by
+    /// [`SoftStepper::settle`] this step.
+    owed_bad: Option<usize>,
+    /// The sum of the sizes (|x| + |y| + |z|) of every particle contact's force and
+    /// torques this step, and the largest size of gravity on a particle, and 1/m or 1/I
+    /// of a particle: bounds on what an owed kick can add ([`SoftStepper::surely_finite`]).
+    force_bound: f64,
+    gravity_bound: f64,
+    largest_inverse: f64,
     /// Each particle's open wall contacts: (wall, contact), kept apart from its load so
     /// that the passes that do not need them do not carry them.
     open_walls: Vec<Vec<(usize, Open)>>,
@@ -728,6 +783,19 @@ impl<'a> SoftStepper<'a> {
             .iter()
             .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
             .collect();
+        // The largest, or not a number if any is (then no kick is owed unchecked).
+        let largest = |a: f64, b: f64| {
+            if a.is_nan() || b.is_nan() {
+                f64::NAN
+            } else {
+                a.max(b)
+            }
+        };
+        let gravity_bound =
+            g.abs().sum() * (states.iter()).map(|s| s.particle.mass).fold(0.0, largest);
+        let largest_inverse = (states.iter())
+            .map(|s| largest(s.inverse.0, s.inverse.1))
+            .fold(0.0, largest);
         SoftStepper {
             restitutions,
             scene,
@@ -748,7 +816,18 @@ impl<'a> SoftStepper<'a> {
             halted,
             assemblies,
             assembly_of,
+            gravity_bound,
+            largest_inverse,
             loads,
+            owed: vec![false; n],
+            owing: false,
+            owed_kick: Closing {
+                dt: settings.dt,
+                fraction: 0.0,
+                acc_crit: settings.acc_crit,
+            },
+            owed_bad: None,
+            force_bound: 0.0,
             open_walls: (0..n).map(|_| Vec::new()).collect(),
             visits: Vec::new(),
             candidates,
@@ -800,13 +879,16 @@ impl<'a> SoftStepper<'a> {
         self.settings.due(self.steps)
     }
 
-    /// One step: kick and drift, the walls and assemblies moved on, the forces of the
+    /// One step: the walls moved on, kick and drift (with the last step's owed kicks),
+    /// the assemblies moved on, the forces of the
     /// particle contacts and then of the wall contacts (with the closing kick), what
     /// they did, and the assemblies' closing kick.
     fn step(&mut self) -> Flow {
+        // The walls first (they do not depend on the particles): the drift finds which
+        // particles are out of their reach where they stand this step.
+        self.move_walls();
         self.kick_drift();
         self.move_aggregates();
-        self.move_walls();
         if self.kicks.pkdgrav_levers {
             self.carry_stuck();
         }
@@ -859,45 +941,113 @@ impl<'a> SoftStepper<'a> {
 
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
     /// drift, and the kick after it (explicit Euler's), for the free particles; in the
-    /// same pass, the loads of an aggregate's members start the step with gravity alone
-    /// (the others' were started by the last wall pass), and the candidate pairs learn
-    /// whether a drifted particle has moved far enough to rebuild them
-    /// ([`PairList::drifted`]).
+    /// same pass, each free particle first gets the last step's closing kick if the wall
+    /// pass left it owed ([`SoftStepper::owed`]), the loads of an aggregate's members
+    /// start the step with gravity alone (the others' were started by the last wall pass
+    /// or here, after the owed kick), the candidate pairs learn whether a drifted
+    /// particle has moved far enough to rebuild them ([`PairList::drifted`]), and each
+    /// particle is marked whether this step's wall pass may owe it its closing kick
+    /// ([`SoftStepper::may_owe`]).
     fn kick_drift(&mut self) {
         let dt = self.settings.dt;
         let g = self.settings.gravity;
         let Kicks { opening, late, .. } = self.kicks;
         let limit = self.candidates.limit();
+        let half = self.candidates.skin / 2.0;
+        // The kicks owed by the last wall pass, if it owed any.
+        let pay = std::mem::take(&mut self.owing).then_some(self.owed_kick);
+        let forces = self.settings.forces;
         let PairList {
-            built_at, spheres, ..
+            built_at,
+            spheres,
+            near,
+            ..
         } = &mut self.candidates;
-        let kick_drift = |s: &mut State, load: &mut Load, at: &Vec3, sphere: &mut [f64; 4]| {
+        // The walls as the wall pass will see them (`SoftStepper::wall_contacts`). The
+        // walls near a particle were found where it and they stood at the last rebuild,
+        // which is done again, after this pass, once one has moved too far: then the
+        // pass owes nothing.
+        let near = near.as_ref().filter(|_| forces);
+        let now: &[WallNow] = if forces { &self.now } else { &[] };
+        let owing = self.index.is_none() || !forces;
+        let owing = owing && near.is_none_or(|n| !n.moved(now, half));
+        let kick_drift = |i: usize, s: &mut State, work: DriftWork| {
+            let DriftWork {
+                load,
+                owed,
+                at,
+                sphere,
+                open,
+            } = work;
             if s.member {
                 // The others' loads were started in the last wall pass, once used.
                 *load = Load::gravity(s, &g);
-                false
-            } else if s.free() {
-                s.particle.vel += s.acc * (dt * opening);
-                s.particle.spin += s.alpha * (dt * opening);
-                let v = s.particle.vel;
-                s.particle.pos += v * dt;
-                if late != 0.0 {
-                    s.particle.vel += s.acc * (dt * late);
-                    s.particle.spin += s.alpha * (dt * late);
-                }
-                *sphere = PairList::sphere(s);
-                PairList::moved_far(s, at, limit)
-            } else {
-                false
+                *owed = false;
+                return false;
             }
+            if !s.free() {
+                *owed = false;
+                return false;
+            }
+            // In locals, each field read once and written once: read back at once,
+            // what was just written stalls the processor.
+            let (mut vel, mut spin, mut acc, mut alpha) =
+                (s.particle.vel, s.particle.spin, s.acc, s.alpha);
+            if let (true, Some(kick)) = (*owed, pay) {
+                // The last step's closing kick, as the wall pass would have given it.
+                if kick.acc_crit > 0.0 {
+                    close_step(s, load, kick);
+                    (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
+                } else {
+                    acc = load.force * s.inverse.0;
+                    alpha = load.torque * s.inverse.1;
+                    vel += acc * (dt * kick.fraction);
+                    spin += alpha * (dt * kick.fraction);
+                    s.acc = acc;
+                    s.alpha = alpha;
+                }
+                *load = Load::gravity(s, &g);
+            }
+            vel += acc * (dt * opening);
+            spin += alpha * (dt * opening);
+            s.particle.pos += vel * dt;
+            if late != 0.0 {
+                vel += acc * (dt * late);
+                spin += alpha * (dt * late);
+            }
+            s.particle.vel = vel;
+            s.particle.spin = spin;
+            *sphere = PairList::sphere(s);
+            let far = PairList::moved_far(s, at, limit);
+            *owed = owing
+                && !far
+                && open.is_empty()
+                && Self::may_owe(s, dt)
+                && clear_of_near(i, s, near, now);
+            far
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
         // no short cut), chunks in parallel for many particles.
-        let chunk = |(((states, loads), built_at), spheres): DriftChunk| {
+        let chunk = |(c, ((((states, loads), owed), (built_at, spheres)), opens)): DriftChunk| {
             let mut drifted = false;
-            for (((s, load), at), sphere) in states.iter_mut().zip(loads).zip(built_at).zip(spheres)
+            let first = c * CHUNK;
+            let rest = loads
+                .iter_mut()
+                .zip(owed)
+                .zip(built_at)
+                .zip(spheres)
+                .zip(opens);
+            for (k, (s, ((((load, owed), at), sphere), open))) in
+                states.iter_mut().zip(rest).enumerate()
             {
-                drifted |= kick_drift(s, load, at, sphere);
+                let work = DriftWork {
+                    load,
+                    owed,
+                    at,
+                    sphere,
+                    open,
+                };
+                drifted |= kick_drift(first + k, s, work);
             }
             drifted
         };
@@ -905,14 +1055,81 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
-                .zip(built_at.par_chunks(CHUNK))
-                .zip(spheres.par_chunks_mut(CHUNK))
+                .zip(self.owed.par_chunks_mut(CHUNK))
+                .zip(
+                    built_at
+                        .par_chunks(CHUNK)
+                        .zip(spheres.par_chunks_mut(CHUNK)),
+                )
+                .zip(self.open_walls.par_chunks(CHUNK))
+                .enumerate()
                 .map(chunk)
                 .reduce(|| false, |a, b| a || b)
         } else {
-            chunk((((&mut self.states, &mut self.loads), built_at), spheres))
+            chunk((
+                0,
+                (
+                    (
+                        ((&mut self.states, &mut self.loads), &mut self.owed),
+                        (built_at, spheres),
+                    ),
+                    &self.open_walls,
+                ),
+            ))
         };
         self.candidates.drifted = drifted;
+        self.owed_bad = None;
+        self.force_bound = 0.0;
+    }
+
+    /// Whether the wall pass may owe a free particle, drifted and clear of the walls,
+    /// its closing kick: it has not moved more than a radius in the step (else the wall
+    /// pass warns of it), and its position, velocity and spin are surely finite, so that
+    /// only its load could make them overflow ([`SoftStepper::surely_finite`]).
+    #[inline]
+    fn may_owe(s: &State, dt: f64) -> bool {
+        let p = &s.particle;
+        let r = p.radius;
+        let size = p.pos.abs().sum() + p.vel.abs().sum() + p.spin.abs().sum();
+        p.vel.norm_squared() * dt * dt <= r * r && size < SURELY_FINITE
+    }
+
+    /// The closing kicks the last wall pass owed, given now (as the next drift would
+    /// give them), so that the particles stand as the step left them. The first
+    /// particle whose numbers overflowed in its kick is kept for
+    /// [`SoftStepper::not_finite`].
+    fn settle(&mut self) {
+        if !std::mem::take(&mut self.owing) {
+            return;
+        }
+        let kick = self.owed_kick;
+        let g = self.settings.gravity;
+        let mut bad = None;
+        for (i, ((s, load), owed)) in (self.states.iter_mut())
+            .zip(&mut self.loads)
+            .zip(&mut self.owed)
+            .enumerate()
+        {
+            if std::mem::take(owed) {
+                let motion = close_step(s, load, kick);
+                *load = Load::gravity(s, &g);
+                if bad.is_none() && !s.finite_with(motion) {
+                    bad = Some(i);
+                }
+            }
+        }
+        self.owed_bad = bad;
+    }
+
+    /// Whether the kicks owed cannot overflow: each owed particle's position, velocity
+    /// and spin are below [`SURELY_FINITE`] in size ([`SoftStepper::may_owe`]), and its
+    /// load (gravity and particle contacts) is at most gravity on the heaviest particle
+    /// plus the sum of every particle contact's forces and torques this step, which
+    /// times the largest 1/m or 1/I and the kick's time is below it too.
+    fn surely_finite(&self) -> bool {
+        let kick = self.owed_kick.dt * self.owed_kick.fraction;
+        let load = self.gravity_bound + self.force_bound;
+        load * self.largest_inverse * kick.max(1.0) < SURELY_FINITE
     }
 
     /// The clock moves on a step, and the moving walls with it.
@@ -1121,6 +1338,8 @@ impl<'a> SoftStepper<'a> {
             optional: &self.optional,
         };
         let loads = &mut self.loads;
+        // What the forces could add to an owed kick (`SoftStepper::surely_finite`).
+        let mut bound = 0.0;
         if !self.parallel {
             // One thread: each contact's record changed where it lies, and its force
             // added at once, in the list's order as below.
@@ -1130,7 +1349,9 @@ impl<'a> SoftStepper<'a> {
                 let record = &mut contacts.records[slots[k] as usize];
                 let f = context.force(i, j, &spheres[i], &spheres[j], record);
                 f.add_to(loads, i, j);
+                bound += f.size();
             }
+            self.force_bound += bound;
             return Flow::Continue;
         }
         for block in touching.chunks(PAIR_BLOCK) {
@@ -1146,8 +1367,10 @@ impl<'a> SoftStepper<'a> {
                 let k = k as usize;
                 contacts.records[slots[k] as usize] = *record;
                 f.add_to(loads, pairs[k].0 as usize, pairs[k].1 as usize);
+                bound += f.size();
             }
         }
+        self.force_bound += bound;
         Flow::Continue
     }
 
@@ -1187,12 +1410,17 @@ impl<'a> SoftStepper<'a> {
         // load, once used, starts the next step with gravity alone (while it is at hand:
         // [`SoftStepper::kick_drift`] need not touch it); an aggregate's members' loads
         // are kept for it ([`SoftStepper::gather_aggregates`]).
-        let chunk = |(c, (((states, loads), opens), (reports, visit))): WallChunk| {
+        let chunk = |(c, ((((states, loads), owed), opens), (reports, visit))): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
-            for (k, ((s, load), open)) in states.iter_mut().zip(loads).zip(opens).enumerate() {
+            let rest = loads.iter_mut().zip(owed).zip(opens);
+            for (k, (s, ((load, &owed), open))) in states.iter_mut().zip(rest).enumerate() {
+                if owed {
+                    // Clear of the walls: its closing kick is owed, not given here.
+                    continue;
+                }
                 let i = first + k;
-                if s.free() && !s.member && clear_of_walls(i, open, &walls) {
+                if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
                     // Most particles: the closing kick alone.
                     if let Some(report) = clear_step(s, load, &walls) {
                         reports.push((i, report));
@@ -1217,6 +1445,7 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
+                .zip(self.owed.par_chunks(CHUNK))
                 .zip(self.open_walls.par_chunks_mut(CHUNK))
                 .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
@@ -1225,20 +1454,30 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .chunks_mut(CHUNK)
                 .zip(self.loads.chunks_mut(CHUNK))
+                .zip(self.owed.chunks(CHUNK))
                 .zip(self.open_walls.chunks_mut(CHUNK))
                 .zip(self.reports.iter_mut().zip(&mut self.visits))
                 .enumerate()
                 .for_each(chunk);
         }
+        // The kicks the drift marked as owed are owed now.
+        self.owing = true;
+        self.owed_kick = walls.closing();
     }
 
-    /// The first particle whose numbers overflowed in the last step, if any.
-    fn not_finite(&self) -> Option<usize> {
-        self.reports
-            .iter()
-            .flatten()
+    /// The first particle whose numbers overflowed in the last step, if any: in the
+    /// wall pass, or in a kick owed (given now unless surely finite).
+    fn not_finite(&mut self) -> Option<usize> {
+        if !self.surely_finite() {
+            self.settle();
+        }
+        let reported = (self.reports.iter().flatten())
             .find(|(_, r)| r.not_finite)
-            .map(|(i, _)| *i)
+            .map(|(i, _)| *i);
+        match (reported, self.owed_bad) {
+            (Some(i), Some(j)) => Some(i.min(j)),
+            (i, j) => i.or(j),
+        }
     }
 
     /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
@@ -1367,7 +1606,8 @@ impl<'a> SoftStepper<'a> {
 
     /// What the run came to, and why it `stopped` early (besides pkdgrav's aborts,
     /// which the warnings say).
-    fn outcome(self, stopped: Option<super::Stop>) -> Outcome {
+    fn outcome(mut self, stopped: Option<super::Stop>) -> Outcome {
+        self.settle();
         let g = self.settings.gravity;
         let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
         Outcome {
@@ -1397,6 +1637,14 @@ fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
     }
 }
 
+impl super::Snapshot for SoftStepper<'_> {
+    /// The particles after the kicks owed ([`SoftStepper::settle`]).
+    fn look(&mut self) -> (&[State], &[Assembly]) {
+        self.settle();
+        (&self.states, &self.assemblies)
+    }
+}
+
 pub(super) fn run(
     scene: &[Wall],
     states: Vec<State>,
@@ -1416,7 +1664,7 @@ pub(super) fn run(
         if run.step() == Flow::Stop {
             break;
         }
-        observe(run.steps, run.t, &run.states, &run.assemblies);
+        observe(run.steps, run.t, &mut run);
         if let Some(stop) = super::halt_at(run.not_finite(), interrupted) {
             return run.outcome(Some(stop));
         }
@@ -1622,20 +1870,43 @@ impl PairList {
     }
 }
 
-/// A chunk of the particles as the drift takes it: their states and loads, where the
-/// candidate pairs were found, and their spheres.
+/// A chunk of the particles as the drift takes it: its number, their states, loads and
+/// owed kicks, where the candidate pairs were found and their spheres, and their open
+/// wall contacts.
 type DriftChunk<'a> = (
-    ((&'a mut [State], &'a mut [Load]), &'a [Vec3]),
-    &'a mut [[f64; 4]],
+    usize,
+    (
+        (
+            ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
+            (&'a [Vec3], &'a mut [[f64; 4]]),
+        ),
+        &'a [Vec<(usize, Open)>],
+    ),
 );
 
-/// A chunk of the particles as the wall pass takes it: its number, their states, loads
-/// and open wall contacts, and its reports and scratch list of walls.
+/// What the drift works on for one particle besides its state.
+struct DriftWork<'a> {
+    load: &'a mut Load,
+    /// Whether its closing kick is owed ([`SoftStepper::owed`]).
+    owed: &'a mut bool,
+    /// Where it was when the candidate pairs were found.
+    at: &'a Vec3,
+    sphere: &'a mut [f64; 4],
+    open: &'a [(usize, Open)],
+}
+
+/// How large a particle's numbers, or a bound on its next kick, may be for the kick
+/// owed to it to be surely finite ([`SoftStepper::surely_finite`]): twice it is still
+/// far below the largest double (1.8·10³⁰⁸).
+const SURELY_FINITE: f64 = 1e300;
+
+/// A chunk of the particles as the wall pass takes it: its number, their states, loads,
+/// owed kicks and open wall contacts, and its reports and scratch list of walls.
 type WallChunk<'a> = (
     usize,
     (
         (
-            (&'a mut [State], &'a mut [Load]),
+            ((&'a mut [State], &'a mut [Load]), &'a [bool]),
             &'a mut [Vec<(usize, Open)>],
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
@@ -1670,6 +1941,12 @@ struct PairForce {
 }
 
 impl PairForce {
+    /// The sum of the sizes (|x| + |y| + |z|) of the force and both torques.
+    #[inline]
+    fn size(&self) -> f64 {
+        self.force.abs().sum() + self.torques.0.abs().sum() + self.torques.1.abs().sum()
+    }
+
     /// Adds the force and torques to the loads of particles i and j (of the free ones).
     #[inline]
     fn add_to(&self, loads: &mut [Load], i: usize, j: usize) {

@@ -359,13 +359,15 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         scene,
         particles,
         &settings,
-        &mut |step, t, states, assemblies| {
+        &mut |step, t, snapshot| {
             if let Some(bar) = &progress {
                 bar.set_position(step - first);
             }
             if !output(step) || written.is_err() {
                 return;
             }
+            // Only now are the particles looked at (`Snapshot`).
+            let (states, assemblies) = snapshot.look();
             written = (reactive_files.as_mut())
                 .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
                 .and_then(|()| {

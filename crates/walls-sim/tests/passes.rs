@@ -1,0 +1,105 @@
+//! The passes over the particles must not change what a run does.
+//!
+//! - **Threads.** The passes, the search for touching pairs and their forces run in
+//!   parallel from 1,024 particles up, and everything is merged in particle and pair
+//!   order: a run on one thread and on three ends bit for bit the same (positions,
+//!   velocities, events, contacts, warnings).
+//! - **Owed kicks.** The soft stepper gives a free particle clear of the walls its
+//!   closing kick in the next step's drift, and gives the kicks still owed when an
+//!   observer looks at the particles, when the run ends, and when an owed kick might
+//!   overflow. An observer that looks now and then sees, at those steps, exactly what
+//!   one looking every step sees; a run nobody looks at ends exactly as one looked at
+//!   every step; and a kick that overflows stops the run at its own step.
+//!
+//! The scene: two thousand spheres dropped into a box of five planes, with friction
+//! (many clear of the walls, many in contact), for 600 steps.
+
+use nalgebra::Vector3;
+use walls_sim::run::{
+    Integrator, Outcome, ParticleMaterial, Settings, State, Stop, defaults, run, run_observed,
+};
+use walls_test_support::scenes::{ball, box_of_spheres};
+
+/// The dropped box on `threads` threads, looked at on the steps `looks` says; the
+/// states seen at each fiftieth step.
+fn dropped(
+    threads: usize,
+    looks: impl Fn(u64) -> bool + Sync,
+) -> (Outcome, Vec<(u64, Vec<State>)>) {
+    let (scene, particles) = box_of_spheres(2000, 2.0);
+    let material = ParticleMaterial {
+        eps_n: 0.5,
+        mu_s: 0.5,
+        ..defaults::default_material(1000.0)
+    };
+    let dt = 5e-6;
+    let settings = Settings {
+        gravity: Vector3::new(0.0, 0.0, -9.81),
+        ..Settings::new(dt, 600.0 * dt, material)
+    };
+    let mut seen = Vec::new();
+    let mut observe = |step: u64, _: f64, snapshot: &mut dyn walls_sim::run::Snapshot| {
+        if looks(step) {
+            let (states, _) = snapshot.look();
+            if step % 50 == 0 {
+                seen.push((step, states.to_vec()));
+            }
+        }
+    };
+    let out = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+        .install(|| run_observed(&scene, particles, &settings, &mut observe));
+    (out, seen)
+}
+
+#[test]
+fn one_thread_and_three_end_the_same() {
+    let (one, _) = dropped(1, |_| false);
+    assert!(
+        one.pair_contacts > 1000,
+        "{} particle contacts",
+        one.pair_contacts
+    );
+    assert!(!one.events.is_empty());
+    assert_eq!(one, dropped(3, |_| false).0);
+}
+
+#[test]
+fn looking_now_and_then_sees_what_looking_every_step_sees() {
+    let (every, seen_every) = dropped(1, |_| true);
+    assert_eq!(seen_every.len(), 12);
+    let (sometimes, seen_sometimes) = dropped(1, |step| step % 50 == 0);
+    assert_eq!(seen_sometimes, seen_every);
+    assert_eq!(sometimes, every);
+}
+
+#[test]
+fn a_run_nobody_looks_at_ends_as_one_looked_at_every_step() {
+    let (every, _) = dropped(1, |_| true);
+    let (never, seen) = dropped(1, |_| false);
+    assert!(seen.is_empty());
+    assert_eq!(never, every);
+}
+
+#[test]
+fn an_owed_kick_that_overflows_stops_the_run_at_its_step() {
+    // Two light balls overlapping by a tenth of their radius, with no wall, on springs
+    // so stiff that the closing kick of step 1 overflows (the leapfrog: no force before
+    // the first drift, so each is clear and finite when the drift marks its kick
+    // owed): the run stops after step 1, the first of the two named.
+    let settings = Settings {
+        integrator: Integrator::Leapfrog,
+        ..Settings::new(1e-3, 1.0, defaults::default_material(1e300))
+    };
+    let light = |x: f64, index: i32| walls_geometry::Particle {
+        mass: 1e-20,
+        index,
+        ..ball([x, 0.0, 0.0], [0.0; 3])
+    };
+    let balls = vec![light(0.0, 0), light(0.19, 1)];
+    let out = run(&[], balls, &settings);
+    assert_eq!((out.steps, out.stopped), (1, Some(Stop::NotFinite(0))));
+    assert!(!out.particles[0].particle.vel.x.is_finite());
+}
