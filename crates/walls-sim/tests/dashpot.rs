@@ -9,7 +9,9 @@
 use nalgebra::Vector3;
 use walls_geometry::{BETA_S_DEFAULT, Material};
 use walls_sim::config::{Flags, resolve};
-use walls_sim::contact::ssdem::{Dashpot, Record, Sliding, damping, dashpot_contact};
+use walls_sim::contact::ssdem::{
+    Dashpot, Optional, Record, Sliding, damping, dashpot_contact, dashpot_contact_with,
+};
 use walls_sim::io::par::{Params, read_par};
 use walls_test_support::{ball, scene};
 
@@ -67,6 +69,29 @@ fn a_stuck_contact_stretches_its_spring_and_adds_the_dashpot() {
     assert!(close(c.force.z, -mat.k_n * 1e-3));
     // Torques: l₁ n̂ × F_t on particle 1, l₂ n̂ × F_t on the partner (equal levers).
     assert_eq!(c.torque, c.partner_torque);
+}
+
+#[test]
+fn damping_worked_out_beforehand_gives_the_same_contact_bit_for_bit() {
+    // The stepper works out C_n and C_t once for contacts of one reduced mass.
+    let mat = material();
+    let c = pair(Vec3::new(1e-3, 2e-4, -3e-3), Vec3::new(0.5, -0.2, 0.1));
+    let worked_out = Optional {
+        damping: Some((
+            damping(mat.eps_n, mat.k_n, c.mass),
+            damping(mat.eps_t, mat.k_t, c.mass),
+        )),
+        ..Optional::default()
+    };
+    let (mut a, mut b) = (Record::default(), Record::default());
+    for _ in 0..3 {
+        let per_contact = dashpot_contact(&c, &mut a, DT, &mat);
+        assert_eq!(
+            dashpot_contact_with(&c, &mut b, DT, &mat, &worked_out),
+            per_contact
+        );
+        assert_eq!(a, b);
+    }
 }
 
 #[test]

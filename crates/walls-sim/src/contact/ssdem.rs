@@ -245,6 +245,10 @@ pub struct Optional {
     /// The material's normal and tangential restitutions, worked out beforehand (else
     /// from the material, per contact).
     pub restitution: Option<(Restitution, Restitution)>,
+    /// The normal and tangential damping coefficients C_n and C_t of this contact's
+    /// springs and reduced mass, worked out beforehand (the same for every contact
+    /// between two particles of one mass; else from the restitutions, per contact).
+    pub damping: Option<(f64, f64)>,
 }
 
 impl Layers {
@@ -548,11 +552,12 @@ pub fn dashpot_contact_with(
     let u = &c.velocity;
     let un = n * n.dot(u);
     let ut = u - un;
-    let (eps_n, eps_t) = extra
-        .restitution
-        .unwrap_or_else(|| (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t)));
-    let c_n = eps_n.damping(k_n, c.mass);
-    let c_t = eps_t.damping(k_t, c.mass);
+    let (c_n, c_t) = extra.damping.unwrap_or_else(|| {
+        let (eps_n, eps_t) = extra
+            .restitution
+            .unwrap_or_else(|| (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t)));
+        (eps_n.damping(k_n, c.mass), eps_t.damping(k_t, c.mass))
+    });
     let f_n = n * -spring_force + un * c_n;
     let normal_force = f_n.norm();
     // Step 4 and 5: the shear spring, and the slide.

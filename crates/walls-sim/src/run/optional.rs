@@ -139,6 +139,7 @@ impl OptionalPhysics {
             cohesion,
             layers,
             restitution: None,
+            damping: None,
         }
     }
 
@@ -162,6 +163,7 @@ impl OptionalPhysics {
             cohesion,
             layers,
             restitution: None,
+            damping: None,
         }
     }
 }

@@ -233,14 +233,21 @@ fn clear_of_walls(i: usize, s: &State, open: &[(usize, Open)], walls: &Walls) ->
 /// [`clear_of_walls`] for a particle without a wall index and with no contact open: its
 /// near walls (`near`, as they stand: `now`) all surely out of its reach, and none
 /// moving.
-#[inline]
+#[inline(always)]
 fn clear_of_near(i: usize, s: &State, near: Option<&NearWalls>, now: &[WallNow]) -> bool {
-    near.is_none_or(|near| {
-        near.moving.is_empty()
-            && near
-                .of(i)
-                .all(|w| now[w].cull.clear_of(&s.particle.pos, s.particle.radius))
-    })
+    let Some(near) = near else {
+        return true;
+    };
+    if !near.moving.is_empty() {
+        return false;
+    }
+    // A plain loop (most particles have no wall near, some one or two).
+    for &w in near.listed_of(i) {
+        if !now[w].cull.clear_of(&s.particle.pos, s.particle.radius) {
+            return false;
+        }
+    }
+    true
 }
 
 /// [`wall_step`] for a free particle clear of every wall (most of them): the closing
@@ -1335,6 +1342,19 @@ impl<'a> SoftStepper<'a> {
                 Restitution::new(self.between.eps_n),
                 Restitution::new(self.between.eps_t),
             ),
+            damping: states.first().map(|s| {
+                // Two free particles of the first one's mass (in a run of one size, every
+                // contact).
+                let m = s.particle.mass;
+                let reduced = m * m / (m + m);
+                let (eps_n, eps_t) = (
+                    Restitution::new(self.between.eps_n),
+                    Restitution::new(self.between.eps_t),
+                );
+                let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
+                let mat = &self.between;
+                (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
+            }),
             optional: &self.optional,
         };
         let loads = &mut self.loads;
@@ -1979,6 +1999,10 @@ struct PairContext<'a> {
     mat: &'a Material,
     /// The particles' normal and tangential restitutions.
     restitution: (Restitution, Restitution),
+    /// A reduced mass and the damping coefficients (C_n, C_t) of a contact of that
+    /// reduced mass, worked out once a step: a contact of that mass (two free particles
+    /// of the first one's mass) takes them rather than two square roots.
+    damping: Option<(f64, (f64, f64))>,
     optional: &'a OptionalPhysics,
 }
 
@@ -2080,10 +2104,16 @@ impl PairContext<'_> {
                 }),
                 sliding: self.settings.sliding,
             };
-            let extra = Optional {
+            let mut extra = Optional {
                 restitution: Some(self.restitution),
                 ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
             };
+            if let (None, Some((mass, damping))) = (extra.layers, self.damping)
+                && mass == reduced
+            {
+                // Two layers change the springs, and with them the damping.
+                extra.damping = Some(damping);
+            }
             let c = dashpot_contact_with(&dashpot, record, dt, mat, &extra);
             return PairForce {
                 force: c.force,
@@ -2206,9 +2236,13 @@ impl NearWalls {
 
     /// The listed walls near particle `i`.
     fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
-        self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
-            .iter()
-            .copied()
+        self.listed_of(i).iter().copied()
+    }
+
+    /// [`NearWalls::of`] as a slice.
+    #[inline]
+    fn listed_of(&self, i: usize) -> &[usize] {
+        &self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
 }
 
