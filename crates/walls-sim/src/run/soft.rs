@@ -227,14 +227,16 @@ impl Walls<'_> {
 /// touching it.
 #[inline]
 fn clear_of_walls(i: usize, s: &State, open: &[(usize, Open)], walls: &Walls) -> bool {
-    walls.index.is_none() && open.is_empty() && clear_of_near(i, s, walls.near, walls.now)
+    walls.index.is_none()
+        && open.is_empty()
+        && clear_of_near(i, &s.particle.pos, s.particle.radius, walls.near, walls.now)
 }
 
-/// [`clear_of_walls`] for a particle without a wall index and with no contact open: its
-/// near walls (`near`, as they stand: `now`) all surely out of its reach, and none
-/// moving.
+/// [`clear_of_walls`] for particle `i` (at `pos`, of radius `r`) without a wall index
+/// and with no contact open: its near walls (`near`, as they stand: `now`) all surely
+/// out of its reach, and none moving.
 #[inline(always)]
-fn clear_of_near(i: usize, s: &State, near: Option<&NearWalls>, now: &[WallNow]) -> bool {
+fn clear_of_near(i: usize, pos: &Vec3, r: f64, near: Option<&NearWalls>, now: &[WallNow]) -> bool {
     let Some(near) = near else {
         return true;
     };
@@ -243,7 +245,7 @@ fn clear_of_near(i: usize, s: &State, near: Option<&NearWalls>, now: &[WallNow])
     }
     // A plain loop (most particles have no wall near, some one or two).
     for &w in near.listed_of(i) {
-        if !now[w].cull.clear_of(&s.particle.pos, s.particle.radius) {
+        if !now[w].cull.clear_of(pos, r) {
             return false;
         }
     }
@@ -1017,20 +1019,25 @@ impl<'a> SoftStepper<'a> {
             }
             vel += acc * (dt * opening);
             spin += alpha * (dt * opening);
-            s.particle.pos += vel * dt;
+            let pos = s.particle.pos + vel * dt;
             if late != 0.0 {
                 vel += acc * (dt * late);
                 spin += alpha * (dt * late);
             }
+            s.particle.pos = pos;
             s.particle.vel = vel;
             s.particle.spin = spin;
-            *sphere = PairList::sphere(s);
-            let far = PairList::moved_far(s, at, limit);
+            // What follows reads the locals, not the state just written.
+            let r = s.particle.radius;
+            *sphere = [pos.x, pos.y, pos.z, r];
+            // `PairList::moved_far` (the particle is alive).
+            let d2 = (pos - at).norm_squared();
+            let far = d2 > limit || d2.is_nan();
             *owed = owing
                 && !far
                 && open.is_empty()
-                && Self::may_owe(s, dt)
-                && clear_of_near(i, s, near, now);
+                && Self::may_owe(&pos, &vel, &spin, r, dt)
+                && clear_of_near(i, &pos, r, near, now);
             far
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
@@ -1089,16 +1096,15 @@ impl<'a> SoftStepper<'a> {
         self.force_bound = 0.0;
     }
 
-    /// Whether the wall pass may owe a free particle, drifted and clear of the walls,
-    /// its closing kick: it has not moved more than a radius in the step (else the wall
-    /// pass warns of it), and its position, velocity and spin are surely finite, so that
-    /// only its load could make them overflow ([`SoftStepper::surely_finite`]).
+    /// Whether the wall pass may owe a free particle of radius `r`, drifted to `pos`
+    /// with velocity `vel` and spin `spin` and clear of the walls, its closing kick: it
+    /// has not moved more than a radius in the step (else the wall pass warns of it), and
+    /// its position, velocity and spin are surely finite, so that only its load could
+    /// make them overflow ([`SoftStepper::surely_finite`]).
     #[inline]
-    fn may_owe(s: &State, dt: f64) -> bool {
-        let p = &s.particle;
-        let r = p.radius;
-        let size = p.pos.abs().sum() + p.vel.abs().sum() + p.spin.abs().sum();
-        p.vel.norm_squared() * dt * dt <= r * r && size < SURELY_FINITE
+    fn may_owe(pos: &Vec3, vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
+        let size = pos.abs().sum() + vel.abs().sum() + spin.abs().sum();
+        vel.norm_squared() * dt * dt <= r * r && size < SURELY_FINITE
     }
 
     /// The closing kicks the last wall pass owed, given now (as the next drift would
