@@ -413,6 +413,28 @@ fn a_particle_stuck_to_a_wall_is_an_obstacle_to_the_others() {
 }
 
 #[test]
+fn a_particle_removed_by_a_death_wall_is_no_obstacle() {
+    // A and B fall together, a ten-thousandth apart, onto a death floor: A is removed
+    // where it touches it, and B goes on through where A was (before the candidate
+    // pairs are found again) to be removed in its turn, meeting nothing.
+    let ps = vec![
+        particle([0.0, 0.0, 0.15], [0.0, 0.0, -1.0]),
+        particle([0.0, 0.0, 0.3501], [0.0, 0.0, -1.0]),
+    ];
+    let out = run(
+        &scene("wall type plane\n  epsn -1\n"),
+        ps.clone(),
+        &settings(&ps, 0.9, 0.5, [0.0; 3]),
+    );
+    assert_eq!(out.pair_contacts, 0);
+    let removed: Vec<usize> = (out.events.iter())
+        .filter(|e| e.kind == EventKind::Remove)
+        .map(|e| e.particle)
+        .collect();
+    assert_eq!(removed, [0, 1]);
+}
+
+#[test]
 fn rolling_resistance_between_particles_does_not_reverse_their_relative_spin() {
     // Two particles pressed together, one spinning across the normal: the resistance
     // acts on the relative spin through the reduced inertia, so it stops it, and the

@@ -67,7 +67,9 @@ impl Cull {
     }
 
     /// Whether `p` is surely farther than `reach` from the shape (`false` when unsure).
-    #[inline]
+    /// Inlined always: the evaluator's drift asks it for every particle near a wall,
+    /// every step.
+    #[inline(always)]
     pub fn clear_of(&self, p: &Vec3, reach: f64) -> bool {
         match self {
             Cull::Slab { origin, normal } => {

@@ -1264,8 +1264,11 @@ impl<'a> SoftStepper<'a> {
             touching,
             forces,
             scans,
+            held,
+            gone,
             ..
         } = &mut self.candidates;
+        let some_unfree = *held || *gone;
         // Which pairs touch and which stopped touching, in chunks of the list (in
         // parallel for many particles)…
         let size = if self.parallel {
@@ -1297,9 +1300,11 @@ impl<'a> SoftStepper<'a> {
                     || aggregates.is_some_and(|a| a.same(i, j))
                     // A particle stuck to a wall is an obstacle of infinite mass
                     // (pkdgrav's rule); two stuck ones, or a removed one, meet nothing.
-                    || !states[i].alive
-                    || !states[j].alive
-                    || !(states[i].free() || states[j].free());
+                    // (Their states are read only once some particle is held or gone.)
+                    || (some_unfree
+                        && (!states[i].alive
+                            || !states[j].alive
+                            || !(states[i].free() || states[j].free())));
                 // As [`separation`] has it, without its square root for the many apart.
                 let overlap = if apart { 0.0 } else { reach - d2.sqrt() };
                 if overlap <= 0.0 {
@@ -1561,6 +1566,9 @@ impl<'a> SoftStepper<'a> {
             if report.events.iter().any(|e| e.kind == EventKind::Stick) {
                 self.candidates.held = true;
             }
+            if report.events.iter().any(|e| e.kind == EventKind::Remove) {
+                self.candidates.gone = true;
+            }
             self.events.append(&mut report.events);
             if report.touching > 3 && !self.once.crowd {
                 self.once.crowd = true;
@@ -1768,6 +1776,9 @@ struct PairList {
     /// Whether some particle may be moved other than by the drift (stuck to a wall, or
     /// a member of an aggregate): then every particle is looked at.
     held: bool,
+    /// Whether some particle has left the run (at a death wall): until then, with none
+    /// held, every particle is alive and free, and the pairs' test need not look.
+    gone: bool,
     /// Whether the pairs are wanted (particles meet each other).
     wanted: bool,
     /// The walls near each particle, when the run keeps them.
@@ -1789,6 +1800,7 @@ impl PairList {
             skin: 0.4 * largest,
             drifted: false,
             held: states.iter().any(|s| s.stuck_to.is_some() || s.member),
+            gone: states.iter().any(|s| !s.alive),
             wanted,
             near: None,
         };
