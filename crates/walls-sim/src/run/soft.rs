@@ -13,15 +13,21 @@
 //! ([`crate::broad::grid`]) when a particle or a translating wall has moved half the skin.
 //!
 //! The run is a [`SoftStepper`]: set up once ([`SoftStepper::new`]), then each step is
-//! the pipeline of [`SoftStepper::step`]: `kick_drift` (with the list's staleness),
-//! `move_aggregates`, `move_walls`, `carry_stuck` (only once a particle is held),
-//! `move_assemblies`, the list's update, `pair_contacts`, `wall_contacts` (with the
-//! closing kick, after which each load starts the next step with gravity),
-//! `note_wall_contacts` (events and warnings, in particle order), `kick_assemblies` and
-//! `gather_aggregates`. The passes over all the particles are plain loops over chunks,
-//! in parallel only with many particles and more than one thread; what they carry per
-//! particle is kept small (a 176-byte [`State`], a 48-byte load, a 32-byte sphere), as
-//! memory, not arithmetic, bounds them. With [`Integrator::Pkdgrav`],
+//! the pipeline of [`SoftStepper::step`]: `move_walls`, `kick_drift` (the kicks owed by
+//! the last step, the opening kick and drift, the list's staleness, and which particles
+//! this step's wall pass may owe their closing kick), `move_aggregates`, `carry_stuck`
+//! (only once a particle is held), `move_assemblies`, the list's update, `pair_contacts`,
+//! `wall_contacts` (the contacts and closing kick of the particles not owed theirs,
+//! after which each load starts the next step with gravity), `note_wall_contacts`
+//! (events and warnings, in particle order), `kick_assemblies` and `gather_aggregates`.
+//! The passes over all the particles are plain loops over chunks, in parallel only with
+//! many particles and more than one thread; what they carry per particle is kept small
+//! (a 176-byte [`State`], a 48-byte load, a 32-byte sphere), and a free particle clear
+//! of the walls gets its closing kick in the next drift rather than in a pass of its
+//! own, as memory, not arithmetic, bounds them. The kicks still owed are given
+//! ([`SoftStepper::settle`]) when the particles are looked at ([`super::Snapshot`]), at
+//! the run's end, and when one might overflow, so a run is bit for bit what it would be
+//! with the kick in the wall pass. With [`Integrator::Pkdgrav`],
 //! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
 //! does. pkdgrav's aggregates (`AGGS`, [`crate::dynamics::aggregate`]) run only with
 //! [`Integrator::Pkdgrav`]; their members are placed by their aggregate, not kicked or
@@ -669,6 +675,10 @@ struct SoftStepper<'a> {
     owed: Vec<bool>,
     /// Whether the wall pass has run since the drift marked the kicks it may owe.
     owing: bool,
+    /// The particles whose kicks are not owed, which the wall pass visits: each chunk's
+    /// (its particles' places within it, ascending), listed by the drift; every particle
+    /// before the first drift.
+    visited: Vec<Vec<u32>>,
     /// The closing kick owed.
     owed_kick: Closing,
     /// The first particle whose numbers overflowed in an owed kick given by
@@ -830,6 +840,9 @@ impl<'a> SoftStepper<'a> {
             loads,
             owed: vec![false; n],
             owing: false,
+            visited: (0..n.div_ceil(CHUNK))
+                .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
+                .collect(),
             owed_kick: Closing {
                 dt: settings.dt,
                 fraction: 0.0,
@@ -1042,9 +1055,10 @@ impl<'a> SoftStepper<'a> {
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
         // no short cut), chunks in parallel for many particles.
-        let chunk = |(c, ((((states, loads), owed), (built_at, spheres)), opens)): DriftChunk| {
+        let chunk = |(c, (((((states, loads), owed), (built_at, spheres)), opens), visited)): DriftChunk| {
             let mut drifted = false;
             let first = c * CHUNK;
+            visited.clear();
             let rest = loads
                 .iter_mut()
                 .zip(owed)
@@ -1056,15 +1070,20 @@ impl<'a> SoftStepper<'a> {
             {
                 let work = DriftWork {
                     load,
-                    owed,
+                    owed: &mut *owed,
                     at,
                     sphere,
                     open,
                 };
                 drifted |= kick_drift(first + k, s, work);
+                if !*owed {
+                    visited.push(k as u32);
+                }
             }
             drifted
         };
+        let chunks = self.states.len().div_ceil(CHUNK);
+        self.visited.resize_with(chunks, Vec::new);
         let drifted = if self.parallel {
             self.states
                 .par_chunks_mut(CHUNK)
@@ -1076,20 +1095,23 @@ impl<'a> SoftStepper<'a> {
                         .zip(spheres.par_chunks_mut(CHUNK)),
                 )
                 .zip(self.open_walls.par_chunks(CHUNK))
+                .zip(self.visited.par_iter_mut())
                 .enumerate()
                 .map(chunk)
                 .reduce(|| false, |a, b| a || b)
         } else {
-            chunk((
-                0,
-                (
-                    (
-                        ((&mut self.states, &mut self.loads), &mut self.owed),
-                        (built_at, spheres),
-                    ),
-                    &self.open_walls,
-                ),
-            ))
+            // Every chunk, not stopping at the first that drifted far (as `any` would).
+            let mut drifted = false;
+            let chunked = (self.states.chunks_mut(CHUNK))
+                .zip(self.loads.chunks_mut(CHUNK))
+                .zip(self.owed.chunks_mut(CHUNK))
+                .zip(built_at.chunks(CHUNK).zip(spheres.chunks_mut(CHUNK)))
+                .zip(self.open_walls.chunks(CHUNK))
+                .zip(self.visited.iter_mut());
+            for c in chunked.enumerate() {
+                drifted |= chunk(c);
+            }
+            drifted
         };
         self.candidates.drifted = drifted;
         self.owed_bad = None;
@@ -1441,15 +1463,14 @@ impl<'a> SoftStepper<'a> {
         // load, once used, starts the next step with gravity alone (while it is at hand:
         // [`SoftStepper::kick_drift`] need not touch it); an aggregate's members' loads
         // are kept for it ([`SoftStepper::gather_aggregates`]).
-        let chunk = |(c, ((((states, loads), owed), opens), (reports, visit))): WallChunk| {
+        let chunk = |(c, ((((states, loads), visited), opens), (reports, visit))): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
-            let rest = loads.iter_mut().zip(owed).zip(opens);
-            for (k, (s, ((load, &owed), open))) in states.iter_mut().zip(rest).enumerate() {
-                if owed {
-                    // Clear of the walls: its closing kick is owed, not given here.
-                    continue;
-                }
+            // The others are clear of the walls: their closing kicks are owed, not given
+            // here.
+            for &k in visited.iter() {
+                let k = k as usize;
+                let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
                 let i = first + k;
                 if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
                     // Most particles: the closing kick alone.
@@ -1476,7 +1497,7 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
-                .zip(self.owed.par_chunks(CHUNK))
+                .zip(self.visited.par_iter())
                 .zip(self.open_walls.par_chunks_mut(CHUNK))
                 .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
@@ -1485,7 +1506,7 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .chunks_mut(CHUNK)
                 .zip(self.loads.chunks_mut(CHUNK))
-                .zip(self.owed.chunks(CHUNK))
+                .zip(self.visited.iter())
                 .zip(self.open_walls.chunks_mut(CHUNK))
                 .zip(self.reports.iter_mut().zip(&mut self.visits))
                 .enumerate()
@@ -1909,16 +1930,19 @@ impl PairList {
 }
 
 /// A chunk of the particles as the drift takes it: its number, their states, loads and
-/// owed kicks, where the candidate pairs were found and their spheres, and their open
-/// wall contacts.
+/// owed kicks, where the candidate pairs were found and their spheres, their open wall
+/// contacts, and the list of those the wall pass is to visit (within the chunk).
 type DriftChunk<'a> = (
     usize,
     (
         (
-            ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
-            (&'a [Vec3], &'a mut [[f64; 4]]),
+            (
+                ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
+                (&'a [Vec3], &'a mut [[f64; 4]]),
+            ),
+            &'a [Vec<(usize, Open)>],
         ),
-        &'a [Vec<(usize, Open)>],
+        &'a mut Vec<u32>,
     ),
 );
 
@@ -1938,13 +1962,13 @@ struct DriftWork<'a> {
 /// far below the largest double (1.8·10³⁰⁸).
 const SURELY_FINITE: f64 = 1e300;
 
-/// A chunk of the particles as the wall pass takes it: its number, their states, loads,
-/// owed kicks and open wall contacts, and its reports and scratch list of walls.
+/// A chunk of the particles as the wall pass takes it: its number, their states and
+/// loads, which of them it visits, their open wall contacts, and its reports and scratch list of walls.
 type WallChunk<'a> = (
     usize,
     (
         (
-            ((&'a mut [State], &'a mut [Load]), &'a [bool]),
+            ((&'a mut [State], &'a mut [Load]), &'a Vec<u32>),
             &'a mut [Vec<(usize, Open)>],
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
