@@ -26,6 +26,15 @@ fn dropped(
     threads: usize,
     looks: impl Fn(u64) -> bool + Sync,
 ) -> (Outcome, Vec<(u64, Vec<State>)>) {
+    dropped_with(threads, looks, |_| {})
+}
+
+/// [`dropped`] with its settings changed by `change`.
+fn dropped_with(
+    threads: usize,
+    looks: impl Fn(u64) -> bool + Sync,
+    change: impl Fn(&mut Settings),
+) -> (Outcome, Vec<(u64, Vec<State>)>) {
     let (scene, particles) = box_of_spheres(2000, 2.0);
     let material = ParticleMaterial {
         eps_n: 0.5,
@@ -33,10 +42,11 @@ fn dropped(
         ..defaults::default_material(1000.0)
     };
     let dt = 5e-6;
-    let settings = Settings {
+    let mut settings = Settings {
         gravity: Vector3::new(0.0, 0.0, -9.81),
         ..Settings::new(dt, 600.0 * dt, material)
     };
+    change(&mut settings);
     let mut seen = Vec::new();
     let mut observe = |step: u64, _: f64, snapshot: &mut dyn walls_sim::run::Snapshot| {
         if looks(step) {
@@ -81,6 +91,28 @@ fn a_run_nobody_looks_at_ends_as_one_looked_at_every_step() {
     let (never, seen) = dropped(1, |_| false);
     assert!(seen.is_empty());
     assert_eq!(never, every);
+}
+
+#[test]
+fn every_integrator_and_pkdgravs_acc_crit_owe_kicks_without_a_trace() {
+    // The other steps (their kicks of other fractions: explicit Euler's closing kick is
+    // none) and dAccCrit's zeroing (at 20 m/s², of some particles near their turning
+    // points), which an owed kick does as the wall pass does.
+    for integrator in [
+        Integrator::Leapfrog,
+        Integrator::LeapfrogPredicted,
+        Integrator::ExplicitEuler,
+        Integrator::Pkdgrav,
+    ] {
+        let change = |s: &mut Settings| {
+            s.integrator = integrator;
+            s.acc_crit = 20.0;
+        };
+        let (every, _) = dropped_with(1, |_| true, change);
+        let (never, _) = dropped_with(1, |_| false, change);
+        assert!(every.pair_contacts > 1000, "{integrator:?}");
+        assert_eq!(never, every, "{integrator:?}");
+    }
 }
 
 #[test]

@@ -248,6 +248,7 @@ pub struct Optional {
     /// The normal and tangential damping coefficients C_n and C_t of this contact's
     /// springs and reduced mass, worked out beforehand (the same for every contact
     /// between two particles of one mass; else from the restitutions, per contact).
+    /// Never with `layers`, whose springs depend on the overlap.
     pub damping: Option<(f64, f64)>,
 }
 

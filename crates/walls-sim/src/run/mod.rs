@@ -489,8 +489,8 @@ impl Snapshot for Settled<'_> {
 }
 
 /// Runs `particles` against `walls` (and each other), calling `observe` after every
-/// step with the step number, the time and the particles ([`run_watched`] never
-/// interrupted).
+/// step with the step number, the time and a [`Snapshot`] of the particles
+/// ([`run_watched`] never interrupted).
 pub fn run_observed(
     walls: &[Wall],
     particles: Vec<Particle>,

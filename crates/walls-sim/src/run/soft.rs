@@ -258,8 +258,9 @@ fn clear_of_near(i: usize, pos: &Vec3, r: f64, near: Option<&NearWalls>, now: &[
     true
 }
 
-/// [`wall_step`] for a free particle clear of every wall (most of them): the closing
-/// kick alone, and a report only if there is something to note.
+/// [`wall_step`] for a free particle clear of every wall but not owed its kick (it moved
+/// far in the step, say): the closing kick alone, and a report only if there is
+/// something to note.
 #[inline(always)]
 fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
     let r = s.particle.radius;
@@ -277,7 +278,9 @@ fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep>
 /// The accelerations of a free particle from its load, pkdgrav's `dAccCrit`, and the
 /// kick after the forces; the sum of the new velocity's and spin's components, for
 /// [`State::finite_with`] (from registers: reading back what was just stored, in wider
-/// loads than it was stored with, stalls the processor).
+/// loads than it was stored with, stalls the processor). The drift gives an owed kick
+/// with the same arithmetic ([`SoftStepper::kick_drift`]): a change here is a change
+/// there, or a run would differ with whether its kicks are owed.
 #[inline(always)]
 fn close_step(s: &mut State, load: &Load, kick: Closing) -> f64 {
     let Closing {
@@ -986,9 +989,13 @@ impl<'a> SoftStepper<'a> {
             ..
         } = &mut self.candidates;
         // The walls as the wall pass will see them (`SoftStepper::wall_contacts`). The
-        // walls near a particle were found where it and they stood at the last rebuild,
-        // which is done again, after this pass, once one has moved too far: then the
-        // pass owes nothing.
+        // walls near a particle were found where it and they stood at the last rebuild:
+        // a wall not among them was then farther than its radius and half the skin (a
+        // translating one, the skin), so it cannot reach a particle that has moved less
+        // than half the skin since, unless the wall itself has moved more. Such a
+        // particle is owed nothing, and when a wall has moved that far, no particle is
+        // (the list is found again after this pass). Nothing is owed with a wall index
+        // or the walls of reactive assemblies, placed only after this pass.
         let near = near.as_ref().filter(|_| forces);
         let now: &[WallNow] = if forces { &self.now } else { &[] };
         let owing = self.index.is_none() || !forces;
@@ -1016,7 +1023,8 @@ impl<'a> SoftStepper<'a> {
             let (mut vel, mut spin, mut acc, mut alpha) =
                 (s.particle.vel, s.particle.spin, s.acc, s.alpha);
             if let (true, Some(kick)) = (*owed, pay) {
-                // The last step's closing kick, as the wall pass would have given it.
+                // The last step's closing kick, as the wall pass would have given it
+                // (`close_step`'s arithmetic, in its order, from the locals).
                 if kick.acc_crit > 0.0 {
                     close_step(s, load, kick);
                     (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
@@ -1253,7 +1261,8 @@ impl<'a> SoftStepper<'a> {
     }
 
     /// Each particle's load starts the run with gravity alone (in a step, the last wall
-    /// pass does it, or [`SoftStepper::kick_drift`] for an aggregate's members).
+    /// pass does it; [`SoftStepper::kick_drift`] or [`SoftStepper::settle`], after an
+    /// owed kick, and for an aggregate's members).
     fn gravity_loads(&mut self) {
         let g = self.settings.gravity;
         for (s, load) in self.states.iter().zip(&mut self.loads) {
@@ -1427,8 +1436,9 @@ impl<'a> SoftStepper<'a> {
         Flow::Continue
     }
 
-    /// Each particle's contacts with the walls, added to its load, then the closing
-    /// kick (in parallel for many particles); what each did is in `reports`.
+    /// The contacts with the walls of each particle not owed its kick, added to its
+    /// load, then its closing kick (in parallel for many particles); what each did is in
+    /// `reports`.
     fn wall_contacts(&mut self) {
         // Without forces (`bDoGravity = 0`) the walls are not looked at.
         let forces = self.settings.forces;
@@ -1458,11 +1468,11 @@ impl<'a> SoftStepper<'a> {
             dt: self.settings.dt,
             aggregates: self.aggregates.as_ref(),
         };
-        // A plain loop over each chunk of the particles, its reports kept with it (in
-        // particle order within the chunk), chunks in parallel for many particles. Each
-        // load, once used, starts the next step with gravity alone (while it is at hand:
-        // [`SoftStepper::kick_drift`] need not touch it); an aggregate's members' loads
-        // are kept for it ([`SoftStepper::gather_aggregates`]).
+        // A plain loop over the particles of each chunk not owed their kick, its reports
+        // kept with it (in particle order within the chunk), chunks in parallel for many
+        // particles. Each load, once used, starts the next step with gravity alone
+        // (while it is at hand; the drift does it for the owed); an aggregate's members'
+        // loads are kept for it ([`SoftStepper::gather_aggregates`]).
         let chunk = |(c, ((((states, loads), visited), opens), (reports, visit))): WallChunk| {
             reports.clear();
             let first = c * CHUNK;
@@ -1473,7 +1483,7 @@ impl<'a> SoftStepper<'a> {
                 let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
                 let i = first + k;
                 if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                    // Most particles: the closing kick alone.
+                    // Clear of the walls, not owed: the closing kick alone.
                     if let Some(report) = clear_step(s, load, &walls) {
                         reports.push((i, report));
                     }
