@@ -51,7 +51,7 @@ fn visited(grid: &CellGrid) -> Vec<(usize, usize)> {
 
 /// Checks a grid over spheres `p` of swollen radii `s` against brute force: pairs (each
 /// once, i < j, the brute-force set; `pairs()` in the same order) and every particle's
-/// neighbours (each once, never itself, the brute-force set).
+/// neighbours (each once, never itself, the brute-force set); `par_pairs()` the same list.
 fn check_grid(grid: &CellGrid, p: &[Vec3], s: &[f64]) -> Result<(), TestCaseError> {
     let pairs = visited(grid);
     for &(i, j) in &pairs {
@@ -66,6 +66,11 @@ fn check_grid(grid: &CellGrid, p: &[Vec3], s: &[f64]) -> Result<(), TestCaseErro
         .map(|(i, j)| (i as usize, j as usize))
         .collect();
     prop_assert_eq!(&as_u32, &pairs);
+    prop_assert_eq!(
+        grid.par_pairs(),
+        grid.pairs(),
+        "found in parallel, another list"
+    );
     for i in 0..p.len() {
         let mut found = Vec::new();
         grid.for_each_neighbour(i, |j| found.push(j));

@@ -16,7 +16,8 @@
 
 use nalgebra::Vector3;
 use walls_sim::run::{
-    Integrator, Outcome, ParticleMaterial, Settings, State, Stop, defaults, run, run_observed,
+    Integrator, Outcome, Overlapping, ParticleMaterial, Settings, State, Stop, Warning, defaults,
+    run, run_observed,
 };
 use walls_test_support::scenes::{ball, box_of_spheres};
 
@@ -134,4 +135,60 @@ fn an_owed_kick_that_overflows_stops_the_run_at_its_step() {
     let out = run(&[], balls, &settings);
     assert_eq!((out.steps, out.stopped), (1, Some(Stop::NotFinite(0))));
     assert!(!out.particles[0].particle.vel.x.is_finite());
+}
+
+#[test]
+fn an_overlap_that_stops_the_run_stops_it_alike_on_one_thread_and_three() {
+    // The box's spheres without the box, on springs so soft that two of them sink into
+    // each other past half a radius: the run stops at that pair, with the contacts
+    // opened before it counted.
+    let (_, particles) = box_of_spheres(2000, 2.0);
+    let settings = Settings::new(5e-6, 600.0 * 5e-6, defaults::default_material(1e-4));
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+            .install(|| run(&[], particles.clone(), &settings))
+    };
+    let one = on(1);
+    assert_eq!(one.stopped, Some(Stop::Overlap));
+    let stop = one.warnings.iter().find_map(|w| match w {
+        Warning::OverlapStop { what, .. } => Some(*what),
+        _ => None,
+    });
+    assert!(matches!(stop, Some(Overlapping::Particles(..))), "{stop:?}");
+    // At step 186, with 1,972 contacts opened: the figures of the build that checked
+    // each overlap as it opened the contacts in turn (the opened counted up to the
+    // deep pair, not past it).
+    assert_eq!((one.steps, one.pair_contacts), (186, 1972));
+    assert_eq!(one, on(3));
+}
+
+#[test]
+fn an_overlap_stop_counts_the_contacts_opened_before_it_and_no_others() {
+    // In step 1, balls 0 and 1 touch lightly (2 % of a radius) and, later in the list,
+    // balls 2 and 3 sink past half a radius: the run stops there, one contact opened;
+    // balls 4 and 5, after them, would have opened another.
+    let settings = Settings {
+        integrator: Integrator::Leapfrog,
+        ..Settings::new(1.0, 10.0, defaults::default_material(1.0))
+    };
+    let pair = |x: f64, closing: f64, first: i32| {
+        let a = ball([x, 0.0, 0.0], [0.0; 3]);
+        let b = ball([x + 0.21, 0.0, 0.0], [-closing, 0.0, 0.0]);
+        [a, b].map(|mut p| {
+            p.index += first;
+            p
+        })
+    };
+    let balls = [
+        pair(0.0, 0.012, 0),
+        pair(10.0, 0.12, 2),
+        pair(20.0, 0.012, 4),
+    ]
+    .concat();
+    let out = run(&[], balls, &settings);
+    assert_eq!(out.stopped, Some(Stop::Overlap));
+    assert_eq!((out.steps, out.pair_contacts), (1, 1));
 }

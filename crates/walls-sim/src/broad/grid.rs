@@ -54,7 +54,11 @@
 //! than those it binned. The copy is 40 bytes a particle, rebuilt each step with the rest.
 
 use nalgebra::Vector3;
+use rayon::prelude::*;
 use std::ops::Range;
+
+/// Into how many ranges of cells [`CellGrid::par_pairs`] cuts the grid.
+const PAIR_RANGES: usize = 64;
 
 type Vec3 = Vector3<f64>;
 
@@ -274,6 +278,23 @@ impl CellGrid {
         let mut pairs = Vec::new();
         self.for_each_pair(|i, j| pairs.push((i as u32, j as u32)));
         pairs
+    }
+
+    /// [`CellGrid::pairs`], the same list in the same order, found by ranges of cells in
+    /// parallel.
+    pub fn par_pairs(&self) -> Vec<(u32, u32)> {
+        let cells = self.cell_count();
+        let size = cells.div_ceil(PAIR_RANGES).max(1);
+        let parts: Vec<Vec<(u32, u32)>> = (0..cells.div_ceil(size))
+            .into_par_iter()
+            .map(|c| {
+                let mut pairs = Vec::new();
+                let range = c * size..((c + 1) * size).min(cells);
+                self.for_each_pair_in(range, |i, j| pairs.push((i as u32, j as u32)));
+                pairs
+            })
+            .collect();
+        parts.concat()
     }
 
     /// Calls `f(j)` once for each particle j ≠ i whose swollen sphere overlaps particle

@@ -809,6 +809,15 @@ struct OverlapWarnings {
 }
 
 impl OverlapWarnings {
+    /// Whether an overlap of `fraction` of the radius is below every level the
+    /// warnings judge: [`OverlapWarnings::check`] would do nothing with it.
+    pub(crate) fn quiet(fraction: f64) -> bool {
+        fraction <= Self::LEVELS[0]
+    }
+
+    /// The overlaps, as fractions of the radius, that pkdgrav warns of (once each).
+    const LEVELS: [f64; 2] = [0.03, 0.15];
+
     /// Notes an overlap of `fraction` of the radius between `what` at time `t`; true
     /// when it is above 50 %, where pkdgrav aborts.
     fn check(
@@ -818,7 +827,7 @@ impl OverlapWarnings {
         t: f64,
         warnings: &mut Vec<Warning>,
     ) -> bool {
-        for (k, level) in [0.03, 0.15].iter().enumerate() {
+        for (k, level) in Self::LEVELS.iter().enumerate() {
             if fraction > *level && !self.warned[k] {
                 self.warned[k] = true;
                 warnings.push(if k == 0 {

@@ -857,9 +857,7 @@ impl<'a> SoftStepper<'a> {
             visits: Vec::new(),
             candidates,
             reports: Vec::new(),
-            // With one thread, the plain loops: the same outcome, without rayon's
-            // splitting and collecting.
-            parallel: n >= PARALLEL_FROM && rayon::current_num_threads() > 1,
+            parallel: in_parallel(n),
             initial,
             events: Vec::new(),
             pair_contacts: 0,
@@ -1279,14 +1277,18 @@ impl<'a> SoftStepper<'a> {
 
     /// The forces of the candidate pairs that overlap: which overlap, in the list's
     /// order (their overlaps checked, their contacts opened and the others' closed);
-    /// then their forces, added to the loads in the list's order: one by one on one
-    /// thread, each record changed in place; block by block in parallel otherwise, the
-    /// new records and forces collected, then written and added. The outcome does not
-    /// depend on the threads.
+    /// then their forces, added to each load in the list's order. On one thread each
+    /// record is changed in place and each force added at once; in parallel, the
+    /// records are laid out anew in the order of the pairs that touch, and each range
+    /// of particles takes its forces in the list's order. The outcome does not depend
+    /// on the threads.
     fn pair_forces(&mut self) -> Flow {
-        let t = self.t;
-        let states = &self.states;
-        let aggregates = self.aggregates.as_ref();
+        self.scan_pairs();
+        // …then, in the list's order, the overlaps checked (a deep one may stop the run,
+        // before any contact is opened or closed)…
+        if self.check_overlaps() {
+            return Flow::Stop;
+        }
         let PairList {
             pairs,
             slots,
@@ -1295,18 +1297,146 @@ impl<'a> SoftStepper<'a> {
             touching,
             forces,
             scans,
+            from,
+            bounds,
+            ..
+        } = &mut self.candidates;
+        // …and the contacts closed and opened.
+        touching.clear();
+        from.clear();
+        for scan in scans.iter() {
+            if !self.parallel {
+                for &k in &scan.apart {
+                    contacts.close(&mut slots[k as usize]);
+                }
+                for &(k, _) in &scan.touching {
+                    contacts.open(&mut slots[k as usize], &mut self.pair_contacts);
+                    touching.push(k);
+                }
+                continue;
+            }
+            // In parallel, this step's records are laid out anew in the order of the
+            // pairs that touch: each comes from its slot in the last step's (`from`).
+            for &k in &scan.apart {
+                slots[k as usize] = NO_CONTACT;
+            }
+            for &(k, _) in &scan.touching {
+                let slot = &mut slots[k as usize];
+                self.pair_contacts += u64::from(*slot == NO_CONTACT);
+                from.push(*slot);
+                *slot = touching.len() as u32;
+                touching.push(k);
+            }
+        }
+        let states = &self.states;
+        let context = PairContext {
+            states,
+            settings: self.settings,
+            plan: self.plan,
+            kicks: self.kicks,
+            mat: &self.between,
+            restitution: (
+                Restitution::new(self.between.eps_n),
+                Restitution::new(self.between.eps_t),
+            ),
+            damping: states.first().map(|s| {
+                // Two free particles of the first one's mass (in a run of one size, every
+                // contact).
+                let m = s.particle.mass;
+                let reduced = m * m / (m + m);
+                let (eps_n, eps_t) = (
+                    Restitution::new(self.between.eps_n),
+                    Restitution::new(self.between.eps_t),
+                );
+                let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
+                let mat = &self.between;
+                (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
+            }),
+            optional: &self.optional,
+        };
+        let loads = &mut self.loads;
+        // What the forces could add to an owed kick (`SoftStepper::surely_finite`): the
+        // sum of their sizes, block by block, the same on any number of threads.
+        let mut bound = 0.0;
+        if !self.parallel {
+            // One thread: each contact's record changed where it lies, and its force
+            // added at once, in the list's order.
+            for block in touching.chunks(BOUND_BLOCK) {
+                let mut sum = 0.0;
+                for &k in block {
+                    let k = k as usize;
+                    let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+                    let record = &mut contacts.records[slots[k] as usize];
+                    let f = context.force(i, j, &spheres[i], &spheres[j], record);
+                    f.add_to(loads, 0, i, j);
+                    sum += f.size();
+                }
+                bound += sum;
+            }
+            self.force_bound += bound;
+            return Flow::Continue;
+        }
+        // In parallel: the new records, in the order of the pairs that touch, each from
+        // its last slot (a new contact's from nothing), and the forces beside them…
+        let last = &contacts.records;
+        let each = |(&k, &slot): (&u32, &u32)| {
+            let k = k as usize;
+            let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+            let mut record = match slot {
+                NO_CONTACT => Record::default(),
+                slot => last[slot as usize],
+            };
+            let force = context.force(i, j, &spheres[i], &spheres[j], &mut record);
+            (record, force)
+        };
+        (touching.par_iter().zip(from.par_iter()))
+            .map(each)
+            .unzip_into_vecs(&mut contacts.next, forces);
+        std::mem::swap(&mut contacts.records, &mut contacts.next);
+        contacts.free.clear();
+        // …the bound, block by block as on one thread…
+        (forces.par_chunks(BOUND_BLOCK))
+            .map(|block| block.iter().fold(0.0, |sum, f| sum + f.size()))
+            .collect_into_vec(bounds);
+        for sum in bounds.iter() {
+            bound += sum;
+        }
+        self.force_bound += bound;
+        // …and each range of particles takes the forces on its own in the list's
+        // order, so that each load adds them as on one thread.
+        let range = loads.len().div_ceil(rayon::current_num_threads()).max(1);
+        let pairs = pairs.as_slice();
+        loads
+            .par_chunks_mut(range)
+            .enumerate()
+            .for_each(|(c, part)| {
+                for (&k, f) in touching.iter().zip(forces.iter()) {
+                    let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
+                    f.add_to(part, c * range, i, j);
+                }
+            });
+        Flow::Continue
+    }
+
+    /// Which candidate pairs touch (with their overlaps as fractions of the smaller
+    /// radius) and which open contacts ended, in chunks of the list (in parallel for
+    /// many particles), in [`PairList::scans`].
+    fn scan_pairs(&mut self) {
+        let states = &self.states;
+        let aggregates = self.aggregates.as_ref();
+        let PairList {
+            pairs,
+            slots,
+            spheres,
+            scans,
             held,
             gone,
             ..
         } = &mut self.candidates;
         let some_unfree = *held || *gone;
-        // Which pairs touch and which stopped touching, in chunks of the list (in
-        // parallel for many particles)…
-        let size = if self.parallel {
-            pairs.len().div_ceil(SCAN_CHUNKS).max(1)
-        } else {
-            pairs.len().max(1)
-        };
+        // (In chunks on one thread too: the overlaps' check looks again only at those
+        // with a deep one.)
+        let size = pairs.len().div_ceil(SCAN_CHUNKS).max(1);
         scans.resize_with(pairs.len().div_ceil(size), Scan::default);
         // Plain slices in the loop (not the list's vectors behind references, which the
         // compiler would read again at every pair).
@@ -1314,6 +1444,7 @@ impl<'a> SoftStepper<'a> {
         let scan = |(c, scan): (usize, &mut Scan)| {
             scan.touching.clear();
             scan.apart.clear();
+            let mut deep = false;
             let first = c * size;
             let end = (first + size).min(list.len());
             for (k, (&(i, j), &slot)) in
@@ -1343,97 +1474,51 @@ impl<'a> SoftStepper<'a> {
                         scan.apart.push(k as u32);
                     }
                 } else {
-                    scan.touching.push((k as u32, overlap));
+                    // The overlap as a fraction of the smaller radius, which pkdgrav's
+                    // warnings and abort judge.
+                    let fraction = overlap / a[3].min(b[3]);
+                    deep |= !OverlapWarnings::quiet(fraction);
+                    scan.touching.push((k as u32, fraction));
                 }
             }
+            scan.deep = deep;
         };
         if self.parallel {
             scans.par_iter_mut().enumerate().for_each(scan);
         } else {
             scans.iter_mut().enumerate().for_each(scan);
         }
-        // …then, in the list's order, the contacts closed and opened and the overlaps
-        // checked.
-        touching.clear();
-        for scan in scans.iter() {
-            for &k in &scan.apart {
-                contacts.close(&mut slots[k as usize]);
-            }
-            for &(k, overlap) in &scan.touching {
+    }
+
+    /// pkdgrav's overlap warnings and abort for the pairs that touch, in the list's
+    /// order (only the chunks with an overlap the warnings judge are looked at); true
+    /// when one stops the run. The contacts opened this step before that pair are
+    /// counted, as pkdgrav counts them before it aborts.
+    fn check_overlaps(&mut self) -> bool {
+        let PairList {
+            pairs,
+            slots,
+            scans,
+            ..
+        } = &self.candidates;
+        for (c, scan) in scans.iter().enumerate().filter(|(_, scan)| scan.deep) {
+            for (n, &(k, fraction)) in scan.touching.iter().enumerate() {
                 let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-                // The radii from the spheres, at hand, not the states.
-                if self.overlaps.check(
-                    overlap / spheres[i][3].min(spheres[j][3]),
-                    Overlapping::Particles(i, j),
-                    t,
-                    &mut self.warnings,
-                ) {
-                    return Flow::Stop;
+                let what = Overlapping::Particles(i, j);
+                if self
+                    .overlaps
+                    .check(fraction, what, self.t, &mut self.warnings)
+                {
+                    // The contacts the pairs before it opened.
+                    let before = scans[..c].iter().flat_map(|s| &s.touching);
+                    let opened = before.chain(&scan.touching[..n]);
+                    let opened = opened.filter(|(k, _)| slots[*k as usize] == NO_CONTACT);
+                    self.pair_contacts += opened.count() as u64;
+                    return true;
                 }
-                contacts.open(&mut slots[k as usize], &mut self.pair_contacts);
-                touching.push(k);
             }
         }
-        let context = PairContext {
-            states,
-            settings: self.settings,
-            plan: self.plan,
-            kicks: self.kicks,
-            mat: &self.between,
-            restitution: (
-                Restitution::new(self.between.eps_n),
-                Restitution::new(self.between.eps_t),
-            ),
-            damping: states.first().map(|s| {
-                // Two free particles of the first one's mass (in a run of one size, every
-                // contact).
-                let m = s.particle.mass;
-                let reduced = m * m / (m + m);
-                let (eps_n, eps_t) = (
-                    Restitution::new(self.between.eps_n),
-                    Restitution::new(self.between.eps_t),
-                );
-                let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
-                let mat = &self.between;
-                (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
-            }),
-            optional: &self.optional,
-        };
-        let loads = &mut self.loads;
-        // What the forces could add to an owed kick (`SoftStepper::surely_finite`).
-        let mut bound = 0.0;
-        if !self.parallel {
-            // One thread: each contact's record changed where it lies, and its force
-            // added at once, in the list's order as below.
-            for &k in touching.iter() {
-                let k = k as usize;
-                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
-                let record = &mut contacts.records[slots[k] as usize];
-                let f = context.force(i, j, &spheres[i], &spheres[j], record);
-                f.add_to(loads, i, j);
-                bound += f.size();
-            }
-            self.force_bound += bound;
-            return Flow::Continue;
-        }
-        for block in touching.chunks(PAIR_BLOCK) {
-            let each = |&k: &u32| {
-                let k = k as usize;
-                let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
-                let mut record = contacts.records[slots[k] as usize];
-                let force = context.force(i, j, &spheres[i], &spheres[j], &mut record);
-                (record, force)
-            };
-            block.par_iter().map(each).collect_into_vec(forces);
-            for (&k, (record, f)) in block.iter().zip(forces.iter()) {
-                let k = k as usize;
-                contacts.records[slots[k] as usize] = *record;
-                f.add_to(loads, pairs[k].0 as usize, pairs[k].1 as usize);
-                bound += f.size();
-            }
-        }
-        self.force_bound += bound;
-        Flow::Continue
+        false
     }
 
     /// The contacts with the walls of each particle not owed its kick, added to its
@@ -1795,8 +1880,13 @@ struct PairList {
     contacts: PairContacts,
     /// The pairs that touch this step (kept to save allocating).
     touching: Vec<u32>,
-    /// A block of their new records and forces, in parallel (kept to save allocating).
-    forces: Vec<(Record, PairForce)>,
+    /// In parallel, their forces, in the same order (kept to save allocating).
+    forces: Vec<PairForce>,
+    /// In parallel, the slot in the last step's records of each that touches (or
+    /// [`NO_CONTACT`]) (kept to save allocating).
+    from: Vec<u32>,
+    /// The sums of the forces' sizes, block by block (kept to save allocating).
+    bounds: Vec<f64>,
     /// What each chunk of the list found this step (kept to save allocating).
     scans: Vec<Scan>,
     built_at: Vec<Vec3>,
@@ -1826,6 +1916,8 @@ impl PairList {
             contacts: PairContacts::default(),
             touching: Vec::new(),
             forces: Vec::new(),
+            from: Vec::new(),
+            bounds: Vec::new(),
             scans: Vec::new(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
@@ -1858,31 +1950,53 @@ impl PairList {
             s.alive
                 .then_some((s.particle.pos, s.particle.radius + half))
         });
-        let pairs = grid.pairs();
+        let pairs = if in_parallel(states.len()) {
+            grid.par_pairs()
+        } else {
+            grid.pairs()
+        };
         // The open contacts go with their pairs into the new list (every pair that
-        // touches is in it); any other ends.
-        let mut open: std::collections::HashMap<(u32, u32), u32> = (self.pairs.iter())
-            .zip(&self.slots)
-            .filter(|(_, slot)| **slot != NO_CONTACT)
-            .map(|(pair, slot)| (*pair, *slot))
-            .collect();
+        // touches is in it); any other ends. They are found by their first particle:
+        // its open contacts, (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
+        let open_pairs = || {
+            (self.pairs.iter())
+                .zip(&self.slots)
+                .filter(|(_, slot)| **slot != NO_CONTACT)
+        };
+        let mut starts = vec![0u32; states.len() + 1];
+        for (&(i, _), _) in open_pairs() {
+            starts[i as usize + 1] += 1;
+        }
+        for i in 0..states.len() {
+            starts[i + 1] += starts[i];
+        }
+        let mut open = vec![(0, 0); starts[states.len()] as usize];
+        let mut next = starts.clone();
+        for (&(i, j), &slot) in open_pairs() {
+            open[next[i as usize] as usize] = (j, slot);
+            next[i as usize] += 1;
+        }
         // Their records are laid out again in the new list's order, which the force
         // pass follows: one after the other in memory rather than where each happened
         // to open. The others are dropped.
         let mut records = Vec::with_capacity(open.len());
         let slots: Vec<u32> = pairs
             .iter()
-            .map(|pair| match open.remove(pair) {
-                Some(slot) => {
-                    records.push(self.contacts.records[slot as usize]);
-                    (records.len() - 1) as u32
+            .map(|&(i, j)| {
+                let of_i = &open[starts[i as usize] as usize..starts[i as usize + 1] as usize];
+                match of_i.iter().find(|(second, _)| *second == j) {
+                    Some(&(_, slot)) => {
+                        records.push(self.contacts.records[slot as usize]);
+                        (records.len() - 1) as u32
+                    }
+                    None => NO_CONTACT,
                 }
-                None => NO_CONTACT,
             })
             .collect();
         self.contacts = PairContacts {
             records,
             free: Vec::new(),
+            next: std::mem::take(&mut self.contacts.next),
         };
         self.slots = slots;
         self.pairs = pairs;
@@ -1985,10 +2099,18 @@ type WallChunk<'a> = (
     ),
 );
 
+/// Whether a run of `n` particles takes its passes in parallel: with many particles and
+/// more than one thread. With one thread, the plain loops: the same outcome, without
+/// rayon's splitting and collecting.
+fn in_parallel(n: usize) -> bool {
+    n >= PARALLEL_FROM && rayon::current_num_threads() > 1
+}
+
 /// How many particles a thread takes at a time in the passes over all of them.
 const CHUNK: usize = 512;
 
-/// Into how many chunks the candidate pairs are cut to find, in parallel, which touch.
+/// Into how many chunks the candidate pairs are cut to find (in parallel, with many
+/// particles) which touch.
 const SCAN_CHUNKS: usize = 64;
 
 /// What one chunk of the candidate pairs found in a step: the pairs that touch, with
@@ -1997,11 +2119,13 @@ const SCAN_CHUNKS: usize = 64;
 struct Scan {
     touching: Vec<(u32, f64)>,
     apart: Vec<u32>,
+    /// Whether an overlap is deep enough for pkdgrav's warnings to judge.
+    deep: bool,
 }
 
-/// How many touching pairs get their forces at once: the forces of a block are kept
-/// until they are added to the loads, in order.
-const PAIR_BLOCK: usize = 4096;
+/// How many touching pairs' force sizes are summed in order before the sum is added to
+/// the bound ([`SoftStepper::surely_finite`]): the blocks in parallel, the same sums.
+const BOUND_BLOCK: usize = 4096;
 
 /// The force of one particle contact and its torques on particles i and j, and
 /// whether each is free (a stuck one takes nothing).
@@ -2019,16 +2143,21 @@ impl PairForce {
         self.force.abs().sum() + self.torques.0.abs().sum() + self.torques.1.abs().sum()
     }
 
-    /// Adds the force and torques to the loads of particles i and j (of the free ones).
+    /// Adds the force and torques to the loads of particles i and j (of the free ones)
+    /// among `loads`, the loads of the particles from `first` on.
     #[inline]
-    fn add_to(&self, loads: &mut [Load], i: usize, j: usize) {
-        if self.free.0 {
-            loads[i].force += self.force;
-            loads[i].torque += self.torques.0;
+    fn add_to(&self, loads: &mut [Load], first: usize, i: usize, j: usize) {
+        if self.free.0
+            && let Some(load) = loads.get_mut(i.wrapping_sub(first))
+        {
+            load.force += self.force;
+            load.torque += self.torques.0;
         }
-        if self.free.1 {
-            loads[j].force -= self.force;
-            loads[j].torque += self.torques.1;
+        if self.free.1
+            && let Some(load) = loads.get_mut(j.wrapping_sub(first))
+        {
+            load.force -= self.force;
+            load.torque += self.torques.1;
         }
     }
 }
@@ -2307,6 +2436,9 @@ const NO_CONTACT: u32 = u32::MAX;
 struct PairContacts {
     records: Vec<Record>,
     free: Vec<u32>,
+    /// In parallel, where the next step's records are laid out (kept to save
+    /// allocating).
+    next: Vec<Record>,
 }
 
 impl PairContacts {
