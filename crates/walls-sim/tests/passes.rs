@@ -167,28 +167,31 @@ fn an_overlap_that_stops_the_run_stops_it_alike_on_one_thread_and_three() {
 
 #[test]
 fn an_overlap_stop_counts_the_contacts_opened_before_it_and_no_others() {
-    // In step 1, balls 0 and 1 touch lightly (2 % of a radius) and, later in the list,
-    // balls 2 and 3 sink past half a radius: the run stops there, one contact opened;
-    // balls 4 and 5, after them, would have opened another.
+    // Four pairs of balls along x, in the list's order. The first touches in step 1
+    // and still does in step 2; the second begins to touch in step 2; the third, apart
+    // in step 1, sinks past half a radius in step 2; the fourth would begin to touch in
+    // step 2, after it. The run stops in step 2 with two contacts counted: the first
+    // pair's (once) and the second's.
     let settings = Settings {
         integrator: Integrator::Leapfrog,
         ..Settings::new(1.0, 10.0, defaults::default_material(1.0))
     };
-    let pair = |x: f64, closing: f64, first: i32| {
+    let pair = |x: f64, gap: f64, closing: f64, first: i32| {
         let a = ball([x, 0.0, 0.0], [0.0; 3]);
-        let b = ball([x + 0.21, 0.0, 0.0], [-closing, 0.0, 0.0]);
+        let b = ball([x + 0.2 + gap, 0.0, 0.0], [-closing, 0.0, 0.0]);
         [a, b].map(|mut p| {
             p.index += first;
             p
         })
     };
     let balls = [
-        pair(0.0, 0.012, 0),
-        pair(10.0, 0.12, 2),
-        pair(20.0, 0.012, 4),
+        pair(0.0, 0.01, 0.012, 0),
+        pair(10.0, 0.01, 0.006, 2),
+        pair(20.0, 0.06, 0.059, 4),
+        pair(30.0, 0.01, 0.006, 6),
     ]
     .concat();
     let out = run(&[], balls, &settings);
     assert_eq!(out.stopped, Some(Stop::Overlap));
-    assert_eq!((out.steps, out.pair_contacts), (1, 1));
+    assert_eq!((out.steps, out.pair_contacts), (2, 2));
 }

@@ -809,14 +809,20 @@ struct OverlapWarnings {
 }
 
 impl OverlapWarnings {
-    /// Whether an overlap of `fraction` of the radius is below every level the
-    /// warnings judge: [`OverlapWarnings::check`] would do nothing with it.
-    pub(crate) fn quiet(fraction: f64) -> bool {
-        fraction <= Self::LEVELS[0]
+    /// The overlap (a fraction of the smaller radius) at or below which
+    /// [`OverlapWarnings::check`] now does nothing: the lowest level not yet warned of,
+    /// or pkdgrav's abort once both have been.
+    pub(crate) fn quiet_up_to(&self) -> f64 {
+        (Self::LEVELS.iter().zip(self.warned))
+            .filter(|(_, warned)| !warned)
+            .fold(Self::ABORT, |quiet, (level, _)| quiet.min(*level))
     }
 
     /// The overlaps, as fractions of the radius, that pkdgrav warns of (once each).
     const LEVELS: [f64; 2] = [0.03, 0.15];
+
+    /// The overlap, as a fraction of the radius, above which pkdgrav aborts.
+    const ABORT: f64 = 0.5;
 
     /// Notes an overlap of `fraction` of the radius between `what` at time `t`; true
     /// when it is above 50 %, where pkdgrav aborts.
@@ -837,9 +843,9 @@ impl OverlapWarnings {
                 });
             }
         }
-        if fraction > 0.5 {
+        if fraction > Self::ABORT {
             warnings.push(Warning::OverlapStop { fraction, what, t });
         }
-        fraction > 0.5
+        fraction > Self::ABORT
     }
 }

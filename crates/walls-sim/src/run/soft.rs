@@ -1434,6 +1434,9 @@ impl<'a> SoftStepper<'a> {
             ..
         } = &mut self.candidates;
         let some_unfree = *held || *gone;
+        // An overlap above this is one the ordered check must see (a NaN it would not
+        // act on).
+        let quiet = self.overlaps.quiet_up_to();
         // (In chunks on one thread too: the overlaps' check looks again only at those
         // with a deep one.)
         let size = pairs.len().div_ceil(SCAN_CHUNKS).max(1);
@@ -1477,7 +1480,7 @@ impl<'a> SoftStepper<'a> {
                     // The overlap as a fraction of the smaller radius, which pkdgrav's
                     // warnings and abort judge.
                     let fraction = overlap / a[3].min(b[3]);
-                    deep |= !OverlapWarnings::quiet(fraction);
+                    deep |= fraction > quiet;
                     scan.touching.push((k as u32, fraction));
                 }
             }
@@ -1491,9 +1494,10 @@ impl<'a> SoftStepper<'a> {
     }
 
     /// pkdgrav's overlap warnings and abort for the pairs that touch, in the list's
-    /// order (only the chunks with an overlap the warnings judge are looked at); true
-    /// when one stops the run. The contacts opened this step before that pair are
-    /// counted, as pkdgrav counts them before it aborts.
+    /// order (only the chunks with an overlap they may act on are looked at); true when
+    /// one stops the run. The contacts the pairs before that one would have opened this
+    /// step are counted, as pkdgrav counts them before it aborts, though none is opened:
+    /// the run ends there (the stepper is not stepped again).
     fn check_overlaps(&mut self) -> bool {
         let PairList {
             pairs,
@@ -1885,7 +1889,8 @@ struct PairList {
     /// In parallel, the slot in the last step's records of each that touches (or
     /// [`NO_CONTACT`]) (kept to save allocating).
     from: Vec<u32>,
-    /// The sums of the forces' sizes, block by block (kept to save allocating).
+    /// In parallel, the sums of the forces' sizes, block by block (kept to save
+    /// allocating).
     bounds: Vec<f64>,
     /// What each chunk of the list found this step (kept to save allocating).
     scans: Vec<Scan>,
@@ -2114,12 +2119,14 @@ const CHUNK: usize = 512;
 const SCAN_CHUNKS: usize = 64;
 
 /// What one chunk of the candidate pairs found in a step: the pairs that touch, with
-/// their overlaps, and those with an open contact that no longer touch.
+/// their overlaps as fractions of the smaller radius, and those with an open contact
+/// that no longer touch.
 #[derive(Default)]
 struct Scan {
     touching: Vec<(u32, f64)>,
     apart: Vec<u32>,
-    /// Whether an overlap is deep enough for pkdgrav's warnings to judge.
+    /// Whether an overlap is deep enough for pkdgrav's warnings or abort to act on
+    /// ([`OverlapWarnings::quiet_up_to`]).
     deep: bool,
 }
 
@@ -2431,7 +2438,8 @@ impl NearWalls {
 const NO_CONTACT: u32 = u32::MAX;
 
 /// The records of the open contacts between particles, in slots that the candidate
-/// pairs point to ([`PairList::slots`]); a closed contact's slot is reused.
+/// pairs point to ([`PairList::slots`]): on one thread, a closed contact's slot is
+/// reused; in parallel, the records are laid out anew each step.
 #[derive(Default)]
 struct PairContacts {
     records: Vec<Record>,
