@@ -1329,27 +1329,21 @@ impl<'a> SoftStepper<'a> {
             }
         }
         let states = &self.states;
+        let mat = &self.between;
+        let (eps_n, eps_t) = (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t));
         let context = PairContext {
             states,
             settings: self.settings,
             plan: self.plan,
             kicks: self.kicks,
-            mat: &self.between,
-            restitution: (
-                Restitution::new(self.between.eps_n),
-                Restitution::new(self.between.eps_t),
-            ),
+            mat,
+            restitution: (eps_n, eps_t),
             damping: states.first().map(|s| {
                 // Two free particles of the first one's mass (in a run of one size, every
                 // contact).
                 let m = s.particle.mass;
                 let reduced = m * m / (m + m);
-                let (eps_n, eps_t) = (
-                    Restitution::new(self.between.eps_n),
-                    Restitution::new(self.between.eps_t),
-                );
                 let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
-                let mat = &self.between;
                 (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
             }),
             optional: &self.optional,
