@@ -2,7 +2,7 @@
 
 use nalgebra::Vector3;
 use walls_geometry::Particle;
-use walls_sim::run::{EventKind, ParticleMaterial, Settings, Warning, default_dt, run};
+use walls_sim::run::{EventKind, Integrator, ParticleMaterial, Settings, Warning, default_dt, run};
 
 use walls_test_support::{ball as particle, scene};
 
@@ -452,4 +452,48 @@ fn rolling_resistance_between_particles_does_not_reverse_their_relative_spin() {
     );
     assert!((wa + wb - 0.01).abs() < 1e-12, "{wa} + {wb}");
     assert!(wa - wb >= -1e-12, "relative spin reversed: {wa} − {wb}");
+}
+
+#[test]
+fn free_fall_gains_g_dt_a_step_from_the_first_step_with_every_integrator() {
+    // Gravity alone (the floor far below): every step adds g·dt to the velocity, the
+    // first ones too, whether or not the integrator has pkdgrav's force evaluation before
+    // the first step; the kick-drift-kick ones place the particle at z₀ + v₀t − g t²/2,
+    // explicit Euler (drift, then kick) g·dt²·n(n−1)/2 higher.
+    let walls = scene("wall type plane\n  origin 0 0 -100\n");
+    let (z0, v0, g, dt) = (1.0, 0.25, 9.81, 1e-3);
+    for integrator in [
+        Integrator::Pkdgrav,
+        Integrator::Leapfrog,
+        Integrator::LeapfrogPredicted,
+        Integrator::ExplicitEuler,
+    ] {
+        for steps in [1u32, 2, 3, 10] {
+            let ps = vec![particle([0.0, 0.0, z0], [0.0, 0.0, v0])];
+            let mut s = settings(&ps, 0.5, f64::from(steps) * dt, [0.0, 0.0, -g]);
+            s.dt = dt;
+            s.integrator = integrator;
+            let out = run(&walls, ps, &s);
+            assert_eq!(out.steps, u64::from(steps), "{integrator:?}");
+            let n = f64::from(steps);
+            let p = &out.particles[0].particle;
+            let t = n * dt;
+            assert!(
+                (p.vel.z - (v0 - g * t)).abs() < 1e-13,
+                "{integrator:?}, {steps} steps: v = {}, not {}",
+                p.vel.z,
+                v0 - g * t
+            );
+            let z = if integrator == Integrator::ExplicitEuler {
+                z0 + v0 * t - g * dt * dt * n * (n - 1.0) / 2.0
+            } else {
+                z0 + v0 * t - g * t * t / 2.0
+            };
+            assert!(
+                (p.pos.z - z).abs() < 1e-13,
+                "{integrator:?}, {steps} steps: z = {}, not {z}",
+                p.pos.z
+            );
+        }
+    }
 }

@@ -744,7 +744,10 @@ impl<'a> SoftStepper<'a> {
                 0.0
             };
         let n = states.len();
-        let loads = vec![Load::default(); n];
+        // Each load starts the first step with gravity alone, as the wall pass and the
+        // drift start the next ones': integrators without pkdgrav's force evaluation
+        // before the first step (`SoftStepper::start`) kick with it at once.
+        let loads = states.iter().map(|s| Load::gravity(s, &g)).collect();
         let candidates = PairList::new(&states, plan.particle_contacts);
         let mut warnings = Vec::new();
         let oscillating: Vec<bool> = scene
