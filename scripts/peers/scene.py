@@ -302,6 +302,9 @@ def write_lammps(folder: Path, scene: Scene, parts, lay: Layout) -> None:
         "units si",
         "atom_style sphere",
         "boundary f f f",
+        # On several MPI ranks, the box is cut across, never along gravity: the pile
+        # lies at the bottom, and one rank would hold it all.
+        "processors * * 1",
         "newton off",
         "comm_modify vel yes",
         "read_data data.lmp",
@@ -341,6 +344,7 @@ def write_liggghts(folder: Path, scene: Scene, parts, lay: Layout) -> None:
         "atom_style granular",
         "atom_modify map array",
         "boundary f f f",
+        "processors * * 1",
         "newton off",
         "communicate single vel yes",
         "units si",

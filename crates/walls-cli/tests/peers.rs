@@ -1,8 +1,10 @@
 //! The peer benchmark's scenes (`scripts/bench-peers scene`, docs/performance.md "Against
 //! LAMMPS and LIGGGHTS"): the generator writes the three input sets as expected (the
 //! files under `tests/data/peers/<scene>/`; `UPDATE_PEERS=1` rewrites them), walls-sim
-//! runs its own set, and a bad count is refused. LAMMPS and LIGGGHTS are not needed:
-//! `scripts/bench-peers check` runs them where they are installed.
+//! runs its own set, and a bad count is refused; `run` on one core and two starts each
+//! tool as it should (stand-ins record how LAMMPS, LIGGGHTS and the MPI launcher were
+//! started). LAMMPS and LIGGGHTS are not needed: `scripts/bench-peers check` runs them
+//! where they are installed.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -122,4 +124,89 @@ fn a_particle_count_below_one_is_refused() {
         "bench-peers: the particle count must be at least 1, not 0\n"
     );
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+/// A stand-in for a peer or the MPI launcher: appends its name, arguments and the
+/// variables the benchmark sets to `calls`, then exits 0.
+fn stand_in(dir: &Path, name: &str, calls: &Path) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let path = dir.join(name);
+    let script = format!(
+        "#!/bin/sh\necho \"{name} $* OMP=$OMP_NUM_THREADS ROOT=$OMPI_ALLOW_RUN_AS_ROOT\" >> {}\n",
+        calls.display()
+    );
+    std::fs::write(&path, script).unwrap();
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+    path
+}
+
+#[test]
+fn a_run_on_one_core_and_two_starts_walls_sim_on_threads_and_the_peers_on_mpi_ranks() {
+    let dir = tempfile::tempdir().unwrap();
+    let calls = dir.path().join("calls");
+    let lammps = stand_in(dir.path(), "lmp", &calls);
+    let liggghts = stand_in(dir.path(), "liggghts", &calls);
+    let mpirun = stand_in(dir.path(), "mpirun", &calls);
+    let out = bench_peers(&[
+        "--walls-sim",
+        env!("CARGO_BIN_EXE_walls-sim"),
+        "--lammps",
+        lammps.to_str().unwrap(),
+        "--liggghts",
+        liggghts.to_str().unwrap(),
+        "run",
+        "--particles",
+        "8",
+        "--scenes",
+        "drop",
+        "--steps",
+        "10",
+        "--rounds",
+        "2",
+        "--threads",
+        "1,2",
+        "--mpirun",
+        mpirun.to_str().unwrap(),
+        "--csv",
+        "",
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    // Round by round, each core count in turn, each tool in turn.
+    let (lmp, lig) = (lammps.display(), liggghts.display());
+    let once = format!(
+        "lmp -in in.lmp -log none OMP=1 ROOT=\n\
+         liggghts -in in.lig -log none OMP=1 ROOT=\n\
+         mpirun -np 2 {lmp} -in in.lmp -log none OMP=1 ROOT=1\n\
+         mpirun -np 2 {lig} -in in.lig -log none OMP=1 ROOT=1\n"
+    );
+    assert_eq!(std::fs::read_to_string(&calls).unwrap(), once.repeat(2));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let tools: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("drop "))
+        .map(|l| l.split_whitespace().nth(6).unwrap())
+        .collect();
+    let round = [
+        "walls-sim",
+        "lammps",
+        "liggghts",
+        "walls-sim-2threads",
+        "lammps-2ranks",
+        "liggghts-2ranks",
+    ];
+    assert_eq!(tools, [round, round].concat());
+    // The ratios against walls-sim on as many cores, and each tool's one core against
+    // two.
+    for tool in ["lammps", "liggghts", "lammps-2ranks", "liggghts-2ranks"] {
+        let row = format!("| drop | 8 | 10 | {tool} |");
+        let line = stdout.lines().find(|l| l.starts_with(&row)).unwrap();
+        assert!(!line.ends_with("| |"), "no ratio: {line}");
+    }
+    for tool in ["walls-sim", "lammps", "liggghts"] {
+        let row = format!("| drop | 8 | {tool} | 2 | ");
+        assert!(
+            stdout.lines().any(|l| l.starts_with(&row)),
+            "{tool}: {stdout}"
+        );
+    }
 }
