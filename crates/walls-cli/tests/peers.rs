@@ -126,6 +126,25 @@ fn a_particle_count_below_one_is_refused() {
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
+#[test]
+fn a_core_or_particle_count_that_is_not_a_whole_number_is_refused() {
+    for (flag, word) in [
+        ("--threads", "inf"),
+        ("--threads", "1,x"),
+        ("--threads", "1.5"),
+        ("--particles", "1e400"),
+    ] {
+        let out = bench_peers(&["--walls-sim", "/bin/true", "run", flag, word]);
+        assert_eq!(out.status.code(), Some(2), "{flag} {word}: {out:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let bad = word.rsplit(',').next().unwrap();
+        assert!(
+            stderr.ends_with(&format!("error: argument {flag}: not a count: '{bad}'\n")),
+            "{flag} {word}: {stderr}"
+        );
+    }
+}
+
 /// A stand-in for a peer or the MPI launcher: appends its name, arguments and the
 /// variables the benchmark sets to `calls`, then exits 0.
 fn stand_in(dir: &Path, name: &str, calls: &Path) -> PathBuf {

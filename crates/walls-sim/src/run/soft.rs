@@ -744,9 +744,11 @@ impl<'a> SoftStepper<'a> {
                 0.0
             };
         let n = states.len();
-        // Each load starts the first step with gravity alone, as the wall pass and the
-        // drift start the next ones': integrators without pkdgrav's force evaluation
-        // before the first step (`SoftStepper::start`) kick with it at once.
+        // Each load starts the run with gravity alone, whichever the integrator (pkdgrav's
+        // evaluation before the first step, `SoftStepper::start`, adds to it; the others
+        // kick with it at once). In a step, the wall pass starts the next step's, or the
+        // drift or `SoftStepper::settle` after an owed kick, and for an aggregate's
+        // members.
         let loads = states.iter().map(|s| Load::gravity(s, &g)).collect();
         let candidates = PairList::new(&states, plan.particle_contacts);
         let mut warnings = Vec::new();
@@ -874,14 +876,14 @@ impl<'a> SoftStepper<'a> {
 
     /// pkdgrav's force evaluation at the start, before the first step
     /// (docs/pkdgrav-physics.md §2, §12), for [`Integrator::Pkdgrav`]: gravity and every
-    /// contact open at t₀, with the velocities and spins as they are. It sets the
-    /// accelerations the first kick uses and steps the springs of those contacts once; it
-    /// moves and kicks nothing.
+    /// contact open at t₀, with the velocities and spins as they are, added to the loads
+    /// (which start with gravity, [`SoftStepper::new`]). It sets the accelerations the
+    /// first kick uses and steps the springs of those contacts once; it moves and kicks
+    /// nothing.
     fn start(&mut self) -> Flow {
         let kicks = self.kicks;
         self.kicks = kicks.at_start();
         self.place_assemblies();
-        self.gravity_loads();
         let mut flow = Flow::Continue;
         if self.plan.particle_contacts
             && self.settings.forces
@@ -1259,16 +1261,6 @@ impl<'a> SoftStepper<'a> {
         }
         self.cogs.clear();
         self.cogs.extend(self.assemblies.iter().map(|a| a.cog));
-    }
-
-    /// Each particle's load starts the run with gravity alone (in a step, the last wall
-    /// pass does it; [`SoftStepper::kick_drift`] or [`SoftStepper::settle`], after an
-    /// owed kick, and for an aggregate's members).
-    fn gravity_loads(&mut self) {
-        let g = self.settings.gravity;
-        for (s, load) in self.states.iter().zip(&mut self.loads) {
-            *load = Load::gravity(s, &g);
-        }
     }
 
     /// Adds the forces and torques of every overlapping pair of particles (free ones,
