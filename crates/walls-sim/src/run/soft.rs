@@ -2281,9 +2281,15 @@ impl PairContext<'_> {
                 }),
                 sliding: self.settings.sliding,
             };
+            // (The optional physics is asked only when some is on, in few runs: else a
+            // test here, not a call, for every contact.)
             let mut extra = Optional {
                 restitution: Some(self.restitution),
-                ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
+                ..if self.optional.any() {
+                    self.optional.pair(i, j, p.radius, q.radius, a, mat)
+                } else {
+                    Optional::default()
+                }
             };
             if let (None, Some((mass, damping))) = (extra.layers, self.damping)
                 && mass == reduced
