@@ -1,8 +1,11 @@
-//! Particles against walls with the SSDEM model, against analytic answers.
+//! Particles against walls with the SSDEM model, against analytic answers (and a free
+//! fall with HSDEM too).
 
 use nalgebra::Vector3;
 use walls_geometry::Particle;
-use walls_sim::run::{EventKind, Integrator, ParticleMaterial, Settings, Warning, default_dt, run};
+use walls_sim::run::{
+    ContactModel, EventKind, Integrator, ParticleMaterial, Settings, Warning, default_dt, run,
+};
 
 use walls_test_support::{ball as particle, scene};
 
@@ -459,41 +462,45 @@ fn free_fall_gains_g_dt_a_step_from_the_first_step_with_every_integrator() {
     // Gravity alone (the floor far below): every step adds g·dt to the velocity, the
     // first ones too, whether or not the integrator has pkdgrav's force evaluation before
     // the first step; the kick-drift-kick ones place the particle at z₀ + v₀t − g t²/2,
-    // explicit Euler (drift, then kick) g·dt²·n(n−1)/2 higher.
-    let walls = scene("wall type plane\n  origin 0 0 -100\n");
+    // explicit Euler (drift, then kick) g·dt²·n(n−1)/2 higher. Hard spheres (HSDEM) kick,
+    // drift and kick under every integrator.
     let (z0, v0, g, dt) = (1.0, 0.25, 9.81, 1e-3);
-    for integrator in [
-        Integrator::Pkdgrav,
-        Integrator::Leapfrog,
-        Integrator::LeapfrogPredicted,
-        Integrator::ExplicitEuler,
-    ] {
-        for steps in [1u32, 2, 3, 10] {
-            let ps = vec![particle([0.0, 0.0, z0], [0.0, 0.0, v0])];
-            let mut s = settings(&ps, 0.5, f64::from(steps) * dt, [0.0, 0.0, -g]);
-            s.dt = dt;
-            s.integrator = integrator;
-            let out = run(&walls, ps, &s);
-            assert_eq!(out.steps, u64::from(steps), "{integrator:?}");
-            let n = f64::from(steps);
-            let p = &out.particles[0].particle;
-            let t = n * dt;
-            assert!(
-                (p.vel.z - (v0 - g * t)).abs() < 1e-13,
-                "{integrator:?}, {steps} steps: v = {}, not {}",
-                p.vel.z,
-                v0 - g * t
-            );
-            let z = if integrator == Integrator::ExplicitEuler {
-                z0 + v0 * t - g * dt * dt * n * (n - 1.0) / 2.0
-            } else {
-                z0 + v0 * t - g * t * t / 2.0
-            };
-            assert!(
-                (p.pos.z - z).abs() < 1e-13,
-                "{integrator:?}, {steps} steps: z = {}, not {z}",
-                p.pos.z
-            );
+    for model in [ContactModel::Ssdem, ContactModel::Hsdem] {
+        let walls = walls_test_support::scene_in("wall type plane\n  origin 0 0 -100\n", model);
+        for integrator in [
+            Integrator::Pkdgrav,
+            Integrator::Leapfrog,
+            Integrator::LeapfrogPredicted,
+            Integrator::ExplicitEuler,
+        ] {
+            for steps in [1u32, 2, 3, 10] {
+                let ps = vec![particle([0.0, 0.0, z0], [0.0, 0.0, v0])];
+                let mut s = settings(&ps, 0.5, f64::from(steps) * dt, [0.0, 0.0, -g]);
+                s.dt = dt;
+                s.integrator = integrator;
+                s.build = walls_sim::build::Build::default_for(model);
+                let out = run(&walls, ps, &s);
+                assert_eq!(out.steps, u64::from(steps), "{model:?}, {integrator:?}");
+                let n = f64::from(steps);
+                let p = &out.particles[0].particle;
+                let t = n * dt;
+                assert!(
+                    (p.vel.z - (v0 - g * t)).abs() < 1e-13,
+                    "{model:?}, {integrator:?}, {steps} steps: v = {}, not {}",
+                    p.vel.z,
+                    v0 - g * t
+                );
+                let z = if integrator == Integrator::ExplicitEuler && model == ContactModel::Ssdem {
+                    z0 + v0 * t - g * dt * dt * n * (n - 1.0) / 2.0
+                } else {
+                    z0 + v0 * t - g * t * t / 2.0
+                };
+                assert!(
+                    (p.pos.z - z).abs() < 1e-13,
+                    "{model:?}, {integrator:?}, {steps} steps: z = {}, not {z}",
+                    p.pos.z
+                );
+            }
         }
     }
 }
