@@ -1060,7 +1060,7 @@ impl<'a> SoftStepper<'a> {
             *owed = owing
                 && !far
                 && open.is_empty()
-                && Self::may_owe(&pos, &vel, &spin, r, dt)
+                && Self::may_owe(&vel, &spin, r, dt)
                 && clear_of_near(i, &pos, r, near, now);
             far
         };
@@ -1129,15 +1129,19 @@ impl<'a> SoftStepper<'a> {
         self.force_bound = 0.0;
     }
 
-    /// Whether the wall pass may owe a free particle of radius `r`, drifted to `pos`
-    /// with velocity `vel` and spin `spin` and clear of the walls, its closing kick: it
-    /// has not moved more than a radius in the step (else the wall pass warns of it), and
-    /// its position, velocity and spin are surely finite, so that only its load could
-    /// make them overflow ([`SoftStepper::surely_finite`]).
+    /// Whether the wall pass may owe a free particle of radius `r`, not far from where
+    /// the candidate pairs were found (so at a finite position: the kick does not move
+    /// it), with velocity `vel` and spin `spin` and clear of the walls, its closing kick:
+    /// it has not moved more than a radius in the step (else the wall pass warns of it),
+    /// and its velocity and spin are surely finite, each shorter than
+    /// [`SURELY_FINITE_LENGTH`], so that only its load could make them overflow
+    /// ([`SoftStepper::surely_finite`]). (From the squared lengths, the first of which
+    /// the speed's test needs anyway: a NaN or an infinity fails both tests.)
     #[inline]
-    fn may_owe(pos: &Vec3, vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
-        let size = pos.abs().sum() + vel.abs().sum() + spin.abs().sum();
-        vel.norm_squared() * dt * dt <= r * r && size < SURELY_FINITE
+    fn may_owe(vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
+        const LIMIT: f64 = SURELY_FINITE_LENGTH * SURELY_FINITE_LENGTH;
+        let v2 = vel.norm_squared();
+        (v2 * dt * dt <= r * r) & (v2 < LIMIT) & (spin.norm_squared() < LIMIT)
     }
 
     /// The closing kicks the last wall pass owed, given now (as the next drift would
@@ -1167,8 +1171,9 @@ impl<'a> SoftStepper<'a> {
         self.owed_bad = bad;
     }
 
-    /// Whether the kicks owed cannot overflow: each owed particle's position, velocity
-    /// and spin are below [`SURELY_FINITE`] in size ([`SoftStepper::may_owe`]), and its
+    /// Whether the kicks owed cannot overflow: each owed particle's position is finite,
+    /// and its velocity and spin are below [`SURELY_FINITE`] in size (shorter than
+    /// [`SURELY_FINITE_LENGTH`], [`SoftStepper::may_owe`]), and its
     /// load (gravity and particle contacts) is at most gravity on the heaviest particle
     /// plus the sum of every particle contact's forces and torques this step, which
     /// times the largest 1/m or 1/I and the kick's time is below it too.
@@ -2079,6 +2084,11 @@ struct DriftWork<'a> {
 /// owed to it to be surely finite ([`SoftStepper::surely_finite`]): twice it is still
 /// far below the largest double (1.8·10³⁰⁸).
 const SURELY_FINITE: f64 = 1e300;
+
+/// How long an owed particle's velocity or spin may be ([`SoftStepper::may_owe`]): its
+/// size |x| + |y| + |z|, at most √3 times its length, is then far below
+/// [`SURELY_FINITE`], and its squared length is a double.
+const SURELY_FINITE_LENGTH: f64 = 1e149;
 
 /// A chunk of the particles as the wall pass takes it: its number, their states and
 /// loads, which of them it visits, their open wall contacts, and its reports and scratch list of walls.
