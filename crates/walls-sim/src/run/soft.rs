@@ -1060,7 +1060,7 @@ impl<'a> SoftStepper<'a> {
             *owed = owing
                 && !far
                 && open.is_empty()
-                && Self::may_owe(&vel, &spin, r, dt)
+                && Self::may_owe(d2, &vel, &spin, r, dt)
                 && clear_of_near(i, &pos, r, near, now);
             far
         };
@@ -1129,19 +1129,20 @@ impl<'a> SoftStepper<'a> {
         self.force_bound = 0.0;
     }
 
-    /// Whether the wall pass may owe a free particle of radius `r`, not far from where
-    /// the candidate pairs were found (so at a finite position: the kick does not move
-    /// it), with velocity `vel` and spin `spin` and clear of the walls, its closing kick:
-    /// it has not moved more than a radius in the step (else the wall pass warns of it),
-    /// and its velocity and spin are surely finite, each shorter than
-    /// [`SURELY_FINITE_LENGTH`], so that only its load could make them overflow
-    /// ([`SoftStepper::surely_finite`]). (From the squared lengths, the first of which
-    /// the speed's test needs anyway: a NaN or an infinity fails both tests.)
+    /// Whether the wall pass may owe a free particle of radius `r`, whose squared
+    /// distance from where the candidate pairs were found is `d2`, with velocity `vel`
+    /// and spin `spin` and clear of the walls, its closing kick: it has not moved more
+    /// than a radius in the step (else the wall pass warns of it), its position is
+    /// finite (`d2` is: the kick does not move it), and its velocity and spin are surely
+    /// finite, each shorter than [`SURELY_FINITE_LENGTH`], so that only its load could
+    /// make them overflow ([`SoftStepper::surely_finite`]). (From squared lengths, the
+    /// velocity's of which the speed's test needs anyway: a NaN or an infinity fails
+    /// each test.)
     #[inline]
-    fn may_owe(vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
+    fn may_owe(d2: f64, vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
         const LIMIT: f64 = SURELY_FINITE_LENGTH * SURELY_FINITE_LENGTH;
         let v2 = vel.norm_squared();
-        (v2 * dt * dt <= r * r) & (v2 < LIMIT) & (spin.norm_squared() < LIMIT)
+        (d2 < LIMIT) & (v2 * dt * dt <= r * r) & (v2 < LIMIT) & (spin.norm_squared() < LIMIT)
     }
 
     /// The closing kicks the last wall pass owed, given now (as the next drift would
