@@ -34,6 +34,7 @@ fn lammps_final(path: &Path) -> Vec<Motion> {
         .take_while(|l| !l.starts_with("ITEM:"))
         .map(|l| {
             let fields: Vec<&str> = l.split_whitespace().collect();
+            assert_eq!(fields.len(), 7, "{path:?}: {l}");
             let mut motion = [0.0; 6];
             for (m, f) in motion.iter_mut().zip(&fields[1..]) {
                 *m = f.parse().unwrap();

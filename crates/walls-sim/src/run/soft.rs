@@ -1135,9 +1135,8 @@ impl<'a> SoftStepper<'a> {
     /// than a radius in the step (else the wall pass warns of it), its position is
     /// finite (`d2` is: the kick does not move it), and its velocity and spin are surely
     /// finite, each shorter than [`SURELY_FINITE_LENGTH`], so that only its load could
-    /// make them overflow ([`SoftStepper::surely_finite`]). (From squared lengths, the
-    /// velocity's of which the speed's test needs anyway: a NaN or an infinity fails
-    /// each test.)
+    /// make them overflow ([`SoftStepper::surely_finite`]). All from squared lengths (the
+    /// speed test needs the velocity's anyway); a NaN or an infinity fails each test.
     #[inline]
     fn may_owe(d2: f64, vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool {
         const LIMIT: f64 = SURELY_FINITE_LENGTH * SURELY_FINITE_LENGTH;
@@ -2292,15 +2291,9 @@ impl PairContext<'_> {
                 }),
                 sliding: self.settings.sliding,
             };
-            // (The optional physics is asked only when some is on, in few runs: else a
-            // test here, not a call, for every contact.)
             let mut extra = Optional {
                 restitution: Some(self.restitution),
-                ..if self.optional.any() {
-                    self.optional.pair(i, j, p.radius, q.radius, a, mat)
-                } else {
-                    Optional::default()
-                }
+                ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
             };
             if let (None, Some((mass, damping))) = (extra.layers, self.damping)
                 && mass == reduced
