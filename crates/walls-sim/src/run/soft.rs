@@ -1003,7 +1003,7 @@ impl<'a> SoftStepper<'a> {
         let now: &[WallNow] = if forces { &self.now } else { &[] };
         let owing = self.index.is_none() || !forces;
         let owing = owing && near.is_none_or(|n| !n.moved(now, half));
-        let kick_drift = |i: usize, s: &mut State, work: DriftWork| {
+        let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {
             let DriftWork {
                 load,
                 owed,
