@@ -1003,6 +1003,8 @@ impl<'a> SoftStepper<'a> {
         let now: &[WallNow] = if forces { &self.now } else { &[] };
         let owing = self.index.is_none() || !forces;
         let owing = owing && near.is_none_or(|n| !n.moved(now, half));
+        // The settings held by value (`move`): by reference, every particle read each
+        // through a pointer to these locals.
         let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {
             let DriftWork {
                 load,
