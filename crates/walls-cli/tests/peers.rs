@@ -3,8 +3,9 @@
 //! files under `tests/data/peers/<scene>/`; `UPDATE_PEERS=1` rewrites them), walls-sim
 //! runs its own set, and a bad count is refused; `run` on one core and two starts each
 //! tool as it should (stand-ins record how LAMMPS, LIGGGHTS and the MPI launcher were
-//! started). LAMMPS and LIGGGHTS are not needed: `scripts/bench-peers check` runs them
-//! where they are installed.
+//! started), and `count` takes a run of one step from a run of the scene (a stand-in for
+//! valgrind makes up the counts). LAMMPS and LIGGGHTS are not needed:
+//! `scripts/bench-peers check` runs them where they are installed.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -148,12 +149,17 @@ fn a_core_or_particle_count_that_is_not_a_whole_number_is_refused() {
 /// A stand-in for a peer or the MPI launcher: appends its name, arguments and the
 /// variables the benchmark sets to `calls`, then exits 0.
 fn stand_in(dir: &Path, name: &str, calls: &Path) -> PathBuf {
-    use std::os::unix::fs::PermissionsExt;
-    let path = dir.join(name);
     let script = format!(
         "#!/bin/sh\necho \"{name} $* OMP=$OMP_NUM_THREADS ROOT=$OMPI_ALLOW_RUN_AS_ROOT\" >> {}\n",
         calls.display()
     );
+    executable(dir, name, &script)
+}
+
+/// `script` written to `dir`/`name`, executable.
+fn executable(dir: &Path, name: &str, script: &str) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let path = dir.join(name);
     std::fs::write(&path, script).unwrap();
     std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
     path
@@ -228,4 +234,91 @@ fn a_run_on_one_core_and_two_starts_walls_sim_on_threads_and_the_peers_on_mpi_ra
             "{tool}: {stdout}"
         );
     }
+}
+
+/// A stand-in for valgrind: appends to `calls` the tool it was asked to count, with its
+/// steps (walls-sim's `--t-end` over the time step, the peers' `run N`) and the variable
+/// that sets its cores, then prints callgrind's count line, made up as a set-up and a
+/// cost a step: walls-sim 5·10⁶ + 3,200 a step, LAMMPS 9·10⁶ + 6,400, LIGGGHTS
+/// 7·10⁶ + 8,000 (400, 800 and 1,000 a particle-step for 8 particles).
+fn valgrind_stand_in(dir: &Path, calls: &Path) -> PathBuf {
+    let script = format!(
+        r#"#!/bin/sh
+[ "$1 $2" = "--tool=callgrind --callgrind-out-file=/dev/null" ] || exit 9
+program=$(basename "$3")
+case "$program" in
+  walls-sim)
+    prev=; for a in "$@"; do [ "$prev" = --t-end ] && t=$a; prev=$a; done
+    steps=$(awk "BEGIN {{ printf \"%d\", $t / 5e-6 + 0.5 }}")
+    cores="RAYON=$RAYON_NUM_THREADS"; base=5000000; step=3200 ;;
+  lmp) steps=$(sed -n 's/^run //p' in.lmp); cores="OMP=$OMP_NUM_THREADS"; base=9000000; step=6400 ;;
+  liggghts) steps=$(sed -n 's/^run //p' in.lig); cores="OMP=$OMP_NUM_THREADS"; base=7000000; step=8000 ;;
+esac
+echo "$program $steps steps $cores" >> {}
+echo "==1== Collected : $((base + step * steps))" >&2
+"#,
+        calls.display()
+    );
+    executable(dir, "valgrind", &script)
+}
+
+/// `scripts/bench-peers FRONT… count --particles 8 --scenes drop --steps STEPS BACK…`.
+fn count_drop_of_8(front: &[&str], steps: &str, back: &[&str]) -> Output {
+    let middle = [
+        "count",
+        "--particles",
+        "8",
+        "--scenes",
+        "drop",
+        "--steps",
+        steps,
+    ];
+    bench_peers(&[front, &middle, back].concat())
+}
+
+#[test]
+fn count_takes_a_run_of_one_step_from_a_run_of_the_scene_and_prints_the_ratios() {
+    let dir = tempfile::tempdir().unwrap();
+    let calls = dir.path().join("calls");
+    let valgrind = valgrind_stand_in(dir.path(), &calls);
+    let walls_sim = env!("CARGO_BIN_EXE_walls-sim");
+    let front = [
+        "--walls-sim",
+        walls_sim,
+        "--lammps",
+        "lmp",
+        "--liggghts",
+        "liggghts",
+    ];
+    let out = count_drop_of_8(&front, "10", &["--valgrind", valgrind.to_str().unwrap()]);
+    assert!(out.status.success(), "{out:?}");
+    // Each tool on one core, its run of one step, then of the scene's ten.
+    assert_eq!(
+        std::fs::read_to_string(&calls).unwrap(),
+        "walls-sim 1 steps RAYON=1\nwalls-sim 10 steps RAYON=1\n\
+         lmp 1 steps OMP=1\nlmp 10 steps OMP=1\n\
+         liggghts 1 steps OMP=1\nliggghts 10 steps OMP=1\n"
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let table: Vec<&str> = stdout.lines().filter(|l| l.starts_with('|')).collect();
+    assert_eq!(
+        table,
+        [
+            "| scene | particles | steps | tool | instructions a particle-step | set-up (10⁶) | walls-sim / tool |",
+            "|---|---|---|---|---|---|---|",
+            "| drop | 8 | 10 | walls-sim | 400.0 | 5.0 |  |",
+            "| drop | 8 | 10 | lammps | 800.0 | 9.0 | 0.50 |",
+            "| drop | 8 | 10 | liggghts | 1000.0 | 7.0 | 0.40 |",
+        ]
+    );
+}
+
+#[test]
+fn count_refuses_a_single_step() {
+    let out = count_drop_of_8(&["--walls-sim", "/bin/true"], "1", &[]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "bench-peers: count needs at least 2 steps, not 1\n"
+    );
 }
