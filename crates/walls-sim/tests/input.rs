@@ -22,6 +22,13 @@ fn csv_with_and_without_optional_columns() {
     let ps =
         read_csv("radius,mass,x,y,z,vx,vy,vz,wx,wy,wz,color\n0.1,1,0,0,0,0,0,0,1,2,3,7\n").unwrap();
     assert_eq!((ps[0].mass, ps[0].spin.y, ps[0].color), (1.0, 2.0, 7));
+    // Spaces around the names and the values are trimmed, row after row.
+    let ps = read_csv("mass , radius,x,y,z,vx,vy,vz\n 1 ,0.1,0,0,0,0,0,0\n2, 0.2 ,0,0,5,0,0,0\n")
+        .unwrap();
+    assert_eq!(
+        (ps[0].mass, ps[1].radius, ps[1].pos.z, ps[1].index),
+        (1.0, 0.2, 5.0, 1)
+    );
 }
 
 #[test]
@@ -36,6 +43,15 @@ fn csv_errors_say_where() {
     assert_eq!(e.to_string(), "line 3: `y` is `zero`, not a number");
     let e = read_csv("mass,radius,x,y,z,vx,vy,vz\n0,0.1,0,0,0,0,0,0\n").unwrap_err();
     assert_eq!(e.to_string(), "line 2: mass and radius must be positive");
+    // A row the CSV reader refuses, and a colour that is not an integer, after good rows.
+    let e =
+        read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0,0,0,0\n1,0.1,0,0,0,0,0\n").unwrap_err();
+    assert!(e.to_string().starts_with("line 3: "), "{e}");
+    assert!(e.message.contains("found record with 7 fields"), "{e}");
+    let e =
+        read_csv("mass,radius,x,y,z,vx,vy,vz,color\n1,0.1,0,0,0,0,0,0,2\n1,0.1,0,0,0,0,0,0,red\n")
+            .unwrap_err();
+    assert_eq!(e.to_string(), "line 3: `color` is `red`, not an integer");
     assert!(
         read_csv("mass,radius,x,y,z,vx,vy,vz,spin\n")
             .unwrap_err()
