@@ -196,16 +196,13 @@ fn an_interrupted_run_stops_after_the_step_it_is_in() {
     let walls = scene(FLOOR);
     let settings = Settings::new(0.01, 1.0, walls_sim::config::pkdgrav_material(1e5));
     let mut seen = 0;
-    let count = std::cell::Cell::new(0);
+    let count = std::sync::atomic::AtomicU32::new(0);
     let out = run_watched(
         &walls,
         vec![ball([0.0, 0.0, 1.0], [0.0; 3])],
         &settings,
         &mut |_, _, _| seen += 1,
-        &|| {
-            count.set(count.get() + 1);
-            count.get() >= 5
-        },
+        &|| count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1 >= 5,
     );
     assert_eq!((out.steps, out.stopped), (5, Some(Stop::Interrupted)));
     assert_eq!(seen, 5);

@@ -681,7 +681,7 @@ pub(super) fn run(
     settings: &Settings,
     plan: &Plan,
     observe: Observer,
-    interrupted: &dyn Fn() -> bool,
+    interrupted: super::Interrupted,
 ) -> Outcome {
     let mut run = HardStepper::new(scene, states, settings, plan);
     while run.running() {

@@ -241,6 +241,20 @@ impl Settings {
 /// more than it saves (docs/performance.md).
 const PARALLEL_FROM: usize = 1024;
 
+/// `body` run on a thread of rayon's pool when `parallel`, else on this one. A step's
+/// passes over the particles are each split between the pool's threads: from a thread
+/// outside the pool, each would be handed to the pool and this thread put to sleep until
+/// the pool was done, and woken (a dozen times a step); from one of the pool's, each is
+/// split there and then, and the thread takes its share (docs/performance.md, "Eighth
+/// round").
+fn on_the_pool<R: Send>(parallel: bool, body: impl FnOnce() -> R + Send) -> R {
+    if parallel {
+        rayon::scope(|_| body())
+    } else {
+        body()
+    }
+}
+
 /// Steps per pair contact in the default timestep π·√(m/(2k_n))/N: at 100 the rebound
 /// is within 1 % of ε for ε from 0.1 to 0.95 (docs/evaluator.md).
 pub const STEPS_PER_CONTACT: f64 = 100.0;
@@ -447,13 +461,13 @@ fn first_not_finite(states: &[State]) -> Option<usize> {
 
 /// How a stepper asks whether to go on after a step: [`Stop::NotFinite`] when a
 /// particle's numbers overflowed, [`Stop::Interrupted`] when `interrupted` says so.
-fn halt(states: &[State], interrupted: &dyn Fn() -> bool) -> Option<Stop> {
+fn halt(states: &[State], interrupted: Interrupted) -> Option<Stop> {
     halt_at(first_not_finite(states), interrupted)
 }
 
 /// [`halt`] when the stepper has already found the first particle whose numbers
 /// overflowed, if any.
-fn halt_at(not_finite: Option<usize>, interrupted: &dyn Fn() -> bool) -> Option<Stop> {
+fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> {
     if let Some(i) = not_finite {
         return Some(Stop::NotFinite(i));
     }
@@ -462,8 +476,13 @@ fn halt_at(not_finite: Option<usize>, interrupted: &dyn Fn() -> bool) -> Option<
 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
 /// from [`Settings::start_step`]), the time, and the step's [`Snapshot`] of the particles
-/// and the reactive walls' assemblies.
-pub type Observer<'a> = &'a mut dyn FnMut(u64, f64, &mut dyn Snapshot);
+/// and the reactive walls' assemblies. It is `Send`: a run on several threads steps on
+/// one of rayon's, and calls it there ([`on_the_pool`]).
+pub type Observer<'a> = &'a mut (dyn FnMut(u64, f64, &mut dyn Snapshot) + Send);
+
+/// Whether a run is asked to stop after a step ([`run_watched`]); `Sync` for the same
+/// reason as [`Observer`].
+pub type Interrupted<'a> = &'a (dyn Fn() -> bool + Sync);
 
 /// The particles and the reactive walls' assemblies as a step left them, for an
 /// [`Observer`] that looks. The soft stepper gives most free particles the step's closing
@@ -510,7 +529,7 @@ pub fn run_watched(
     particles: Vec<Particle>,
     settings: &Settings,
     observe: Observer,
-    interrupted: &dyn Fn() -> bool,
+    interrupted: Interrupted,
 ) -> Outcome {
     let dt = settings.dt;
     let t0 = settings.t_start();
@@ -550,10 +569,11 @@ pub fn run_watched(
         .filter(|(_, s)| s.particle.color < 0 && s.stuck_to.is_none())
         .map(|(i, _)| i)
         .collect();
-    let mut outcome = match settings.method() {
+    let parallel = states.len() >= PARALLEL_FROM && rayon::current_num_threads() > 1;
+    let mut outcome = on_the_pool(parallel, || match settings.method() {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe, interrupted),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe, interrupted),
-    };
+    });
     // Where pkdgrav would abort, the run stopped.
     if outcome.stopped.is_none() {
         outcome.stopped = outcome.warnings.iter().find_map(|w| match w {

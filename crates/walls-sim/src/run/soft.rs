@@ -1801,7 +1801,7 @@ pub(super) fn run(
     settings: &Settings,
     plan: &Plan,
     observe: Observer,
-    interrupted: &dyn Fn() -> bool,
+    interrupted: super::Interrupted,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
     if run.halted {

@@ -6,6 +6,7 @@
 use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
@@ -350,7 +351,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // output ends on whole rows.
     crate::interrupt::install_graceful();
     // A failed write stops the run after its step: nothing more would be written.
-    let write_failed = std::cell::Cell::new(written.is_err());
+    let write_failed = AtomicBool::new(written.is_err());
     // The parts of the model the report names, from the particles the run is given.
     let model = args
         .json
@@ -378,10 +379,10 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
                     Some(dir) if args.ss_output => write_ss(dir, &ss_name, step, t, states),
                     _ => Ok(()),
                 });
-            write_failed.set(written.is_err());
+            write_failed.store(written.is_err(), Ordering::Relaxed);
             last_output = (step, t);
         },
-        &|| write_failed.get() || crate::interrupt::stop_requested(),
+        &|| write_failed.load(Ordering::Relaxed) || crate::interrupt::stop_requested(),
     );
     if let Some(bar) = progress {
         bar.finish_and_clear();
