@@ -304,6 +304,8 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
 
 fn simulate(args: &RunArgs) -> Result<i32, String> {
     use walls_sim::run::run_watched;
+    // Before the particles are read: a run keeps less resident in ordinary pages.
+    crate::pages::ordinary();
     let Prepared {
         walls,
         particles,
