@@ -244,9 +244,9 @@ const PARALLEL_FROM: usize = 1024;
 /// `body` run on a thread of rayon's pool when `parallel`, else on this one. A step's
 /// passes over the particles are each split between the pool's threads: from a thread
 /// outside the pool, each would be handed to the pool and this thread put to sleep until
-/// the pool was done, and woken (a dozen times a step); from one of the pool's, each is
-/// split there and then, and the thread takes its share (docs/performance.md, "Eighth
-/// round").
+/// the pool was done, and woken (six times a step, or more); from one of the pool's,
+/// each is split there and then, and the thread takes its share (docs/performance.md,
+/// "Eighth round"; `tests/pool.rs`).
 fn on_the_pool<R: Send>(parallel: bool, body: impl FnOnce() -> R + Send) -> R {
     if parallel {
         rayon::scope(|_| body())
