@@ -696,6 +696,11 @@ struct SoftStepper<'a> {
     /// Each particle's open wall contacts: (wall, contact), kept apart from its load so
     /// that the passes that do not need them do not carry them.
     open_walls: Vec<Vec<(usize, Open)>>,
+    /// Whether each particle has a wall contact open (its [`SoftStepper::open_walls`]
+    /// is not empty), as the wall pass left it: the drift reads this byte, not the
+    /// 24-byte vector, which at 10⁵ particles is memory the drift's stream need not
+    /// carry (docs/performance.md, "Eighth round").
+    walled: Vec<bool>,
     /// Each chunk's scratch list of the walls to visit (kept to save allocating).
     visits: Vec<Vec<usize>>,
     candidates: PairList,
@@ -859,6 +864,7 @@ impl<'a> SoftStepper<'a> {
             owed_bad: None,
             force_bound: 0.0,
             open_walls: (0..n).map(|_| Vec::new()).collect(),
+            walled: vec![false; n],
             visits: Vec::new(),
             candidates,
             reports: Vec::new(),
@@ -1011,7 +1017,7 @@ impl<'a> SoftStepper<'a> {
                 owed,
                 at,
                 sphere,
-                open,
+                walled,
             } = work;
             if s.member {
                 // The others' loads were started in the last wall pass, once used.
@@ -1061,14 +1067,14 @@ impl<'a> SoftStepper<'a> {
             let far = d2 > limit || d2.is_nan();
             *owed = owing
                 && !far
-                && open.is_empty()
+                && !walled
                 && Self::may_owe(d2, &vel, &spin, r, dt)
                 && clear_of_near(i, &pos, r, near, now);
             far
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
         // no short cut), chunks in parallel for many particles.
-        let chunk = |(c, (((((states, loads), owed), (built_at, spheres)), opens), visited)): DriftChunk| {
+        let chunk = |(c, (((((states, loads), owed), (built_at, spheres)), walled), visited)): DriftChunk| {
             let mut drifted = false;
             let first = c * CHUNK;
             visited.clear();
@@ -1077,8 +1083,8 @@ impl<'a> SoftStepper<'a> {
                 .zip(owed)
                 .zip(built_at)
                 .zip(spheres)
-                .zip(opens);
-            for (k, (s, ((((load, owed), at), sphere), open))) in
+                .zip(walled);
+            for (k, (s, ((((load, owed), at), sphere), &walled))) in
                 states.iter_mut().zip(rest).enumerate()
             {
                 let work = DriftWork {
@@ -1086,7 +1092,7 @@ impl<'a> SoftStepper<'a> {
                     owed: &mut *owed,
                     at,
                     sphere,
-                    open,
+                    walled,
                 };
                 drifted |= kick_drift(first + k, s, work);
                 if !*owed {
@@ -1107,7 +1113,7 @@ impl<'a> SoftStepper<'a> {
                         .par_chunks(CHUNK)
                         .zip(spheres.par_chunks_mut(CHUNK)),
                 )
-                .zip(self.open_walls.par_chunks(CHUNK))
+                .zip(self.walled.par_chunks(CHUNK))
                 .zip(self.visited.par_iter_mut())
                 .enumerate()
                 .map(chunk)
@@ -1119,7 +1125,7 @@ impl<'a> SoftStepper<'a> {
                 .zip(self.loads.chunks_mut(CHUNK))
                 .zip(self.owed.chunks_mut(CHUNK))
                 .zip(built_at.chunks(CHUNK).zip(spheres.chunks_mut(CHUNK)))
-                .zip(self.open_walls.chunks(CHUNK))
+                .zip(self.walled.chunks(CHUNK))
                 .zip(self.visited.iter_mut());
             for c in chunked.enumerate() {
                 drifted |= chunk(c);
@@ -1558,33 +1564,36 @@ impl<'a> SoftStepper<'a> {
         // particles. Each load, once used, starts the next step with gravity alone
         // (while it is at hand; the drift does it for the owed); an aggregate's members'
         // loads are kept for it ([`SoftStepper::gather_aggregates`]).
-        let chunk = |(c, ((((states, loads), visited), opens), (reports, visit))): WallChunk| {
-            reports.clear();
-            let first = c * CHUNK;
-            // The others are clear of the walls: their closing kicks are owed, not given
-            // here.
-            for &k in visited.iter() {
-                let k = k as usize;
-                let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
-                let i = first + k;
-                if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                    // Clear of the walls, not owed: the closing kick alone.
-                    if let Some(report) = clear_step(s, load, &walls) {
+        let chunk =
+            |(c, ((((states, loads), visited), (opens, walled)), (reports, visit))): WallChunk| {
+                reports.clear();
+                let first = c * CHUNK;
+                // The others are clear of the walls: their closing kicks are owed, not given
+                // here.
+                for &k in visited.iter() {
+                    let k = k as usize;
+                    let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
+                    let i = first + k;
+                    if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
+                        // Clear of the walls (none open), not owed: the closing kick alone.
+                        walled[k] = false;
+                        if let Some(report) = clear_step(s, load, &walls) {
+                            reports.push((i, report));
+                        }
+                        *load = Load::gravity(s, &gravity);
+                        continue;
+                    }
+                    let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
+                    walled[k] = !open.is_empty();
+                    report.not_finite = !s.finite();
+                    if !s.member {
+                        *load = Load::gravity(s, &gravity);
+                    }
+                    if !report.is_empty() {
                         reports.push((i, report));
                     }
-                    *load = Load::gravity(s, &gravity);
-                    continue;
                 }
-                let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
-                report.not_finite = !s.finite();
-                if !s.member {
-                    *load = Load::gravity(s, &gravity);
-                }
-                if !report.is_empty() {
-                    reports.push((i, report));
-                }
-            }
-        };
+            };
         let chunks = self.states.len().div_ceil(CHUNK);
         self.reports.resize_with(chunks, Vec::new);
         self.visits.resize_with(chunks, Vec::new);
@@ -1593,7 +1602,7 @@ impl<'a> SoftStepper<'a> {
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
                 .zip(self.visited.par_iter())
-                .zip(self.open_walls.par_chunks_mut(CHUNK))
+                .zip((self.open_walls.par_chunks_mut(CHUNK)).zip(self.walled.par_chunks_mut(CHUNK)))
                 .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
                 .for_each(chunk);
@@ -1602,7 +1611,7 @@ impl<'a> SoftStepper<'a> {
                 .chunks_mut(CHUNK)
                 .zip(self.loads.chunks_mut(CHUNK))
                 .zip(self.visited.iter())
-                .zip(self.open_walls.chunks_mut(CHUNK))
+                .zip((self.open_walls.chunks_mut(CHUNK)).zip(self.walled.chunks_mut(CHUNK)))
                 .zip(self.reports.iter_mut().zip(&mut self.visits))
                 .enumerate()
                 .for_each(chunk);
@@ -2055,8 +2064,9 @@ impl PairList {
 }
 
 /// A chunk of the particles as the drift takes it: its number, their states, loads and
-/// owed kicks, where the candidate pairs were found and their spheres, their open wall
-/// contacts, and the list of those the wall pass is to visit (within the chunk).
+/// owed kicks, where the candidate pairs were found and their spheres, whether they have
+/// a wall contact open, and the list of those the wall pass is to visit (within the
+/// chunk).
 type DriftChunk<'a> = (
     usize,
     (
@@ -2065,7 +2075,7 @@ type DriftChunk<'a> = (
                 ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
                 (&'a [Vec3], &'a mut [[f64; 4]]),
             ),
-            &'a [Vec<(usize, Open)>],
+            &'a [bool],
         ),
         &'a mut Vec<u32>,
     ),
@@ -2079,7 +2089,8 @@ struct DriftWork<'a> {
     /// Where it was when the candidate pairs were found.
     at: &'a Vec3,
     sphere: &'a mut [f64; 4],
-    open: &'a [(usize, Open)],
+    /// Whether it has a wall contact open ([`SoftStepper::walled`]).
+    walled: bool,
 }
 
 /// How large a particle's numbers, or a bound on its next kick, may be for the kick
@@ -2093,13 +2104,14 @@ const SURELY_FINITE: f64 = 1e300;
 const SURELY_FINITE_LENGTH: f64 = 1e149;
 
 /// A chunk of the particles as the wall pass takes it: its number, their states and
-/// loads, which of them it visits, their open wall contacts, and its reports and scratch list of walls.
+/// loads, which of them it visits, their open wall contacts and whether any is open, and
+/// its reports and scratch list of walls.
 type WallChunk<'a> = (
     usize,
     (
         (
             ((&'a mut [State], &'a mut [Load]), &'a Vec<u32>),
-            &'a mut [Vec<(usize, Open)>],
+            (&'a mut [Vec<(usize, Open)>], &'a mut [bool]),
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
     ),
