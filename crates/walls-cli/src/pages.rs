@@ -1,12 +1,14 @@
 //! The memory pages a run's process is given. mimalloc asks Linux for 2 MiB pages
 //! (transparent huge pages) for its arenas, which makes linting a large walls file a
 //! quarter faster (fewer page faults) but keeps partly used 2 MiB pages resident: a run
-//! of 10⁵ particles peaked at 91–94 MiB with them and 86 MiB without, in the same time
+//! of 10⁵ particles peaked at 91–94 MiB with them and 84–86 MiB without, in the same time
 //! (docs/performance.md, "Eighth round"). `walls-sim run` therefore asks for ordinary
 //! pages; the other commands keep the large ones.
 
 /// From here on, this process's memory comes in ordinary pages (Linux's
-/// `PR_SET_THP_DISABLE`); elsewhere, or if the kernel refuses, nothing changes.
+/// `PR_SET_THP_DISABLE`, which holds for the whole process and its children: in the
+/// Python wheel, the console script's interpreter); elsewhere, or if the kernel
+/// refuses, nothing changes.
 pub fn ordinary() {
     #[cfg(any(target_os = "linux", target_os = "android"))]
     {

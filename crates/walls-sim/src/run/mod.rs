@@ -241,6 +241,13 @@ impl Settings {
 /// more than it saves (docs/performance.md).
 const PARALLEL_FROM: usize = 1024;
 
+/// Whether a run of `n` particles takes its passes in parallel: with many particles and
+/// more than one thread. With one thread, the plain loops: the same outcome, without
+/// rayon's splitting and collecting.
+fn in_parallel(n: usize) -> bool {
+    n >= PARALLEL_FROM && rayon::current_num_threads() > 1
+}
+
 /// `body` run on a thread of rayon's pool when `parallel`, else on this one. A step's
 /// passes over the particles are each split between the pool's threads: from a thread
 /// outside the pool, each would be handed to the pool and this thread put to sleep until
@@ -524,6 +531,12 @@ pub fn run_observed(
 /// finite ([`Stop::NotFinite`]), and does not start when the timestep is not a
 /// positive finite number ([`Stop::Timestep`]; callers check it first with
 /// [`crate::config::check`]).
+///
+/// A run of 1,024 particles or more, with more than one thread in rayon's pool, runs on
+/// one of the pool's threads, `observe` and `interrupted` included, while the calling
+/// thread waits. So neither may wait on the calling thread (a lock it holds, a channel
+/// it would read), and runs started together from several threads share the pool: one
+/// may wait for another to finish.
 pub fn run_watched(
     walls: &[Wall],
     particles: Vec<Particle>,
@@ -569,8 +582,7 @@ pub fn run_watched(
         .filter(|(_, s)| s.particle.color < 0 && s.stuck_to.is_none())
         .map(|(i, _)| i)
         .collect();
-    let parallel = states.len() >= PARALLEL_FROM && rayon::current_num_threads() > 1;
-    let mut outcome = on_the_pool(parallel, || match settings.method() {
+    let mut outcome = on_the_pool(in_parallel(states.len()), || match settings.method() {
         ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe, interrupted),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe, interrupted),
     });

@@ -35,7 +35,7 @@
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
-    Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy,
+    Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy, in_parallel,
 };
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
@@ -2116,13 +2116,6 @@ type WallChunk<'a> = (
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
     ),
 );
-
-/// Whether a run of `n` particles takes its passes in parallel: with many particles and
-/// more than one thread. With one thread, the plain loops: the same outcome, without
-/// rayon's splitting and collecting.
-fn in_parallel(n: usize) -> bool {
-    n >= PARALLEL_FROM && rayon::current_num_threads() > 1
-}
 
 /// How many particles a thread takes at a time in the passes over all of them.
 const CHUNK: usize = 512;
