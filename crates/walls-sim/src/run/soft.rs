@@ -697,9 +697,10 @@ struct SoftStepper<'a> {
     /// that the passes that do not need them do not carry them.
     open_walls: Vec<Vec<(usize, Open)>>,
     /// Whether each particle has a wall contact open (its [`SoftStepper::open_walls`]
-    /// is not empty), as the wall pass left it: the drift reads this byte, not the
-    /// 24-byte vector, which at 10⁵ particles is memory the drift's stream need not
-    /// carry (docs/performance.md, "Eighth round").
+    /// is not empty): set by the wall pass after each particle's contacts, the only place
+    /// they change (a particle the pass skips had none, nor has it now), and read by the
+    /// drift as this byte, not the 24-byte vector, which at 10⁵ particles is memory the
+    /// drift's stream need not carry (docs/performance.md, "Eighth round").
     walled: Vec<bool>,
     /// Each chunk's scratch list of the walls to visit (kept to save allocating).
     visits: Vec<Vec<usize>>,
@@ -1575,8 +1576,8 @@ impl<'a> SoftStepper<'a> {
                     let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
                     let i = first + k;
                     if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                        // Clear of the walls (none open), not owed: the closing kick alone.
-                        walled[k] = false;
+                        // Clear of the walls, not owed: the closing kick alone. (None is
+                        // open, as `walled[k]` already says: only this pass opens them.)
                         if let Some(report) = clear_step(s, load, &walls) {
                             reports.push((i, report));
                         }
