@@ -486,8 +486,9 @@ pub fn small_sin_cos(x: f64) -> (f64, f64) {
 
 /// Whether each of `v`'s components is zero (`v == Vec3::zeros()`, component by
 /// component as nalgebra compares them, so −0 is zero and a NaN is not), stopping at the
-/// first that is not: nalgebra's comparison loads and compares all three, four times in
-/// a contact (875 → 847 instructions a pair contact on the oscillating floor).
+/// first that is not: as compiled, nalgebra's comparison loads and compares all three,
+/// up to five times in a contact (875 → 847 instructions a pair contact on the
+/// oscillating floor).
 #[inline]
 fn is_zero(v: &Vec3) -> bool {
     v.x == 0.0 && v.y == 0.0 && v.z == 0.0

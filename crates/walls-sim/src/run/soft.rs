@@ -2205,7 +2205,8 @@ impl PairContext<'_> {
     /// The force of the contact between particles i and j (spheres `a` and `b`, which
     /// overlap), with its springs in `record`. Inlined always into its two callers
     /// (one thread, many): returned through memory, the force was written out in
-    /// pieces and read back whole, and each load's sum waited on those stores.
+    /// pieces and read back whole, and the one-thread loop's sums into the loads
+    /// waited on those stores.
     #[inline(always)]
     fn force(
         &self,
