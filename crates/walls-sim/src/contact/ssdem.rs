@@ -488,7 +488,9 @@ pub fn small_sin_cos(x: f64) -> (f64, f64) {
 /// component as nalgebra compares them, so −0 is zero and a NaN is not), stopping at the
 /// first that is not: as compiled, nalgebra's comparison loads and compares all three,
 /// up to five times in a contact (875 → 847 instructions a pair contact on the
-/// oscillating floor).
+/// oscillating floor). `num_traits::Zero::is_zero`, which nalgebra implements, gives
+/// the same answers but cost 16 instructions a contact more and the oscillating floor
+/// 3–4 % more time (two sets of six alternating runs).
 #[inline]
 fn is_zero(v: &Vec3) -> bool {
     v.x == 0.0 && v.y == 0.0 && v.z == 0.0
