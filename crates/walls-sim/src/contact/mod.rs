@@ -5,4 +5,5 @@
 
 pub mod cohesion;
 pub mod hsdem;
+pub mod lanes;
 pub mod ssdem;

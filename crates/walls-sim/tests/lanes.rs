@@ -1,0 +1,182 @@
+//! pkdgrav's contact law four contacts at a time (`contact::lanes`) against the law on
+//! each contact alone (`ssdem::dashpot_contact_with`): the same numbers, bit for bit, in
+//! every lane, for random contacts and records (new and old contacts, zero and turning
+//! springs, sticking and sliding, angles past the series' range, rolling and twisting on
+//! and off, both sliding rules).
+
+use nalgebra::Vector3;
+use proptest::prelude::*;
+use walls_geometry::Material;
+use walls_sim::contact::lanes::{self, Contacts, L, LANES, V};
+use walls_sim::contact::ssdem::{Dashpot, Optional, Record, Sliding, dashpot_contact_with};
+
+type Vec3 = Vector3<f64>;
+
+/// A vector of components in −`size`..`size`, or zero one time in four.
+fn vector(size: f64) -> impl Strategy<Value = Vec3> {
+    prop_oneof![
+        1 => Just(Vec3::zeros()),
+        3 => (-size..size, -size..size, -size..size).prop_map(|(x, y, z)| Vec3::new(x, y, z)),
+    ]
+}
+
+/// A unit vector.
+fn unit() -> impl Strategy<Value = Vec3> {
+    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
+        .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 1e-4)
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z).normalize())
+}
+
+/// One contact: its [`Dashpot`] (between particles) and damping, and its record (a new
+/// one's normal zero; an old one's a little turned from the contact's).
+fn contact() -> impl Strategy<Value = (Dashpot, (f64, f64), Record)> {
+    (
+        (
+            1e-6..1e-3f64,
+            unit(),
+            vector(0.5),
+            vector(200.0),
+            vector(200.0),
+        ),
+        (1e-4..1e-3f64, 1e-4..1e-3f64, 1e-4..1e-3f64),
+        (0.0..0.1f64, 0.0..0.1f64),
+        (
+            prop_oneof![1 => Just(None), 4 => vector(0.05).prop_map(Some)],
+            vector(1e-4),
+            vector(1e-3),
+            prop_oneof![1 => Just(0.0), 3 => -1e-3..1e-3f64],
+        ),
+    )
+        .prop_map(
+            |((overlap, normal, velocity, spin, turn), (l1, l2, radius), damping, old)| {
+                let (tilt, spring, roll, twist) = old;
+                let record = Record {
+                    spring,
+                    normal: tilt.map_or(Vec3::zeros(), |t| (normal + t).normalize()),
+                    roll,
+                    twist,
+                    layer: 0,
+                };
+                let dashpot = Dashpot {
+                    overlap,
+                    normal,
+                    velocity,
+                    spin,
+                    turn,
+                    levers: (l1, l2),
+                    mass: 1.0,
+                    radius,
+                    wall: false,
+                    constant_torque: None,
+                    sliding: Sliding::Reset,
+                };
+                (dashpot, damping, record)
+            },
+        )
+}
+
+/// A material of the particles, with or without rolling and twisting.
+fn material() -> impl Strategy<Value = Material> {
+    (
+        (10.0..1e4f64, 0.1..1.0f64),
+        (
+            0.0..1.0f64,
+            prop_oneof![Just(0.0), 0.0..1.0f64],
+            prop_oneof![Just(0.0), 0.0..1.0f64],
+        ),
+        0.1..1.0f64,
+    )
+        .prop_map(|((k_n, kt), (mu_s, mu_r, mu_t), beta_s)| Material {
+            eps_n: 0.5,
+            eps_t: 0.5,
+            k_n,
+            k_t: kt * k_n,
+            mu_s,
+            mu_r,
+            mu_t,
+            beta_s,
+        })
+}
+
+/// The four contacts' `field` in lanes.
+fn lanes_of<const N: usize>(each: [Vec3; N]) -> V {
+    V {
+        x: std::array::from_fn(|l| each[l].x),
+        y: std::array::from_fn(|l| each[l].y),
+        z: std::array::from_fn(|l| each[l].z),
+    }
+}
+
+fn numbers(f: impl Fn(usize) -> f64) -> L {
+    std::array::from_fn(f)
+}
+
+/// Lane `l` of `v`.
+fn lane(v: &V, l: usize) -> Vec3 {
+    Vec3::new(v.x[l], v.y[l], v.z[l])
+}
+
+/// The bits of a vector, to compare exactly (−0 and 0 apart).
+fn bits(v: Vec3) -> [u64; 3] {
+    [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]
+}
+
+/// [`lanes::dashpot`] compiled as the run compiles it, for the processor it runs on.
+#[multiversion::multiversion(targets(
+    "x86_64+avx512f+avx512vl+avx512dq+avx2+fma",
+    "x86_64+avx2+fma"
+))]
+fn dispatched(
+    c: &Contacts,
+    records: &mut [Record; LANES],
+    dt: f64,
+    mat: &Material,
+    sliding: Sliding,
+) -> lanes::Forces {
+    lanes::dashpot(c, records, dt, mat, sliding)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn four_at_a_time_are_each_alone(
+        four in prop::array::uniform4(contact()),
+        mat in material(),
+        dt in prop_oneof![Just(5e-6), 1e-6..1e-3f64],
+        clamp in any::<bool>(),
+    ) {
+        let sliding = if clamp { Sliding::Clamp } else { Sliding::Reset };
+        let c: [Dashpot; LANES] = four.map(|(d, _, _)| Dashpot { sliding, ..d });
+        let contacts = Contacts {
+            overlap: numbers(|l| c[l].overlap),
+            normal: lanes_of(c.map(|c| c.normal)),
+            velocity: lanes_of(c.map(|c| c.velocity)),
+            spin: lanes_of(c.map(|c| c.spin)),
+            turn: lanes_of(c.map(|c| c.turn)),
+            levers: (numbers(|l| c[l].levers.0), numbers(|l| c[l].levers.1)),
+            radius: numbers(|l| c[l].radius),
+            damping: (numbers(|l| four[l].1.0), numbers(|l| four[l].1.1)),
+        };
+        let mut records = four.map(|(_, _, r)| r);
+        let forces = dispatched(&contacts, &mut records, dt, &mat, sliding);
+        for l in 0..LANES {
+            let (_, damping, mut alone) = four[l];
+            let extra = Optional { damping: Some(damping), ..Optional::default() };
+            let want = dashpot_contact_with(&c[l], &mut alone, dt, &mat, &extra);
+            prop_assert_eq!(bits(lane(&forces.force, l)), bits(want.force), "force, lane {}", l);
+            prop_assert_eq!(bits(lane(&forces.torque, l)), bits(want.torque), "torque, lane {}", l);
+            prop_assert_eq!(
+                bits(lane(&forces.partner_torque, l)),
+                bits(want.partner_torque),
+                "partner's torque, lane {}",
+                l
+            );
+            let got = records[l];
+            prop_assert_eq!(bits(got.spring), bits(alone.spring), "spring, lane {}", l);
+            prop_assert_eq!(bits(got.normal), bits(alone.normal), "normal, lane {}", l);
+            prop_assert_eq!(bits(got.roll), bits(alone.roll), "roll, lane {}", l);
+            prop_assert_eq!(got.twist.to_bits(), alone.twist.to_bits(), "twist, lane {}", l);
+        }
+    }
+}
