@@ -1,7 +1,9 @@
 //! pkdgrav's contact law between two particles ([`super::ssdem::dashpot_contact`]) for
 //! four contacts at once, each in a lane of its own: the same operations on each lane
 //! in the same order, so each lane's numbers are bit for bit those of the law on its
-//! contact alone (`tests/lanes.rs` holds the two side by side). The lanes are plain
+//! contact alone (`tests/lanes.rs` holds the two side by side), but for the sign and
+//! payload of a NaN, which Rust leaves unspecified (a NaN stops a run whatever its
+//! sign). The lanes are plain
 //! arrays, which the compiler turns into vector instructions (two or four numbers an
 //! instruction, as the processor allows): a branch of the law becomes both arms and a
 //! choice between them in each lane.
@@ -287,9 +289,9 @@ fn sin_cos(x: L) -> (L, L) {
     (sin, cos)
 }
 
-/// pkdgrav's contact law ([`super::ssdem::dashpot_contact`]) on four contacts between
-/// free particles, with their records, in material `mat` over `dt`, the shear spring
-/// limited as `sliding` says.
+/// pkdgrav's contact law ([`super::ssdem::dashpot_contact_with`], with the damping
+/// given and nothing else optional) on four contacts between free particles, with their
+/// records, in material `mat` over `dt`, the shear spring limited as `sliding` says.
 #[inline(always)]
 pub fn dashpot(
     c: &Contacts,
@@ -309,7 +311,8 @@ pub fn dashpot(
     let size = mean.norm();
     let mean = mean.unscale(size);
     let angle = map(c.turn.dot(mean), |t| 0.5 * dt * t);
-    // (A mean of zero length, or not a number, is no axis: `try_normalize(0.0)`.)
+    // (A mean of zero length is no axis; one whose length is not a number is, as
+    // `try_normalize(0.0)` has it: none only when the length is at most 0.)
     let axis = test(size, size, |s, _| s > 0.0 || s.is_nan());
     let first: Mask = std::array::from_fn(|l| old[l] && axis[l] && angle[l] != 0.0);
     // (A zero rolling spring, in every lane without rolling resistance, stays zero.)
