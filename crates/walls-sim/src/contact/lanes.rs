@@ -12,7 +12,7 @@
 //! without its optional parts (no cohesion, no two layers, no contact radius). The run
 //! takes any other contact to the law itself.
 
-use super::ssdem::{Record, Restitution, Sliding, small_sin_cos};
+use super::ssdem::{Record, Restitution, SERIES_UP_TO, Sliding, sin_cos_series};
 use walls_geometry::Material;
 
 /// How many contacts go together.
@@ -33,6 +33,12 @@ fn zip(a: L, b: L, f: impl Fn(f64, f64) -> f64) -> L {
 /// Each lane's `f(a)`.
 #[inline(always)]
 fn map(a: L, f: impl Fn(f64) -> f64) -> L {
+    std::array::from_fn(|l| f(a[l]))
+}
+
+/// Each lane's `f(a)` as a mask.
+#[inline(always)]
+fn is(a: L, f: impl Fn(f64) -> bool) -> Mask {
     std::array::from_fn(|l| f(a[l]))
 }
 
@@ -267,23 +273,15 @@ fn turn(v: V, axis: V, (sin, cos): (L, L), mask: Mask) -> V {
     V::pick(std::array::from_fn(|l| mask[l] && !zero[l]), turned, v)
 }
 
-/// [`small_sin_cos`] in each lane: its series in all lanes at once, the library's in a
+/// [`super::ssdem::small_sin_cos`] in each lane: its series in all lanes at once, the library's in a
 /// lane whose angle is too large for it.
 #[inline(always)]
 fn sin_cos(x: L) -> (L, L) {
-    let x2 = mul(x, x);
-    let sin = zip(x, x2, |x, x2| {
-        x * (1.0 - x2 * (1.0 / 6.0) * (1.0 - x2 * (1.0 / 20.0) * (1.0 - x2 * (1.0 / 42.0))))
-    });
-    let cos = map(x2, |x2| {
-        1.0 - x2
-            * 0.5
-            * (1.0 - x2 * (1.0 / 12.0) * (1.0 - x2 * (1.0 / 30.0) * (1.0 - x2 * (1.0 / 56.0))))
-    });
-    let (mut sin, mut cos) = (sin, cos);
+    let series = std::array::from_fn(|l| sin_cos_series(x[l]));
+    let (mut sin, mut cos): (L, L) = (series.map(|s| s.0), series.map(|s| s.1));
     for l in 0..LANES {
-        if x[l].abs() >= 0.0078125 {
-            (sin[l], cos[l]) = small_sin_cos(x[l]);
+        if x[l].abs() >= SERIES_UP_TO {
+            (sin[l], cos[l]) = x[l].sin_cos();
         }
     }
     (sin, cos)
@@ -313,7 +311,7 @@ pub fn dashpot(
     let angle = map(c.turn.dot(mean), |t| 0.5 * dt * t);
     // (A mean of zero length is no axis; one whose length is not a number is, as
     // `try_normalize(0.0)` has it: none only when the length is at most 0.)
-    let axis = test(size, size, |s, _| s > 0.0 || s.is_nan());
+    let axis = is(size, |s| s > 0.0 || s.is_nan());
     let first: Mask = std::array::from_fn(|l| old[l] && axis[l] && angle[l] != 0.0);
     // (A zero rolling spring, in every lane without rolling resistance, stays zero.)
     let rolls = !r.roll.is_zero().iter().all(|&z| z);
@@ -361,7 +359,7 @@ pub fn dashpot(
                         0.0
                     }
                 });
-                let moving = test(speed, speed, |s, _| s > 0.0);
+                let moving = is(speed, |s| s > 0.0);
                 let slid = V::pick(moving, ut.scale(scale), V::zeros());
                 (V::zeros(), slid)
             }
@@ -481,7 +479,7 @@ pub fn pair(p: &Pairs, records: &mut [Record; LANES], s: &Setting) -> Forces {
     let d = ci.sub(cj);
     let distance = d.norm();
     let overlap = sub(add(ri, rj), distance);
-    let ahead = test(distance, distance, |d, _| d > 0.0);
+    let ahead = is(distance, |d| d > 0.0);
     let up = V {
         x: splat(0.0),
         y: splat(0.0),

@@ -467,15 +467,26 @@ fn slide(spring: &mut Vec3, ut: &Vec3, k_t: f64, c_t: f64, cap: f64, rule: Slidi
     }
 }
 
+/// Below this size (2⁻⁷) an angle's sine and cosine are [`sin_cos_series`]'s.
+pub(crate) const SERIES_UP_TO: f64 = 0.0078125;
+
 /// The sine and cosine of an angle: for the small angles a contact turns by in a step
-/// (|x| < 2⁻⁷), their Taylor series to x⁷ and x⁸, whose first term left out is below
-/// 10⁻²² of the value (an ulp is 1.1·10⁻¹⁶), at a tenth of the library's cost; else the
-/// library's.
+/// (|x| < [`SERIES_UP_TO`]), [`sin_cos_series`], at a tenth of the library's cost; else
+/// the library's.
 #[inline]
 pub fn small_sin_cos(x: f64) -> (f64, f64) {
-    if x.abs() >= 0.0078125 {
+    if x.abs() >= SERIES_UP_TO {
         return x.sin_cos();
     }
+    sin_cos_series(x)
+}
+
+/// The Taylor series of an angle's sine and cosine to x⁷ and x⁸, whose first term left
+/// out is below 10⁻²² of the value for |x| < [`SERIES_UP_TO`] (an ulp is 1.1·10⁻¹⁶).
+/// Shared with the law four contacts at a time ([`super::lanes`]), which runs it in
+/// every lane.
+#[inline(always)]
+pub(crate) fn sin_cos_series(x: f64) -> (f64, f64) {
     let x2 = x * x;
     let sin = x * (1.0 - x2 * (1.0 / 6.0) * (1.0 - x2 * (1.0 / 20.0) * (1.0 - x2 * (1.0 / 42.0))));
     let cos = 1.0
