@@ -3,12 +3,14 @@
 //! every lane, for random contacts and records (new and old contacts, normals reversed
 //! since the last step, zero and turning springs, sticking and sliding, angles past the
 //! series' range, rolling and twisting on and off, no tangential spring, both sliding
-//! rules).
+//! rules). On x86-64 only, where the lanes are.
+
+#![cfg(target_arch = "x86_64")]
 
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use walls_geometry::Material;
-use walls_sim::contact::lanes::{self, Contacts, L, LANES, V};
+use walls_sim::contact::lanes::{self, Contacts, L, LANES, Simd, V};
 use walls_sim::contact::ssdem::{Dashpot, Optional, Record, Sliding, dashpot_contact_with};
 
 type Vec3 = Vector3<f64>;
@@ -116,21 +118,22 @@ fn material() -> impl Strategy<Value = Material> {
 }
 
 /// The four contacts' `field` in lanes.
-fn lanes_of<const N: usize>(each: [Vec3; N]) -> V {
+fn lanes_of(each: [Vec3; LANES]) -> V {
     V {
-        x: std::array::from_fn(|l| each[l].x),
-        y: std::array::from_fn(|l| each[l].y),
-        z: std::array::from_fn(|l| each[l].z),
+        x: numbers(|l| each[l].x),
+        y: numbers(|l| each[l].y),
+        z: numbers(|l| each[l].z),
     }
 }
 
 fn numbers(f: impl Fn(usize) -> f64) -> L {
-    std::array::from_fn(f)
+    lanes::from_array(std::array::from_fn(f))
 }
 
 /// Lane `l` of `v`.
 fn lane(v: &V, l: usize) -> Vec3 {
-    Vec3::new(v.x[l], v.y[l], v.z[l])
+    let each = |x: L| lanes::to_array(x)[l];
+    Vec3::new(each(v.x), each(v.y), each(v.z))
 }
 
 /// A number's bits, to compare exactly (−0 and 0 apart), any NaN as one: Rust leaves the
@@ -151,13 +154,14 @@ fn bits(v: Vec3) -> [u64; 3] {
     "x86_64+avx2+fma"
 ))]
 fn dispatched(
+    simd: Simd,
     c: &Contacts,
     records: &mut [Record; LANES],
     dt: f64,
     mat: &Material,
     sliding: Sliding,
 ) -> lanes::Forces {
-    lanes::dashpot(c, records, dt, mat, sliding)
+    lanes::dashpot(simd, c, records, dt, mat, sliding)
 }
 
 proptest! {
@@ -189,7 +193,8 @@ proptest! {
             damping: (numbers(|l| four[l].1.0), numbers(|l| four[l].1.1)),
         };
         let mut records = four.map(|(_, _, r)| r);
-        let forces = dispatched(&contacts, &mut records, dt, &mat, sliding);
+        let simd = Simd::new().expect("AVX2 and FMA, which the lanes compute with");
+        let forces = dispatched(simd, &contacts, &mut records, dt, &mat, sliding);
         for l in 0..LANES {
             let (_, damping, mut alone) = four[l];
             let extra = Optional { damping: Some(damping), ..Optional::default() };

@@ -3,81 +3,177 @@
 //! in the same order, so each lane's numbers are bit for bit those of the law on its
 //! contact alone (`tests/lanes.rs` holds the two side by side), but for the sign and
 //! payload of a NaN, which Rust leaves unspecified (a NaN stops a run whatever its
-//! sign). The lanes are plain
-//! arrays, which the compiler turns into vector instructions (two or four numbers an
-//! instruction, as the processor allows): a branch of the law becomes both arms and a
-//! choice between them in each lane.
+//! sign). The lanes are the processor's own vectors, four numbers an instruction
+//! (AVX2, through `pulp`'s safe `V3` operations, each the IEEE operation on each lane):
+//! plain arrays, which the compiler vectorised as it chose, ran mostly two lanes an
+//! instruction. A branch of the law becomes both arms and a choice between them in each
+//! lane. [`Simd::new`] says whether the processor has the instructions; without them, or
+//! off x86-64, there are no lanes and the run takes every contact one at a time. The
+//! code that calls [`pair`] or [`dashpot`] must be compiled for AVX2 (the run's pair
+//! loops are, with `multiversion`), or each operation would be a call.
 //!
 //! Only the common case runs here: two free particles, the `DEM_ROTATION_DASHPOT` build
 //! without its optional parts (no cohesion, no two layers, no contact radius). The run
 //! takes any other contact to the law itself.
 
-use super::ssdem::{Record, Restitution, SERIES_UP_TO, Sliding, sin_cos_series};
+use super::ssdem::{Record, Restitution, SERIES_UP_TO, Sliding};
+use pulp::{f64x4, m64x4};
 use walls_geometry::Material;
+
+#[cfg(not(target_arch = "x86_64"))]
+use elsewhere::Token;
+#[cfg(target_arch = "x86_64")]
+use pulp::x86::V3 as Token;
 
 /// How many contacts go together.
 pub const LANES: usize = 4;
 
 /// One number in each lane.
-pub type L = [f64; LANES];
+pub type L = f64x4;
 
 /// One boolean in each lane.
-type Mask = [bool; LANES];
+type Mask = m64x4;
 
-/// Each lane's `f(a, b)`.
+/// The lanes' numbers from an array.
 #[inline(always)]
-fn zip(a: L, b: L, f: impl Fn(f64, f64) -> f64) -> L {
-    std::array::from_fn(|l| f(a[l], b[l]))
+pub fn from_array(a: [f64; LANES]) -> L {
+    f64x4(a[0], a[1], a[2], a[3])
 }
 
-/// Each lane's `f(a)`.
+/// The lanes' numbers, lane `l`'s `f(l)` (each read straight into its lane).
 #[inline(always)]
-fn map(a: L, f: impl Fn(f64) -> f64) -> L {
-    std::array::from_fn(|l| f(a[l]))
+pub fn gather(f: impl Fn(usize) -> f64) -> L {
+    f64x4(f(0), f(1), f(2), f(3))
 }
 
-/// Each lane's `f(a)` as a mask.
+/// The lanes' numbers as an array.
 #[inline(always)]
-fn is(a: L, f: impl Fn(f64) -> bool) -> Mask {
-    std::array::from_fn(|l| f(a[l]))
+pub fn to_array(a: L) -> [f64; LANES] {
+    [a.0, a.1, a.2, a.3]
 }
 
-/// Each lane's `f(a, b)` as a mask.
+/// The lanes' booleans as an array.
 #[inline(always)]
-fn test(a: L, b: L, f: impl Fn(f64, f64) -> bool) -> Mask {
-    std::array::from_fn(|l| f(a[l], b[l]))
+fn bools(m: Mask) -> [bool; LANES] {
+    [m.0.is_set(), m.1.is_set(), m.2.is_set(), m.3.is_set()]
 }
 
-#[inline(always)]
-fn add(a: L, b: L) -> L {
-    zip(a, b, |a, b| a + b)
-}
+/// The processor's vector instructions the lanes compute with, four numbers an
+/// instruction: x86-64's AVX2 with FMA (`pulp`'s `V3`, whose operations are the
+/// processor's own, each the IEEE operation on each lane). Held only where the
+/// processor has them; elsewhere the run takes every contact one at a time. A caller
+/// must be compiled for these instructions (`multiversion`), or each operation would
+/// be a call.
+#[derive(Clone, Copy)]
+pub struct Simd(Token);
 
-#[inline(always)]
-fn sub(a: L, b: L) -> L {
-    zip(a, b, |a, b| a - b)
-}
+impl Simd {
+    /// The vector instructions, if this processor has them.
+    pub fn new() -> Option<Simd> {
+        Token::try_new().map(Simd)
+    }
 
-#[inline(always)]
-fn mul(a: L, b: L) -> L {
-    zip(a, b, |a, b| a * b)
-}
+    #[inline(always)]
+    fn add(self, a: L, b: L) -> L {
+        self.0.add_f64x4(a, b)
+    }
 
-#[inline(always)]
-fn div(a: L, b: L) -> L {
-    zip(a, b, |a, b| a / b)
-}
+    #[inline(always)]
+    fn sub(self, a: L, b: L) -> L {
+        self.0.sub_f64x4(a, b)
+    }
 
-/// The same number in every lane.
-#[inline(always)]
-pub fn splat(x: f64) -> L {
-    [x; LANES]
-}
+    #[inline(always)]
+    fn mul(self, a: L, b: L) -> L {
+        self.0.mul_f64x4(a, b)
+    }
 
-/// `yes` in the lanes of `mask`, else `no`.
-#[inline(always)]
-fn pick(mask: Mask, yes: L, no: L) -> L {
-    std::array::from_fn(|l| if mask[l] { yes[l] } else { no[l] })
+    #[inline(always)]
+    fn div(self, a: L, b: L) -> L {
+        self.0.div_f64x4(a, b)
+    }
+
+    #[inline(always)]
+    fn sqrt(self, a: L) -> L {
+        self.0.sqrt_f64x4(a)
+    }
+
+    /// `-a`: the sign bit flipped, as Rust's negation does.
+    #[inline(always)]
+    fn neg(self, a: L) -> L {
+        self.0.xor_f64x4(a, self.splat(-0.0))
+    }
+
+    /// `|a|`: the sign bit cleared.
+    #[inline(always)]
+    fn abs(self, a: L) -> L {
+        self.0.abs_f64x4(a)
+    }
+
+    /// `a.copysign(sign)`: `a`'s size with `sign`'s sign bit.
+    #[inline(always)]
+    fn copysign(self, a: L, sign: L) -> L {
+        let bit = self.0.and_f64x4(sign, self.splat(-0.0));
+        self.0.or_f64x4(self.abs(a), bit)
+    }
+
+    /// The same number in every lane.
+    #[inline(always)]
+    fn splat(self, x: f64) -> L {
+        self.0.splat_f64x4(x)
+    }
+
+    /// `yes` in the lanes of `mask`, else `no`.
+    #[inline(always)]
+    fn pick(self, mask: Mask, yes: L, no: L) -> L {
+        self.0.select_f64x4(mask, yes, no)
+    }
+
+    /// `a == b` (a NaN equals nothing).
+    #[inline(always)]
+    fn eq(self, a: L, b: L) -> Mask {
+        self.0.cmp_eq_f64x4(a, b)
+    }
+
+    /// `a > b` (false with a NaN).
+    #[inline(always)]
+    fn gt(self, a: L, b: L) -> Mask {
+        self.0.cmp_gt_f64x4(a, b)
+    }
+
+    /// `a <= b` (false with a NaN).
+    #[inline(always)]
+    fn le(self, a: L, b: L) -> Mask {
+        self.0.cmp_le_f64x4(a, b)
+    }
+
+    #[inline(always)]
+    fn and(self, a: Mask, b: Mask) -> Mask {
+        self.0.and_m64x4(a, b)
+    }
+
+    #[inline(always)]
+    fn not(self, a: Mask) -> Mask {
+        self.0.not_m64x4(a)
+    }
+
+    /// A term of the sine's and cosine's series: `1 − x²·f·rest`.
+    #[inline(always)]
+    fn term(self, x2: L, f: f64, rest: L) -> L {
+        self.sub(self.splat(1.0), self.mul(self.mul(x2, self.splat(f)), rest))
+    }
+
+    /// Whether any lane of `m` is set.
+    #[inline(always)]
+    fn any(self, m: Mask) -> bool {
+        bools(m).iter().any(|&b| b)
+    }
+
+    /// Whether every lane of `m` is set.
+    #[inline(always)]
+    fn all(self, m: Mask) -> bool {
+        bools(m).iter().all(|&b| b)
+    }
 }
 
 /// A vector in each lane, as nalgebra's `Vector3<f64>` computes with it (the same
@@ -96,98 +192,104 @@ impl V {
     /// Zero in every lane.
     #[inline(always)]
     pub fn zeros() -> V {
+        let z = f64x4(0.0, 0.0, 0.0, 0.0);
+        V { x: z, y: z, z }
+    }
+}
+
+/// The lanes' vector operations.
+impl Simd {
+    #[inline(always)]
+    fn vadd(self, a: V, b: V) -> V {
         V {
-            x: splat(0.0),
-            y: splat(0.0),
-            z: splat(0.0),
+            x: self.add(a.x, b.x),
+            y: self.add(a.y, b.y),
+            z: self.add(a.z, b.z),
         }
     }
 
     #[inline(always)]
-    fn each(self, other: V, f: impl Fn(L, L) -> L) -> V {
+    fn vsub(self, a: V, b: V) -> V {
         V {
-            x: f(self.x, other.x),
-            y: f(self.y, other.y),
-            z: f(self.z, other.z),
+            x: self.sub(a.x, b.x),
+            y: self.sub(a.y, b.y),
+            z: self.sub(a.z, b.z),
         }
-    }
-
-    #[inline(always)]
-    fn add(self, o: V) -> V {
-        self.each(o, add)
-    }
-
-    #[inline(always)]
-    fn sub(self, o: V) -> V {
-        self.each(o, sub)
     }
 
     /// Each component times the lane's `s`.
     #[inline(always)]
-    fn scale(self, s: L) -> V {
+    fn scale(self, v: V, s: L) -> V {
         V {
-            x: mul(self.x, s),
-            y: mul(self.y, s),
-            z: mul(self.z, s),
+            x: self.mul(v.x, s),
+            y: self.mul(v.y, s),
+            z: self.mul(v.z, s),
         }
     }
 
     /// Each component over the lane's `s`.
     #[inline(always)]
-    fn unscale(self, s: L) -> V {
+    fn unscale(self, v: V, s: L) -> V {
         V {
-            x: div(self.x, s),
-            y: div(self.y, s),
-            z: div(self.z, s),
+            x: self.div(v.x, s),
+            y: self.div(v.y, s),
+            z: self.div(v.z, s),
         }
     }
 
     #[inline(always)]
-    fn neg(self) -> V {
+    fn vneg(self, v: V) -> V {
         V {
-            x: map(self.x, |a| -a),
-            y: map(self.y, |a| -a),
-            z: map(self.z, |a| -a),
+            x: self.neg(v.x),
+            y: self.neg(v.y),
+            z: self.neg(v.z),
         }
     }
 
     #[inline(always)]
-    fn dot(self, o: V) -> L {
-        add(add(mul(self.x, o.x), mul(self.y, o.y)), mul(self.z, o.z))
+    fn dot(self, a: V, b: V) -> L {
+        self.add(
+            self.add(self.mul(a.x, b.x), self.mul(a.y, b.y)),
+            self.mul(a.z, b.z),
+        )
     }
 
     #[inline(always)]
-    fn norm_squared(self) -> L {
-        self.dot(self)
+    fn norm_squared(self, v: V) -> L {
+        self.dot(v, v)
     }
 
     #[inline(always)]
-    fn norm(self) -> L {
-        map(self.norm_squared(), f64::sqrt)
+    fn norm(self, v: V) -> L {
+        self.sqrt(self.norm_squared(v))
     }
 
     #[inline(always)]
-    fn cross(self, b: V) -> V {
+    fn cross(self, a: V, b: V) -> V {
         V {
-            x: sub(mul(self.y, b.z), mul(self.z, b.y)),
-            y: sub(mul(self.z, b.x), mul(self.x, b.z)),
-            z: sub(mul(self.x, b.y), mul(self.y, b.x)),
+            x: self.sub(self.mul(a.y, b.z), self.mul(a.z, b.y)),
+            y: self.sub(self.mul(a.z, b.x), self.mul(a.x, b.z)),
+            z: self.sub(self.mul(a.x, b.y), self.mul(a.y, b.x)),
         }
     }
 
     /// Whether each lane's vector is zero (component by component: −0 is, NaN is not).
     #[inline(always)]
-    fn is_zero(self) -> Mask {
-        std::array::from_fn(|l| self.x[l] == 0.0 && self.y[l] == 0.0 && self.z[l] == 0.0)
+    fn is_zero(self, v: V) -> Mask {
+        let zero = self.splat(0.0);
+        self.and(
+            self.and(self.eq(v.x, zero), self.eq(v.y, zero)),
+            self.eq(v.z, zero),
+        )
     }
 
     /// `yes` in the lanes of `mask`, else `no`.
     #[inline(always)]
-    fn pick(mask: Mask, yes: V, no: V) -> V {
+    fn vpick(self, mask: Mask, yes: V, no: V) -> V {
         V {
-            x: pick(mask, yes.x, no.x),
-            y: pick(mask, yes.y, no.y),
-            z: pick(mask, yes.z, no.z),
+            x: self.pick(mask, yes.x, no.x),
+            y: self.pick(mask, yes.y, no.y),
+            z: self.pick(mask, yes.z, no.z),
         }
     }
 }
@@ -236,26 +338,32 @@ impl Records {
         let v = |f: fn(&Record) -> [f64; 3]| {
             let each: [[f64; 3]; LANES] = std::array::from_fn(|l| f(&records[l]));
             V {
-                x: std::array::from_fn(|l| each[l][0]),
-                y: std::array::from_fn(|l| each[l][1]),
-                z: std::array::from_fn(|l| each[l][2]),
+                x: gather(|l| each[l][0]),
+                y: gather(|l| each[l][1]),
+                z: gather(|l| each[l][2]),
             }
         };
         Records {
             spring: v(|r| r.spring.into()),
             normal: v(|r| r.normal.into()),
             roll: v(|r| r.roll.into()),
-            twist: std::array::from_fn(|l| records[l].twist),
+            twist: gather(|l| records[l].twist),
         }
     }
 
     #[inline(always)]
     fn scatter(&self, records: &mut [Record; LANES]) {
+        let each = |v: &V| {
+            let (x, y, z) = (to_array(v.x), to_array(v.y), to_array(v.z));
+            std::array::from_fn::<_, LANES, _>(|l| [x[l], y[l], z[l]])
+        };
+        let (spring, normal, roll) = (each(&self.spring), each(&self.normal), each(&self.roll));
+        let twist = to_array(self.twist);
         for (l, r) in records.iter_mut().enumerate() {
-            r.spring = [self.spring.x[l], self.spring.y[l], self.spring.z[l]].into();
-            r.normal = [self.normal.x[l], self.normal.y[l], self.normal.z[l]].into();
-            r.roll = [self.roll.x[l], self.roll.y[l], self.roll.z[l]].into();
-            r.twist = self.twist[l];
+            r.spring = spring[l].into();
+            r.normal = normal[l].into();
+            r.roll = roll[l].into();
+            r.twist = twist[l];
         }
     }
 }
@@ -263,28 +371,50 @@ impl Records {
 /// `v` turned about the unit `axis` by the angle whose sine and cosine are given, in the
 /// lanes of `mask` where `v` is not zero (a zero spring is left alone).
 #[inline(always)]
-fn turn(v: V, axis: V, (sin, cos): (L, L), mask: Mask) -> V {
-    let one_less = map(cos, |c| 1.0 - c);
-    let turned = v
-        .scale(cos)
-        .add(axis.cross(v).scale(sin))
-        .add(axis.scale(mul(axis.dot(v), one_less)));
-    let zero = v.is_zero();
-    V::pick(std::array::from_fn(|l| mask[l] && !zero[l]), turned, v)
+fn turn(k: Simd, v: V, axis: V, (sin, cos): (L, L), mask: Mask) -> V {
+    let one_less = k.sub(k.splat(1.0), cos);
+    let turned = k.vadd(
+        k.vadd(k.scale(v, cos), k.scale(k.cross(axis, v), sin)),
+        k.scale(axis, k.mul(k.dot(axis, v), one_less)),
+    );
+    let zero = k.is_zero(v);
+    k.vpick(k.and(mask, k.not(zero)), turned, v)
 }
 
-/// [`super::ssdem::small_sin_cos`] in each lane: its series in all lanes at once, the library's in a
-/// lane whose angle is too large for it.
+/// [`super::ssdem::small_sin_cos`] in each lane: its series ([`sin_cos_series`], the
+/// same operations in the same order) in all lanes at once, the library's in a lane
+/// whose angle is too large for it.
 #[inline(always)]
-fn sin_cos(x: L) -> (L, L) {
-    let series = std::array::from_fn(|l| sin_cos_series(x[l]));
-    let (mut sin, mut cos): (L, L) = (series.map(|s| s.0), series.map(|s| s.1));
+fn sin_cos(k: Simd, x: L) -> (L, L) {
+    let (one, x2) = (k.splat(1.0), k.mul(x, x));
+    let sin = k.mul(
+        x,
+        k.term(
+            x2,
+            1.0 / 6.0,
+            k.term(x2, 1.0 / 20.0, k.term(x2, 1.0 / 42.0, one)),
+        ),
+    );
+    let cos = k.term(
+        x2,
+        0.5,
+        k.term(
+            x2,
+            1.0 / 12.0,
+            k.term(x2, 1.0 / 30.0, k.term(x2, 1.0 / 56.0, one)),
+        ),
+    );
+    let far = k.le(k.splat(SERIES_UP_TO), k.abs(x));
+    if !k.any(far) {
+        return (sin, cos);
+    }
+    let (mut sin, mut cos, x) = (to_array(sin), to_array(cos), to_array(x));
     for l in 0..LANES {
         if x[l].abs() >= SERIES_UP_TO {
             (sin[l], cos[l]) = x[l].sin_cos();
         }
     }
-    (sin, cos)
+    (from_array(sin), from_array(cos))
 }
 
 /// pkdgrav's contact law ([`super::ssdem::dashpot_contact_with`], with the damping
@@ -292,6 +422,7 @@ fn sin_cos(x: L) -> (L, L) {
 /// records, in material `mat` over `dt`, the shear spring limited as `sliding` says.
 #[inline(always)]
 pub fn dashpot(
+    k: Simd,
     c: &Contacts,
     records: &mut [Record; LANES],
     dt: f64,
@@ -301,132 +432,131 @@ pub fn dashpot(
     let mut r = Records::gather(records);
     let n = c.normal;
     let (k_n, k_t) = (mat.k_n, mat.k_t);
-    let spring_force = map(c.overlap, |x| k_n * x);
-    let old = r.normal.is_zero();
-    let old: Mask = std::array::from_fn(|l| !old[l]);
+    let spring_force = k.mul(k.splat(k_n), c.overlap);
+    let old = k.not(k.is_zero(r.normal));
     // §1.3 step 1: about the mean normal, by the mean spin of the two over the step.
-    let mean = r.normal.add(n);
-    let size = mean.norm();
-    let mean = mean.unscale(size);
-    let angle = map(c.turn.dot(mean), |t| 0.5 * dt * t);
+    let mean = k.vadd(r.normal, n);
+    let size = k.norm(mean);
+    let mean = k.unscale(mean, size);
+    let angle = k.mul(k.splat(0.5 * dt), k.dot(c.turn, mean));
     // (A mean of zero length is no axis; one whose length is not a number is, as
     // `try_normalize(0.0)` has it: none only when the length is at most 0.)
-    let axis = is(size, |s| s > 0.0 || s.is_nan());
-    let first: Mask = std::array::from_fn(|l| old[l] && axis[l] && angle[l] != 0.0);
+    let axis = k.not(k.le(size, k.splat(0.0)));
+    let first = k.and(k.and(old, axis), k.not(k.eq(angle, k.splat(0.0))));
     // (A zero rolling spring, in every lane without rolling resistance, stays zero.)
-    let rolls = !r.roll.is_zero().iter().all(|&z| z);
-    if first.iter().any(|&b| b) {
-        let sc = sin_cos(angle);
-        r.spring = turn(r.spring, mean, sc, first);
+    let rolls = !k.all(k.is_zero(r.roll));
+    if k.any(first) {
+        let sc = sin_cos(k, angle);
+        r.spring = turn(k, r.spring, mean, sc, first);
         if rolls {
-            r.roll = turn(r.roll, mean, sc, first);
+            r.roll = turn(k, r.roll, mean, sc, first);
         }
     }
     // Step 2: with the change of normal.
-    let a = r.normal.cross(n);
-    let sin = a.norm();
-    let second: Mask = std::array::from_fn(|l| old[l] && sin[l] > 0.0);
-    if second.iter().any(|&b| b) {
-        let axis = a.unscale(sin);
-        let cos = n.dot(r.normal);
-        r.spring = turn(r.spring, axis, (sin, cos), second);
+    let a = k.cross(r.normal, n);
+    let sin = k.norm(a);
+    let second = k.and(old, k.gt(sin, k.splat(0.0)));
+    if k.any(second) {
+        let axis = k.unscale(a, sin);
+        let cos = k.dot(n, r.normal);
+        r.spring = turn(k, r.spring, axis, (sin, cos), second);
         if rolls {
-            r.roll = turn(r.roll, axis, (sin, cos), second);
+            r.roll = turn(k, r.roll, axis, (sin, cos), second);
         }
     }
     r.normal = n;
     let u = c.velocity;
-    let un = n.scale(n.dot(u));
-    let ut = u.sub(un);
+    let un = k.scale(n, k.dot(n, u));
+    let ut = k.vsub(u, un);
     let (c_n, c_t) = c.damping;
-    let f_n = n.scale(map(spring_force, |f| -f)).add(un.scale(c_n));
-    let normal_force = f_n.norm();
+    let f_n = k.vadd(k.scale(n, k.neg(spring_force)), k.scale(un, c_n));
+    let normal_force = k.norm(f_n);
     // Step 4 and 5: the shear spring, and the slide.
-    r.spring = r.spring.add(ut.scale(splat(dt)));
-    let cap = map(normal_force, |f| mat.mu_s * f);
-    let f_t = r.spring.scale(splat(k_t)).add(ut.scale(c_t));
-    let sticks = test(f_t.norm_squared(), cap, |f2, cap| f2 <= cap * cap);
-    let f_t = if sticks.iter().all(|&b| b) {
+    r.spring = k.vadd(r.spring, k.scale(ut, k.splat(dt)));
+    let cap = k.mul(k.splat(mat.mu_s), normal_force);
+    let f_t = k.vadd(k.scale(r.spring, k.splat(k_t)), k.scale(ut, c_t));
+    let sticks = k.le(k.norm_squared(f_t), k.mul(cap, cap));
+    let f_t = if k.all(sticks) {
         f_t
     } else {
         let (spring, slid) = match sliding {
             Sliding::Reset => {
-                let speed = ut.norm();
-                let scale: L = std::array::from_fn(|l| {
-                    if speed[l] > 0.0 {
-                        cap[l].min(c_t[l] * speed[l]) / speed[l]
-                    } else {
-                        0.0
-                    }
-                });
-                let moving = is(speed, |s| s > 0.0);
-                let slid = V::pick(moving, ut.scale(scale), V::zeros());
+                let speed = k.norm(ut);
+                // `f64::min`: the other number where one is a NaN.
+                let (cap, ct) = (to_array(cap), to_array(k.mul(c_t, speed)));
+                let least = from_array(std::array::from_fn(|l| cap[l].min(ct[l])));
+                let moving = k.gt(speed, k.splat(0.0));
+                let scale = k.pick(moving, k.div(least, speed), k.splat(0.0));
+                let slid = k.vpick(moving, k.scale(ut, scale), V::zeros());
                 (V::zeros(), slid)
             }
             Sliding::Clamp => {
-                let scale = div(cap, f_t.norm());
+                let scale = k.div(cap, k.norm(f_t));
                 let spring = if k_t > 0.0 {
-                    let dashpot = ut.scale(map(c_t, |c| c / k_t));
-                    r.spring.add(dashpot).scale(scale).sub(dashpot)
+                    let dashpot = k.scale(ut, k.div(c_t, k.splat(k_t)));
+                    k.vsub(k.scale(k.vadd(r.spring, dashpot), scale), dashpot)
                 } else {
                     r.spring
                 };
-                (spring, f_t.scale(scale))
+                (spring, k.scale(f_t, scale))
             }
         };
-        r.spring = V::pick(sticks, r.spring, spring);
-        V::pick(sticks, f_t, slid)
+        r.spring = k.vpick(sticks, r.spring, spring);
+        k.vpick(sticks, f_t, slid)
     };
-    let shear = n.cross(f_t);
+    let shear = k.cross(n, f_t);
     // No cohesion: zero added after the limits, as the law adds it.
-    let force = f_n.add(f_t).add(V::zeros());
+    let force = k.vadd(k.vadd(f_n, f_t), V::zeros());
     // §1.4: rolling and twisting, spring–dashpot–sliders scaled by (β_s R*)².
-    let b = map(c.radius, |r| (mat.beta_s * r).powi(2));
+    let b = k.mul(k.splat(mat.beta_s), c.radius);
+    let b = k.mul(b, b);
     let mut resistance = V::zeros();
     let (l1, l2) = c.levers;
     if mat.mu_r != 0.0 {
-        let kappa = zip(l1, l2, |l1, l2| 0.5 * (l2 - l1) / (l1 * l2));
-        let rate = c
-            .spin
-            .sub(n.scale(n.dot(c.spin)))
-            .add(n.cross(u).scale(kappa));
-        let step = rate.scale(splat(dt));
-        r.roll = r.roll.add(step);
-        let mut m_r = r.roll.scale(map(b, |b| k_n * b));
-        let limit: L =
-            std::array::from_fn(|l| mat.mu_r * mat.beta_s * c.radius[l] * normal_force[l]);
-        let size = m_r.norm();
-        let over = test(size, limit, |s, lim| s > lim);
-        let capped = m_r.scale(div(limit, size));
-        let damped = m_r.add(rate.scale(mul(c_n, b)));
-        m_r = V::pick(over, capped, damped);
-        r.roll = V::pick(over, r.roll.sub(step), r.roll);
-        resistance = resistance.add(m_r);
+        let kappa = k.div(k.mul(k.splat(0.5), k.sub(l2, l1)), k.mul(l1, l2));
+        let rate = k.vadd(
+            k.vsub(c.spin, k.scale(n, k.dot(n, c.spin))),
+            k.scale(k.cross(n, u), kappa),
+        );
+        let step = k.scale(rate, k.splat(dt));
+        r.roll = k.vadd(r.roll, step);
+        let mut m_r = k.scale(r.roll, k.mul(k.splat(k_n), b));
+        let limit = k.mul(
+            k.mul(k.splat(mat.mu_r * mat.beta_s), c.radius),
+            normal_force,
+        );
+        let size = k.norm(m_r);
+        let over = k.gt(size, limit);
+        let capped = k.scale(m_r, k.div(limit, size));
+        let damped = k.vadd(m_r, k.scale(rate, k.mul(c_n, b)));
+        m_r = k.vpick(over, capped, damped);
+        r.roll = k.vpick(over, k.vsub(r.roll, step), r.roll);
+        resistance = k.vadd(resistance, m_r);
     }
     if mat.mu_t != 0.0 {
-        let rate = c.spin.dot(n);
-        let step = mul(rate, splat(dt));
-        r.twist = add(r.twist, step);
-        let torque: L = std::array::from_fn(|l| 2.0 * k_t * b[l] * r.twist[l]);
-        let limit: L = std::array::from_fn(|l| {
-            mat.mu_t * mat.beta_s * c.radius[l] * mat.mu_s * normal_force[l]
-        });
-        let over = test(torque, limit, |t, lim| t.abs() > lim);
-        let m_t: L = std::array::from_fn(|l| {
-            if over[l] {
-                limit[l].copysign(torque[l])
-            } else {
-                torque[l] + 2.0 * c_t[l] * b[l] * rate[l]
-            }
-        });
-        r.twist = pick(over, sub(r.twist, step), r.twist);
-        resistance = resistance.add(n.scale(m_t));
+        let rate = k.dot(c.spin, n);
+        let step = k.mul(rate, k.splat(dt));
+        r.twist = k.add(r.twist, step);
+        let torque = k.mul(k.mul(k.splat(2.0 * k_t), b), r.twist);
+        let limit = k.mul(
+            k.mul(
+                k.mul(k.splat(mat.mu_t * mat.beta_s), c.radius),
+                k.splat(mat.mu_s),
+            ),
+            normal_force,
+        );
+        let over = k.gt(k.abs(torque), limit);
+        let signed = k.copysign(limit, torque);
+        let damped = k.add(torque, k.mul(k.mul(k.mul(k.splat(2.0), c_t), b), rate));
+        let m_t = k.pick(over, signed, damped);
+        r.twist = k.pick(over, k.sub(r.twist, step), r.twist);
+        resistance = k.vadd(resistance, k.scale(n, m_t));
     }
     r.scatter(records);
     Forces {
         force,
-        torque: shear.scale(l1).add(resistance),
-        partner_torque: shear.scale(l2).sub(resistance),
+        torque: k.vadd(k.scale(shear, l1), resistance),
+        partner_torque: k.vsub(k.scale(shear, l2), resistance),
     }
 }
 
@@ -451,6 +581,8 @@ pub struct Pairs {
 
 /// How the run's pair contacts are worked out, the same for every contact.
 pub struct Setting<'a> {
+    /// The vector instructions.
+    pub simd: Simd,
     /// The step.
     pub dt: f64,
     /// How far ahead of the step's start velocities and spins are predicted, in steps
@@ -474,63 +606,126 @@ pub struct Setting<'a> {
 /// and the law.
 #[inline(always)]
 pub fn pair(p: &Pairs, records: &mut [Record; LANES], s: &Setting) -> Forces {
+    let k = s.simd;
     let (ci, cj) = p.centres;
     let (ri, rj) = p.radii;
-    let d = ci.sub(cj);
-    let distance = d.norm();
-    let overlap = sub(add(ri, rj), distance);
-    let ahead = is(distance, |d| d > 0.0);
+    let d = k.vsub(ci, cj);
+    let distance = k.norm(d);
+    let overlap = k.sub(k.add(ri, rj), distance);
+    let ahead = k.gt(distance, k.splat(0.0));
     let up = V {
-        x: splat(0.0),
-        y: splat(0.0),
-        z: splat(1.0),
+        x: k.splat(0.0),
+        y: k.splat(0.0),
+        z: k.splat(1.0),
     };
-    let n = V::pick(ahead, d.unscale(distance), up);
-    let seen = |vel: V, spin: V, acc: V, alpha: V| {
-        if s.predict != 0.0 {
-            let h = splat(s.dt * s.predict);
-            (vel.add(acc.scale(h)), spin.add(alpha.scale(h)))
-        } else {
-            (vel, spin)
+    let n = k.vpick(ahead, k.unscale(d, distance), up);
+    let (vi, wi, vj, wj) = if s.predict != 0.0 {
+        let h = k.splat(s.dt * s.predict);
+        (
+            k.vadd(p.vel.0, k.scale(p.acc.0, h)),
+            k.vadd(p.spin.0, k.scale(p.alpha.0, h)),
+            k.vadd(p.vel.1, k.scale(p.acc.1, h)),
+            k.vadd(p.spin.1, k.scale(p.alpha.1, h)),
+        )
+    } else {
+        (p.vel.0, p.spin.0, p.vel.1, p.spin.1)
+    };
+    let equal = k.eq(ri, rj);
+    let half = k.mul(k.splat(0.5), distance);
+    let li = k.div(
+        k.add(
+            k.sub(k.mul(ri, ri), k.mul(rj, rj)),
+            k.mul(distance, distance),
+        ),
+        k.mul(k.splat(2.0), distance),
+    );
+    let (li, lj) = (
+        k.pick(equal, half, li),
+        k.pick(equal, half, k.sub(distance, li)),
+    );
+    let u = k.vsub(
+        k.vsub(k.vadd(vi, k.cross(wi, k.scale(k.vneg(n), li))), vj),
+        k.cross(wj, k.scale(n, lj)),
+    );
+    let (mi, mj) = p.mass;
+    let reduced = k.div(k.mul(mi, mj), k.add(mi, mj));
+    let radius = k.div(k.mul(ri, rj), k.add(ri, rj));
+    let (eps_n, eps_t) = s.restitution;
+    let damping = match s.damping {
+        Some((mass, (c_n, c_t))) if k.all(k.eq(reduced, k.splat(mass))) => {
+            (k.splat(c_n), k.splat(c_t))
+        }
+        _ => {
+            let reduced = to_array(reduced);
+            let each: [(f64, f64); LANES] = std::array::from_fn(|l| match s.damping {
+                Some((mass, damping)) if mass == reduced[l] => damping,
+                _ => (
+                    eps_n.damping(s.mat.k_n, reduced[l]),
+                    eps_t.damping(s.mat.k_t, reduced[l]),
+                ),
+            });
+            (from_array(each.map(|d| d.0)), from_array(each.map(|d| d.1)))
         }
     };
-    let (vi, wi) = seen(p.vel.0, p.spin.0, p.acc.0, p.alpha.0);
-    let (vj, wj) = seen(p.vel.1, p.spin.1, p.acc.1, p.alpha.1);
-    let equal = test(ri, rj, |a, b| a == b);
-    let half = map(distance, |d| 0.5 * d);
-    let li: L = std::array::from_fn(|l| {
-        let (a, b, d) = (ri[l], rj[l], distance[l]);
-        (a * a - b * b + d * d) / (2.0 * d)
-    });
-    let (li, lj) = (pick(equal, half, li), pick(equal, half, sub(distance, li)));
-    let u = vi
-        .add(wi.cross(n.neg().scale(li)))
-        .sub(vj)
-        .sub(wj.cross(n.scale(lj)));
-    let (mi, mj) = p.mass;
-    let reduced = div(mul(mi, mj), add(mi, mj));
-    let radius = div(mul(ri, rj), add(ri, rj));
-    let (eps_n, eps_t) = s.restitution;
-    let mut c_n = [0.0; LANES];
-    let mut c_t = [0.0; LANES];
-    for l in 0..LANES {
-        (c_n[l], c_t[l]) = match s.damping {
-            Some((mass, damping)) if mass == reduced[l] => damping,
-            _ => (
-                eps_n.damping(s.mat.k_n, reduced[l]),
-                eps_t.damping(s.mat.k_t, reduced[l]),
-            ),
-        };
-    }
     let contacts = Contacts {
         overlap,
-        normal: n.neg(),
-        velocity: u.neg(),
-        spin: wj.sub(wi),
-        turn: p.spin.0.add(p.spin.1),
+        normal: k.vneg(n),
+        velocity: k.vneg(u),
+        spin: k.vsub(wj, wi),
+        turn: k.vadd(p.spin.0, p.spin.1),
         levers: (li, lj),
         radius,
-        damping: (c_n, c_t),
+        damping,
     };
-    dashpot(&contacts, records, s.dt, s.mat, s.sliding)
+    dashpot(k, &contacts, records, s.dt, s.mat, s.sliding)
+}
+
+/// Elsewhere than x86-64 there are no lanes: a token no value has, so [`Simd::new`]
+/// gives none and the run takes every contact one at a time; its operations are never
+/// called.
+#[cfg(not(target_arch = "x86_64"))]
+mod elsewhere {
+    use pulp::{f64x4, m64x4};
+
+    #[derive(Clone, Copy)]
+    enum Never {}
+
+    /// No vector instructions.
+    #[derive(Clone, Copy)]
+    pub struct Token(Never);
+
+    macro_rules! never {
+        ($($name:ident($($ty:ty),*) -> $out:ty;)*) => {
+            impl Token {
+                /// None: this processor has no lanes here.
+                pub fn try_new() -> Option<Token> {
+                    None
+                }
+                $(
+                    pub fn $name(self, $(_: $ty),*) -> $out {
+                        match self.0 {}
+                    }
+                )*
+            }
+        };
+    }
+
+    never! {
+        add_f64x4(f64x4, f64x4) -> f64x4;
+        sub_f64x4(f64x4, f64x4) -> f64x4;
+        mul_f64x4(f64x4, f64x4) -> f64x4;
+        div_f64x4(f64x4, f64x4) -> f64x4;
+        sqrt_f64x4(f64x4) -> f64x4;
+        xor_f64x4(f64x4, f64x4) -> f64x4;
+        and_f64x4(f64x4, f64x4) -> f64x4;
+        or_f64x4(f64x4, f64x4) -> f64x4;
+        abs_f64x4(f64x4) -> f64x4;
+        splat_f64x4(f64) -> f64x4;
+        select_f64x4(m64x4, f64x4, f64x4) -> f64x4;
+        cmp_eq_f64x4(f64x4, f64x4) -> m64x4;
+        cmp_gt_f64x4(f64x4, f64x4) -> m64x4;
+        cmp_le_f64x4(f64x4, f64x4) -> m64x4;
+        and_m64x4(m64x4, m64x4) -> m64x4;
+        not_m64x4(m64x4) -> m64x4;
+    }
 }

@@ -483,10 +483,10 @@ pub fn small_sin_cos(x: f64) -> (f64, f64) {
 
 /// The Taylor series of an angle's sine and cosine to x⁷ and x⁸, whose first term left
 /// out is below 10⁻²² of the value for |x| < [`SERIES_UP_TO`] (an ulp is 1.1·10⁻¹⁶).
-/// Shared with the law four contacts at a time ([`super::lanes`]), which runs it in
-/// every lane.
+/// The law four contacts at a time ([`super::lanes`]) runs the same operations in the
+/// same order in vector instructions (`tests/lanes.rs` holds the two together).
 #[inline(always)]
-pub(crate) fn sin_cos_series(x: f64) -> (f64, f64) {
+fn sin_cos_series(x: f64) -> (f64, f64) {
     let x2 = x * x;
     let sin = x * (1.0 - x2 * (1.0 / 6.0) * (1.0 - x2 * (1.0 / 20.0) * (1.0 - x2 * (1.0 / 42.0))));
     let cos = 1.0

@@ -2366,12 +2366,14 @@ impl PairContext<'_> {
         let plan = self.plan;
         let dashpot = plan.sliding_friction || plan.rolling || plan.twisting;
         let settings = self.settings;
+        let simd = lanes::Simd::new()?;
         (self.kicks.pkdgrav_levers
             && dashpot
             && !self.optional.any()
             && !settings.contact_radius
             && settings.build.rotation_dashpot)
             .then_some(lanes::Setting {
+                simd,
                 dt: settings.dt,
                 predict: self.kicks.predict_all,
                 mat: self.mat,
@@ -2403,11 +2405,11 @@ impl PairContext<'_> {
             let each: [&[f64; 4]; LANES] = std::array::from_fn(|l| &spheres[pick(&ij[l])]);
             (
                 lanes::V {
-                    x: each.map(|s| s[0]),
-                    y: each.map(|s| s[1]),
-                    z: each.map(|s| s[2]),
+                    x: lanes::gather(|l| each[l][0]),
+                    y: lanes::gather(|l| each[l][1]),
+                    z: lanes::gather(|l| each[l][2]),
                 },
-                each.map(|s| s[3]),
+                lanes::gather(|l| each[l][3]),
             )
         };
         let (ci, ri) = sphere(|p| p.0);
@@ -2415,14 +2417,14 @@ impl PairContext<'_> {
         let vector = |pick: fn(&(usize, usize)) -> usize, field: fn(&State) -> &Vec3| {
             let each: [&Vec3; LANES] = std::array::from_fn(|l| field(&states[pick(&ij[l])]));
             lanes::V {
-                x: each.map(|v| v.x),
-                y: each.map(|v| v.y),
-                z: each.map(|v| v.z),
+                x: lanes::gather(|l| each[l].x),
+                y: lanes::gather(|l| each[l].y),
+                z: lanes::gather(|l| each[l].z),
             }
         };
         let both = |field: fn(&State) -> &Vec3| (vector(|p| p.0, field), vector(|p| p.1, field));
         let mass = |pick: fn(&(usize, usize)) -> usize| -> lanes::L {
-            std::array::from_fn(|l| states[pick(&ij[l])].particle.mass)
+            lanes::gather(|l| states[pick(&ij[l])].particle.mass)
         };
         let p = lanes::Pairs {
             centres: (ci, cj),
@@ -2434,16 +2436,18 @@ impl PairContext<'_> {
             mass: (mass(|p| p.0), mass(|p| p.1)),
         };
         let f = lanes::pair(&p, records, setting);
+        let each = |v: &lanes::V| {
+            let (x, y, z) = (
+                lanes::to_array(v.x),
+                lanes::to_array(v.y),
+                lanes::to_array(v.z),
+            );
+            std::array::from_fn::<_, LANES, _>(|l| Vec3::new(x[l], y[l], z[l]))
+        };
+        let (force, torque, partner) = (each(&f.force), each(&f.torque), each(&f.partner_torque));
         std::array::from_fn(|l| PairForce {
-            force: Vec3::new(f.force.x[l], f.force.y[l], f.force.z[l]),
-            torques: (
-                Vec3::new(f.torque.x[l], f.torque.y[l], f.torque.z[l]),
-                Vec3::new(
-                    f.partner_torque.x[l],
-                    f.partner_torque.y[l],
-                    f.partner_torque.z[l],
-                ),
-            ),
+            force: force[l],
+            torques: (torque[l], partner[l]),
             free: (true, true),
         })
     }
