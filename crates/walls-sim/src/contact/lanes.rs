@@ -34,12 +34,6 @@ pub type L = f64x4;
 /// One boolean in each lane.
 type Mask = m64x4;
 
-/// The lanes' numbers from an array.
-#[inline(always)]
-pub fn from_array(a: [f64; LANES]) -> L {
-    f64x4(a[0], a[1], a[2], a[3])
-}
-
 /// The lanes' numbers, lane `l`'s `f(l)` (each read straight into its lane).
 #[inline(always)]
 pub fn gather(f: impl Fn(usize) -> f64) -> L {
@@ -59,11 +53,9 @@ fn bools(m: Mask) -> [bool; LANES] {
 }
 
 /// The processor's vector instructions the lanes compute with, four numbers an
-/// instruction: x86-64's AVX2 with FMA (`pulp`'s `V3`, whose operations are the
-/// processor's own, each the IEEE operation on each lane). Held only where the
-/// processor has them; elsewhere the run takes every contact one at a time. A caller
-/// must be compiled for these instructions (`multiversion`), or each operation would
-/// be a call.
+/// instruction: `pulp`'s `V3`, x86-64-v3 (AVX2, FMA, BMI1 and 2, LZCNT, POPCNT), whose
+/// operations are the processor's own, each the IEEE operation on each lane. Held only
+/// where the processor has them.
 #[derive(Clone, Copy)]
 pub struct Simd(Token);
 
@@ -194,6 +186,13 @@ impl V {
     pub fn zeros() -> V {
         let z = f64x4(0.0, 0.0, 0.0, 0.0);
         V { x: z, y: z, z }
+    }
+
+    /// Each lane's vector.
+    #[inline(always)]
+    pub fn each_lane(&self) -> [[f64; 3]; LANES] {
+        let (x, y, z) = (to_array(self.x), to_array(self.y), to_array(self.z));
+        std::array::from_fn(|l| [x[l], y[l], z[l]])
     }
 }
 
@@ -353,11 +352,11 @@ impl Records {
 
     #[inline(always)]
     fn scatter(&self, records: &mut [Record; LANES]) {
-        let each = |v: &V| {
-            let (x, y, z) = (to_array(v.x), to_array(v.y), to_array(v.z));
-            std::array::from_fn::<_, LANES, _>(|l| [x[l], y[l], z[l]])
-        };
-        let (spring, normal, roll) = (each(&self.spring), each(&self.normal), each(&self.roll));
+        let (spring, normal, roll) = (
+            self.spring.each_lane(),
+            self.normal.each_lane(),
+            self.roll.each_lane(),
+        );
         let twist = to_array(self.twist);
         for (l, r) in records.iter_mut().enumerate() {
             r.spring = spring[l].into();
@@ -381,7 +380,7 @@ fn turn(k: Simd, v: V, axis: V, (sin, cos): (L, L), mask: Mask) -> V {
     k.vpick(k.and(mask, k.not(zero)), turned, v)
 }
 
-/// [`super::ssdem::small_sin_cos`] in each lane: its series ([`sin_cos_series`], the
+/// [`super::ssdem::small_sin_cos`] in each lane: its series (`ssdem::sin_cos_series`, the
 /// same operations in the same order) in all lanes at once, the library's in a lane
 /// whose angle is too large for it.
 #[inline(always)]
@@ -414,7 +413,7 @@ fn sin_cos(k: Simd, x: L) -> (L, L) {
             (sin[l], cos[l]) = x[l].sin_cos();
         }
     }
-    (from_array(sin), from_array(cos))
+    (gather(|l| sin[l]), gather(|l| cos[l]))
 }
 
 /// pkdgrav's contact law ([`super::ssdem::dashpot_contact_with`], with the damping
@@ -484,7 +483,7 @@ pub fn dashpot(
                 let speed = k.norm(ut);
                 // `f64::min`: the other number where one is a NaN.
                 let (cap, ct) = (to_array(cap), to_array(k.mul(c_t, speed)));
-                let least = from_array(std::array::from_fn(|l| cap[l].min(ct[l])));
+                let least = gather(|l| cap[l].min(ct[l]));
                 let moving = k.gt(speed, k.splat(0.0));
                 let scale = k.pick(moving, k.div(least, speed), k.splat(0.0));
                 let slid = k.vpick(moving, k.scale(ut, scale), V::zeros());
@@ -664,7 +663,7 @@ pub fn pair(p: &Pairs, records: &mut [Record; LANES], s: &Setting) -> Forces {
                     eps_t.damping(s.mat.k_t, reduced[l]),
                 ),
             });
-            (from_array(each.map(|d| d.0)), from_array(each.map(|d| d.1)))
+            (gather(|l| each[l].0), gather(|l| each[l].1))
         }
     };
     let contacts = Contacts {

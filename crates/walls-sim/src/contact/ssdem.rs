@@ -471,8 +471,8 @@ fn slide(spring: &mut Vec3, ut: &Vec3, k_t: f64, c_t: f64, cap: f64, rule: Slidi
 pub(crate) const SERIES_UP_TO: f64 = 0.0078125;
 
 /// The sine and cosine of an angle: for the small angles a contact turns by in a step
-/// (|x| < [`SERIES_UP_TO`]), [`sin_cos_series`], at a tenth of the library's cost; else
-/// the library's.
+/// (|x| < `SERIES_UP_TO`, 2⁻⁷), a Taylor series (`sin_cos_series`), at a tenth of the
+/// library's cost; else the library's.
 #[inline]
 pub fn small_sin_cos(x: f64) -> (f64, f64) {
     if x.abs() >= SERIES_UP_TO {

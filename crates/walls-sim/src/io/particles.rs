@@ -4,8 +4,8 @@
 //!   `wx,wy,wz,color`; one particle a row, in pkdgrav units.
 //! * pkdgrav `.ss` files: big-endian XDR. A 16-byte header (double time, int32 count,
 //!   int32 magic: −1 standard, −10101 reduced), then per particle either 96 bytes (double
-//!   mass, radius, pos[3], vel[3], spin[3]; int32 color, original index) or 28 bytes
-//!   (float mass, radius, pos[3]; int32 color, index).
+//!   mass, radius, `pos[3]`, `vel[3]`, `spin[3]`; int32 color, original index) or 28
+//!   bytes (float mass, radius, `pos[3]`; int32 color, index).
 //!
 //! [`write_ss_output`] writes the `.ss` files of a run's outputs, named as pkdgrav names
 //! them ([`ss_file_name`]), record by record; [`write_ss`] makes one in memory.

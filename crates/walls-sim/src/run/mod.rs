@@ -484,7 +484,7 @@ fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
 /// from [`Settings::start_step`]), the time, and the step's [`Snapshot`] of the particles
 /// and the reactive walls' assemblies. It is `Send`: a run on several threads steps on
-/// one of rayon's, and calls it there ([`on_the_pool`]).
+/// one of rayon's, and calls it there (`on_the_pool`).
 pub type Observer<'a> = &'a mut (dyn FnMut(u64, f64, &mut dyn Snapshot) + Send);
 
 /// Whether a run is asked to stop after a step ([`run_watched`]); `Sync` for the same
@@ -530,7 +530,7 @@ pub fn run_observed(
 /// ([`Stop::Interrupted`]). A run also stops when a particle's numbers stop being
 /// finite ([`Stop::NotFinite`]), and does not start when the timestep is not a
 /// positive finite number ([`Stop::Timestep`]; callers check it first with
-/// [`crate::config::check`]).
+/// `config::check`).
 ///
 /// A run of 1,024 particles or more, with more than one thread in rayon's pool, runs on
 /// one of the pool's threads, `observe` and `interrupted` included, while the calling
