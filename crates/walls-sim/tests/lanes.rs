@@ -10,8 +10,9 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use walls_geometry::Material;
-use walls_sim::contact::lanes::{self, Contacts, L, LANES, Simd, V};
+use walls_sim::contact::lanes::{self, Contacts, LANES, Simd, V};
 use walls_sim::contact::ssdem::{Dashpot, Optional, Record, Sliding, dashpot_contact_with};
+use walls_test_support::exact::{bits, number};
 
 type Vec3 = Vector3<f64>;
 
@@ -119,33 +120,12 @@ fn material() -> impl Strategy<Value = Material> {
 
 /// The four contacts' `field` in lanes.
 fn lanes_of(each: [Vec3; LANES]) -> V {
-    V {
-        x: numbers(|l| each[l].x),
-        y: numbers(|l| each[l].y),
-        z: numbers(|l| each[l].z),
-    }
-}
-
-fn numbers(f: impl Fn(usize) -> f64) -> L {
-    lanes::gather(f)
+    V::gather(|l| each[l].into())
 }
 
 /// Lane `l` of `v`.
 fn lane(v: &V, l: usize) -> Vec3 {
-    let each = |x: L| lanes::to_array(x)[l];
-    Vec3::new(each(v.x), each(v.y), each(v.z))
-}
-
-/// A number's bits, to compare exactly (−0 and 0 apart), any NaN as one: Rust leaves the
-/// sign and payload of a NaN an operation makes unspecified, and the compiler may order a
-/// multiplication's operands either way.
-fn number(x: f64) -> u64 {
-    if x.is_nan() { u64::MAX } else { x.to_bits() }
-}
-
-/// [`number`] of each component.
-fn bits(v: Vec3) -> [u64; 3] {
-    [number(v.x), number(v.y), number(v.z)]
+    v.each_lane()[l].into()
 }
 
 /// [`lanes::dashpot`] compiled as the run compiles it, for the processor it runs on.
@@ -195,14 +175,14 @@ proptest! {
         let sliding = if clamp { Sliding::Clamp } else { Sliding::Reset };
         let c: [Dashpot; LANES] = four.map(|(d, _, _)| Dashpot { sliding, ..d });
         let contacts = Contacts {
-            overlap: numbers(|l| c[l].overlap),
+            overlap: lanes::gather(|l| c[l].overlap),
             normal: lanes_of(c.map(|c| c.normal)),
             velocity: lanes_of(c.map(|c| c.velocity)),
             spin: lanes_of(c.map(|c| c.spin)),
             turn: lanes_of(c.map(|c| c.turn)),
-            levers: (numbers(|l| c[l].levers.0), numbers(|l| c[l].levers.1)),
-            radius: numbers(|l| c[l].radius),
-            damping: (numbers(|l| four[l].1.0), numbers(|l| four[l].1.1)),
+            levers: (lanes::gather(|l| c[l].levers.0), lanes::gather(|l| c[l].levers.1)),
+            radius: lanes::gather(|l| c[l].radius),
+            damping: (lanes::gather(|l| four[l].1.0), lanes::gather(|l| four[l].1.1)),
         };
         let mut records = four.map(|(_, _, r)| r);
         // (Nothing to compare without the lanes: `the_processor_has_the_lanes` fails.)

@@ -14,10 +14,11 @@
 //! walls-file text, for the wall index.
 //!
 //! [`cli`] checks a tool's command line as shells and `man` see it: its completion
-//! scripts, and its man pages in `docs/man/`.
+//! scripts, and its man pages in `docs/man/`. [`exact`] compares numbers to the last bit.
 
 pub mod arbitrary;
 pub mod cli;
+pub mod exact;
 pub mod scenes;
 mod walls;
 

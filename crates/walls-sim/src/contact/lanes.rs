@@ -10,7 +10,9 @@
 //! lane. [`Simd::new`] says whether the processor has the instructions; without them, or
 //! off x86-64, there are no lanes and the run takes every contact one at a time. The
 //! code that calls [`pair`] or [`dashpot`] must be compiled for AVX2 (the run's pair
-//! loops are, with `multiversion`), or each operation would be a call.
+//! loops are, with `multiversion`), or each operation would be a call; so must a
+//! closure that holds vector operations, which is compiled for the target features of
+//! the function it is written in (none here): this file keeps them out of closures.
 //!
 //! Only the common case runs here: two free particles, the `DEM_ROTATION_DASHPOT` build
 //! without its optional parts (no cohesion, no two layers, no contact radius). The run
@@ -188,6 +190,17 @@ impl V {
         V { x: z, y: z, z }
     }
 
+    /// Lane `l`'s vector `f(l)` in each lane.
+    #[inline(always)]
+    pub fn gather(f: impl Fn(usize) -> [f64; 3]) -> V {
+        let each: [[f64; 3]; LANES] = std::array::from_fn(f);
+        V {
+            x: gather(|l| each[l][0]),
+            y: gather(|l| each[l][1]),
+            z: gather(|l| each[l][2]),
+        }
+    }
+
     /// Each lane's vector.
     #[inline(always)]
     pub fn each_lane(&self) -> [[f64; 3]; LANES] {
@@ -334,18 +347,10 @@ struct Records {
 impl Records {
     #[inline(always)]
     fn gather(records: &[Record; LANES]) -> Records {
-        let v = |f: fn(&Record) -> [f64; 3]| {
-            let each: [[f64; 3]; LANES] = std::array::from_fn(|l| f(&records[l]));
-            V {
-                x: gather(|l| each[l][0]),
-                y: gather(|l| each[l][1]),
-                z: gather(|l| each[l][2]),
-            }
-        };
         Records {
-            spring: v(|r| r.spring.into()),
-            normal: v(|r| r.normal.into()),
-            roll: v(|r| r.roll.into()),
+            spring: V::gather(|l| records[l].spring.into()),
+            normal: V::gather(|l| records[l].normal.into()),
+            roll: V::gather(|l| records[l].roll.into()),
             twist: gather(|l| records[l].twist),
         }
     }
@@ -408,8 +413,8 @@ fn sin_cos(k: Simd, x: L) -> (L, L) {
         return (sin, cos);
     }
     let (mut sin, mut cos, x) = (to_array(sin), to_array(cos), to_array(x));
-    for l in 0..LANES {
-        if x[l].abs() >= SERIES_UP_TO {
+    for (l, far) in bools(far).into_iter().enumerate() {
+        if far {
             (sin[l], cos[l]) = x[l].sin_cos();
         }
     }

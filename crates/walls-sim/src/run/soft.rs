@@ -2325,7 +2325,9 @@ fn pair_chunk(
     let ij_of = |k: u32| (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
     let mut done = 0;
     while done < ks.len() {
-        if let (Some(setting), true) = (lanes, done + LANES <= ks.len()) {
+        if let Some(setting) = lanes
+            && done + LANES <= ks.len()
+        {
             let ij: [(usize, usize); LANES] = std::array::from_fn(|l| ij_of(ks[done + l]));
             if context.all_free(&ij) {
                 let mut four: [Record; LANES] = std::array::from_fn(|l| record(from[done + l]));
@@ -2406,23 +2408,14 @@ impl PairContext<'_> {
         let sphere = |pick: fn(&(usize, usize)) -> usize| {
             let each: [&[f64; 4]; LANES] = std::array::from_fn(|l| &spheres[pick(&ij[l])]);
             (
-                lanes::V {
-                    x: lanes::gather(|l| each[l][0]),
-                    y: lanes::gather(|l| each[l][1]),
-                    z: lanes::gather(|l| each[l][2]),
-                },
+                lanes::V::gather(|l| [each[l][0], each[l][1], each[l][2]]),
                 lanes::gather(|l| each[l][3]),
             )
         };
         let (ci, ri) = sphere(|p| p.0);
         let (cj, rj) = sphere(|p| p.1);
         let vector = |pick: fn(&(usize, usize)) -> usize, field: fn(&State) -> &Vec3| {
-            let each: [&Vec3; LANES] = std::array::from_fn(|l| field(&states[pick(&ij[l])]));
-            lanes::V {
-                x: lanes::gather(|l| each[l].x),
-                y: lanes::gather(|l| each[l].y),
-                z: lanes::gather(|l| each[l].z),
-            }
+            lanes::V::gather(|l| (*field(&states[pick(&ij[l])])).into())
         };
         let both = |field: fn(&State) -> &Vec3| (vector(|p| p.0, field), vector(|p| p.1, field));
         let mass = |pick: fn(&(usize, usize)) -> usize| -> lanes::L {
@@ -2783,18 +2776,7 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
     use walls_geometry::Particle;
-
-    /// A number's bits, to compare exactly (−0 and 0 apart), any NaN as one: Rust leaves
-    /// the sign and payload of a NaN an operation makes unspecified, and the compiler
-    /// may order a multiplication's operands either way.
-    fn number(x: f64) -> u64 {
-        if x.is_nan() { u64::MAX } else { x.to_bits() }
-    }
-
-    /// [`number`] of each component.
-    fn bits(v: Vec3) -> [u64; 3] {
-        [number(v.x), number(v.y), number(v.z)]
-    }
+    use walls_test_support::exact::{bits, number};
 
     /// The particles' material: pkdgrav's springs, friction, and rolling and twisting
     /// resistance as given.
@@ -2926,22 +2908,22 @@ mod tests {
                 kicks.predict_all = 0.0;
             }
             in_context(&states, &settings, kicks, |context, setting| {
-            let spheres: Vec<[f64; 4]> = states.iter().map(PairList::sphere).collect();
-            let ij = [(0, 1), (2, 3), (4, 5), (6, 7)];
-            let mut four = records;
-            let forces = context.force_lanes(&ij, &spheres, &mut four, setting);
-            for (l, &(i, j)) in ij.iter().enumerate() {
-                let mut alone = records[l];
-                let want = context.force(i, j, &spheres[i], &spheres[j], &mut alone);
-                prop_assert_eq!(bits(forces[l].force), bits(want.force), "force, lane {}", l);
-                prop_assert_eq!(bits(forces[l].torques.0), bits(want.torques.0), "torque, lane {}", l);
-                prop_assert_eq!(bits(forces[l].torques.1), bits(want.torques.1), "partner, lane {}", l);
-                prop_assert_eq!(bits(four[l].spring), bits(alone.spring), "spring, lane {}", l);
-                prop_assert_eq!(bits(four[l].normal), bits(alone.normal), "normal, lane {}", l);
-                prop_assert_eq!(bits(four[l].roll), bits(alone.roll), "roll, lane {}", l);
-                prop_assert_eq!(number(four[l].twist), number(alone.twist), "twist, lane {}", l);
-            }
-            Ok(())
+                let spheres: Vec<[f64; 4]> = states.iter().map(PairList::sphere).collect();
+                let ij = [(0, 1), (2, 3), (4, 5), (6, 7)];
+                let mut four = records;
+                let forces = context.force_lanes(&ij, &spheres, &mut four, setting);
+                for (l, &(i, j)) in ij.iter().enumerate() {
+                    let mut alone = records[l];
+                    let want = context.force(i, j, &spheres[i], &spheres[j], &mut alone);
+                    prop_assert_eq!(bits(forces[l].force), bits(want.force), "force, lane {}", l);
+                    prop_assert_eq!(bits(forces[l].torques.0), bits(want.torques.0), "torque, lane {}", l);
+                    prop_assert_eq!(bits(forces[l].torques.1), bits(want.torques.1), "partner, lane {}", l);
+                    prop_assert_eq!(bits(four[l].spring), bits(alone.spring), "spring, lane {}", l);
+                    prop_assert_eq!(bits(four[l].normal), bits(alone.normal), "normal, lane {}", l);
+                    prop_assert_eq!(bits(four[l].roll), bits(alone.roll), "roll, lane {}", l);
+                    prop_assert_eq!(number(four[l].twist), number(alone.twist), "twist, lane {}", l);
+                }
+                Ok(())
             })?;
         }
     }
