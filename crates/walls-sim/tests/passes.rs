@@ -117,6 +117,43 @@ fn every_integrator_and_pkdgravs_acc_crit_owe_kicks_without_a_trace() {
 }
 
 #[test]
+fn an_owed_kick_stops_a_ball_at_its_turning_point_as_the_wall_pass_does() {
+    // One ball rising at 5·10⁻⁵ m/s against gravity, with no wall: clear of everything,
+    // so its closing kick is owed to the next drift; after the first opening kick it
+    // still rises at 2.5·10⁻⁵ m/s, and its first closing kick meets dAccCrit's test
+    // (a·v < 0, |a| = 9.81 < 20 m/s², |v| < 20 m/s² × 5 µs), which stops it. (The box
+    // above has no owed kick that the test stops.)
+    for integrator in [
+        Integrator::Leapfrog,
+        Integrator::LeapfrogPredicted,
+        Integrator::ExplicitEuler,
+        Integrator::Pkdgrav,
+    ] {
+        let dt = 5e-6;
+        let settings = |acc_crit: f64| Settings {
+            integrator,
+            acc_crit,
+            gravity: Vector3::new(0.0, 0.0, -9.81),
+            ..Settings::new(dt, 10.0 * dt, defaults::default_material(1000.0))
+        };
+        let rising = || vec![ball([0.0; 3], [0.0, 0.0, 5e-5])];
+        let looked_at = |settings: &Settings| {
+            let mut look = |_: u64, _: f64, snapshot: &mut dyn walls_sim::run::Snapshot| {
+                snapshot.look();
+            };
+            run_observed(&[], rising(), settings, &mut look)
+        };
+        let owed = run(&[], rising(), &settings(20.0));
+        assert_eq!(owed, looked_at(&settings(20.0)), "{integrator:?}");
+        let never_stopped = run(&[], rising(), &settings(0.0));
+        assert_ne!(
+            owed.particles[0].particle.vel, never_stopped.particles[0].particle.vel,
+            "{integrator:?}"
+        );
+    }
+}
+
+#[test]
 fn an_owed_kick_that_overflows_stops_the_run_at_its_step() {
     // Two light balls overlapping by a tenth of their radius, with no wall, on springs
     // so stiff that the closing kick of step 1 overflows (the leapfrog: no force before

@@ -923,7 +923,14 @@ impl<'a> SoftStepper<'a> {
         // The walls first (they do not depend on the particles): the drift finds which
         // particles are out of their reach where they stand this step.
         self.move_walls();
-        self.kick_drift();
+        // The drift compiled without pkdgrav's `dAccCrit` and with it: its test and its
+        // call in the loop cost the common case about 3 % of the run
+        // (docs/performance.md, "Twelfth round").
+        if self.owed_kick.acc_crit > 0.0 {
+            self.kick_drift::<true>();
+        } else {
+            self.kick_drift::<false>();
+        }
         self.move_aggregates();
         if self.kicks.pkdgrav_levers {
             self.carry_stuck();
@@ -983,8 +990,9 @@ impl<'a> SoftStepper<'a> {
     /// or here, after the owed kick), the candidate pairs learn whether a drifted
     /// particle has moved far enough to rebuild them ([`PairList::drifted`]), and each
     /// particle is marked whether this step's wall pass may owe it its closing kick
-    /// ([`SoftStepper::may_owe`]).
-    fn kick_drift(&mut self) {
+    /// ([`SoftStepper::may_owe`]). `ACC_CRIT`: whether the owed kicks apply pkdgrav's
+    /// `dAccCrit` (the run's `acc_crit` is positive).
+    fn kick_drift<const ACC_CRIT: bool>(&mut self) {
         let dt = self.settings.dt;
         let g = self.settings.gravity;
         let Kicks { opening, late, .. } = self.kicks;
@@ -1038,7 +1046,7 @@ impl<'a> SoftStepper<'a> {
             if let (true, Some(kick)) = (*owed, pay) {
                 // The last step's closing kick, as the wall pass would have given it
                 // (`close_step`'s arithmetic, in its order, from the locals).
-                if kick.acc_crit > 0.0 {
+                if ACC_CRIT {
                     close_step(s, load, kick);
                     (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
                 } else {
