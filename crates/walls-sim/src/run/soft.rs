@@ -1662,6 +1662,10 @@ impl<'a> SoftStepper<'a> {
                 .zip((self.open_walls.par_chunks_mut(CHUNK)).zip(self.walled.par_chunks_mut(CHUNK)))
                 .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
+                // Each chunk a task of its own: the particles near the walls gather in
+                // a few chunks (those at the floor, in a pile), which halving the range
+                // left to one thread (docs/performance.md, "Twelfth round").
+                .with_max_len(1)
                 .for_each(chunk);
         } else {
             self.states
