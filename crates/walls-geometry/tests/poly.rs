@@ -37,7 +37,11 @@ fn expected(scale: f64, roots: &[f64], t_max: f64) -> Option<f64> {
         .filter(|&k| (0.0..=t_max).contains(&sorted[k]))
         .find(|&k| {
             let above = sorted.len() - 1 - k;
-            let slope_sign = if above % 2 == 0 { scale } else { -scale };
+            let slope_sign = if above.is_multiple_of(2) {
+                scale
+            } else {
+                -scale
+            };
             slope_sign < 0.0
         })
         .map(|k| sorted[k])

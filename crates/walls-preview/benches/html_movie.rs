@@ -106,10 +106,10 @@ fn main() {
         each.as_secs_f64() * 1e3,
         page.len()
     );
-    if let Some(path) = std::env::var_os("HTML_MOVIE_OUT") {
-        if let Err(e) = std::fs::write(&path, &page) {
-            eprintln!("html_movie: cannot write {}: {e}", path.to_string_lossy());
-        }
+    if let Some(path) = std::env::var_os("HTML_MOVIE_OUT")
+        && let Err(e) = std::fs::write(&path, &page)
+    {
+        eprintln!("html_movie: cannot write {}: {e}", path.to_string_lossy());
     }
 }
 

@@ -52,7 +52,7 @@ fn dropped_with(
     let mut observe = |step: u64, _: f64, snapshot: &mut dyn walls_sim::run::Snapshot| {
         if looks(step) {
             let (states, _) = snapshot.look();
-            if step % 50 == 0 {
+            if step.is_multiple_of(50) {
                 seen.push((step, states.to_vec()));
             }
         }

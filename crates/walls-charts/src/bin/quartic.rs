@@ -163,8 +163,8 @@ fn first_entering(roots: &mut [f64], lead: f64, t_max: f64) -> Option<f64> {
         }
         // The sign just after the root: the leading coefficient's, flipped once for each
         // root above it; just before it, flipped once more for each copy of it.
-        let after_positive = (lead > 0.0) == ((k - j) % 2 == 0);
-        let before_positive = (lead > 0.0) == ((k - i) % 2 == 0);
+        let after_positive = (lead > 0.0) == (k - j).is_multiple_of(2);
+        let before_positive = (lead > 0.0) == (k - i).is_multiple_of(2);
         if before_positive && !after_positive && (0.0..=t_max).contains(&roots[i]) {
             return Some(roots[i]);
         }

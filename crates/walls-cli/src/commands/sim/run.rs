@@ -317,7 +317,8 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
-    let output = |step: u64| (every > 0 && step % every == 0) || Some(step) == settings.last_step;
+    let output =
+        |step: u64| (every > 0 && step.is_multiple_of(every)) || Some(step) == settings.last_step;
     let mut trajectory = match &args.out {
         Some(dir) => Some(
             walls_sim::io::trajectory::Trajectory::create(dir)
