@@ -346,7 +346,7 @@ struct Records {
 
 impl Records {
     #[inline(always)]
-    fn gather(records: &[Record; LANES]) -> Records {
+    fn gather(records: &[&mut Record; LANES]) -> Records {
         Records {
             spring: V::gather(|l| records[l].spring.into()),
             normal: V::gather(|l| records[l].normal.into()),
@@ -356,7 +356,7 @@ impl Records {
     }
 
     #[inline(always)]
-    fn scatter(&self, records: &mut [Record; LANES]) {
+    fn scatter(&self, records: &mut [&mut Record; LANES]) {
         let (spring, normal, roll) = (
             self.spring.each_lane(),
             self.normal.each_lane(),
@@ -428,7 +428,7 @@ fn sin_cos(k: Simd, x: L) -> (L, L) {
 pub fn dashpot(
     k: Simd,
     c: &Contacts,
-    records: &mut [Record; LANES],
+    records: &mut [&mut Record; LANES],
     dt: f64,
     mat: &Material,
     sliding: Sliding,
@@ -609,7 +609,7 @@ pub struct Setting<'a> {
 /// the plane of the contact; the contact-point velocity; the reduced mass and radius;
 /// and the law.
 #[inline(always)]
-pub fn pair(p: &Pairs, records: &mut [Record; LANES], s: &Setting) -> Forces {
+pub fn pair(p: &Pairs, records: &mut [&mut Record; LANES], s: &Setting) -> Forces {
     let k = s.simd;
     let (ci, cj) = p.centres;
     let (ri, rj) = p.radii;
