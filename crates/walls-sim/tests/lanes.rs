@@ -141,7 +141,7 @@ fn dispatched(
     mat: &Material,
     sliding: Sliding,
 ) -> lanes::Forces {
-    lanes::dashpot(simd, c, &mut records.each_mut(), dt, mat, sliding)
+    lanes::dashpot(simd, c, records.each_mut(), dt, mat, sliding)
 }
 
 /// The lanes need x86-64-v3 (AVX2, FMA, BMI1 and 2, LZCNT, POPCNT: every x86-64 processor

@@ -356,14 +356,14 @@ impl Records {
     }
 
     #[inline(always)]
-    fn scatter(&self, records: &mut [&mut Record; LANES]) {
+    fn scatter(&self, records: [&mut Record; LANES]) {
         let (spring, normal, roll) = (
             self.spring.each_lane(),
             self.normal.each_lane(),
             self.roll.each_lane(),
         );
         let twist = to_array(self.twist);
-        for (l, r) in records.iter_mut().enumerate() {
+        for (l, r) in records.into_iter().enumerate() {
             r.spring = spring[l].into();
             r.normal = normal[l].into();
             r.roll = roll[l].into();
@@ -428,12 +428,12 @@ fn sin_cos(k: Simd, x: L) -> (L, L) {
 pub fn dashpot(
     k: Simd,
     c: &Contacts,
-    records: &mut [&mut Record; LANES],
+    records: [&mut Record; LANES],
     dt: f64,
     mat: &Material,
     sliding: Sliding,
 ) -> Forces {
-    let mut r = Records::gather(records);
+    let mut r = Records::gather(&records);
     let n = c.normal;
     let (k_n, k_t) = (mat.k_n, mat.k_t);
     let spring_force = k.mul(k.splat(k_n), c.overlap);
@@ -609,7 +609,7 @@ pub struct Setting<'a> {
 /// the plane of the contact; the contact-point velocity; the reduced mass and radius;
 /// and the law.
 #[inline(always)]
-pub fn pair(p: &Pairs, records: &mut [&mut Record; LANES], s: &Setting) -> Forces {
+pub fn pair(p: &Pairs, records: [&mut Record; LANES], s: &Setting) -> Forces {
     let k = s.simd;
     let (ci, cj) = p.centres;
     let (ri, rj) = p.radii;

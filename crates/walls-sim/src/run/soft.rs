@@ -2290,9 +2290,9 @@ fn pair_block(
             // own): copied out and back, they cost the oscillating floor about 3 % of
             // its time.
             if context.all_free(&ij)
-                && let Ok(mut four) = records.get_disjoint_mut(ks.map(|k| slots[k] as usize))
+                && let Ok(four) = records.get_disjoint_mut(ks.map(|k| slots[k] as usize))
             {
-                let forces = context.force_lanes(&ij, spheres, &mut four, setting);
+                let forces = context.force_lanes(&ij, spheres, four, setting);
                 for l in 0..LANES {
                     let (i, j) = ij[l];
                     forces[l].add_to(loads, 0, i, j);
@@ -2347,7 +2347,7 @@ fn pair_chunk(
             let ij: [(usize, usize); LANES] = std::array::from_fn(|l| ij_of(ks[done + l]));
             if context.all_free(&ij) {
                 let mut four: [Record; LANES] = std::array::from_fn(|l| record(from[done + l]));
-                let f = context.force_lanes(&ij, spheres, &mut four.each_mut(), setting);
+                let f = context.force_lanes(&ij, spheres, four.each_mut(), setting);
                 records[done..done + LANES].copy_from_slice(&four);
                 forces[done..done + LANES].copy_from_slice(&f);
                 done += LANES;
@@ -2417,7 +2417,7 @@ impl PairContext<'_> {
         &self,
         ij: &[(usize, usize); LANES],
         spheres: &[[f64; 4]],
-        records: &mut [&mut Record; LANES],
+        records: [&mut Record; LANES],
         setting: &lanes::Setting,
     ) -> [PairForce; LANES] {
         let states = self.states;
@@ -2927,7 +2927,7 @@ mod tests {
                 let spheres: Vec<[f64; 4]> = states.iter().map(PairList::sphere).collect();
                 let ij = [(0, 1), (2, 3), (4, 5), (6, 7)];
                 let mut four = records;
-                let forces = context.force_lanes(&ij, &spheres, &mut four.each_mut(), setting);
+                let forces = context.force_lanes(&ij, &spheres, four.each_mut(), setting);
                 for (l, &(i, j)) in ij.iter().enumerate() {
                     let mut alone = records[l];
                     let want = context.force(i, j, &spheres[i], &spheres[j], &mut alone);
