@@ -319,10 +319,14 @@ pub struct State {
     /// A member of a rigid aggregate (docs/pkdgrav-physics.md §9): moved with it, never
     /// kicked or drifted on its own.
     pub(crate) member: bool,
-    /// 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once: a division costs
-    /// as much as the rest of a free particle's step.
-    pub(crate) inverse: (f64, f64),
 }
+
+// The soft-sphere drift reads and writes every state every step, and with 10⁵
+// particles the step's data nears the processor's last cache: a field added here is
+// paid for by every particle in every step (docs/performance.md, "Thirteenth round").
+// What the state can do without is kept beside it (the soft stepper's 1/m and 1/I).
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(std::mem::size_of::<State>() == 160);
 
 impl State {
     /// A particle at the start of a run: alive, free, not yet accelerated.
@@ -369,10 +373,6 @@ impl State {
 impl From<Particle> for State {
     /// The particle at the start of a run ([`State::new`]), taken rather than copied.
     fn from(particle: Particle) -> State {
-        let inverse = (
-            1.0 / particle.mass,
-            1.0 / (0.4 * particle.mass * particle.radius * particle.radius),
-        );
         State {
             particle,
             alive: true,
@@ -380,7 +380,6 @@ impl From<Particle> for State {
             acc: Vec3::zeros(),
             alpha: Vec3::zeros(),
             member: false,
-            inverse,
         }
     }
 }

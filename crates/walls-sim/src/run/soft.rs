@@ -22,9 +22,9 @@
 //! (events and warnings, in particle order), `kick_assemblies` and `gather_aggregates`.
 //! The passes over all the particles are plain loops over chunks, in parallel only with
 //! many particles and more than one thread; what they carry per particle is kept small
-//! (a 176-byte [`State`], a 48-byte load, a 32-byte sphere), and a free particle clear
-//! of the walls gets its closing kick in the next drift rather than in a pass of its
-//! own, as memory, not arithmetic, bounds them. The kicks still owed are given
+//! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere),
+//! and a free particle clear of the walls gets its closing kick in the next drift
+//! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks still owed are given
 //! ([`SoftStepper::settle`]) when the particles are looked at ([`super::Snapshot`]), at
 //! the run's end, and when one might overflow, so a run is bit for bit what it would be
 //! with the kick in the wall pass. With [`Integrator::Pkdgrav`],
@@ -172,6 +172,8 @@ impl ParticleStep {
 /// wall contacts (wall, contact), and its chunk's scratch list of the walls to visit.
 struct WallWork<'a> {
     load: &'a mut Load,
+    /// 1/m and 1/I.
+    inverse: (f64, f64),
     open: &'a mut Vec<(usize, Open)>,
     visit: &'a mut Vec<usize>,
 }
@@ -204,7 +206,7 @@ fn wall_step(i: usize, s: &mut State, mut work: WallWork, walls: &Walls) -> Part
         // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
         return out;
     }
-    close_step(s, work.load, walls.closing());
+    close_step(s, work.load, work.inverse, walls.closing());
     out
 }
 
@@ -263,10 +265,15 @@ fn clear_of_near(i: usize, pos: &Vec3, r: f64, near: Option<&NearWalls>, now: &[
 /// far in the step, say): the closing kick alone, and a report only if there is
 /// something to note.
 #[inline(always)]
-fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep> {
+fn clear_step(
+    s: &mut State,
+    load: &Load,
+    inverse: (f64, f64),
+    walls: &Walls,
+) -> Option<ParticleStep> {
     let r = s.particle.radius;
     let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
-    let motion = close_step(s, load, walls.closing());
+    let motion = close_step(s, load, inverse, walls.closing());
     let too_fast = (moved > r * r).then(|| moved.sqrt() / r);
     let not_finite = !s.finite_with(motion);
     (too_fast.is_some() || not_finite).then(|| ParticleStep {
@@ -283,14 +290,14 @@ fn clear_step(s: &mut State, load: &Load, walls: &Walls) -> Option<ParticleStep>
 /// with the same arithmetic ([`SoftStepper::kick_drift`]): a change here is a change
 /// there, or a run would differ with whether its kicks are owed.
 #[inline(always)]
-fn close_step(s: &mut State, load: &Load, kick: Closing) -> f64 {
+fn close_step(s: &mut State, load: &Load, inverse: (f64, f64), kick: Closing) -> f64 {
     let Closing {
         dt,
         fraction,
         acc_crit,
     } = kick;
-    s.acc = load.force * s.inverse.0;
-    s.alpha = load.torque * s.inverse.1;
+    s.acc = load.force * inverse.0;
+    s.alpha = load.torque * inverse.1;
     if acc_crit > 0.0 {
         zero_small_motions(s, acc_crit, dt);
     }
@@ -311,7 +318,9 @@ fn touch_walls(
     walls: &Walls,
     out: &mut ParticleStep,
 ) -> bool {
-    let WallWork { load, open, visit } = work;
+    let WallWork {
+        load, open, visit, ..
+    } = work;
     let (t, dt) = (walls.t, walls.dt);
     let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
@@ -671,6 +680,10 @@ struct SoftStepper<'a> {
     /// Set up failed (an aggregate of one member): the run stops before it starts.
     halted: bool,
     loads: Vec<Load>,
+    /// Each particle's 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once (a
+    /// division costs as much as the rest of a free particle's step), and kept beside
+    /// the states, which the drift writes back every step: it only reads these.
+    inverses: Vec<(f64, f64)>,
     /// Whether each particle's closing kick is owed: a free particle clear of the walls
     /// gets it in the next drift ([`SoftStepper::kick_drift`]) rather than in the wall
     /// pass, which saves a pass over the particles; [`SoftStepper::settle`] gives it
@@ -806,8 +819,9 @@ impl<'a> SoftStepper<'a> {
             let listed = assembly_of.iter().map(Option::is_none).collect();
             let translating = scene.iter().map(|w| w.motion.translates()).collect();
             candidates.near = Some(NearWalls::new(listed, translating));
-            candidates.build(&states, &now);
         }
+        // Built once, with the walls near each particle when it keeps them.
+        candidates.build(&states, &now);
         let optional = OptionalPhysics::new(scene, &states, settings);
         let damping: Vec<f64> = materials
             .iter()
@@ -827,8 +841,14 @@ impl<'a> SoftStepper<'a> {
         };
         let gravity_bound =
             g.abs().sum() * (states.iter()).map(|s| s.particle.mass).fold(0.0, largest);
-        let largest_inverse = (states.iter())
-            .map(|s| largest(s.inverse.0, s.inverse.1))
+        let inverses: Vec<(f64, f64)> = (states.iter())
+            .map(|s| {
+                let p = &s.particle;
+                (1.0 / p.mass, 1.0 / (0.4 * p.mass * p.radius * p.radius))
+            })
+            .collect();
+        let largest_inverse = (inverses.iter())
+            .map(|i| largest(i.0, i.1))
             .fold(0.0, largest);
         SoftStepper {
             restitutions,
@@ -852,6 +872,7 @@ impl<'a> SoftStepper<'a> {
             assembly_of,
             gravity_bound,
             largest_inverse,
+            inverses,
             loads,
             owed: vec![false; n],
             owing: false,
@@ -1028,6 +1049,7 @@ impl<'a> SoftStepper<'a> {
                 at,
                 sphere,
                 walled,
+                inverse,
             } = work;
             if s.member {
                 // The others' loads were started in the last wall pass, once used.
@@ -1048,11 +1070,11 @@ impl<'a> SoftStepper<'a> {
                 // (`close_step`'s arithmetic, in its order, from the locals).
                 debug_assert_eq!(ACC_CRIT, kick.acc_crit > 0.0);
                 if ACC_CRIT {
-                    close_step(s, load, kick);
+                    close_step(s, load, inverse, kick);
                     (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
                 } else {
-                    acc = load.force * s.inverse.0;
-                    alpha = load.torque * s.inverse.1;
+                    acc = load.force * inverse.0;
+                    alpha = load.torque * inverse.1;
                     vel += acc * (dt * kick.fraction);
                     spin += alpha * (dt * kick.fraction);
                     s.acc = acc;
@@ -1085,7 +1107,10 @@ impl<'a> SoftStepper<'a> {
         };
         // A plain loop over a chunk of the particles (every one is kicked and drifted:
         // no short cut), chunks in parallel for many particles.
-        let chunk = |(c, (((((states, loads), owed), (built_at, spheres)), walled), visited)): DriftChunk| {
+        let chunk = |(
+            c,
+            (((((states, loads), owed), (built_at, spheres)), (walled, inverses)), visited),
+        ): DriftChunk| {
             let mut drifted = false;
             let first = c * CHUNK;
             visited.clear();
@@ -1094,8 +1119,8 @@ impl<'a> SoftStepper<'a> {
                 .zip(owed)
                 .zip(built_at)
                 .zip(spheres)
-                .zip(walled);
-            for (k, (s, ((((load, owed), at), sphere), &walled))) in
+                .zip(walled.iter().zip(inverses));
+            for (k, (s, ((((load, owed), at), sphere), (&walled, &inverse)))) in
                 states.iter_mut().zip(rest).enumerate()
             {
                 let work = DriftWork {
@@ -1104,6 +1129,7 @@ impl<'a> SoftStepper<'a> {
                     at,
                     sphere,
                     walled,
+                    inverse,
                 };
                 drifted |= kick_drift(first + k, s, work);
                 if !*owed {
@@ -1124,7 +1150,11 @@ impl<'a> SoftStepper<'a> {
                         .par_chunks(CHUNK)
                         .zip(spheres.par_chunks_mut(CHUNK)),
                 )
-                .zip(self.walled.par_chunks(CHUNK))
+                .zip(
+                    self.walled
+                        .par_chunks(CHUNK)
+                        .zip(self.inverses.par_chunks(CHUNK)),
+                )
                 .zip(self.visited.par_iter_mut())
                 .enumerate()
                 .map(chunk)
@@ -1136,7 +1166,7 @@ impl<'a> SoftStepper<'a> {
                 .zip(self.loads.chunks_mut(CHUNK))
                 .zip(self.owed.chunks_mut(CHUNK))
                 .zip(built_at.chunks(CHUNK).zip(spheres.chunks_mut(CHUNK)))
-                .zip(self.walled.chunks(CHUNK))
+                .zip(self.walled.chunks(CHUNK).zip(self.inverses.chunks(CHUNK)))
                 .zip(self.visited.iter_mut());
             for c in chunked.enumerate() {
                 drifted |= chunk(c);
@@ -1174,13 +1204,14 @@ impl<'a> SoftStepper<'a> {
         let kick = self.owed_kick;
         let g = self.settings.gravity;
         let mut bad = None;
-        for (i, ((s, load), owed)) in (self.states.iter_mut())
+        for (i, (((s, load), owed), &inverse)) in (self.states.iter_mut())
             .zip(&mut self.loads)
             .zip(&mut self.owed)
+            .zip(&self.inverses)
             .enumerate()
         {
             if std::mem::take(owed) {
-                let motion = close_step(s, load, kick);
+                let motion = close_step(s, load, inverse, kick);
                 *load = Load::gravity(s, &g);
                 if bad.is_none() && !s.finite_with(motion) {
                     bad = Some(i);
@@ -1622,36 +1653,44 @@ impl<'a> SoftStepper<'a> {
         // particles. Each load, once used, starts the next step with gravity alone
         // (while it is at hand; the drift does it for the owed); an aggregate's members'
         // loads are kept for it ([`SoftStepper::gather_aggregates`]).
-        let chunk =
-            |(c, ((((states, loads), visited), (opens, walled)), (reports, visit))): WallChunk| {
-                reports.clear();
-                let first = c * CHUNK;
-                // The others are clear of the walls: their closing kicks are owed, not given
-                // here.
-                for &k in visited.iter() {
-                    let k = k as usize;
-                    let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
-                    let i = first + k;
-                    if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                        // Clear of the walls, not owed: the closing kick alone. (None is
-                        // open, as `walled[k]` already says: only this pass opens them.)
-                        if let Some(report) = clear_step(s, load, &walls) {
-                            reports.push((i, report));
-                        }
-                        *load = Load::gravity(s, &gravity);
-                        continue;
-                    }
-                    let mut report = wall_step(i, s, WallWork { load, open, visit }, &walls);
-                    walled[k] = !open.is_empty();
-                    report.not_finite = !s.finite();
-                    if !s.member {
-                        *load = Load::gravity(s, &gravity);
-                    }
-                    if !report.is_empty() {
+        let chunk = |(
+            c,
+            ((((states, loads), (visited, inverses)), (opens, walled)), (reports, visit)),
+        ): WallChunk| {
+            reports.clear();
+            let first = c * CHUNK;
+            // The others are clear of the walls: their closing kicks are owed, not given
+            // here.
+            for &k in visited.iter() {
+                let k = k as usize;
+                let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
+                let i = first + k;
+                if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
+                    // Clear of the walls, not owed: the closing kick alone. (None is
+                    // open, as `walled[k]` already says: only this pass opens them.)
+                    if let Some(report) = clear_step(s, load, inverses[k], &walls) {
                         reports.push((i, report));
                     }
+                    *load = Load::gravity(s, &gravity);
+                    continue;
                 }
-            };
+                let work = WallWork {
+                    load,
+                    inverse: inverses[k],
+                    open,
+                    visit,
+                };
+                let mut report = wall_step(i, s, work, &walls);
+                walled[k] = !open.is_empty();
+                report.not_finite = !s.finite();
+                if !s.member {
+                    *load = Load::gravity(s, &gravity);
+                }
+                if !report.is_empty() {
+                    reports.push((i, report));
+                }
+            }
+        };
         let chunks = self.states.len().div_ceil(CHUNK);
         self.reports.resize_with(chunks, Vec::new);
         self.visits.resize_with(chunks, Vec::new);
@@ -1659,7 +1698,7 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .par_chunks_mut(CHUNK)
                 .zip(self.loads.par_chunks_mut(CHUNK))
-                .zip(self.visited.par_iter())
+                .zip(self.visited.par_iter().zip(self.inverses.par_chunks(CHUNK)))
                 .zip((self.open_walls.par_chunks_mut(CHUNK)).zip(self.walled.par_chunks_mut(CHUNK)))
                 .zip(self.reports.par_iter_mut().zip(&mut self.visits))
                 .enumerate()
@@ -1672,7 +1711,7 @@ impl<'a> SoftStepper<'a> {
             self.states
                 .chunks_mut(CHUNK)
                 .zip(self.loads.chunks_mut(CHUNK))
-                .zip(self.visited.iter())
+                .zip(self.visited.iter().zip(self.inverses.chunks(CHUNK)))
                 .zip((self.open_walls.chunks_mut(CHUNK)).zip(self.walled.chunks_mut(CHUNK)))
                 .zip(self.reports.iter_mut().zip(&mut self.visits))
                 .enumerate()
@@ -1985,7 +2024,7 @@ struct PairList {
 impl PairList {
     fn new(states: &[State], wanted: bool) -> PairList {
         let largest = states.iter().map(|s| s.particle.radius).fold(0.0, f64::max);
-        let mut list = PairList {
+        PairList {
             pairs: Vec::new(),
             slots: Vec::new(),
             spheres: Vec::new(),
@@ -2010,9 +2049,7 @@ impl PairList {
                 }
                 None => None,
             },
-        };
-        list.build(states, &[]);
-        list
+        }
     }
 
     /// The candidate pairs (when wanted) and the walls near each particle (when kept)
@@ -2149,7 +2186,7 @@ type DriftChunk<'a> = (
                 ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
                 (&'a [Vec3], &'a mut [[f64; 4]]),
             ),
-            &'a [bool],
+            (&'a [bool], &'a [(f64, f64)]),
         ),
         &'a mut Vec<u32>,
     ),
@@ -2165,6 +2202,8 @@ struct DriftWork<'a> {
     sphere: &'a mut [f64; 4],
     /// Whether it has a wall contact open ([`SoftStepper::walled`]).
     walled: bool,
+    /// 1/m and 1/I ([`SoftStepper::inverses`]).
+    inverse: (f64, f64),
 }
 
 /// How large a particle's numbers, or a bound on its next kick, may be for the kick
@@ -2184,7 +2223,10 @@ type WallChunk<'a> = (
     usize,
     (
         (
-            ((&'a mut [State], &'a mut [Load]), &'a Vec<u32>),
+            (
+                (&'a mut [State], &'a mut [Load]),
+                (&'a Vec<u32>, &'a [(f64, f64)]),
+            ),
             (&'a mut [Vec<(usize, Open)>], &'a mut [bool]),
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),

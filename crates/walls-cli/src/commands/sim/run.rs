@@ -359,6 +359,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     let model = args
         .json
         .then(|| walls_sim::report::model(scene, &particles, &settings));
+    let writing = args.out.is_some();
     let outcome = run_watched(
         scene,
         particles,
@@ -367,7 +368,9 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             if let Some(bar) = &progress {
                 bar.set_position(step - first);
             }
-            if !output(step) || written.is_err() {
+            // Without `--out` there is nothing to write, and the particles are not looked
+            // at (looking gives the kicks owed: a pass over them).
+            if !output(step) || written.is_err() || !writing {
                 return;
             }
             // Only now are the particles looked at (`Snapshot`).
