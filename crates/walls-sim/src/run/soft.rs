@@ -24,14 +24,14 @@
 //! many particles and more than one thread; what they carry per particle is kept small
 //! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere),
 //! and a free particle clear of the walls gets its closing kick in the next drift
-//! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks still owed are given
-//! ([`SoftStepper::settle`]) when the particles are looked at ([`super::Snapshot`]), at
-//! the run's end, and when one might overflow, so a run is bit for bit what it would be
-//! with the kick in the wall pass. With [`Integrator::Pkdgrav`],
-//! [`SoftStepper::start`] evaluates the forces once before the first step, as pkdgrav
-//! does. pkdgrav's aggregates (`AGGS`, [`crate::dynamics::aggregate`]) run only with
-//! [`Integrator::Pkdgrav`]; their members are placed by their aggregate, not kicked or
-//! drifted, and hand it their loads.
+//! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks
+//! still owed are given ([`SoftStepper::settle`]) when the particles are looked at
+//! ([`super::Snapshot`]), at the run's end, and when one might overflow, so a run is bit
+//! for bit what it would be with the kick in the wall pass. With
+//! [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before the
+//! first step, as pkdgrav does. pkdgrav's aggregates (`AGGS`,
+//! [`crate::dynamics::aggregate`]) run only with [`Integrator::Pkdgrav`]; their members
+//! are placed by their aggregate, not kicked or drifted, and hand it their loads.
 
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
@@ -168,8 +168,9 @@ impl ParticleStep {
     }
 }
 
-/// What the wall pass works on for one particle besides its state: its load, its open
-/// wall contacts (wall, contact), and its chunk's scratch list of the walls to visit.
+/// What the wall pass works on for one particle besides its state: its load, its 1/m and
+/// 1/I, its open wall contacts (wall, contact), and its chunk's scratch list of the
+/// walls to visit.
 struct WallWork<'a> {
     load: &'a mut Load,
     /// 1/m and 1/I.
@@ -2176,8 +2177,8 @@ impl PairList {
 
 /// A chunk of the particles as the drift takes it: its number, their states, loads and
 /// owed kicks, where the candidate pairs were found and their spheres, whether they have
-/// a wall contact open, and the list of those the wall pass is to visit (within the
-/// chunk).
+/// a wall contact open and their 1/m and 1/I, and the list of those the wall pass is to
+/// visit (within the chunk).
 type DriftChunk<'a> = (
     usize,
     (
@@ -2217,8 +2218,8 @@ const SURELY_FINITE: f64 = 1e300;
 const SURELY_FINITE_LENGTH: f64 = 1e149;
 
 /// A chunk of the particles as the wall pass takes it: its number, their states and
-/// loads, which of them it visits, their open wall contacts and whether any is open, and
-/// its reports and scratch list of walls.
+/// loads, which of them it visits and their 1/m and 1/I, their open wall contacts and
+/// whether any is open, and its reports and scratch list of walls.
 type WallChunk<'a> = (
     usize,
     (
