@@ -11,8 +11,9 @@
 //!   one looking every step sees; a run nobody looks at ends exactly as one looked at
 //!   every step; and a kick that overflows stops the run at its own step.
 //!
-//! The scene: two thousand spheres dropped into a box of five planes, with friction
-//! (many clear of the walls, many in contact), for 600 steps.
+//! The scene: two thousand spheres of assorted sizes (radii 0.8–1 mm, so that each
+//! particle's mass and inertia are its own in every pass) dropped into a box of five
+//! planes, with friction (many clear of the walls, many in contact), for 600 steps.
 
 use nalgebra::Vector3;
 use walls_sim::run::{
@@ -36,7 +37,12 @@ fn dropped_with(
     looks: impl Fn(u64) -> bool + Sync,
     change: impl Fn(&mut Settings),
 ) -> (Outcome, Vec<(u64, Vec<State>)>) {
-    let (scene, particles) = box_of_spheres(2000, 2.0);
+    let (scene, mut particles) = box_of_spheres(2000, 2.0);
+    for (k, p) in particles.iter_mut().enumerate() {
+        let size = 0.8 + 0.2 * (k as f64 * 0.618_034).fract();
+        p.radius *= size;
+        p.mass *= size * size * size;
+    }
     let material = ParticleMaterial {
         eps_n: 0.5,
         mu_s: 0.5,
