@@ -36,11 +36,7 @@ fn walls_fmt_fed(dir: &Path, args: &[&str], stdin: &[u8]) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    // walls-fmt may end before it reads its input (refusing to write /dev/stdin, say),
-    // and then the pipe is closed when it is written: the output says what it did.
-    if let Err(e) = child.stdin.take().unwrap().write_all(stdin) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
-    }
+    walls_test_support::cli::feed(&mut child, stdin);
     child.wait_with_output().unwrap()
 }
 

@@ -2,10 +2,27 @@
 //! binary: [`completion_scripts`] checks that `--completions SHELL` prints a script for
 //! every shell, [`bash_completes`] loads the bash one into a real bash and asks it to
 //! complete a word, and [`man_pages_in_step`] keeps `docs/man/` equal to the pages
-//! clap_mangen makes from the clap definitions (`UPDATE_DOCS=1` rewrites them).
+//! clap_mangen makes from the clap definitions (`UPDATE_DOCS=1` rewrites them); [`feed`]
+//! gives a spawned tool its standard input.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Child, Command};
+
+/// Writes `input` to `child`'s piped standard input and closes it. A tool may end
+/// before it reads its input (a usage error, say), and then the pipe is closed when it
+/// is written, sooner or later as the processes are scheduled: that is no error, and
+/// what the tool did is in its status and output. Any other failure to write panics.
+pub fn feed(child: &mut Child, input: &[u8]) {
+    let mut stdin = child.stdin.take().expect("standard input piped");
+    if let Err(e) = stdin.write_all(input) {
+        assert_eq!(
+            e.kind(),
+            std::io::ErrorKind::BrokenPipe,
+            "writing standard input: {e}"
+        );
+    }
+}
 
 /// The shells `--completions` takes.
 pub const SHELLS: [&str; 5] = ["bash", "zsh", "fish", "elvish", "powershell"];
