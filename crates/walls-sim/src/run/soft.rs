@@ -138,6 +138,12 @@ impl Load {
             torque: Vec3::zeros(),
         }
     }
+
+    /// Whether it holds the same numbers as `other`, bit for bit.
+    fn same_as(&self, other: &Load) -> bool {
+        let bits = |l: &Load| [l.force, l.torque].map(|v| v.map(f64::to_bits));
+        bits(self) == bits(other)
+    }
 }
 
 /// What one particle's wall contacts did in a step.
@@ -691,6 +697,21 @@ struct SoftStepper<'a> {
     /// when the particles are looked at. Marked in the drift; owed once the wall pass
     /// has run (`owing`).
     owed: Vec<bool>,
+    /// Whether each particle's load may hold more than gravity, when the last pair pass
+    /// marked them (`marked`): set there for both particles of every pair that touches
+    /// (pair forces are all that an owed particle's load takes: the wall pass does not
+    /// visit it), cleared where the drift sets an owed load back to gravity. An owed
+    /// load not marked is gravity bit for bit, so the drift works it out from the
+    /// particle's mass rather than reading it and writing it back: most particles touch
+    /// nothing in most steps, and at 10⁵ particles those 96 bytes a particle cost the
+    /// drop about a tenth of its time (docs/performance.md, "Fourteenth round"). A mark
+    /// left on a load already set back (by the wall pass or [`SoftStepper::settle`]) only
+    /// makes the drift read it.
+    loaded: Vec<bool>,
+    /// Whether the last pair pass marked the loads it added to ([`SoftStepper::loaded`]):
+    /// when at most one pair in eight particles touched. With more, as in a pile, the
+    /// drift reads every owed load, which costs less than testing each mark.
+    marked: bool,
     /// Whether the wall pass has run since the drift marked the kicks it may owe.
     owing: bool,
     /// The particles whose kicks are not owed, which the wall pass visits: each chunk's
@@ -876,6 +897,8 @@ impl<'a> SoftStepper<'a> {
             inverses,
             loads,
             owed: vec![false; n],
+            loaded: vec![false; n],
+            marked: false,
             owing: false,
             visited: (0..n.div_ceil(CHUNK))
                 .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
@@ -1022,6 +1045,7 @@ impl<'a> SoftStepper<'a> {
         let half = self.candidates.skin / 2.0;
         // The kicks owed by the last wall pass, if it owed any.
         let pay = std::mem::take(&mut self.owing).then_some(self.owed_kick);
+        let marked = self.marked;
         let forces = self.settings.forces;
         let PairList {
             built_at,
@@ -1046,6 +1070,7 @@ impl<'a> SoftStepper<'a> {
         let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {
             let DriftWork {
                 load,
+                loaded,
                 owed,
                 at,
                 sphere,
@@ -1070,8 +1095,19 @@ impl<'a> SoftStepper<'a> {
                 // The last step's closing kick, as the wall pass would have given it
                 // (`close_step`'s arithmetic, in its order, from the locals).
                 debug_assert_eq!(ACC_CRIT, kick.acc_crit > 0.0);
+                // The load, set back to gravity for the next step; when the loads were
+                // marked, one not marked is gravity already: worked out, not read.
+                let load = if !marked || std::mem::take(loaded) {
+                    let taken = *load;
+                    *load = Load::gravity(s, &g);
+                    taken
+                } else {
+                    let gravity = Load::gravity(s, &g);
+                    debug_assert!(gravity.same_as(load), "particle {i}: a load not marked");
+                    gravity
+                };
                 if ACC_CRIT {
-                    close_step(s, load, inverse, kick);
+                    close_step(s, &load, inverse, kick);
                     (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
                 } else {
                     acc = load.force * inverse.0;
@@ -1081,7 +1117,6 @@ impl<'a> SoftStepper<'a> {
                     s.acc = acc;
                     s.alpha = alpha;
                 }
-                *load = Load::gravity(s, &g);
             }
             vel += acc * (dt * opening);
             spin += alpha * (dt * opening);
@@ -1110,22 +1145,27 @@ impl<'a> SoftStepper<'a> {
         // no short cut), chunks in parallel for many particles.
         let chunk = |(
             c,
-            (((((states, loads), owed), (built_at, spheres)), (walled, inverses)), visited),
+            (
+                ((((states, (loads, loaded)), owed), (built_at, spheres)), (walled, inverses)),
+                visited,
+            ),
         ): DriftChunk| {
             let mut drifted = false;
             let first = c * CHUNK;
             visited.clear();
             let rest = loads
                 .iter_mut()
+                .zip(loaded)
                 .zip(owed)
                 .zip(built_at)
                 .zip(spheres)
                 .zip(walled.iter().zip(inverses));
-            for (k, (s, ((((load, owed), at), sphere), (&walled, &inverse)))) in
+            for (k, (s, (((((load, loaded), owed), at), sphere), (&walled, &inverse)))) in
                 states.iter_mut().zip(rest).enumerate()
             {
                 let work = DriftWork {
                     load,
+                    loaded,
                     owed: &mut *owed,
                     at,
                     sphere,
@@ -1144,7 +1184,11 @@ impl<'a> SoftStepper<'a> {
         let drifted = if self.parallel {
             self.states
                 .par_chunks_mut(CHUNK)
-                .zip(self.loads.par_chunks_mut(CHUNK))
+                .zip(
+                    self.loads
+                        .par_chunks_mut(CHUNK)
+                        .zip(self.loaded.par_chunks_mut(CHUNK)),
+                )
                 .zip(self.owed.par_chunks_mut(CHUNK))
                 .zip(
                     built_at
@@ -1164,7 +1208,11 @@ impl<'a> SoftStepper<'a> {
             // Every chunk, not stopping at the first that drifted far (as `any` would).
             let mut drifted = false;
             let chunked = (self.states.chunks_mut(CHUNK))
-                .zip(self.loads.chunks_mut(CHUNK))
+                .zip(
+                    self.loads
+                        .chunks_mut(CHUNK)
+                        .zip(self.loaded.chunks_mut(CHUNK)),
+                )
                 .zip(self.owed.chunks_mut(CHUNK))
                 .zip(built_at.chunks(CHUNK).zip(spheres.chunks_mut(CHUNK)))
                 .zip(self.walled.chunks(CHUNK).zip(self.inverses.chunks(CHUNK)))
@@ -1377,6 +1425,15 @@ impl<'a> SoftStepper<'a> {
                 from.push(*slot);
                 *slot = touching.len() as u32;
                 touching.push(k);
+            }
+        }
+        // The loads these forces go to, marked when few (`SoftStepper::loaded`).
+        self.marked = 8 * touching.len() <= self.states.len();
+        if self.marked {
+            for &k in touching.iter() {
+                let (i, j) = pairs[k as usize];
+                self.loaded[i as usize] = true;
+                self.loaded[j as usize] = true;
             }
         }
         let states = &self.states;
@@ -2184,7 +2241,10 @@ type DriftChunk<'a> = (
     (
         (
             (
-                ((&'a mut [State], &'a mut [Load]), &'a mut [bool]),
+                (
+                    (&'a mut [State], (&'a mut [Load], &'a mut [bool])),
+                    &'a mut [bool],
+                ),
                 (&'a [Vec3], &'a mut [[f64; 4]]),
             ),
             (&'a [bool], &'a [(f64, f64)]),
@@ -2196,6 +2256,8 @@ type DriftChunk<'a> = (
 /// What the drift works on for one particle besides its state.
 struct DriftWork<'a> {
     load: &'a mut Load,
+    /// Whether its load was marked as more than gravity ([`SoftStepper::loaded`]).
+    loaded: &'a mut bool,
     /// Whether its closing kick is owed ([`SoftStepper::owed`]).
     owed: &'a mut bool,
     /// Where it was when the candidate pairs were found.
