@@ -22,7 +22,8 @@
 //! (events and warnings, in particle order), `kick_assemblies` and `gather_aggregates`.
 //! The passes over all the particles are plain loops over chunks, in parallel only with
 //! many particles and more than one thread; what they carry per particle is kept small
-//! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere),
+//! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere,
+//! a byte marking a load that a pair touched),
 //! and a free particle clear of the walls gets its closing kick in the next drift
 //! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks
 //! still owed are given ([`SoftStepper::settle`]) when the particles are looked at
@@ -698,20 +699,21 @@ struct SoftStepper<'a> {
     /// has run (`owing`).
     owed: Vec<bool>,
     /// Whether each particle's load may hold more than gravity, when the last pair pass
-    /// marked them (`marked`): set there for both particles of every pair that touches
-    /// (pair forces are all that an owed particle's load takes: the wall pass does not
-    /// visit it), cleared where the drift sets an owed load back to gravity. An owed
-    /// load not marked is gravity bit for bit, so the drift works it out from the
-    /// particle's mass rather than reading it and writing it back: most particles touch
-    /// nothing in most steps, and at 10⁵ particles those 96 bytes a particle cost the
-    /// drop about a tenth of its time (docs/performance.md, "Fourteenth round"). A mark
-    /// left on a load already set back (by the wall pass or [`SoftStepper::settle`]) only
-    /// makes the drift read it.
+    /// marked them (`marks_valid`): set there for both particles of every pair that
+    /// touches (pair forces are all that an owed particle's load takes: the wall pass
+    /// does not visit it), cleared where the drift, the marks valid, sets an owed load
+    /// back to gravity. An owed load not marked is then gravity bit for bit, so the
+    /// drift works it out from the particle's mass rather than reading it and writing
+    /// it back: most particles touch nothing in most steps, and at 10⁵ particles those
+    /// 96 bytes a particle were about a tenth of the time of the drop's first 2,000
+    /// steps (docs/performance.md, "Fourteenth round"). A mark left on a load already
+    /// set back (by the wall pass, by [`SoftStepper::settle`], or by the drift while
+    /// the marks were not valid) only makes the drift read it.
     loaded: Vec<bool>,
     /// Whether the last pair pass marked the loads it added to ([`SoftStepper::loaded`]):
     /// when at most one pair in eight particles touched. With more, as in a pile, the
     /// drift reads every owed load, which costs less than testing each mark.
-    marked: bool,
+    marks_valid: bool,
     /// Whether the wall pass has run since the drift marked the kicks it may owe.
     owing: bool,
     /// The particles whose kicks are not owed, which the wall pass visits: each chunk's
@@ -898,7 +900,7 @@ impl<'a> SoftStepper<'a> {
             loads,
             owed: vec![false; n],
             loaded: vec![false; n],
-            marked: false,
+            marks_valid: false,
             owing: false,
             visited: (0..n.div_ceil(CHUNK))
                 .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
@@ -1045,7 +1047,7 @@ impl<'a> SoftStepper<'a> {
         let half = self.candidates.skin / 2.0;
         // The kicks owed by the last wall pass, if it owed any.
         let pay = std::mem::take(&mut self.owing).then_some(self.owed_kick);
-        let marked = self.marked;
+        let marks_valid = self.marks_valid;
         let forces = self.settings.forces;
         let PairList {
             built_at,
@@ -1095,9 +1097,9 @@ impl<'a> SoftStepper<'a> {
                 // The last step's closing kick, as the wall pass would have given it
                 // (`close_step`'s arithmetic, in its order, from the locals).
                 debug_assert_eq!(ACC_CRIT, kick.acc_crit > 0.0);
-                // The load, set back to gravity for the next step; when the loads were
-                // marked, one not marked is gravity already: worked out, not read.
-                let load = if !marked || std::mem::take(loaded) {
+                // The load paid, set back to gravity for the next step; when the marks
+                // are valid, one not marked is gravity already: worked out, not read.
+                let paid = if !marks_valid || std::mem::take(loaded) {
                     let taken = *load;
                     *load = Load::gravity(s, &g);
                     taken
@@ -1107,11 +1109,11 @@ impl<'a> SoftStepper<'a> {
                     gravity
                 };
                 if ACC_CRIT {
-                    close_step(s, &load, inverse, kick);
+                    close_step(s, &paid, inverse, kick);
                     (vel, spin, acc, alpha) = (s.particle.vel, s.particle.spin, s.acc, s.alpha);
                 } else {
-                    acc = load.force * inverse.0;
-                    alpha = load.torque * inverse.1;
+                    acc = paid.force * inverse.0;
+                    alpha = paid.torque * inverse.1;
                     vel += acc * (dt * kick.fraction);
                     spin += alpha * (dt * kick.fraction);
                     s.acc = acc;
@@ -1428,8 +1430,8 @@ impl<'a> SoftStepper<'a> {
             }
         }
         // The loads these forces go to, marked when few (`SoftStepper::loaded`).
-        self.marked = 8 * touching.len() <= self.states.len();
-        if self.marked {
+        self.marks_valid = 8 * touching.len() <= self.states.len();
+        if self.marks_valid {
             for &k in touching.iter() {
                 let (i, j) = pairs[k as usize];
                 self.loaded[i as usize] = true;
@@ -2232,8 +2234,8 @@ impl PairList {
     }
 }
 
-/// A chunk of the particles as the drift takes it: its number, their states, loads and
-/// owed kicks, where the candidate pairs were found and their spheres, whether they have
+/// A chunk of the particles as the drift takes it: its number, their states, loads, the
+/// loads' marks and owed kicks, where the candidate pairs were found and their spheres, whether they have
 /// a wall contact open and their 1/m and 1/I, and the list of those the wall pass is to
 /// visit (within the chunk).
 type DriftChunk<'a> = (
@@ -2256,7 +2258,7 @@ type DriftChunk<'a> = (
 /// What the drift works on for one particle besides its state.
 struct DriftWork<'a> {
     load: &'a mut Load,
-    /// Whether its load was marked as more than gravity ([`SoftStepper::loaded`]).
+    /// Whether its load may hold more than gravity ([`SoftStepper::loaded`]).
     loaded: &'a mut bool,
     /// Whether its closing kick is owed ([`SoftStepper::owed`]).
     owed: &'a mut bool,
