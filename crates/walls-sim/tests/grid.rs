@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::collections::BTreeSet;
-use walls_sim::broad::grid::CellGrid;
+use walls_sim::broad::grid::{CellGrid, GridScratch};
 
 type Vec3 = Vector3<f64>;
 
@@ -158,6 +158,27 @@ proptest! {
         check_grid(&grid, &sp.p, &sp.r)?;
         let zeros = vec![0.0; sp.p.len()];
         prop_assert_eq!(visited(&CellGrid::with_margin(&sp.p, &sp.r, &zeros)), visited(&grid));
+    }
+
+    #[test]
+    fn a_grid_filled_again_is_the_grid_made_anew(a in spheres(), b in spheres()) {
+        // One grid and one scratch, filled with one set, another, and the first again
+        // (each in the memory the last left), as a candidate list's grid is.
+        let (mut grid, mut scratch) = (CellGrid::default(), GridScratch::default());
+        for sp in [&a, &b, &a] {
+            let s = swollen(&sp.r, &sp.m);
+            grid.refill(sp.p.len(), |i| Some((sp.p[i], s[i])), &mut scratch);
+            let fresh = CellGrid::with_margin(&sp.p, &sp.r, &sp.m);
+            prop_assert_eq!(visited(&grid), visited(&fresh));
+            prop_assert_eq!(grid.cell_count(), fresh.cell_count());
+            check_grid(&grid, &sp.p, &s)?;
+            // Into lists that held something: emptied first.
+            let (mut one, mut par) = (vec![(7, 7)], vec![(7, 7); 300]);
+            grid.pairs_into(&mut one);
+            grid.par_pairs_into(&mut par);
+            prop_assert_eq!(&one, &fresh.pairs());
+            prop_assert_eq!(&par, &fresh.pairs());
+        }
     }
 
     #[test]
@@ -372,4 +393,36 @@ fn non_finite_input_is_left_out() {
     let grid = CellGrid::new(&[v(nan, nan, nan); 5], &[1.0; 5]);
     assert_eq!(grid.cell_count(), 0);
     assert!(grid.pairs().is_empty());
+}
+
+#[test]
+fn a_grid_filled_again_goes_between_packed_wide_and_no_keys() {
+    // Close together (packed keys); a pair 10⁹ away from the rest (keys spanning more
+    // than 2²¹ cells: wide); radii of zero (nothing can overlap: no cells); close again.
+    let near = [v(0.0, 0.0, 0.0), v(1.5, 0.0, 0.0), v(0.5, 0.5, 0.0)];
+    let far = [v(0.0, 0.0, 0.0), v(1e9, 0.0, 0.0), v(1e9 + 0.5, 0.0, 0.0)];
+    let all: &[(u32, u32)] = &[(0, 1), (0, 2), (1, 2)];
+    let scenes = [
+        (&near, 1.0, all),
+        (&far, 0.3, &[(1, 2)][..]),
+        (&near, 0.0, &[][..]),
+        (&near, 1.0, all),
+    ];
+    let (mut grid, mut scratch) = (CellGrid::default(), GridScratch::default());
+    for (p, r, expected) in scenes {
+        grid.refill(p.len(), |i| Some((p[i], r)), &mut scratch);
+        let mut pairs = grid.pairs();
+        pairs.sort_unstable();
+        assert_eq!(pairs, expected, "radius {r}");
+        let fresh = CellGrid::new(p, &vec![r; p.len()]);
+        assert_eq!(grid.pairs(), fresh.pairs());
+        assert_eq!(grid.cell_count(), fresh.cell_count());
+        assert_eq!(grid.cell_size(), fresh.cell_size());
+        for i in 0..p.len() {
+            let (mut mine, mut theirs) = (Vec::new(), Vec::new());
+            grid.for_each_neighbour(i, |j| mine.push(j));
+            fresh.for_each_neighbour(i, |j| theirs.push(j));
+            assert_eq!(mine, theirs, "neighbours of {i}");
+        }
+    }
 }

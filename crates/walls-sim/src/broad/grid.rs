@@ -127,7 +127,8 @@ enum Keys {
 }
 
 /// A uniform grid of cubic cells over a set of spheres, for finding the pairs whose
-/// swollen spheres overlap (see the [module documentation](self)).
+/// swollen spheres overlap (see the [module documentation](self)). The default grid holds
+/// nothing (no cells).
 #[derive(Debug, Clone)]
 pub struct CellGrid {
     /// Cell edge h.
@@ -142,6 +143,28 @@ pub struct CellGrid {
     starts: Vec<u32>,
     /// Each particle's slot, or [`NONE`].
     slot_of: Vec<u32>,
+}
+
+impl Default for CellGrid {
+    fn default() -> Self {
+        CellGrid {
+            h: 1.0,
+            inv_h: 1.0,
+            slots: Vec::new(),
+            keys: Keys::Wide(Vec::new()),
+            starts: vec![0],
+            slot_of: Vec::new(),
+        }
+    }
+}
+
+/// What building a [`CellGrid`] works in besides the grid (the particles binned, in index
+/// order, and their keys to sort), kept between builds by whoever builds one again and
+/// again ([`CellGrid::refill`]).
+#[derive(Debug, Default)]
+pub struct GridScratch {
+    kept: Vec<Slot>,
+    order: Vec<(Packed, u32)>,
 }
 
 impl CellGrid {
@@ -175,9 +198,28 @@ impl CellGrid {
     ///
     /// # Panics
     /// If `len` is `u32::MAX` or more.
-    pub fn from_fn(len: usize, mut sphere: impl FnMut(usize) -> Option<(Vec3, f64)>) -> Self {
+    pub fn from_fn(len: usize, sphere: impl FnMut(usize) -> Option<(Vec3, f64)>) -> Self {
+        let mut grid = CellGrid::default();
+        grid.refill(len, sphere, &mut GridScratch::default());
+        grid
+    }
+
+    /// [`CellGrid::from_fn`] in place: the same grid, in the arrays this one and
+    /// `scratch` already hold, so that a grid built again and again (a candidate list's)
+    /// does not ask for its memory anew each time.
+    ///
+    /// # Panics
+    /// If `len` is `u32::MAX` or more.
+    pub fn refill(
+        &mut self,
+        len: usize,
+        mut sphere: impl FnMut(usize) -> Option<(Vec3, f64)>,
+        scratch: &mut GridScratch,
+    ) {
         assert!(len < NONE as usize, "at most 2³² − 2 particles");
-        let mut kept: Vec<Slot> = Vec::with_capacity(len);
+        let kept = &mut scratch.kept;
+        kept.clear();
+        kept.reserve(len);
         for i in 0..len {
             let Some((p, s)) = sphere(i) else { continue };
             if p.iter().all(|x| x.is_finite()) && s.is_finite() && s >= 0.0 {
@@ -188,41 +230,60 @@ impl CellGrid {
         let extent = kept.iter().map(|k| k.p.amax()).fold(0.0, f64::max);
         let h =
             ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
-        let mut grid = CellGrid {
-            h,
-            inv_h: 1.0 / h,
-            slots: Vec::new(),
-            keys: Keys::Wide(Vec::new()),
-            starts: vec![0],
-            slot_of: vec![NONE; len],
+        self.h = h;
+        self.inv_h = 1.0 / h;
+        self.slots.clear();
+        self.starts.clear();
+        self.starts.push(0);
+        self.slot_of.clear();
+        self.slot_of.resize(len, NONE);
+        // The keys' array, whichever kind it held, kept for the kind needed now.
+        let mut packed = match std::mem::replace(&mut self.keys, Keys::Wide(Vec::new())) {
+            Keys::Packed(keys, _) => keys,
+            Keys::Wide(_) => Vec::new(),
         };
+        packed.clear();
         if s_max == 0.0 {
             // Nothing overlaps: distance² < 0 never holds.
-            return grid;
+            return;
         }
-        let wide: Vec<[i64; 3]> = kept.iter().map(|slot| grid.key(&slot.p)).collect();
-        let lo = wide
-            .iter()
-            .fold([i64::MAX; 3], |m, k| [0, 1, 2].map(|d| m[d].min(k[d])));
-        let hi = wide
-            .iter()
-            .fold([i64::MIN; 3], |m, k| [0, 1, 2].map(|d| m[d].max(k[d])));
+        let (lo, hi) = kept.iter().map(|slot| self.key(&slot.p)).fold(
+            ([i64::MAX; 3], [i64::MIN; 3]),
+            |(lo, hi), k| {
+                (
+                    [0, 1, 2].map(|d| lo[d].min(k[d])),
+                    [0, 1, 2].map(|d| hi[d].max(k[d])),
+                )
+            },
+        );
         // `kept` is in index order, so sorting (key, position in `kept`) sorts by key
         // then index.
-        grid.keys = if (0..3).all(|d| hi[d] - lo[d] < (1 << BITS) - 2) {
-            let order = wide.iter().zip(0..).map(|(k, n)| (Packed::new(*k, lo), n));
-            Keys::Packed(grid.bin(&kept, order.collect()), lo)
+        self.keys = if (0..3).all(|d| hi[d] - lo[d] < (1 << BITS) - 2) {
+            let order = &mut scratch.order;
+            order.clear();
+            order.extend(
+                kept.iter()
+                    .zip(0..)
+                    .map(|(slot, n)| (Packed::new(self.key(&slot.p), lo), n)),
+            );
+            self.bin(kept, order, &mut packed);
+            Keys::Packed(packed, lo)
         } else {
-            Keys::Wide(grid.bin(&kept, wide.into_iter().zip(0..).collect()))
+            let mut order: Vec<_> = kept
+                .iter()
+                .zip(0..)
+                .map(|(slot, n)| (self.key(&slot.p), n))
+                .collect();
+            let mut keys = Vec::new();
+            self.bin(kept, &mut order, &mut keys);
+            Keys::Wide(keys)
         };
-        grid
     }
 
-    /// Sorts `order` (key, position in `kept`) and fills the slots and cells from it;
-    /// returns the cells' keys.
-    fn bin<K: Key>(&mut self, kept: &[Slot], mut order: Vec<(K, u32)>) -> Vec<K> {
+    /// Sorts `order` (key, position in `kept`) and fills the slots and cells from it, and
+    /// `keys` (empty) with the cells' keys.
+    fn bin<K: Key>(&mut self, kept: &[Slot], order: &mut [(K, u32)], keys: &mut Vec<K>) {
         order.sort_unstable();
-        let mut keys: Vec<K> = Vec::new();
         self.slots.reserve_exact(order.len());
         for (n, &(key, k)) in order.iter().enumerate() {
             if keys.last() != Some(&key) {
@@ -236,7 +297,6 @@ impl CellGrid {
             self.slots.push(slot);
         }
         self.starts.push(order.len() as u32);
-        keys
     }
 
     /// The cell edge: the largest swollen diameter, a little more (module documentation).
@@ -276,13 +336,27 @@ impl CellGrid {
     /// The pairs of [`CellGrid::for_each_pair`], in its order, as (i, j) with i < j.
     pub fn pairs(&self) -> Vec<(u32, u32)> {
         let mut pairs = Vec::new();
-        self.for_each_pair(|i, j| pairs.push((i as u32, j as u32)));
+        self.pairs_into(&mut pairs);
         pairs
+    }
+
+    /// [`CellGrid::pairs`] into `pairs` (emptied first), in the memory it already holds.
+    pub fn pairs_into(&self, pairs: &mut Vec<(u32, u32)>) {
+        pairs.clear();
+        self.for_each_pair(|i, j| pairs.push((i as u32, j as u32)));
     }
 
     /// [`CellGrid::pairs`], the same list in the same order, found by ranges of cells in
     /// parallel.
     pub fn par_pairs(&self) -> Vec<(u32, u32)> {
+        let mut pairs = Vec::new();
+        self.par_pairs_into(&mut pairs);
+        pairs
+    }
+
+    /// [`CellGrid::par_pairs`] into `pairs` (emptied first), in the memory it already
+    /// holds.
+    pub fn par_pairs_into(&self, pairs: &mut Vec<(u32, u32)>) {
         let cells = self.cell_count();
         let size = cells.div_ceil(PAIR_RANGES).max(1);
         let parts: Vec<Vec<(u32, u32)>> = (0..cells.div_ceil(size))
@@ -294,7 +368,8 @@ impl CellGrid {
                 pairs
             })
             .collect();
-        parts.concat()
+        pairs.clear();
+        pairs.extend(parts.into_iter().flatten());
     }
 
     /// Calls `f(j)` once for each particle j ≠ i whose swollen sphere overlaps particle

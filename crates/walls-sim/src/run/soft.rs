@@ -38,7 +38,7 @@ use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
     Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy, in_parallel,
 };
-use crate::broad::grid::CellGrid;
+use crate::broad::grid::{CellGrid, GridScratch};
 use crate::broad::wall_index::WallIndex;
 use crate::contact::lanes::{self, LANES};
 use crate::contact::ssdem::{
@@ -2060,6 +2060,10 @@ struct PairList {
     bounds: Vec<f64>,
     /// What each chunk of the list found this step (kept to save allocating).
     scans: Vec<Scan>,
+    /// The cell grid the list was found with, and what building it works in: kept for
+    /// the next build, which fills the same memory.
+    grid: CellGrid,
+    scratch: GridScratch,
     built_at: Vec<Vec3>,
     skin: f64,
     /// Whether a particle drifted this step has moved more than half the skin (worked
@@ -2094,6 +2098,8 @@ impl PairList {
             from: Vec::new(),
             bounds: Vec::new(),
             scans: Vec::new(),
+            grid: CellGrid::default(),
+            scratch: GridScratch::default(),
             built_at: Vec::new(),
             skin: 0.4 * largest,
             drifted: false,
@@ -2126,16 +2132,17 @@ impl PairList {
         if !self.wanted {
             return;
         }
-        let grid = CellGrid::from_fn(states.len(), |i| {
-            let s = &states[i];
-            s.alive
-                .then_some((s.particle.pos, s.particle.radius + half))
-        });
-        let pairs = if in_parallel(states.len()) {
-            grid.par_pairs()
-        } else {
-            grid.pairs()
-        };
+        // The grid, the pairs and their slots in the memory they held at the last build:
+        // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
+        self.grid.refill(
+            states.len(),
+            |i| {
+                let s = &states[i];
+                s.alive
+                    .then_some((s.particle.pos, s.particle.radius + half))
+            },
+            &mut self.scratch,
+        );
         // The open contacts go with their pairs into the new list (every pair that
         // touches is in it); any other ends. They are found by their first particle:
         // its open contacts, (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
@@ -2157,30 +2164,32 @@ impl PairList {
             open[next[i as usize] as usize] = (j, slot);
             next[i as usize] += 1;
         }
+        if in_parallel(states.len()) {
+            self.grid.par_pairs_into(&mut self.pairs);
+        } else {
+            self.grid.pairs_into(&mut self.pairs);
+        }
         // Their records are laid out again in the new list's order, which the force
         // pass follows: one after the other in memory rather than where each happened
         // to open. The others are dropped.
         let mut records = Vec::with_capacity(open.len());
-        let slots: Vec<u32> = pairs
-            .iter()
-            .map(|&(i, j)| {
-                let of_i = &open[starts[i as usize] as usize..starts[i as usize + 1] as usize];
-                match of_i.iter().find(|(second, _)| *second == j) {
-                    Some(&(_, slot)) => {
-                        records.push(self.contacts.records[slot as usize]);
-                        (records.len() - 1) as u32
-                    }
-                    None => NO_CONTACT,
+        let last = &self.contacts.records;
+        self.slots.clear();
+        self.slots.extend(self.pairs.iter().map(|&(i, j)| {
+            let of_i = &open[starts[i as usize] as usize..starts[i as usize + 1] as usize];
+            match of_i.iter().find(|(second, _)| *second == j) {
+                Some(&(_, slot)) => {
+                    records.push(last[slot as usize]);
+                    (records.len() - 1) as u32
                 }
-            })
-            .collect();
+                None => NO_CONTACT,
+            }
+        }));
         self.contacts = PairContacts {
             records,
             free: Vec::new(),
             next: std::mem::take(&mut self.contacts.next),
         };
-        self.slots = slots;
-        self.pairs = pairs;
     }
 
     /// A particle's centre and radius, as the pairs' first test reads them.
