@@ -20,6 +20,7 @@ pub mod defaults;
 mod hard;
 pub mod optional;
 pub mod plan;
+mod pool;
 mod soft;
 mod stability;
 pub mod warning;
@@ -248,20 +249,6 @@ fn in_parallel(n: usize) -> bool {
     n >= PARALLEL_FROM && rayon::current_num_threads() > 1
 }
 
-/// `body` run on a thread of rayon's pool when `parallel`, else on this one. A step's
-/// passes over the particles are each split between the pool's threads: from a thread
-/// outside the pool, each would be handed to the pool and this thread put to sleep until
-/// the pool was done, and woken (six times a step, or more); from one of the pool's,
-/// each is split there and then, and the thread takes its share (docs/performance.md,
-/// "Eighth round"; `tests/pool.rs`).
-fn on_the_pool<R: Send>(parallel: bool, body: impl FnOnce() -> R + Send) -> R {
-    if parallel {
-        rayon::scope(|_| body())
-    } else {
-        body()
-    }
-}
-
 /// Steps per pair contact in the default timestep π·√(m/(2k_n))/N: at 100 the rebound
 /// is within 1 % of ε for ε from 0.1 to 0.95 (docs/evaluator.md).
 pub const STEPS_PER_CONTACT: f64 = 100.0;
@@ -483,7 +470,7 @@ fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
 /// from [`Settings::start_step`]), the time, and the step's [`Snapshot`] of the particles
 /// and the reactive walls' assemblies. It is `Send`: a run on several threads steps on
-/// one of rayon's, and calls it there (`on_the_pool`).
+/// one of rayon's, and calls it there (`pool::on_the_pool`).
 pub type Observer<'a> = &'a mut (dyn FnMut(u64, f64, &mut dyn Snapshot) + Send);
 
 /// Whether a run is asked to stop after a step ([`run_watched`]); `Sync` for the same
@@ -581,8 +568,17 @@ pub fn run_watched(
         .filter(|(_, s)| s.particle.color < 0 && s.stuck_to.is_none())
         .map(|(i, _)| i)
         .collect();
-    let mut outcome = on_the_pool(in_parallel(states.len()), || match settings.method() {
-        ContactModel::Ssdem => soft::run(walls, states, settings, &plan, observe, interrupted),
+    let parallel = in_parallel(states.len());
+    let mut outcome = pool::on_the_pool(parallel, |helpers| match settings.method() {
+        ContactModel::Ssdem => soft::run(
+            walls,
+            states,
+            settings,
+            &plan,
+            observe,
+            interrupted,
+            helpers,
+        ),
         ContactModel::Hsdem => hard::run(walls, states, settings, &plan, observe, interrupted),
     });
     // Where pkdgrav would abort, the run stopped.

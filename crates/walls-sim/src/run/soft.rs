@@ -34,6 +34,7 @@
 //! [`crate::dynamics::aggregate`]) run only with [`Integrator::Pkdgrav`]; their members
 //! are placed by their aggregate, not kicked or drifted, and hand it their loads.
 
+use super::pool::Helpers;
 use super::{
     Event, EventKind, Integrator, Materials, Observer, Origins, Outcome, OverlapWarnings,
     Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy, in_parallel,
@@ -1972,6 +1973,7 @@ pub(super) fn run(
     plan: &Plan,
     observe: Observer,
     interrupted: super::Interrupted,
+    helpers: Option<&Helpers>,
 ) -> Outcome {
     let mut run = SoftStepper::new(scene, states, settings, plan);
     if run.halted {
@@ -1981,6 +1983,9 @@ pub(super) fn run(
         return run.outcome(None);
     }
     while run.running() {
+        if let Some(helpers) = helpers {
+            helpers.keep();
+        }
         if run.step() == Flow::Stop {
             break;
         }
