@@ -1,7 +1,8 @@
-//! Runs inside a parallel loop over runs, on one pool: each parallel run keeps the pool's
-//! other threads at hand with helpers that block the stacks they run on, and those
-//! threads also carry the other runs. The runs must all end, each with the outcome it
-//! has alone on one thread. A test binary of its own: it builds its own pools.
+//! Parallel runs on pools shared with other work. Each parallel run keeps the pool's
+//! other threads at hand with helpers, jobs that block the stacks they run on: runs in a
+//! parallel loop over runs must all end, each with the outcome it has alone on one
+//! thread, and a run must end while another thread of its pool is blocked outside
+//! rayon. A test binary of its own: it builds its own pools.
 
 use rayon::prelude::*;
 use std::sync::mpsc;
@@ -10,7 +11,7 @@ use walls_sim::run::{Outcome, Settings, defaults, run};
 use walls_test_support::scenes::box_of_spheres;
 
 /// `n` spheres dropped into the box at `speed` for `steps` steps, on the current pool.
-fn drop(n: usize, speed: f64, steps: u32) -> Outcome {
+fn drop_run(n: usize, speed: f64, steps: u32) -> Outcome {
     let (scene, particles) = box_of_spheres(n, speed);
     let dt = 5e-6;
     let settings = Settings::new(
@@ -38,7 +39,12 @@ fn runs_in_a_parallel_loop_over_runs_all_end_with_their_own_outcomes() {
             .num_threads(1)
             .build()
             .expect("a pool");
-        one.install(|| speeds.iter().map(|&s| state(&drop(2000, s, 200))).collect())
+        one.install(|| {
+            speeds
+                .iter()
+                .map(|&s| state(&drop_run(2000, s, 200)))
+                .collect()
+        })
     };
     let (sent, got) = mpsc::channel();
     std::thread::spawn(move || {
@@ -49,7 +55,7 @@ fn runs_in_a_parallel_loop_over_runs_all_end_with_their_own_outcomes() {
         let nested: Vec<_> = two.install(|| {
             speeds
                 .par_iter()
-                .map(|&s| state(&drop(2000, s, 200)))
+                .map(|&s| state(&drop_run(2000, s, 200)))
                 .collect()
         });
         sent.send(nested).expect("the test waits");
@@ -58,4 +64,37 @@ fn runs_in_a_parallel_loop_over_runs_all_end_with_their_own_outcomes() {
         .recv_timeout(Duration::from_secs(120))
         .expect("the runs in a parallel loop ended within two minutes");
     assert!(nested == alone, "the same outcomes as alone on one thread");
+}
+
+#[test]
+fn a_run_ends_while_another_thread_of_its_pool_is_blocked_outside_rayon() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(3)
+        .build()
+        .expect("a pool");
+    let (started, blocked) = mpsc::channel();
+    let (release, held) = mpsc::channel::<()>();
+    pool.spawn(move || {
+        started.send(()).expect("the test waits");
+        // Blocked until the run has ended (or the test gives up).
+        held.recv_timeout(Duration::from_secs(150)).ok();
+    });
+    blocked.recv().expect("one thread blocked");
+    let alone = {
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .expect("a pool");
+        one.install(|| state(&drop_run(2000, 1.0, 200)))
+    };
+    let (sent, got) = mpsc::channel();
+    std::thread::spawn(move || {
+        sent.send(pool.install(|| state(&drop_run(2000, 1.0, 200))))
+            .expect("the test waits");
+    });
+    let out = got
+        .recv_timeout(Duration::from_secs(120))
+        .expect("the run ended with a thread of its pool blocked");
+    release.send(()).expect("the blocked thread waits");
+    assert!(out == alone, "the same outcome as alone on one thread");
 }

@@ -12,15 +12,22 @@
 //!
 //! A helper ends when the run does, or after [`IDLE`] with nothing to do (a serial part
 //! of the run, such as the candidate list's rebuild, or the pool busy elsewhere), and the
-//! stepper asks for helpers again before its next step ([`Helpers::keep`]). The bound
-//! matters beyond the threads' time: a helper blocks the stack of the thread it runs on.
-//! With runs nested in a parallel loop over runs on one pool, a helper that waited only
-//! for its own run's end could sit above another run on its thread while that run's
-//! helper sat above the first on the other: each waiting for the other's run. With the
-//! bound, a helper with nothing to take ends, and the runs go on (`tests/pool_nested.rs`
-//! runs eight such runs; it did not hang without the bound either, so the bound rests
-//! on this reasoning, not on a failure seen).
+//! stepper asks for helpers again before its next step ([`Helpers::keep`]). Helpers are
+//! jobs of the run's scope that any free thread takes, not one sent to each thread: a
+//! thread of the pool blocked outside rayon does not hold the run, and a helper no other
+//! thread has taken is taken by the home thread when it waits, which ends it at once, so
+//! the stepper asks again. A thread already helping takes no second helper.
+//!
+//! The bound matters beyond the threads' time: a helper blocks the stack of the thread it
+//! runs on. With runs nested in a parallel loop over runs on one pool, a helper that
+//! waited only for its own run's end could sit above another run on its thread while
+//! that run's helper sat above the first on the other: each waiting for the other's run.
+//! With the bound, a helper with nothing to take ends, and the runs go on
+//! (`tests/pool_nested.rs`; it did not hang without the bound either, so the bound rests
+//! on this reasoning, not on a failure seen). A run nested under another's helper still
+//! waits while that helper finds work.
 
+use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
@@ -41,13 +48,14 @@ pub(super) struct Helpers<'a, 'scope> {
 struct Shared {
     /// Set when the run ends, by a return or a panic.
     done: AtomicBool,
-    /// Helpers asked for and not yet ended.
+    /// Helpers asked for and not yet ended (those taken by the home thread, or by a
+    /// thread already helping, end at once).
     pending: AtomicUsize,
 }
 
 impl Helpers<'_, '_> {
-    /// Asks each of the pool's other threads for a helper, unless they have ones
-    /// already (asked for and not ended).
+    /// Asks for a helper for each of the pool's other threads, unless some asked for
+    /// before have not ended.
     pub(super) fn keep(&self) {
         let others = rayon::current_num_threads().saturating_sub(1);
         if others == 0 || self.shared.pending.load(Ordering::Acquire) > 0 {
@@ -55,12 +63,22 @@ impl Helpers<'_, '_> {
         }
         self.shared.pending.store(others, Ordering::Release);
         let (home, shared) = (self.home, self.shared);
-        self.scope.spawn_broadcast(move |_, thread| {
-            if Some(thread.index()) != home {
-                help(shared);
-            }
-        });
+        for _ in 0..others {
+            self.scope.spawn(move |_| {
+                if rayon::current_thread_index() != home && !HELPING.replace(true) {
+                    help(shared);
+                    HELPING.set(false);
+                }
+                shared.pending.fetch_sub(1, Ordering::AcqRel);
+            });
+        }
     }
+}
+
+thread_local! {
+    /// Whether this thread is running a helper (of any run): a helper that took another
+    /// through `yield_now` would only sit on top of it.
+    static HELPING: Cell<bool> = const { Cell::new(false) };
 }
 
 /// Takes the pool's jobs as they come until the run ends or nothing has come for
@@ -76,7 +94,6 @@ fn help(shared: &Shared) {
             std::hint::spin_loop();
         }
     }
-    shared.pending.fetch_sub(1, Ordering::AcqRel);
 }
 
 /// Sets the run's end when dropped, so that its helpers stop even if it panics.
