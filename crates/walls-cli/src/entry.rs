@@ -9,7 +9,7 @@
 //! Nothing here ends the process; what the commands share can, as the binaries expect:
 //! a standard output closed by its reader ends it with status 0, one that fails with 2
 //! ([`crate::console`]), and a signal while `walls-sim run` runs, or while a file is
-//! written through a named temporary file, with 128 + the signal ([`crate::interrupt`]).
+//! written through a named temporary file, with 128 + the signal ([`walls_output::interrupt`]).
 
 use crate::commands::{self, fmt::FmtArgs, lint::LintArgs, mesh::MeshArgs, sim::SimArgs};
 use clap::Parser;

@@ -346,10 +346,15 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
 fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out");
-    std::fs::create_dir(&out).unwrap();
-    // Every write to walls.csv fails, as on a full disk.
-    std::os::unix::fs::symlink("/dev/full", out.join("walls.csv")).unwrap();
-    let mut child = long_run(dir.path())
+    // The disk fills at 200 KiB a file (a file-size limit; the signal it would send is
+    // ignored, so that writes fail with EFBIG as a full disk's fail with ENOSPC).
+    let run = long_run(dir.path());
+    let args: Vec<_> = run.get_args().collect();
+    let mut child = Command::new("bash")
+        .current_dir(dir.path())
+        .args(["-c", "trap '' XFSZ; ulimit -f 200; exec \"$0\" \"$@\""])
+        .arg(run.get_program())
+        .args(args)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -362,12 +367,24 @@ fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
     }
     let stderr = rest_of(child.stderr.take());
     assert_eq!(child.wait().unwrap().code(), Some(2), "{stderr}");
+    // The message names the step being written, the file that failed, where the outputs
+    // end and every file.
+    let particles = out.join("particles.csv");
+    let rows = whole_rows(&particles, 15);
+    let text = std::fs::read_to_string(&particles).unwrap();
+    let last = text.lines().last().unwrap().split(',').next().unwrap();
+    let failed = last.parse::<u64>().unwrap() + 1;
     assert!(
-        stderr.contains("cannot write the outputs to out: No space left on device")
-            && stderr.contains("they end at their last whole row"),
+        stderr.contains(&format!(
+            "error: at output step {failed} (t = 0.{failed:04}): cannot write out/particles.csv: File too large"
+        )) && stderr.contains(&format!(
+            "the outputs in out end at output step {last} (t = "
+        )) && stderr.contains("out/particles.csv, out/walls.csv"),
         "{stderr}"
     );
-    assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
+    // Both files end at the same whole output step: two particles and one wall a step.
+    assert_eq!(rows - 1, 2 * (whole_rows(&out.join("walls.csv"), 6) - 1));
+    assert!(rows > 100);
 }
 
 #[test]

@@ -15,7 +15,9 @@ use std::os::unix::fs::{MetadataExt, PermissionsExt};
 use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-use walls_cli::commands::fmt::safe_write::{self, Refusal, Stamp, Temporary, WriteError, check};
+use walls_cli::input::MAX_FILE_BYTES;
+use walls_output::replace::{self, check};
+use walls_output::{FileKind, Refusal, Stamp, Temporary, WriteError};
 
 const MESSY: &str = "WALL TYPE plane,origin=0,0,1\n";
 const CLEAN: &str = "wall type plane\n  origin 0 0 1\n";
@@ -112,7 +114,12 @@ fn the_decision_whoever_runs_it() {
         mode: 0o010644,
         ..own
     };
-    assert_eq!(check(&fifo, &fifo, true, 1000), Err(Refusal::NotRegular));
+    assert_eq!(
+        check(&fifo, &fifo, true, 1000),
+        Err(Refusal::NotRegular {
+            kind: FileKind::Fifo
+        })
+    );
     // Any change of identity, size or time since the read, down to a nanosecond.
     for now in [
         Stamp { dev: 9, ..own },
@@ -200,7 +207,7 @@ fn a_pipe_is_read_but_not_replaced() {
         (
             None,
             2,
-            "walls-fmt: error: not writing /dev/stdin: it is not a regular file\n\
+            "walls-fmt: error: not writing /dev/stdin: it is a FIFO (named pipe), not a regular file\n\
              0 files reformatted, 0 unchanged, 1 not written\n",
         ),
         (
@@ -240,7 +247,7 @@ fn an_edit_saved_after_the_read_is_kept() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("a.walls");
     write(&path, MESSY, 0o644);
-    let (original, bytes) = safe_write::read(&path).unwrap();
+    let (original, bytes) = replace::read(&path, MAX_FILE_BYTES).unwrap();
     assert_eq!(bytes, MESSY.as_bytes());
     // The user appends a line and saves.
     let edited = format!("{MESSY}wall type disk\n");
@@ -264,7 +271,7 @@ fn an_edit_saved_by_renaming_after_the_read_is_kept() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("a.walls");
     write(&path, MESSY, 0o644);
-    let (original, _) = safe_write::read(&path).unwrap();
+    let (original, _) = replace::read(&path, MAX_FILE_BYTES).unwrap();
     // An editor saves the same number of bytes by writing a new file and renaming it.
     let saved = MESSY.replace("plane", "PLANE");
     write(&dir.path().join("new"), &saved, 0o644);
@@ -283,7 +290,7 @@ fn an_edit_saved_while_writing_is_kept() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("a.walls");
         write(&path, MESSY, 0o644);
-        let (original, _) = safe_write::read(&path).unwrap();
+        let (original, _) = replace::read(&path, MAX_FILE_BYTES).unwrap();
         let result = original.replace_with(temporary, |file| {
             file.write_all(CLEAN.as_bytes())?;
             // The user saves while the new text is being written.
@@ -363,7 +370,7 @@ fn a_signal_while_writing_removes_the_temporary_file() {
         } else {
             Temporary::Unnamed
         };
-        let (original, _) = safe_write::read(&dir.join("a.walls")).unwrap();
+        let (original, _) = replace::read(&dir.join("a.walls"), MAX_FILE_BYTES).unwrap();
         let result = original.replace_with(temporary, |file| {
             file.write_all(&CLEAN.as_bytes()[..8])?;
             file.sync_all()?;

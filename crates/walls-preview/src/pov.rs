@@ -17,14 +17,14 @@
 //!
 //! The styles are macros of an include file of our own, [`INCLUDE`] (`walls.inc`):
 //! `PlaneStyle(Colour, Transmit)`, … `ShellStyle`, all drawing `WallPlain` unless
-//! edited, and `ParticleStyle(Colour)`. [`write_file`] writes the scene and `walls.inc`
-//! beside it; `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
+//! edited, and `ParticleStyle(Colour)`. [`write`] and [`write_frame`] write a scene; with
+//! `walls.inc` beside it (`walls-sim preview --out scene.pov` writes both),
+//! `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
 
 use crate::palette;
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
 use std::io::{self, Write};
-use std::path::Path;
 use walls_geometry::Particle;
 use walls_geometry::mesh::basis;
 use walls_geometry::shape::{Disk, FiniteCylinder, InfiniteCylinder, Rectangle, Shell, Triangle};
@@ -73,27 +73,11 @@ impl Default for View {
     }
 }
 
-/// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view` to
-/// `path`, and [`INCLUDE`] as `walls.inc` in the same directory.
-pub fn write_file(
-    path: &Path,
-    scene: &Scene,
-    t: f64,
-    particles: &[Particle],
-    view: &View,
-) -> io::Result<()> {
-    let mut out = io::BufWriter::new(std::fs::File::create(path)?);
-    write(&mut out, scene, t, particles, view)?;
-    out.flush()?;
-    let dir = path.parent().unwrap_or(Path::new(""));
-    std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
-}
-
-/// Writes one frame of a movie of `scene` to `path` (and `walls.inc` beside it): each
-/// wall where the frame places it (reactive walls as a run turned them), its particles,
-/// framed by `bounds` (the movie's box, the same for every frame).
-pub fn write_frame_file(
-    path: &Path,
+/// Writes one frame of a movie of `scene` to `out`: each wall where the frame places it
+/// (reactive walls as a run turned them), its particles, framed by `bounds` (the movie's
+/// box, the same for every frame). Like [`write`], it includes [`INCLUDE_NAME`].
+pub fn write_frame(
+    out: &mut impl Write,
     scene: &Scene,
     frame: &crate::MovieFrame,
     bounds: (Vec3, Vec3),
@@ -110,19 +94,15 @@ pub fn write_frame_file(
             None => w.shape.at(w.motion.position_or_origin(frame.t)),
         })
         .collect();
-    let mut out = io::BufWriter::new(std::fs::File::create(path)?);
     write_shapes(
-        &mut out,
+        out,
         &walls,
         shapes,
         frame.t,
         &frame.particles,
         Some(bounds),
         view,
-    )?;
-    out.flush()?;
-    let dir = path.parent().unwrap_or(Path::new(""));
-    std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
+    )
 }
 
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it

@@ -6,6 +6,8 @@
 //! `movie/movie_000000.vtp`, `movie/movie_000001.vtp`… Each `<DataSet>` of the
 //! collection names its frame's file relative to the `.pvd` and gives the frame's time
 //! as `timestep`, in the collection's time unit (the same as the frames' `TIME`).
+//! [`frame_files`] names the frames, [`crate::vtk::write`] writes each, and [`write`] the
+//! collection; `walls-sim preview --out movie.pvd` writes the files.
 
 use crate::{MovieFrame, escape};
 use std::io::{self, Write};
@@ -21,31 +23,6 @@ pub fn frame_files(path: &Path, frames: usize) -> Vec<PathBuf> {
     (0..frames)
         .map(|k| Path::new(&stem).join(format!("{stem}_{k:06}.vtp")))
         .collect()
-}
-
-/// Writes the collection `path` of `frames` in `scale`'s units: the folder of frames
-/// beside it (made if missing) with one `.vtp` each, then the `.pvd`. `written` is told
-/// each frame's number once its file is written.
-pub fn write_file(
-    path: &Path,
-    frames: &[MovieFrame],
-    scale: &Scale,
-    mut written: impl FnMut(usize),
-) -> io::Result<()> {
-    let dir = path.parent().unwrap_or(Path::new(""));
-    let files = frame_files(path, frames.len());
-    if let Some(folder) = files.first().and_then(|f| f.parent()) {
-        std::fs::create_dir_all(dir.join(folder))?;
-    }
-    for (k, (frame, file)) in frames.iter().zip(&files).enumerate() {
-        let mut out = io::BufWriter::new(std::fs::File::create(dir.join(file))?);
-        crate::vtk::write(&mut out, &frame.walls, &frame.particles, frame.t, scale)?;
-        out.flush()?;
-        written(k);
-    }
-    let mut out = io::BufWriter::new(std::fs::File::create(path)?);
-    write(&mut out, frames, &files, scale)?;
-    out.flush()
 }
 
 /// Writes the `.pvd` listing `files` (one per frame, relative to the `.pvd`) at the

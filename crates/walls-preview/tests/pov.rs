@@ -64,8 +64,10 @@ impl Picture {
 fn render(scene: &Scene, particles: &[Particle]) -> Picture {
     let dir = tempfile::tempdir().unwrap();
     let pov_path = dir.path().join("scene.pov");
-    pov::write_file(&pov_path, scene, 0.0, particles, &View::default()).unwrap();
-    assert!(dir.path().join("walls.inc").exists());
+    let mut scene_text = Vec::new();
+    pov::write(&mut scene_text, scene, 0.0, particles, &View::default()).unwrap();
+    std::fs::write(&pov_path, scene_text).unwrap();
+    std::fs::write(dir.path().join(pov::INCLUDE_NAME), pov::INCLUDE).unwrap();
     let png_path = dir.path().join("scene.png");
     let output = Command::new("povray")
         .current_dir(dir.path())

@@ -30,7 +30,9 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
 /// The outcome as `walls-sim run --json` writes it: the time and steps, each particle's
 /// state, the wall events, the particle contacts, the energy, the parts of the model used,
 /// the pkdgrav build, the warnings, why the run stopped early (`stopped`: null when it ran
-/// to its end), and, when the run wrote some, its output files (`outputs`).
+/// to its end; `"output"` when its outputs could not be written), and, when the run wrote
+/// some, its output files (`outputs`) and, after a failed write, what failed and where the
+/// outputs end (`output_error`).
 ///
 /// It borrows the outcome and serialises it as it goes (`serde_json::to_writer_pretty`
 /// into a buffered writer): a run of 10⁵ particles never holds its JSON whole. The keys
@@ -41,6 +43,8 @@ pub struct Report<'a> {
     energy: Energy,
     events: Each<'a, Event, EventView>,
     model: Vec<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    output_error: Option<OutputError<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     outputs: Option<&'a [String]>,
     pair_contacts: u64,
@@ -63,6 +67,7 @@ impl<'a> Report<'a> {
             },
             events: Each(&out.events, EventView::new),
             model,
+            output_error: None,
             outputs: None,
             pair_contacts: out.pair_contacts,
             particles: Each(&out.particles, StateView::new),
@@ -81,12 +86,35 @@ impl<'a> Report<'a> {
         }
     }
 
+    /// The report of a run whose outputs could not be written (`error`): it stopped there.
+    pub fn with_output_error(self, error: OutputError<'a>) -> Report<'a> {
+        Report {
+            output_error: Some(error),
+            stopped: Some("output"),
+            ..self
+        }
+    }
+
     /// Writes the report to `w` as indented JSON and a newline, as it is serialised;
     /// the first error of `w` ends it.
     pub fn write_json(&self, mut w: impl std::io::Write) -> std::io::Result<()> {
         serde_json::to_writer_pretty(&mut w, self)?;
         w.write_all(b"\n")
     }
+}
+
+/// Why a run's outputs could not be written: what failed, at which output step and time,
+/// and the last output step every file holds whole (`null`: none).
+#[derive(Serialize)]
+pub struct OutputError<'a> {
+    /// What could not be written, and why.
+    pub message: &'a str,
+    /// The output step being written.
+    pub step: u64,
+    /// Its time.
+    pub t: f64,
+    /// The last output step every file holds whole, and its time.
+    pub whole_until: Option<(u64, f64)>,
 }
 
 /// The energy at the start and the end.

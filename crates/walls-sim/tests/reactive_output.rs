@@ -2,8 +2,6 @@
 //! in `tests/data/c_exp.txt`), the two files' line formats read back field by field, and
 //! appending versus starting fresh; the viz file read back as the walls written.
 
-use std::fs;
-
 use nalgebra::Vector3;
 use walls_sim::io::wallsreact::{
     AssemblyState, DATA_FILE, ReactiveOutput, VIZ_FILE, VizError, VizWall, c_exp, data_line,
@@ -201,32 +199,30 @@ fn line_shapes() {
     );
 }
 
-fn read_lines(path: &std::path::Path) -> Vec<String> {
-    let text = fs::read_to_string(path).unwrap();
-    assert!(text.is_empty() || text.ends_with('\n'));
-    text.lines().map(str::to_owned).collect()
+/// What `record` writes: the data file's and the viz file's lines.
+fn recorded(steps: &[(u64, Vec<AssemblyState>, Vec<VizWall>)]) -> (Vec<String>, Vec<String>) {
+    let mut out = ReactiveOutput::new(Vec::new(), Vec::new());
+    for (step, a, w) in steps {
+        out.record(*step, a, w).unwrap();
+    }
+    let (data, viz) = out.finish().unwrap();
+    let lines = |bytes: Vec<u8>| {
+        let text = String::from_utf8(bytes).unwrap();
+        assert!(text.is_empty() || text.ends_with('\n'));
+        text.lines().map(str::to_string).collect()
+    };
+    (lines(data), lines(viz))
 }
 
 #[test]
-fn record_round_trip_append_and_fresh() {
-    let dir = tempfile::tempdir().unwrap();
-    let data_path = dir.path().join(DATA_FILE);
-    let viz_path = dir.path().join(VIZ_FILE);
+fn record_round_trip() {
     assert_eq!(DATA_FILE, "WALLSREACTdata.out");
     assert_eq!(VIZ_FILE, "WALLSREACTviz.out");
-
     let steps: [(u64, Vec<AssemblyState>, Vec<VizWall>); 2] = [
         (0, vec![assembly(0.5), assembly(-2.0)], walls(0.5)),
         (100, vec![assembly(0.75), assembly(-2.25)], walls(0.75)),
     ];
-    let mut out = ReactiveOutput::open(dir.path(), true).unwrap();
-    for (step, a, w) in &steps {
-        out.record(*step, a, w).unwrap();
-    }
-    out.finish().unwrap();
-
-    let data = read_lines(&data_path);
-    let viz = read_lines(&viz_path);
+    let (data, viz) = recorded(&steps);
     assert_eq!(data.len(), 2);
     assert_eq!(viz.len(), 2);
     for (i, (step, a, w)) in steps.iter().enumerate() {
@@ -235,46 +231,12 @@ fn record_round_trip_append_and_fresh() {
         assert_eq!(viz[i].split(' ').count(), 1 + 11 + 8 + 11);
         assert_eq!(data[i].split(' ').count(), 1 + 2 * 18);
     }
-
-    // Opening again without `fresh` appends, as pkdgrav does.
-    let mut out = ReactiveOutput::open(dir.path(), false).unwrap();
-    out.record(200, &[assembly(1.0)], &walls(1.0)[..1]).unwrap();
-    out.finish().unwrap();
-    let data = read_lines(&data_path);
-    let viz = read_lines(&viz_path);
-    assert_eq!(data.len(), 3);
-    assert_eq!(viz.len(), 3);
-    check_data_line(&data[0], 0, &steps[0].1);
-    check_data_line(&data[2], 200, &[assembly(1.0)]);
-    check_viz_line(&viz[2], 200, &walls(1.0)[..1]);
-
-    // Lines are on disk after each record, before finish.
-    let mut out = ReactiveOutput::open(dir.path(), false).unwrap();
-    out.record(300, &[], &[]).unwrap();
-    assert_eq!(read_lines(&data_path).last().unwrap(), "300");
-    assert_eq!(read_lines(&viz_path).last().unwrap(), "300");
-    drop(out);
-
-    // With `fresh`, the old lines are gone.
-    let mut out = ReactiveOutput::open(dir.path(), true).unwrap();
-    assert!(read_lines(&data_path).is_empty());
-    assert!(read_lines(&viz_path).is_empty());
-    out.record(5, &[assembly(3.0)], &walls(3.0)).unwrap();
-    out.finish().unwrap();
-    let data = read_lines(&data_path);
-    let viz = read_lines(&viz_path);
-    assert_eq!(data.len(), 1);
-    assert_eq!(viz.len(), 1);
-    check_data_line(&data[0], 5, &[assembly(3.0)]);
-    check_viz_line(&viz[0], 5, &walls(3.0));
-}
-
-#[test]
-fn open_fails_in_a_missing_directory() {
-    let dir = tempfile::tempdir().unwrap();
-    let missing = dir.path().join("no-such-dir");
-    assert!(ReactiveOutput::open(&missing, true).is_err());
-    assert!(ReactiveOutput::open(&missing, false).is_err());
+    // A step with no assembly and no finite wall is its step alone.
+    let (data, viz) = recorded(&[(300, Vec::new(), Vec::new())]);
+    assert_eq!(
+        (data, viz),
+        (vec!["300".to_string()], vec!["300".to_string()])
+    );
 }
 
 #[test]
@@ -294,12 +256,11 @@ fn viz_lines_read_back_as_the_walls_written() {
 
 #[test]
 fn the_last_viz_step_is_where_the_run_left_its_walls() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut out = ReactiveOutput::open(dir.path(), true).unwrap();
+    let mut out = ReactiveOutput::new(Vec::new(), Vec::new());
     out.record(0, &[assembly(0.5)], &walls(0.5)).unwrap();
     out.record(250, &[assembly(0.75)], &walls(0.75)).unwrap();
-    out.finish().unwrap();
-    let text = fs::read_to_string(dir.path().join(VIZ_FILE)).unwrap();
+    let (_, viz) = out.finish().unwrap();
+    let text = String::from_utf8(viz).unwrap();
     assert_eq!(last_viz_step(&text), Ok((250, walls(0.75))));
     // Blank lines after the last step are skipped.
     assert_eq!(

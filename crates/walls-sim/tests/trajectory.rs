@@ -12,12 +12,11 @@ use walls_test_support::{ball as particle, scene};
 fn the_start_written_from_the_particles_is_their_first_states() {
     let floor = scene("wall type plane origin 0 0 0\nwall type disk origin 0 0 1 radius 2\n");
     let particles = [particle([0.0, 0.0, 0.3], [0.25, -1e-300, 7.0])];
-    let write = |record: &dyn Fn(&mut Trajectory)| {
-        let dir = tempfile::tempdir().unwrap();
-        let mut out = Trajectory::create(dir.path()).unwrap();
+    let write = |record: &dyn Fn(&mut Trajectory<Vec<u8>>)| {
+        let mut out = Trajectory::new(Vec::new(), Vec::new()).unwrap();
         record(&mut out);
-        out.finish().unwrap();
-        ["particles.csv", "walls.csv"].map(|f| std::fs::read_to_string(dir.path().join(f)).unwrap())
+        let (particles, walls) = out.finish().unwrap();
+        [particles, walls].map(|f| String::from_utf8(f).unwrap())
     };
     let states: Vec<State> = particles.iter().map(State::new).collect();
     assert_eq!(
@@ -28,7 +27,6 @@ fn the_start_written_from_the_particles_is_their_first_states() {
 
 #[test]
 fn written_rows_read_back_the_same() {
-    let dir = tempfile::tempdir().unwrap();
     let floor = scene("wall type plane origin 0 0 0\nwall type disk origin 0 0 1 radius 2\n");
     let mut states: Vec<State> = [[0.0, 0.0, 0.3], [0.1, -0.2, 1.0 / 3.0]]
         .iter()
@@ -36,7 +34,7 @@ fn written_rows_read_back_the_same() {
         .collect();
     states[1].particle.spin = Vector3::new(1.5, f64::MIN_POSITIVE, -0.1);
     states[1].alive = false;
-    let mut out = Trajectory::create(dir.path()).unwrap();
+    let mut out = Trajectory::new(Vec::new(), Vec::new()).unwrap();
     out.record(0, 0.0, &states, &floor, &[]).unwrap();
     out.record(100, 0.1 + 0.2, &states, &floor, &[]).unwrap();
     let extra = ParticleRow {
@@ -51,9 +49,9 @@ fn written_rows_read_back_the_same() {
         spin: Vector3::new(0.0, -0.0, 4.0),
     };
     out.write_particle(&extra).unwrap();
-    out.finish().unwrap();
+    let (particles, walls) = out.finish().unwrap();
 
-    let text = std::fs::read_to_string(dir.path().join("particles.csv")).unwrap();
+    let text = String::from_utf8(particles).unwrap();
     let rows = read_particles(&text).unwrap();
     let mut expected = Vec::new();
     for (step, t) in [(0, 0.0), (100, 0.1 + 0.2)] {
@@ -64,7 +62,7 @@ fn written_rows_read_back_the_same() {
     expected.push(extra);
     assert_eq!(rows, expected);
 
-    let text = std::fs::read_to_string(dir.path().join("walls.csv")).unwrap();
+    let text = String::from_utf8(walls).unwrap();
     let walls = read_walls(&text).unwrap();
     let origin = |wall: usize| Vector3::new(0.0, 0.0, wall as f64);
     let expected: Vec<WallRow> = [(0, 0.0), (100, 0.1 + 0.2)]

@@ -21,6 +21,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u8)] = &[
     ("walls-keywords", 0),
     ("walls-diagnostics", 0),
+    ("walls-output", 0),
     ("tree-sitter-walls", 0),
     ("walls-syntax", 1),
     ("walls-model", 2),
@@ -425,6 +426,54 @@ fn no_library_prints() {
     }
     assert_none(
         "a library must return what it has to say; only binaries print, and the CLI's commands through its console (ARCHITECTURE.md, \"Invariants\")",
+        &broken,
+    );
+}
+
+/// The crates that may write files themselves: the one writer; the charts, which draw
+/// the documentation's figures; and the tests' support (neither is a tool of the user's).
+const WRITES_FILES: &[&str] = &["walls-output", "walls-charts", "walls-test-support"];
+
+/// What opens a file for writing or writes one.
+const FILE_WRITES: &[&str] = &[
+    "File::create",
+    "fs::write",
+    "OpenOptions",
+    "create_new",
+    "persist",
+    "fs::rename",
+    "fs::copy",
+    "set_len",
+];
+
+/// One writer: outside `WRITES_FILES`, no library or binary creates, writes, renames or
+/// truncates a file (unit tests aside); every file the tools write goes through
+/// walls-output, under its one policy (docs/reliability.md, "Files").
+#[test]
+fn every_file_goes_through_the_one_writer() {
+    let ws = Workspace::load();
+    let mut broken = Vec::new();
+    for m in ws
+        .members
+        .iter()
+        .filter(|m| !WRITES_FILES.contains(&m.name.as_str()))
+    {
+        for file in rust_files(&m.lib_dir()) {
+            let rel = ws.relative(&file);
+            // A unit-test module of its own file (`#[cfg(test)] mod tests;`).
+            if file.file_name().is_some_and(|n| n == "tests.rs") {
+                continue;
+            }
+            let code = without_test_items(&code_only(&read(&file)));
+            for name in FILE_WRITES {
+                for at in find_word(&code, name) {
+                    broken.push(format!("{rel}:{} uses `{name}`", line_of(&code, at)));
+                }
+            }
+        }
+    }
+    assert_none(
+        "only walls-output writes files: plan the output with walls_output::Outputs and write it through its Target (ARCHITECTURE.md, \"Invariants\")",
         &broken,
     );
 }

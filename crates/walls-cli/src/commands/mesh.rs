@@ -3,12 +3,14 @@
 //! The mesh is read, each face turned into a triangle wall (oriented and merged into
 //! rectangles when asked), the units and a defaults block from `--set` added, and the
 //! file written in the canonical layout and checked as `walls-lint` checks it. It goes
-//! to standard output, or to `-o OUT`, which is never replaced without `--force` and is
-//! written whole or not at all (a new file renamed into place). Exit status: 0 success
+//! to standard output (no `-o`, or `-o -`), or to `-o OUT` through the one writer,
+//! `walls-output`: OUT is looked at before the mesh is read, replaced only with `--force`
+//! and only if it is a regular file the user may replace (never a device, a FIFO, a hard
+//! link, a read-only file or the mesh itself; a symbolic link is written through), and
+//! written whole or not at all. Exit status: 0 success
 //! (warnings on standard error), 1 the walls file would have errors (nothing written), 2
 //! usage or I/O error, or a mesh that cannot be read or turned into walls.
 
-use crate::interrupt;
 use clap::Parser;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use std::io::Write;
@@ -16,6 +18,7 @@ use std::path::{Path, PathBuf};
 use walls_build::mesh::{self, MeshOptions, Orientation};
 use walls_build::{CheckOptions, DumpOptions, Given, LengthUnit, Units, Wall, dumps};
 use walls_diagnostics::render::{self, FileReport};
+use walls_output::{Outputs, Tool};
 
 /// The command line of `walls-mesh`.
 #[derive(Parser)]
@@ -32,7 +35,8 @@ pub struct MeshArgs {
     /// Write the walls file here instead of to standard output.
     #[arg(short, long, value_name = "OUT")]
     pub output: Option<PathBuf>,
-    /// Replace OUT if it exists.
+    /// Replace OUT if it exists (a regular file that is not the mesh, not read-only and
+    /// with one name).
     #[arg(long, requires = "output")]
     pub force: bool,
     /// The unit of the mesh's numbers, written as the file's `lengthunit`.
@@ -74,11 +78,22 @@ fn error(message: impl std::fmt::Display) -> i32 {
 
 /// Turns the mesh `args` names into walls and writes them; the exit status.
 pub fn run(args: &MeshArgs) -> i32 {
-    if let Some(out) = args.output.as_ref().filter(|_| !args.force)
-        && out.exists()
-    {
-        return error(exists(out));
-    }
+    // clap asks for INPUT unless --completions, which never reaches here.
+    let Some(input) = &args.input else {
+        crate::errln!("walls-mesh: error: no mesh named");
+        return 2;
+    };
+    // OUT is looked at before anything is read: a file it may not replace ends the
+    // command at once.
+    let mut outputs = Outputs::new(Tool::MESH, args.force);
+    outputs.reads(input);
+    let target = match args.output.as_deref().filter(|out| *out != Path::new("-")) {
+        Some(out) => match outputs.plan(out) {
+            Ok(target) => Some(target),
+            Err(e) => return error(e.message(&out.display().to_string(), Tool::MESH)),
+        },
+        None => None,
+    };
     let mut defaults = Wall::new();
     for token in &args.set {
         let Some((key, value)) = token.split_once('=') else {
@@ -88,11 +103,6 @@ pub fn run(args: &MeshArgs) -> i32 {
             return error(format!("--set {token}: {e}"));
         }
     }
-    // clap asks for INPUT unless --completions, which never reaches here.
-    let Some(input) = &args.input else {
-        crate::errln!("walls-mesh: error: no mesh named");
-        return 2;
-    };
     let name = input.display().to_string();
     let read = match mesh::read_mesh(input) {
         Ok(read) => read,
@@ -151,7 +161,7 @@ pub fn run(args: &MeshArgs) -> i32 {
         }
     };
     report(&dumped.text, &dumped.warnings);
-    match &args.output {
+    match target {
         None => {
             let mut stdout = std::io::stdout().lock();
             match stdout
@@ -165,9 +175,9 @@ pub fn run(args: &MeshArgs) -> i32 {
                 _ => 0,
             }
         }
-        Some(out) => match write_new(out, dumped.text.as_bytes(), args.force) {
+        Some(target) => match target.write(dumped.text.as_bytes()) {
             Ok(()) => 0,
-            Err(e) => error(e),
+            Err(e) => error(target.message(&e)),
         },
     }
 }
@@ -175,43 +185,4 @@ pub fn run(args: &MeshArgs) -> i32 {
 /// `n` things, with the plural when it needs one.
 fn count(n: usize, thing: &str) -> String {
     format!("{n} {thing}{}", if n == 1 { "" } else { "s" })
-}
-
-fn exists(out: &Path) -> String {
-    format!("{} exists: pass --force to replace it", out.display())
-}
-
-/// Writes `bytes` to a new file beside `out` and renames it into place: `out` is the
-/// whole text or what it was, never half of it, and is not replaced unless `force`.
-fn write_new(out: &Path, bytes: &[u8], force: bool) -> Result<(), String> {
-    let dir = out
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let cannot = |e: std::io::Error| format!("cannot write {}: {e}", out.display());
-    interrupt::install();
-    let mut new = tempfile::Builder::new()
-        .prefix(".walls-mesh")
-        .make_in(dir, |path| {
-            let file = std::fs::OpenOptions::new()
-                .write(true)
-                .create_new(true)
-                .open(path)?;
-            Ok((file, interrupt::remove_on_signal(path)))
-        })
-        .map_err(cannot)?;
-    let file = &mut new.as_file_mut().0;
-    file.write_all(bytes)
-        .and_then(|()| file.sync_all())
-        .map_err(cannot)?;
-    let placed = if force {
-        new.persist(out)
-    } else {
-        new.persist_noclobber(out)
-    };
-    match placed {
-        Ok(_) => Ok(()),
-        Err(e) if e.error.kind() == std::io::ErrorKind::AlreadyExists => Err(exists(out)),
-        Err(e) => Err(cannot(e.error)),
-    }
 }

@@ -107,6 +107,20 @@ pub struct Params {
     pub optional_keys: Vec<OptionalKey>,
     /// What the evaluator does not follow, in line order.
     pub warnings: Vec<ParWarning>,
+    /// The line of each path the file gives ([`PATH_KEYS`]), for the messages about it.
+    pub path_lines: Vec<(&'static str, usize)>,
+}
+
+/// The keys whose values are paths: files the run reads or writes.
+pub const PATH_KEYS: [&str; 4] = ["achInFile", "achWallsFile", "achOutName", "achCohesionFile"];
+
+impl Params {
+    /// The line of the path key `key` ([`PATH_KEYS`]), if the file gives it.
+    pub fn line_of(&self, key: &str) -> Option<usize> {
+        self.path_lines
+            .iter()
+            .find_map(|&(k, n)| (k == key).then_some(n))
+    }
 }
 
 /// pkdgrav's two-layer contact constants (docs/pkdgrav-physics.md §8), with its sentinels
@@ -784,6 +798,10 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         cohesion_file: lines.text("achCohesionFile").filter(|f| !f.is_empty()),
         optional_keys,
         warnings,
+        path_lines: PATH_KEYS
+            .into_iter()
+            .filter_map(|key| Some((key, lines.line(key)?)))
+            .collect(),
     })
 }
 

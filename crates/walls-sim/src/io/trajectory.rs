@@ -15,9 +15,7 @@
 
 use crate::run::State;
 use nalgebra::Vector3;
-use std::fs::File;
-use std::io::{self, BufWriter};
-use std::path::Path;
+use std::io::{self, Write};
 use walls_geometry::{Particle, Wall};
 
 type Vec3 = Vector3<f64>;
@@ -116,25 +114,26 @@ impl WallRow {
     }
 }
 
-/// The open trajectory files.
-pub struct Trajectory {
-    particles: csv::Writer<BufWriter<File>>,
-    walls: csv::Writer<BufWriter<File>>,
+/// The name of the particles' file.
+pub const PARTICLES_FILE: &str = "particles.csv";
+
+/// The name of the walls' file.
+pub const WALLS_FILE: &str = "walls.csv";
+
+/// The trajectory, written as two CSV tables to `W`s: [`PARTICLES_FILE`]'s and
+/// [`WALLS_FILE`]'s (the command line opens the files).
+pub struct Trajectory<W: Write> {
+    particles: W,
+    walls: W,
 }
 
-impl Trajectory {
-    /// Creates `dir` if needed, and the two files in it (replacing earlier ones).
-    pub fn create(dir: &Path) -> io::Result<Trajectory> {
-        std::fs::create_dir_all(dir)?;
-        let open = |name: &str, header: &[&str]| -> io::Result<csv::Writer<BufWriter<File>>> {
-            let mut w = csv::Writer::from_writer(BufWriter::new(File::create(dir.join(name))?));
-            w.write_record(header)?;
-            Ok(w)
-        };
-        Ok(Trajectory {
-            particles: open("particles.csv", &PARTICLE_COLUMNS)?,
-            walls: open("walls.csv", &WALL_COLUMNS)?,
-        })
+impl<W: Write> Trajectory<W> {
+    /// The trajectory written to `particles` and `walls`, each begun with its header.
+    pub fn new(particles: W, walls: W) -> io::Result<Trajectory<W>> {
+        let mut trajectory = Trajectory { particles, walls };
+        write_row(&mut trajectory.particles, &PARTICLE_COLUMNS)?;
+        write_row(&mut trajectory.walls, &WALL_COLUMNS)?;
+        Ok(trajectory)
     }
 
     /// Writes the particles and the walls at `step`, time `t`: each wall where its
@@ -201,19 +200,41 @@ impl Trajectory {
 
     /// Writes one row of `particles.csv`.
     pub fn write_particle(&mut self, row: &ParticleRow) -> io::Result<()> {
-        Ok(self.particles.write_record(row.cells())?)
+        write_row(&mut self.particles, &row.cells())
     }
 
     /// Writes one row of `walls.csv`.
     pub fn write_wall(&mut self, row: &WallRow) -> io::Result<()> {
-        Ok(self.walls.write_record(row.cells())?)
+        write_row(&mut self.walls, &row.cells())
     }
 
-    /// Writes out what is buffered.
-    pub fn finish(mut self) -> io::Result<()> {
+    /// Writes out what is buffered (to the `W`s, which it flushes too).
+    pub fn flush(&mut self) -> io::Result<()> {
         self.particles.flush()?;
         self.walls.flush()
     }
+
+    /// The particles' and the walls' `W`.
+    pub fn writers_mut(&mut self) -> [&mut W; 2] {
+        [&mut self.particles, &mut self.walls]
+    }
+
+    /// Flushes both and gives back the particles' and the walls' `W`.
+    pub fn finish(mut self) -> io::Result<(W, W)> {
+        self.flush()?;
+        Ok((self.particles, self.walls))
+    }
+}
+
+/// Writes one CSV row of `cells` (numbers and column names, which need no quoting).
+fn write_row(out: &mut impl Write, cells: &[impl AsRef<str>]) -> io::Result<()> {
+    for (k, cell) in cells.iter().enumerate() {
+        if k > 0 {
+            out.write_all(b",")?;
+        }
+        out.write_all(cell.as_ref().as_bytes())?;
+    }
+    out.write_all(b"\n")
 }
 
 /// Why a trajectory file could not be read.

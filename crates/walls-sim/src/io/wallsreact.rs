@@ -3,9 +3,10 @@
 //! assembly's state, and `WALLSREACTviz.out`, one line per output step with the
 //! placement of every finite wall, for redrawing the assembly frame by frame.
 //!
-//! Both files are appended to, as pkdgrav does: a run that is continued adds lines after
-//! the old ones. Opening with `fresh` truncates them instead, which is what a new run
-//! wants (the document tells pkdgrav users to delete the old files by hand).
+//! pkdgrav appends to both files: a run that is continued adds lines after the old ones.
+//! `walls-sim run --out` does the same, or empties them first with `--fresh`, which is
+//! what a new run wants (the document tells pkdgrav users to delete the old files by
+//! hand); [`ReactiveOutput`] writes the lines to whatever it is given.
 //!
 //! # Line formats
 //!
@@ -32,9 +33,7 @@
 //! its walls.
 
 use std::fmt::Write as _;
-use std::fs::{File, OpenOptions};
-use std::io::{self, BufWriter, Write};
-use std::path::Path;
+use std::io::{self, Write};
 
 use nalgebra::Vector3;
 
@@ -271,34 +270,27 @@ pub fn last_viz_step(text: &str) -> Result<(u64, Vec<VizWall>), VizError> {
     parse_viz_line(line).ok_or(VizError::BadLine { line: n + 1 })
 }
 
-/// The two reactive-wall output files of a run, open for writing.
+/// The two reactive-wall output files of a run, written to `W`s ([`DATA_FILE`]'s and
+/// [`VIZ_FILE`]'s; the command line opens the files, for appending as pkdgrav does or
+/// emptied first).
 ///
-/// Each [`record`](Self::record) writes one line to each file and flushes both, so the
-/// files always end with a whole line for every step recorded so far.
+/// Each [`record`](Self::record) writes one line to each and flushes both, so the files
+/// always end with a whole line for every step recorded so far.
 #[derive(Debug)]
-pub struct ReactiveOutput {
-    data: BufWriter<File>,
-    viz: BufWriter<File>,
+pub struct ReactiveOutput<W: Write> {
+    data: W,
+    viz: W,
 }
 
-impl ReactiveOutput {
-    /// Opens (creating if needed) `dir/WALLSREACTdata.out` and `dir/WALLSREACTviz.out`:
-    /// for appending, as pkdgrav does, or, when `fresh`, truncated to empty first.
-    pub fn open(dir: &Path, fresh: bool) -> io::Result<Self> {
-        let open = |name: &str| -> io::Result<BufWriter<File>> {
-            let mut options = OpenOptions::new();
-            options.create(true);
-            if fresh {
-                options.write(true).truncate(true);
-            } else {
-                options.append(true);
-            }
-            Ok(BufWriter::new(options.open(dir.join(name))?))
-        };
-        Ok(Self {
-            data: open(DATA_FILE)?,
-            viz: open(VIZ_FILE)?,
-        })
+impl<W: Write> ReactiveOutput<W> {
+    /// The output written to `data` and `viz`.
+    pub fn new(data: W, viz: W) -> Self {
+        Self { data, viz }
+    }
+
+    /// The data file's and the viz file's `W`.
+    pub fn writers_mut(&mut self) -> [&mut W; 2] {
+        [&mut self.data, &mut self.viz]
     }
 
     /// Appends the lines of output step `step`: the assemblies' states to the data file
@@ -369,12 +361,10 @@ impl ReactiveOutput {
         self.record(step, &states, &walls)
     }
 
-    /// Flushes and closes both files, reporting any error (dropping the value instead
-    /// would lose it).
-    pub fn finish(self) -> io::Result<()> {
-        for writer in [self.data, self.viz] {
-            writer.into_inner().map_err(|e| e.into_error())?;
-        }
-        Ok(())
+    /// Flushes both and gives back the data file's and the viz file's `W`.
+    pub fn finish(mut self) -> io::Result<(W, W)> {
+        self.data.flush()?;
+        self.viz.flush()?;
+        Ok((self.data, self.viz))
     }
 }

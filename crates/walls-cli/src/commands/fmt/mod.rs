@@ -1,14 +1,12 @@
 //! `walls-fmt`: rewrite walls files in the canonical layout (docs/formatting.md).
 //!
-//! Files are rewritten in place by [`safe_write`]: only files the user may write, keeping
+//! Files are rewritten in place by [`walls_output::replace`]: only files the user may write, keeping
 //! owner, group, mode and hard links, never over an edit made meanwhile, and atomically (a
 //! crash or a kill mid-write leaves the original). A file named twice (by any path) is
 //! formatted once. `-` formats standard input to standard output. `--check` lists the
 //! files that would change and `--diff` shows how, without writing. Exit status: 0
 //! success, 1 a file would change (`--check`, `--diff`) or has syntax errors that prevent
 //! formatting, 2 usage or I/O error, or a file not written.
-
-pub mod safe_write;
 
 use super::settings::{Resolver, SettingsArgs};
 use crate::input;
@@ -185,7 +183,8 @@ fn format_one(path: &str, args: &FmtArgs, resolver: &Resolver) -> Outcome {
     let read = if stdin {
         input::read(path).bytes.map(|b| (None, b))
     } else {
-        safe_write::read(Path::new(path)).map(|(o, b)| (Some(o), b))
+        walls_output::replace::read(Path::new(path), input::MAX_FILE_BYTES)
+            .map(|(o, b)| (Some(o), b))
     };
     let (original, bytes) = match read {
         Ok(read) => read,
@@ -238,7 +237,7 @@ fn format_one(path: &str, args: &FmtArgs, resolver: &Resolver) -> Outcome {
     }
     match original.replace(formatted.as_bytes()) {
         Ok(()) => done,
-        Err(e) => Outcome::NotWritten(e.message(path, safe_write::Rewriter::Format)),
+        Err(e) => Outcome::NotWritten(e.message(path, walls_output::Tool::FORMAT)),
     }
 }
 

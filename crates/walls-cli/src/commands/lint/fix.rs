@@ -7,13 +7,13 @@
 //! fixes an overlap held back, or that a fix made possible, are applied too. The
 //! diagnostics reported are those of the fixed text.
 //!
-//! A file is replaced through walls-fmt's [`safe_write`] (kept owner, group, mode and
-//! links, atomic, never over an edit made meanwhile); a file not written is reported with
-//! the diagnostics of its unchanged text and an error. Standard input's fixed text goes to
+//! A file is replaced through [`walls_output::replace`], as walls-fmt replaces one (kept
+//! owner, group, mode and links, atomic, never over an edit made meanwhile); a file not
+//! written is reported with the diagnostics of its unchanged text and an error. Standard input's fixed text goes to
 //! standard output. `--diff` writes nothing: it prints what the fixes would change.
 
 use super::{Format, LintArgs, Linted, plural};
-use crate::commands::fmt::{safe_write, unified_diff};
+use crate::commands::fmt::unified_diff;
 use crate::{Checked, check_bytes, input};
 use clap::ValueEnum;
 use std::io::Write;
@@ -87,7 +87,7 @@ pub(super) fn lint(
         let read = input::read(path);
         (read.name, read.bytes.map(|bytes| (None, bytes)))
     } else {
-        let read = safe_write::read(Path::new(path));
+        let read = walls_output::replace::read(Path::new(path), input::MAX_FILE_BYTES);
         (
             path.to_string(),
             read.map(|(file, bytes)| (Some(file), bytes)),
@@ -118,7 +118,7 @@ pub(super) fn lint(
             Some((Ok(()), after)) => after,
             Some((Err(e), _)) => {
                 fixes.fixed = 0;
-                fixes.not_written = Some(e.message(path, safe_write::Rewriter::Fix));
+                fixes.not_written = Some(e.message(path, walls_output::Tool::FIX));
                 checked
             }
         }

@@ -4,7 +4,11 @@
 //! files are skipped as `git` and `ripgrep` skip them. In it, walls-lint checks every
 //! file matching an `--include` glob (default `*.walls`) and every walls file that a
 //! `.par` file of the tree names with `achWallsFile` (relative to the `.par`), whatever
-//! its name; `--exclude` globs remove files and whole folders. Globs are gitignore-style
+//! its name, if it stays in the folder walked (no absolute path, no `..` or symbolic link
+//! leading out) and reads as a walls file (its first word is a keyword): any other is an
+//! error at the `.par`'s line, never read further, so that a hostile `.par` cannot have
+//! a file outside the tree rewritten by `--fix` or a secrets file quoted in a report;
+//! `--exclude` globs remove files and whole folders. Globs are gitignore-style
 //! and relative to the folder named. Each file is checked once, in the order found
 //! (folders in name order).
 
@@ -90,7 +94,7 @@ fn walk(
     let includes = overrides(root, include, "")?;
     let excludes = overrides(root, exclude, "!")?;
     let walker = WalkBuilder::new(root)
-        .overrides(excludes)
+        .overrides(excludes.clone())
         // A .gitignore counts outside a git repository too (a copied or unpacked tree).
         .require_git(false)
         .sort_by_file_name(|a, b| a.cmp(b))
@@ -115,20 +119,31 @@ fn walk(
         }
         if path.extension().is_some_and(|e| e == "par") {
             let shown = path.display().to_string();
-            match named_walls_file(path) {
-                Ok(Some(walls)) if walls.is_file() => {
-                    add(walls, seen, targets);
-                    found += 1;
-                }
+            match named_walls_file(root, entry.path(), &shown) {
                 Ok(Some(walls)) => {
-                    let e = format!(
-                        "{shown}: names the walls file {}, which does not exist",
-                        walls.display()
-                    );
-                    targets.error(shown, e);
+                    // A file the walk's globs exclude (or whose folder they exclude) is not
+                    // checked, whoever names it.
+                    let excluded = walls.strip_prefix(root).is_ok_and(|inside| {
+                        inside
+                            .ancestors()
+                            .filter(|a| !a.as_os_str().is_empty())
+                            .any(|a| excludes.matched(a, a != inside).is_ignore())
+                    });
+                    if !excluded {
+                        let walls = walls.strip_prefix(".").unwrap_or(&walls).to_path_buf();
+                        add(walls, seen, targets);
+                        found += 1;
+                    }
                 }
                 Ok(None) => {}
-                Err(e) => targets.error(shown, e),
+                // A file checked already (named, or found walking a folder above) is
+                // checked: nothing is lost by not following the path again.
+                Err(Named { path, .. })
+                    if path
+                        .as_ref()
+                        .and_then(|p| std::fs::canonicalize(p).ok())
+                        .is_some_and(|p| seen.contains(&p)) => {}
+                Err(Named { message, .. }) => targets.error(shown, message),
             }
         }
     }
@@ -155,15 +170,95 @@ fn overrides(root: &Path, patterns: &[String], prefix: &str) -> Result<Override,
     builder.build().map_err(|e| format!("invalid glob: {e}"))
 }
 
-/// The walls file a `.par` names with `achWallsFile`, relative to the `.par`'s folder.
-fn named_walls_file(par: &Path) -> Result<Option<PathBuf>, String> {
-    let text =
-        std::fs::read_to_string(par).map_err(|e| format!("cannot read {}: {e}", par.display()))?;
+/// The walls file that the `.par` at `par` (shown as `shown`), found walking `root`, names
+/// with `achWallsFile`, relative to the `.par`'s folder; `None` when it names none. A
+/// path that leaves `root`, names no file, or names a file that is not a walls file is
+/// an error at the `.par`'s line: it is not followed, and nothing of that file is shown.
+fn named_walls_file(root: &Path, par: &Path, shown: &str) -> Result<Option<PathBuf>, Named> {
+    let bytes = std::fs::File::open(par)
+        .map_err(|e| format!("cannot read {shown}: {e}"))
+        .and_then(|f| crate::input::read_all(f, shown))?;
+    let text = String::from_utf8_lossy(&bytes);
     let params = walls_sim::io::par::read_par(&text)
-        .map_err(|e| format!("{}: cannot find its walls file: {e}", par.display()))?;
-    Ok(params
-        .walls_file
-        .map(|name| par.parent().unwrap_or(Path::new("")).join(name)))
+        .map_err(|e| format!("{shown}: cannot find its walls file: {e}"))?;
+    let Some(name) = params.walls_file.as_deref() else {
+        return Ok(None);
+    };
+    let at = match params.line_of("achWallsFile") {
+        Some(line) => format!("{shown}:{line}: achWallsFile = {name}"),
+        None => format!("{shown}: achWallsFile = {name}"),
+    };
+    let base = par.parent().unwrap_or(Path::new(""));
+    let walls =
+        walls_output::confine::within(root, base, Path::new(name)).map_err(|leaves| Named {
+            message: format!(
+                "{at} leaves {}, the folder walked ({leaves}): not followed; name the walls \
+                 file on the command line to check it",
+                root.display()
+            ),
+            path: Some(base.join(name)),
+        })?;
+    if !walls.is_file() {
+        return Err(format!("{at}: no such file").into());
+    }
+    if !looks_like_walls(&walls) {
+        return Err(format!(
+            "{at}: not a walls file (its first word is no walls keyword): not checked"
+        )
+        .into());
+    }
+    Ok(Some(walls))
+}
+
+/// Why the walls file a `.par` names is not checked: the message, and where the path
+/// leads when it leaves the folder walked.
+struct Named {
+    message: String,
+    path: Option<PathBuf>,
+}
+
+impl From<String> for Named {
+    fn from(message: String) -> Self {
+        Named {
+            message,
+            path: None,
+        }
+    }
+}
+
+/// Whether the file at `path` reads as a walls file: its first word (after white space,
+/// separators, comments and a byte-order mark) is a keyword of the language, or it has
+/// none. A file a `.par` names that is not one (a settings or secrets file a hostile
+/// `.par` points at) is never checked, so that no word of it reaches a report.
+fn looks_like_walls(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = Vec::new();
+    let read = std::fs::File::open(path).and_then(|f| f.take(4096).read_to_end(&mut head));
+    if read.is_err() {
+        // The check of the file says why it cannot be read.
+        return true;
+    }
+    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&head);
+    let mut rest = head;
+    loop {
+        let skip = rest
+            .iter()
+            .position(|&b| !matches!(b, b' ' | b'\t' | b'\n' | b'\r' | 0x0b | 0x0c | b',' | b'='));
+        rest = &rest[skip.unwrap_or(rest.len())..];
+        match rest.first() {
+            None => return true,
+            Some(b'#' | b'!') => {
+                let end = rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len());
+                rest = &rest[end..];
+            }
+            Some(_) => break,
+        }
+    }
+    let end = rest
+        .iter()
+        .position(|&b| b.is_ascii_whitespace() || matches!(b, 0x0b | b',' | b'=' | b'#' | b'!'))
+        .unwrap_or(rest.len());
+    std::str::from_utf8(&rest[..end]).is_ok_and(|word| walls_keywords::keyword(word).is_some())
 }
 
 #[cfg(test)]
@@ -217,7 +312,7 @@ mod tests {
             targets.errors,
             [(
                 par.clone(),
-                format!("{par}: names the walls file {r}/z/gone.walls, which does not exist")
+                format!("{par}:1: achWallsFile = gone.walls: no such file")
             )]
         );
     }

@@ -8,6 +8,7 @@
 //! 2 is a usage or I/O error, or input a run cannot use.
 
 pub mod advise;
+pub mod outputs;
 pub mod plan;
 pub mod preview;
 pub mod run;

@@ -3,6 +3,7 @@
 //! the trajectory and pkdgrav's reactive-wall files. The settings come from
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
+use super::outputs::{Failure, RunOutputs, SsNames, ss_base};
 use super::{UnitsArg, error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
@@ -10,6 +11,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use walls_geometry::Particle;
 use walls_geometry::{Wall, decode};
 use walls_sim::io::par::Rule;
+use walls_sim::report::OutputError;
 use walls_sim::run::Settings;
 
 /// `walls-sim run`: the docs/spec.md §2 command line.
@@ -119,6 +121,11 @@ pub struct RunArgs {
     /// than appending to them as pkdgrav does.
     #[arg(long)]
     pub fresh: bool,
+    /// Replace the outputs of an earlier run in --out (particles.csv, walls.csv, the
+    /// .ss outputs): regular files that the run does not read, not read-only, with one
+    /// name.
+    #[arg(long, requires = "out")]
+    pub force: bool,
     /// The most steps the run may take: a run that would take more is refused before it
     /// starts (a mistyped --dt or --t-end), saying how many it needs.
     #[arg(long, value_name = "N", default_value_t = walls_sim::config::MAX_STEPS)]
@@ -190,8 +197,11 @@ pub struct Prepared {
     /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
     /// 100; 0 (`iOutInterval = 0`) for none but the last step's.
     pub every: u64,
-    /// The `.ss` outputs' base name and digits (`achOutName`, `nDigits`).
-    pub ss_name: (String, usize),
+    /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
+    pub ss_name: SsNames,
+    /// The files the run reads: the walls file, the `.par` file, the particles and the
+    /// cohesion file, which no output may replace.
+    pub inputs: Vec<String>,
     /// How the summary shows times: `--units` for the walls file's units.
     pub readout: walls_geometry::units::Readout,
 }
@@ -237,12 +247,24 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         .every
         .or_else(|| par.as_ref()?.out_interval)
         .unwrap_or(EVERY);
-    let ss_name = (
-        par.as_ref()
-            .and_then(|p| p.out_name.clone())
-            .unwrap_or_else(|| "ss".to_string()),
-        par.as_ref().and_then(|p| p.digits).unwrap_or(5),
-    );
+    let (base, warning) = ss_base(par.as_ref().and_then(|p| p.out_name.as_deref()));
+    if let (Some(w), Some(path), true) = (warning, &args.par, args.ss_output) {
+        crate::errln!("walls-sim: warning: {path}: {w}");
+    }
+    let ss_name = SsNames {
+        base,
+        digits: par.as_ref().and_then(|p| p.digits).unwrap_or(5),
+    };
+    let inputs = [
+        Some(file.clone()),
+        args.par.clone(),
+        config::particle_file(&flags, par.as_ref()),
+        config::cohesion_file(&flags, par.as_ref()),
+    ]
+    .into_iter()
+    .flatten()
+    .filter(|f| f != "-")
+    .collect();
     Ok(Prepared {
         walls,
         particles: run.particles,
@@ -250,6 +272,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         errors,
         every,
         ss_name,
+        inputs,
         readout,
     })
 }
@@ -313,17 +336,29 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         errors,
         every,
         ss_name,
+        inputs,
         readout,
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
     let output =
         |step: u64| (every > 0 && step.is_multiple_of(every)) || Some(step) == settings.last_step;
-    let mut trajectory = match &args.out {
-        Some(dir) => Some(
-            walls_sim::io::trajectory::Trajectory::create(dir)
-                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
-        ),
+    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
+    // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
+    // to as pkdgrav does, unless --fresh.
+    let reactive = settings.method() == walls_sim::run::ContactModel::Ssdem
+        && settings.build.walls_react
+        && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
+    // Every output is planned, and refused if it must be, before the run starts.
+    let mut files = match &args.out {
+        Some(dir) => Some(RunOutputs::open(
+            dir,
+            args.force,
+            args.fresh,
+            reactive,
+            args.ss_output.then(|| ss_name.clone()),
+            &inputs,
+        )?),
         None => None,
     };
     let first = settings.start_step;
@@ -331,35 +366,21 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         Some(last) => last.saturating_sub(first),
         None => settings.end_step().saturating_sub(first),
     });
-    let mut written: std::io::Result<()> = Ok(());
-    // The step and time of the last output written: where the outputs end.
-    let mut last_output = (first, settings.t_start());
-    if let Some(out) = &mut trajectory {
-        written = out.record_start(first, settings.t_start(), &particles, scene);
+    let mut failure: Option<Failure> = None;
+    if let Some(out) = &mut files {
+        failure = out
+            .record_start(first, settings.t_start(), &particles, scene)
+            .err();
     }
-    // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
-    // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
-    // to as pkdgrav does, unless --fresh.
-    let reactive = settings.method() == walls_sim::run::ContactModel::Ssdem
-        && settings.build.walls_react
-        && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
-    let mut reactive_files = match (&args.out, reactive) {
-        (Some(dir), true) => Some(
-            walls_sim::io::wallsreact::ReactiveOutput::open(dir, args.fresh)
-                .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?,
-        ),
-        _ => None,
-    };
     // Ctrl-C (or SIGTERM, SIGHUP) stops the run after the step it is in, so that every
     // output ends on whole rows.
-    crate::interrupt::install_graceful();
+    walls_output::interrupt::install_graceful();
     // A failed write stops the run after its step: nothing more would be written.
-    let write_failed = AtomicBool::new(written.is_err());
+    let write_failed = AtomicBool::new(failure.is_some());
     // The parts of the model the report names, from the particles the run is given.
     let model = args
         .json
         .then(|| walls_sim::report::model(scene, &particles, &settings));
-    let writing = args.out.is_some();
     let outcome = run_watched(
         scene,
         particles,
@@ -370,64 +391,51 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             }
             // Without `--out` there is nothing to write, and the particles are not looked
             // at (looking gives the kicks owed: a pass over them).
-            if !output(step) || written.is_err() || !writing {
+            let Some(out) = files.as_mut().filter(|_| output(step) && failure.is_none()) else {
                 return;
-            }
+            };
             // Only now are the particles looked at (`Snapshot`).
             let (states, assemblies) = snapshot.look();
-            written = (reactive_files.as_mut())
-                .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
-                .and_then(|()| {
-                    (trajectory.as_mut())
-                        .map_or(Ok(()), |out| out.record(step, t, states, scene, assemblies))
-                })
-                .and_then(|()| match &args.out {
-                    Some(dir) if args.ss_output => write_ss(dir, &ss_name, step, t, states),
-                    _ => Ok(()),
-                });
-            write_failed.store(written.is_err(), Ordering::Relaxed);
-            last_output = (step, t);
+            failure = out.record(step, t, states, scene, assemblies).err();
+            write_failed.store(failure.is_some(), Ordering::Relaxed);
         },
-        &|| write_failed.load(Ordering::Relaxed) || crate::interrupt::stop_requested(),
+        &|| write_failed.load(Ordering::Relaxed) || walls_output::interrupt::stop_requested(),
     );
     if let Some(bar) = progress {
         bar.finish_and_clear();
     }
-    if let Some(out) = trajectory {
-        written = written.and_then(|()| out.finish());
-    }
-    if let Some(out) = reactive_files {
-        written = written.and_then(|()| out.finish());
-    }
-    if let (Err(e), Some(dir)) = (written, &args.out) {
-        // A failed write may have cut a row: each file is cut back to its last whole row,
-        // keeping every row written before.
-        let mut names = vec!["particles.csv", "walls.csv"];
-        if reactive {
-            names.extend(["WALLSREACTdata.out", "WALLSREACTviz.out"]);
+    // Where the outputs end: after a failure, every file cut back to the last output step
+    // all of them hold whole.
+    let mut written: Option<Written> = None;
+    if let Some(mut out) = files {
+        let (names, last) = (out.files(), out.last());
+        if failure.is_some() {
+            for problem in out.rollback() {
+                crate::errln!("walls-sim: error: {problem}");
+            }
+        } else if let Err(message) = out.finish() {
+            failure = Some(Failure {
+                step: first + outcome.steps,
+                t: outcome.t,
+                message,
+            });
         }
-        let uncut: Vec<String> = names
-            .into_iter()
-            .filter_map(|name| {
-                let why = keep_whole_rows(&dir.join(name)).err()?;
-                Some(format!("; {name} may end mid-row ({why})"))
-            })
-            .collect();
-        return Err(format!(
-            "cannot write the outputs to {}: {e}; they end at their last whole row{}",
-            dir.display(),
-            uncut.concat()
-        ));
+        written = Some(Written { names, last });
     }
     if let Some(model) = model {
-        let outputs = args
-            .out
-            .as_ref()
-            .map(|dir| output_files(dir, args.ss_output, reactive));
         let report = walls_sim::report::Report::new(model, &settings, &outcome);
-        let report = match &outputs {
-            Some(files) => report.with_outputs(files),
+        let report = match &written {
+            Some(w) => report.with_outputs(&w.names),
             None => report,
+        };
+        let report = match (&failure, &written) {
+            (Some(f), Some(w)) => report.with_output_error(OutputError {
+                message: &f.message,
+                step: f.step,
+                t: f.t,
+                whole_until: w.last,
+            }),
+            _ => report,
         };
         crate::console::out_streamed(|w| report.write_json(w));
     } else {
@@ -439,6 +447,27 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             crate::errln!("walls-sim: warning: {w}");
         }
     }
+    if let (Some(f), Some(Written { names, last }), Some(dir)) = (&failure, &written, &args.out) {
+        crate::errln!(
+            "walls-sim: error: at output step {} (t = {}): {}",
+            f.step,
+            readout.time(f.t),
+            f.message
+        );
+        crate::errln!(
+            "walls-sim: the outputs in {} {}: {}",
+            dir.display(),
+            match last {
+                Some((step, t)) => format!(
+                    "end at output step {step} (t = {}), their last whole one",
+                    readout.time(*t)
+                ),
+                None => "hold no whole output step".to_string(),
+            },
+            names.join(", ")
+        );
+        return Ok(2);
+    }
     let Some(why) = outcome.stopped else {
         return Ok(exit_status(errors));
     };
@@ -447,83 +476,22 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         first + outcome.steps,
         readout.time(outcome.t),
     );
-    if let Some(dir) = &args.out {
-        let (step, t) = last_output;
+    if let (Some(Written { names, last }), Some(dir)) = (&written, &args.out) {
+        let (step, t) = last.unwrap_or((first, settings.t_start()));
         crate::errln!(
             "walls-sim: the outputs in {} end at their last output, step {step} (t = {}), in whole rows: {}",
             dir.display(),
             readout.time(t),
-            output_files(dir, args.ss_output, reactive).join(", ")
+            names.join(", ")
         );
     }
     Ok(1)
 }
 
-/// The output files a run with `--out dir` writes: the trajectory's, the `.ss` outputs
-/// (as a pattern) and pkdgrav's reactive-wall files.
-fn output_files(dir: &std::path::Path, ss: bool, reactive: bool) -> Vec<String> {
-    let path = |name: &str| dir.join(name).display().to_string();
-    let mut names = vec![path("particles.csv"), path("walls.csv")];
-    if ss {
-        names.push("the .ss outputs".to_string());
-    }
-    if reactive {
-        names.extend([path("WALLSREACTdata.out"), path("WALLSREACTviz.out")]);
-    }
-    names
-}
-
-/// pkdgrav's output after `step`: the living particles, in input order, as pkdgrav
-/// writes them, at time `t`.
-fn write_ss(
-    dir: &std::path::Path,
-    (name, digits): &(String, usize),
-    step: u64,
-    t: f64,
-    states: &[walls_sim::run::State],
-) -> std::io::Result<()> {
-    use walls_sim::io::particles::{ss_file_name, write_ss_output};
-    let path = dir.join(ss_file_name(name, *digits, step));
-    std::fs::File::create(&path)
-        .and_then(|file| {
-            let mut out = std::io::BufWriter::new(file);
-            write_ss_output(&mut out, t, states)?;
-            std::io::Write::flush(&mut out)
-        })
-        .inspect_err(|_| {
-            // Cut short, it is no .ss file: it goes.
-            let _ = std::fs::remove_file(&path);
-        })
-}
-
-/// Cuts the file at `path` after its last whole line, where a write that failed may
-/// have left part of a row; removes it when no line is whole (nothing when it does not
-/// exist).
-fn keep_whole_rows(path: &std::path::Path) -> std::io::Result<()> {
-    use std::io::{Read, Seek, SeekFrom};
-    let mut file = match std::fs::OpenOptions::new()
-        .read(true)
-        .write(true)
-        .open(path)
-    {
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
-        opened => opened?,
-    };
-    // From the end back, a few kilobytes at a time: a row is a few hundred bytes.
-    let mut chunk = [0u8; 4096];
-    let mut end = file.metadata()?.len();
-    while end > 0 {
-        let start = end.saturating_sub(chunk.len() as u64);
-        let read = &mut chunk[..(end - start) as usize];
-        file.seek(SeekFrom::Start(start))?;
-        file.read_exact(read)?;
-        if let Some(i) = read.iter().rposition(|&b| b == b'\n') {
-            return file.set_len(start + i as u64 + 1);
-        }
-        end = start;
-    }
-    drop(file);
-    std::fs::remove_file(path)
+/// Where a run's outputs end: the files, and the last output step all of them hold whole.
+struct Written {
+    names: Vec<String>,
+    last: Option<(u64, f64)>,
 }
 
 /// A progress bar over `steps` steps, when standard error is a terminal.
@@ -538,31 +506,4 @@ fn progress_bar(steps: u64) -> Option<indicatif::ProgressBar> {
         bar.set_style(style);
     }
     Some(bar)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::keep_whole_rows;
-
-    #[test]
-    fn a_cut_output_keeps_its_whole_rows() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("particles.csv");
-        let whole = format!("step,t\n{}", "0,0\n".repeat(3000));
-        for (written, kept) in [
-            (format!("{whole}100,0."), Some(whole.as_str())),
-            (whole.clone(), Some(whole.as_str())),
-            // A cut row longer than what is read at a time.
-            (format!("{whole}{}", "9".repeat(5000)), Some(whole.as_str())),
-            ("step,".to_string(), None),
-            (String::new(), None),
-        ] {
-            std::fs::write(&path, &written).unwrap();
-            keep_whole_rows(&path).unwrap();
-            assert_eq!(std::fs::read_to_string(&path).ok().as_deref(), kept);
-        }
-        // A file never made stays unmade.
-        keep_whole_rows(&dir.path().join("walls.csv")).unwrap();
-        assert!(!dir.path().join("walls.csv").exists());
-    }
 }

@@ -34,6 +34,11 @@ pub struct PreviewArgs {
     /// [0, --until]).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Replace the files of an earlier picture (FILE, its numbered stills or frames,
+    /// walls.inc): regular files that the preview does not read, not read-only, with
+    /// one name.
+    #[arg(long, requires = "out")]
+    pub force: bool,
     /// Particles to draw too: a CSV or .ss file; or a run's outputs as a movie, one
     /// frame per output: several .ss files (ss.00000 ss.00100…), a particles.csv of
     /// `walls-sim run --out`, or such a folder (its particles.csv, else its .ss series,
@@ -98,7 +103,11 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         .chain(&args.trajectory)
         .cloned()
         .collect();
-    let (snapshots, found_viz) = read_particles(&inputs)?;
+    let ParticlesRead {
+        snapshots,
+        viz: found_viz,
+        files: read_files,
+    } = read_particles(&inputs)?;
     // Every format draws reactive walls where a run moved them.
     let viz_file = args.reactive.clone().or(found_viz);
     let viz = match &viz_file {
@@ -159,7 +168,27 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
-    output::write(args, &file, ssdraw.as_ref(), kind, scene, &movie, series)?;
+    // Every input, so that no output replaces one (`walls.inc` named as the walls file).
+    let mut outputs = walls_output::Outputs::new(walls_output::Tool::PREVIEW, args.force);
+    outputs.reads(&file);
+    for read in inputs
+        .iter()
+        .chain(&args.ssdraw)
+        .chain(&viz_file)
+        .chain(&read_files)
+    {
+        outputs.reads(read);
+    }
+    output::write(
+        args,
+        &file,
+        ssdraw.as_ref(),
+        kind,
+        scene,
+        &movie,
+        series,
+        &outputs,
+    )?;
     Ok(exit_status(errors))
 }
 
@@ -179,8 +208,9 @@ fn times(args: &PreviewArgs) -> Vec<f64> {
 }
 
 /// The snapshots of the particle files and folders `paths`, in the order given, and
-/// the `WALLSREACTviz.out` of a folder among them; a progress bar for a long series.
-fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>), String> {
+/// the `WALLSREACTviz.out` of a folder among them, and the files read; a progress bar
+/// for a long series.
+fn read_particles(paths: &[PathBuf]) -> Result<ParticlesRead, String> {
     let mut files = Vec::new();
     let mut viz = None;
     for p in paths {
@@ -199,7 +229,21 @@ fn read_particles(paths: &[PathBuf]) -> Result<(Vec<Snapshot>, Option<PathBuf>),
         bar.inc(1);
     }
     bar.finish_and_clear();
-    Ok((snapshots, viz))
+    Ok(ParticlesRead {
+        snapshots,
+        viz,
+        files,
+    })
+}
+
+/// What [`read_particles`] read.
+struct ParticlesRead {
+    /// The snapshots, in the order given.
+    snapshots: Vec<Snapshot>,
+    /// The `WALLSREACTviz.out` of a folder among them.
+    viz: Option<PathBuf>,
+    /// The particle files read.
+    files: Vec<PathBuf>,
 }
 
 /// The `ssdraw.par` at `path`, its unused lines reported on standard error.

@@ -8,9 +8,10 @@ use crate::commands::sim::UnitsArg;
 use crate::movie::Movie;
 use indicatif::ProgressBar;
 use std::io::{IsTerminal, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use walls_geometry::units::{Readout, Scale};
 use walls_model::Scene;
+use walls_output::{Outputs, Target, Tool};
 use walls_preview::MovieFrame;
 use walls_preview::html::Particles;
 use walls_preview::ssdraw::SsdrawView;
@@ -76,7 +77,12 @@ const NAMES: &str =
     "use .svg, .pov, .vtp, .pvd or .html (or no --out, or --out -, for SVG on standard output)";
 
 /// Writes `frames` as `kind` (`None`: SVG on standard output). `series`: the frames
-/// are a run's outputs (not --frames of one picture).
+/// are a run's outputs (not --frames of one picture). Every file is planned through
+/// `outputs` (the one writer's policy) before any is written.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the preview's parts, each used once"
+)]
 pub(super) fn write(
     args: &PreviewArgs,
     file: &str,
@@ -85,78 +91,57 @@ pub(super) fn write(
     scene: &Scene,
     movie: &Movie,
     series: bool,
+    outputs: &Outputs,
 ) -> Result<(), String> {
     let frames = &movie.frames[..];
     let readout = Readout::new(args.units.into(), &scene.units);
-    let cannot = |path: &Path, e: std::io::Error| format!("cannot write {}: {e}", path.display());
-    let path = args.out.as_deref().unwrap_or(Path::new("-"));
     let view = svg_view(args, ssdraw, movie);
+    let (Some(kind), Some(path)) = (kind, args.out.as_deref()) else {
+        let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+        return svg(&mut out, &view, args.seconds, movie, frames, &readout)
+            .and_then(|()| out.flush())
+            .map_err(|e| format!("cannot write the picture: {e}"));
+    };
+    let files = Files::plan(outputs, path, kind, frames.len())?;
+    let write = |target: &Target, what: &mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>| {
+        target.write_with(what).map_err(|e| target.message(&e))
+    };
+    let bar = progress(files.frames.len(), "written");
     match kind {
-        None => {
-            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            svg(&mut out, &view, args.seconds, movie, frames, &readout)
-                .and_then(|()| out.flush())
-                .map_err(|e| format!("cannot write the picture: {e}"))
-        }
-        Some(Kind::Svg) => {
-            let save = |path: &Path, frames: &[MovieFrame]| {
-                let mut out = std::io::BufWriter::new(
-                    std::fs::File::create(path).map_err(|e| cannot(path, e))?,
-                );
+        Kind::Svg => {
+            write(&files.main, &mut |mut out| {
                 svg(&mut out, &view, args.seconds, movie, frames, &readout)
-                    .and_then(|()| out.flush())
-                    .map_err(|e| cannot(path, e))
-            };
-            save(path, frames)?;
-            if frames.len() > 1 {
-                let bar = progress(frames.len(), "written");
-                for (k, frame) in frames.iter().enumerate() {
-                    save(&numbered(path, k, "svg"), std::slice::from_ref(frame))?;
-                    bar.inc(1);
-                }
-                bar.finish_and_clear();
-            }
-            Ok(())
-        }
-        Some(Kind::Pov) => {
-            let default = walls_preview::pov::View::default();
-            // ssdraw's camera where --view does not say otherwise, looking at its
-            // look-at point or the scene's centre.
-            let camera = ssdraw.filter(|_| args.view.is_none()).and_then(|s| {
-                let centre = (movie.bounds.0 + movie.bounds.1) / 2.0;
-                s.camera.map(|at| (at, s.look_at.unwrap_or(centre)))
-            });
-            let pov_view = walls_preview::pov::View {
-                from: view.from,
-                aspect: f64::from(view.width) / f64::from(view.height),
-                background: ssdraw
-                    .and_then(|s| s.background)
-                    .unwrap_or(default.background),
-                camera,
-                sky: args
-                    .up
-                    .is_none()
-                    .then(|| ssdraw.and_then(|s| s.up))
-                    .flatten(),
-                ..default
-            };
-            // One scene, or numbered scenes FILE-000.pov…, each wall where the frame
-            // places it, in the movie's box.
-            let bar = progress(frames.len(), "written");
-            for (k, frame) in frames.iter().enumerate() {
-                let file = if frames.len() > 1 {
-                    numbered(path, k, "pov")
-                } else {
-                    path.to_path_buf()
-                };
-                walls_preview::pov::write_frame_file(&file, scene, frame, movie.bounds, &pov_view)
-                    .map_err(|e| cannot(&file, e))?;
+            })?;
+            for (target, frame) in files.frames.iter().zip(frames) {
+                write(target, &mut |mut out| {
+                    let one = std::slice::from_ref(frame);
+                    svg(&mut out, &view, args.seconds, movie, one, &readout)
+                })?;
                 bar.inc(1);
             }
-            bar.finish_and_clear();
-            Ok(())
         }
-        Some(Kind::Vtp) => {
+        Kind::Pov => {
+            let pov_view = pov_view(args, ssdraw, movie, &view);
+            // One scene, or numbered scenes FILE-000.pov…, each wall where the frame
+            // places it, in the movie's box; the styles' include beside them.
+            let scenes = if frames.len() > 1 {
+                &files.frames[..]
+            } else {
+                std::slice::from_ref(&files.main)
+            };
+            for (target, frame) in scenes.iter().zip(frames) {
+                write(target, &mut |mut out| {
+                    walls_preview::pov::write_frame(&mut out, scene, frame, movie.bounds, &pov_view)
+                })?;
+                bar.inc(1);
+            }
+            if let Some(include) = &files.include {
+                include
+                    .write(walls_preview::pov::INCLUDE.as_bytes())
+                    .map_err(|e| include.message(&e))?;
+            }
+        }
+        Kind::Vtp => {
             let [frame] = frames else {
                 return Err(format!(
                     "{} frames do not fit in one .vtp: write a ParaView collection, --out {}",
@@ -164,52 +149,161 @@ pub(super) fn write(
                     path.with_extension("pvd").display()
                 ));
             };
-            let mut out =
-                std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            walls_preview::vtk::write(
-                &mut out,
-                &frame.walls,
-                &frame.particles,
-                frame.t,
-                &vtk_scale(args.units, &readout),
-            )
-            .and_then(|()| out.flush())
-            .map_err(|e| cannot(path, e))
+            write(&files.main, &mut |mut out| {
+                walls_preview::vtk::write(
+                    &mut out,
+                    &frame.walls,
+                    &frame.particles,
+                    frame.t,
+                    &vtk_scale(args.units, &readout),
+                )
+            })?;
         }
-        Some(Kind::Pvd) => {
-            let bar = progress(frames.len(), "written");
-            walls_preview::pvd::write_file(path, frames, &vtk_scale(args.units, &readout), |_| {
-                bar.inc(1)
+        Kind::Pvd => {
+            let scale = vtk_scale(args.units, &readout);
+            for (target, frame) in files.frames.iter().zip(frames) {
+                write(target, &mut |mut out| {
+                    walls_preview::vtk::write(
+                        &mut out,
+                        &frame.walls,
+                        &frame.particles,
+                        frame.t,
+                        &scale,
+                    )
+                })?;
+                bar.inc(1);
+            }
+            let names = walls_preview::pvd::frame_files(path, frames.len());
+            write(&files.main, &mut |mut out| {
+                walls_preview::pvd::write(&mut out, frames, &names, &scale)
+            })?;
+        }
+        Kind::Html => {
+            write(&files.main, &mut |mut out| {
+                match (frames, args.until) {
+                    // One set of particles with the walls' motion over [0, --until],
+                    // sampled at 101 times.
+                    ([frame], Some(until)) if !series => {
+                        let moving = html_particles(frame);
+                        walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
+                    }
+                    // A run's outputs, --frames, or a still: the frames as they are,
+                    // reactive walls placed, particles matched by index.
+                    _ => {
+                        let options = walls_preview::html::MovieOptions {
+                            readout: readout.clone(),
+                            trails: args.trails.map(|n| n as usize),
+                            title: format!("walls preview: {file}"),
+                        };
+                        walls_preview::html::write_movie(&mut out, scene, frames, &options)
+                    }
+                }
+            })?;
+        }
+    }
+    bar.finish_and_clear();
+    Ok(())
+}
+
+/// The files of a picture, planned: the one `--out` names, the numbered stills or
+/// scenes (or a collection's frames), and POV-Ray's include.
+struct Files {
+    main: Target,
+    frames: Vec<Target>,
+    include: Option<Target>,
+}
+
+impl Files {
+    /// Plans every file a picture of `kind` with `frames` frames at `path` writes, in
+    /// `path`'s folder: refused before anything is written if any may not be.
+    fn plan(outputs: &Outputs, path: &Path, kind: Kind, frames: usize) -> Result<Files, String> {
+        let folder = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        let plan = |name: &Path| {
+            outputs.plan_in(folder, name).map_err(|e| {
+                e.message(
+                    &walls_output::path_in(folder, name).display().to_string(),
+                    Tool::PREVIEW,
+                )
             })
-            .map_err(|e| cannot(path, e))?;
-            bar.finish_and_clear();
-            Ok(())
-        }
-        Some(Kind::Html) => {
-            let mut out =
-                std::io::BufWriter::new(std::fs::File::create(path).map_err(|e| cannot(path, e))?);
-            let written = match (frames, args.until) {
-                // One set of particles with the walls' motion over [0, --until],
-                // sampled at 101 times.
-                ([frame], Some(until)) if !series => {
-                    let moving = html_particles(frame);
-                    walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
+        };
+        let name = |p: &Path| p.file_name().map(PathBuf::from).unwrap_or_default();
+        let main = plan(&name(path))?;
+        let numbered_names = |extension: &str| -> Vec<PathBuf> {
+            (0..frames)
+                .map(|k| name(&numbered(path, k, extension)))
+                .collect()
+        };
+        let frame_names = match kind {
+            Kind::Svg if frames > 1 => numbered_names("svg"),
+            Kind::Pov if frames > 1 => numbered_names("pov"),
+            Kind::Pvd => walls_preview::pvd::frame_files(path, frames),
+            _ => Vec::new(),
+        };
+        let frames = frame_names
+            .iter()
+            .map(|n| plan(n))
+            .collect::<Result<Vec<_>, _>>()?;
+        // The include is the same for every scene: one already there as written is kept.
+        let include = match kind {
+            Kind::Pov => {
+                let name = Path::new(walls_preview::pov::INCLUDE_NAME);
+                // Read only if it is a regular file: a FIFO there would block the read.
+                let path = folder.join(name);
+                let regular = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
+                let there = regular.then(|| std::fs::read(&path).ok()).flatten();
+                match there.as_deref() == Some(walls_preview::pov::INCLUDE.as_bytes()) {
+                    true => None,
+                    false => Some(plan(name)?),
                 }
-                // A run's outputs, --frames, or a still: the frames as they are,
-                // reactive walls placed, particles matched by index.
-                _ => {
-                    let options = walls_preview::html::MovieOptions {
-                        readout,
-                        trails: args.trails.map(|n| n as usize),
-                        title: format!("walls preview: {file}"),
-                    };
-                    walls_preview::html::write_movie(&mut out, scene, frames, &options)
-                }
-            };
-            written
-                .and_then(|()| out.flush())
-                .map_err(|e| cannot(path, e))
+            }
+            _ => None,
+        };
+        if kind == Kind::Pvd
+            && let Some(sub) = frame_names.first().and_then(|f| f.parent())
+        {
+            std::fs::create_dir_all(folder.join(sub)).map_err(|e| {
+                format!("cannot make the folder {}: {e}", folder.join(sub).display())
+            })?;
         }
+        Ok(Files {
+            main,
+            frames,
+            include,
+        })
+    }
+}
+
+/// The POV-Ray view: the SVG view's direction and aspect, ssdraw's camera, background and
+/// up where `--view` and `--up` do not say otherwise.
+fn pov_view(
+    args: &PreviewArgs,
+    ssdraw: Option<&SsdrawView>,
+    movie: &Movie,
+    view: &walls_preview::svg::View,
+) -> walls_preview::pov::View {
+    let default = walls_preview::pov::View::default();
+    // ssdraw's camera where --view does not say otherwise, looking at its look-at point
+    // or the scene's centre.
+    let camera = ssdraw.filter(|_| args.view.is_none()).and_then(|s| {
+        let centre = (movie.bounds.0 + movie.bounds.1) / 2.0;
+        s.camera.map(|at| (at, s.look_at.unwrap_or(centre)))
+    });
+    walls_preview::pov::View {
+        from: view.from,
+        aspect: f64::from(view.width) / f64::from(view.height),
+        background: ssdraw
+            .and_then(|s| s.background)
+            .unwrap_or(default.background),
+        camera,
+        sky: args
+            .up
+            .is_none()
+            .then(|| ssdraw.and_then(|s| s.up))
+            .flatten(),
+        ..default
     }
 }
 

@@ -1,4 +1,5 @@
-//! Ctrl-C and `kill` (SIGINT, SIGTERM, SIGHUP) without leaving a mess.
+//! Ctrl-C and `kill` (SIGINT, SIGTERM, SIGHUP) without leaving a mess: the new files
+//! the writer has not yet put in place go with the process.
 //!
 //! A thread waits for the signals (signal-hook's iterator; no code runs in the signal
 //! handler itself). When one comes:

@@ -1,0 +1,395 @@
+//! The files of `walls-sim run --out DIR` (docs/evaluator.md, "Outputs"), through the one
+//! writer (`walls-output`): the trajectory (`particles.csv`, `walls.csv`), pkdgrav's
+//! WALLSREACT files when the run has reactive walls, and, with `--ss-output`, a `.ss`
+//! file at each output step.
+//!
+//! Everything is planned before the run starts ([`RunOutputs::open`]): every file stays in
+//! DIR (`achOutName`'s folder part is not followed: [`ss_base`]), none is a file the run
+//! reads, none is a device, a FIFO, a hard link or a read-only file, and an existing one
+//! is replaced only with `--force` (the WALLSREACT files are appended to, as pkdgrav does,
+//! unless `--fresh` empties them). At each output step ([`RunOutputs::record`]) every
+//! file's rows are written and sent to the files, the `.ss` file is written whole, and
+//! only then is the step marked whole in each; after a failed write
+//! ([`RunOutputs::rollback`]) every file is cut back to the last step marked, so that all
+//! end at the same whole output step, and nothing is removed.
+
+use std::path::{Path, PathBuf};
+use walls_geometry::{Particle, Wall};
+use walls_output::{Outputs, Stream, Tool, WriteError, path_in};
+use walls_sim::dynamics::reactive::Assembly;
+use walls_sim::io::particles::{ss_file_name, write_ss_output};
+use walls_sim::io::trajectory::{PARTICLES_FILE, Trajectory, WALLS_FILE};
+use walls_sim::io::wallsreact::{DATA_FILE, ReactiveOutput, VIZ_FILE};
+use walls_sim::run::State;
+
+/// The base name and digits of the `.ss` outputs (pkdgrav's `achOutName`, `nDigits`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SsNames {
+    /// The base name, without a folder.
+    pub base: String,
+    /// The least number of digits of the step.
+    pub digits: usize,
+}
+
+/// The `.ss` outputs' base name from `achOutName` (`None`: pkdgrav's `ss`), and a warning
+/// when its folder part is not followed: the outputs go to `--out`, named by the last part
+/// of the path (`../../e` and `/scratch/run/e` give `e`; `..` alone gives `ss`).
+pub fn ss_base(out_name: Option<&str>) -> (String, Option<String>) {
+    let Some(name) = out_name else {
+        return ("ss".into(), None);
+    };
+    let last = Path::new(name)
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .filter(|n| n != "." && n != "..");
+    match last {
+        Some(base) if base == name => (base, None),
+        Some(base) => {
+            let warning = format!(
+                "achOutName = {name}: its folder is not followed: the .ss outputs are \
+                 written in --out as {base}.NNNNN"
+            );
+            (base, Some(warning))
+        }
+        None => (
+            "ss".into(),
+            Some(format!(
+                "achOutName = {name} names no file: the .ss outputs are written in --out as ss.NNNNN"
+            )),
+        ),
+    }
+}
+
+/// Why the outputs could not be written at an output step.
+#[derive(Debug)]
+pub struct Failure {
+    /// The output step.
+    pub step: u64,
+    /// Its time.
+    pub t: f64,
+    /// What could not be written, and why, as the user reads it.
+    pub message: String,
+}
+
+/// The open outputs of a run.
+pub struct RunOutputs {
+    dir: PathBuf,
+    outputs: Outputs,
+    trajectory: Trajectory<Stream>,
+    reactive: Option<ReactiveOutput<Stream>>,
+    ss: Option<SsNames>,
+    /// The first and last `.ss` files written.
+    ss_written: Option<(String, String, usize)>,
+    /// The last output step every file holds whole, and its time.
+    last: Option<(u64, f64)>,
+}
+
+impl RunOutputs {
+    /// Plans and opens the outputs in `dir` (made if missing) for a run that reads
+    /// `inputs`: the trajectory; the WALLSREACT files when `reactive` (appended to, or
+    /// emptied when `fresh`); and the `.ss` outputs named by `ss`. Existing outputs are
+    /// replaced only when `force`. Nothing is written if any output is refused.
+    pub fn open(
+        dir: &Path,
+        force: bool,
+        fresh: bool,
+        reactive: bool,
+        ss: Option<SsNames>,
+        inputs: &[String],
+    ) -> Result<RunOutputs, String> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot make the folder {}: {e}", dir.display()))?;
+        let mut outputs = Outputs::new(Tool::RUN, force);
+        for input in inputs {
+            outputs.reads(input);
+        }
+        let refused = |name: &Path, e: WriteError| {
+            e.message(&path_in(dir, name).display().to_string(), Tool::RUN)
+        };
+        let plan = |name: &str| {
+            let name = Path::new(name);
+            outputs.plan_in(dir, name).map_err(|e| refused(name, e))
+        };
+        let particles = plan(PARTICLES_FILE)?;
+        let walls = plan(WALLS_FILE)?;
+        let reacting = if reactive {
+            let plan = |name: &str| {
+                let name = Path::new(name);
+                outputs
+                    .plan_append_in(dir, name)
+                    .map_err(|e| refused(name, e))
+            };
+            Some((plan(DATA_FILE)?, plan(VIZ_FILE)?))
+        } else {
+            None
+        };
+        if let Some(names) = &ss {
+            // Every .ss output of an earlier run in the folder, checked now rather than
+            // when the run reaches its step.
+            for name in ss_files_in(dir, &names.base)? {
+                outputs
+                    .plan_in(dir, Path::new(&name))
+                    .map_err(|e| match e {
+                        WriteError::Refused(walls_output::Refusal::Exists) => format!(
+                            "not writing the .ss outputs in {}: {} holds {name}, an output of \
+                             an earlier run: pass --force to replace such files",
+                            dir.display(),
+                            dir.display()
+                        ),
+                        e => refused(Path::new(&name), e),
+                    })?;
+            }
+        }
+        let stream = |target: &walls_output::Target, fresh: bool| {
+            let opened = if fresh {
+                target.stream()
+            } else {
+                target.append()
+            };
+            opened.map_err(|e| target.message(&e))
+        };
+        let trajectory = Trajectory::new(stream(&particles, true)?, stream(&walls, true)?)
+            .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?;
+        let reactive = match reacting {
+            Some((data, viz)) => {
+                if !fresh {
+                    for target in [&data, &viz].into_iter().filter(|t| t.exists()) {
+                        crate::errln!(
+                            "walls-sim: appending to {}, as pkdgrav does (--fresh empties it first)",
+                            target.path().display()
+                        );
+                    }
+                }
+                Some(ReactiveOutput::new(
+                    stream(&data, fresh)?,
+                    stream(&viz, fresh)?,
+                ))
+            }
+            None => None,
+        };
+        let mut opened = RunOutputs {
+            dir: dir.to_path_buf(),
+            outputs,
+            trajectory,
+            reactive,
+            ss,
+            ss_written: None,
+            last: None,
+        };
+        // The headers, whole, before the first step.
+        if let Err(e) = opened.commit() {
+            opened.rollback();
+            return Err(e);
+        }
+        Ok(opened)
+    }
+
+    /// Writes the particles as the run starts with them (all alive), and the walls, at
+    /// `step`, time `t`, to the trajectory (pkdgrav writes no `.ss` output before its
+    /// first step).
+    pub fn record_start(
+        &mut self,
+        step: u64,
+        t: f64,
+        particles: &[Particle],
+        scene: &[Wall],
+    ) -> Result<(), Failure> {
+        let written = self.trajectory.record_start(step, t, particles, scene);
+        self.close_step(step, t, written, None)
+    }
+
+    /// Writes output step `step`, time `t`: the reactive assemblies, the trajectory's rows
+    /// and the `.ss` file, then marks the step whole in every file.
+    pub fn record(
+        &mut self,
+        step: u64,
+        t: f64,
+        states: &[State],
+        scene: &[Wall],
+        assemblies: &[Assembly],
+    ) -> Result<(), Failure> {
+        let written = (self.reactive.as_mut())
+            .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
+            .and_then(|()| self.trajectory.record(step, t, states, scene, assemblies));
+        self.close_step(step, t, written, Some(states))
+    }
+
+    /// After the rows of `step` were `written` (or not): sends them to the files, writes
+    /// the `.ss` file of `states` (if any), and marks the step whole; a failure names the
+    /// file.
+    fn close_step(
+        &mut self,
+        step: u64,
+        t: f64,
+        written: std::io::Result<()>,
+        states: Option<&[State]>,
+    ) -> Result<(), Failure> {
+        let fail = |message: String| Failure { step, t, message };
+        if let Err(e) = written {
+            return Err(fail(self.which_failed(&e)));
+        }
+        self.send().map_err(fail)?;
+        if let (Some(names), Some(states)) = (&self.ss, states) {
+            let name = ss_file_name(&names.base, names.digits, step);
+            let target = self
+                .outputs
+                .plan_in(&self.dir, Path::new(&name))
+                .map_err(|e| {
+                    fail(e.message(
+                        &path_in(&self.dir, Path::new(&name)).display().to_string(),
+                        Tool::RUN,
+                    ))
+                })?;
+            target
+                .write_with(|out| write_ss_output(out, t, states))
+                .map_err(|e| fail(target.message(&e)))?;
+            self.ss_written = Some(match self.ss_written.take() {
+                None => (name.clone(), name, 1),
+                Some((first, _, n)) => (first, name, n + 1),
+            });
+        }
+        self.commit().map_err(fail)?;
+        self.last = Some((step, t));
+        Ok(())
+    }
+
+    /// The streams: the trajectory's, then the WALLSREACT files'.
+    fn streams(&mut self) -> impl Iterator<Item = &mut Stream> {
+        let reactive = self.reactive.as_mut().map(ReactiveOutput::writers_mut);
+        self.trajectory
+            .writers_mut()
+            .into_iter()
+            .chain(reactive.into_iter().flatten())
+    }
+
+    /// Sends what every stream holds to its file.
+    fn send(&mut self) -> Result<(), String> {
+        self.trajectory.flush().map_err(|e| self.which_failed(&e))?;
+        for stream in self.streams() {
+            std::io::Write::flush(stream)
+                .map_err(|e| format!("cannot write {}: {e}", stream.path().display()))?;
+        }
+        Ok(())
+    }
+
+    /// Sends every stream's rows and marks them whole.
+    fn commit(&mut self) -> Result<(), String> {
+        self.send()?;
+        for stream in self.streams() {
+            // Nothing is left to send: marking cannot fail.
+            stream
+                .commit()
+                .map_err(|e| format!("cannot write {}: {e}", stream.path().display()))?;
+        }
+        Ok(())
+    }
+
+    /// The message for `e`, a failure while writing rows, naming the file that failed.
+    fn which_failed(&mut self, e: &std::io::Error) -> String {
+        let shown = self
+            .streams()
+            .find(|s| s.failed())
+            .map(|s| s.path().display().to_string());
+        match shown {
+            Some(path) => format!("cannot write {path}: {e}"),
+            None => format!("cannot write to {}: {e}", self.dir.display()),
+        }
+    }
+
+    /// Cuts every stream back to its last whole output step; the problems met doing so.
+    pub fn rollback(&mut self) -> Vec<String> {
+        self.streams()
+            .filter_map(|s| {
+                let e = s.rollback().err()?;
+                Some(format!("{} may end mid-row ({e})", s.path().display()))
+            })
+            .collect()
+    }
+
+    /// Marks the last rows whole and closes the files.
+    pub fn finish(self) -> Result<(), String> {
+        let (particles, walls) = self
+            .trajectory
+            .finish()
+            .map_err(|e| format!("cannot write to {}: {e}", self.dir.display()))?;
+        let mut streams = vec![particles, walls];
+        if let Some(reactive) = self.reactive {
+            let (data, viz) = reactive
+                .finish()
+                .map_err(|e| format!("cannot write to {}: {e}", self.dir.display()))?;
+            streams.extend([data, viz]);
+        }
+        for stream in streams {
+            let path = stream.path().display().to_string();
+            stream
+                .finish()
+                .map_err(|e| format!("cannot write {path}: {e}"))?;
+        }
+        Ok(())
+    }
+
+    /// The last output step every file holds whole, and its time.
+    pub fn last(&self) -> Option<(u64, f64)> {
+        self.last
+    }
+
+    /// The files written, as paths to show: the trajectory's, the `.ss` outputs (the first
+    /// and the last, and how many) and the WALLSREACT files.
+    pub fn files(&self) -> Vec<String> {
+        let path = |name: &str| path_in(&self.dir, Path::new(name)).display().to_string();
+        let mut names = vec![path(PARTICLES_FILE), path(WALLS_FILE)];
+        if let Some((first, last, n)) = &self.ss_written {
+            names.push(match n {
+                1 => path(first),
+                _ => format!("{} … {} ({n} .ss files)", path(first), path(last)),
+            });
+        }
+        if self.reactive.is_some() {
+            names.extend([path(DATA_FILE), path(VIZ_FILE)]);
+        }
+        names
+    }
+}
+
+/// The names of the files in `dir` that the `.ss` outputs named `base` could take:
+/// `base.` and digits.
+fn ss_files_in(dir: &Path, base: &str) -> Result<Vec<String>, String> {
+    let prefix = format!("{base}.");
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
+    let mut names = Vec::new();
+    for entry in entries {
+        let entry = entry.map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if let Some(step) = name.strip_prefix(&prefix)
+            && !step.is_empty()
+            && step.bytes().all(|b| b.is_ascii_digit())
+        {
+            names.push(name);
+        }
+    }
+    names.sort();
+    Ok(names)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::ss_base;
+
+    #[test]
+    fn the_ss_outputs_never_take_a_folder_from_achoutname() {
+        assert_eq!(ss_base(None), ("ss".into(), None));
+        assert_eq!(ss_base(Some("run")), ("run".into(), None));
+        for (name, base) in [
+            ("../../e", "e"),
+            ("/scratch/run/e", "e"),
+            ("out/ss", "ss"),
+            ("..", "ss"),
+            ("/", "ss"),
+        ] {
+            let (got, warning) = ss_base(Some(name));
+            assert_eq!(got, base, "{name}");
+            assert!(warning.unwrap().contains(name), "{name}");
+        }
+    }
+}
