@@ -20,6 +20,7 @@
 //! edited, and `ParticleStyle(Colour)`. [`write_file`] writes the scene and `walls.inc`
 //! beside it; `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
 
+use crate::finite::{NotDrawable, Subject};
 use crate::palette;
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
@@ -74,7 +75,9 @@ impl Default for View {
 }
 
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view` to
-/// `path`, and [`INCLUDE`] as `walls.inc` in the same directory.
+/// `path`, and [`INCLUDE`] as `walls.inc` in the same directory. A number that cannot be
+/// drawn ([`crate::finite`]) is refused before the file is opened, as an
+/// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
 pub fn write_file(
     path: &Path,
     scene: &Scene,
@@ -82,8 +85,9 @@ pub fn write_file(
     particles: &[Particle],
     view: &View,
 ) -> io::Result<()> {
+    let (walls, shapes, framing) = still(scene, t, particles, view)?;
     let mut out = io::BufWriter::new(std::fs::File::create(path)?);
-    write(&mut out, scene, t, particles, view)?;
+    write_shapes(&mut out, &walls, shapes, t, particles, &framing)?;
     out.flush()?;
     let dir = path.parent().unwrap_or(Path::new(""));
     std::fs::write(dir.join(INCLUDE_NAME), INCLUDE)
@@ -91,7 +95,8 @@ pub fn write_file(
 
 /// Writes one frame of a movie of `scene` to `path` (and `walls.inc` beside it): each
 /// wall where the frame places it (reactive walls as a run turned them), its particles,
-/// framed by `bounds` (the movie's box, the same for every frame).
+/// framed by `bounds` (the movie's box, the same for every frame). A number that cannot
+/// be drawn is refused before the file is opened, as [`write_file`] says.
 pub fn write_frame_file(
     path: &Path,
     scene: &Scene,
@@ -99,6 +104,7 @@ pub fn write_frame_file(
     bounds: (Vec3, Vec3),
     view: &View,
 ) -> io::Result<()> {
+    crate::finite::check(std::slice::from_ref(frame))?;
     let walls = decode(scene);
     // The frame's walls by index, looked up once each (a hull of 10⁴ triangles).
     let placed: BTreeMap<usize, &crate::WallMesh> =
@@ -110,6 +116,10 @@ pub fn write_frame_file(
             None => w.shape.at(w.motion.position_or_origin(frame.t)),
         })
         .collect();
+    let framing = framing(bounds, frame.t, view).map_err(|e| NotDrawable {
+        step: frame.step,
+        ..e
+    })?;
     let mut out = io::BufWriter::new(std::fs::File::create(path)?);
     write_shapes(
         &mut out,
@@ -117,8 +127,7 @@ pub fn write_frame_file(
         shapes,
         frame.t,
         &frame.particles,
-        Some(bounds),
-        view,
+        &framing,
     )?;
     out.flush()?;
     let dir = path.parent().unwrap_or(Path::new(""));
@@ -127,7 +136,8 @@ pub fn write_frame_file(
 
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it
 /// includes `walls.inc` ([`INCLUDE`]), which must be beside it (or on POV-Ray's `+L`
-/// path) to render.
+/// path) to render. A number that cannot be drawn is refused before anything is
+/// written, as [`write_file`] says.
 pub fn write(
     out: &mut impl Write,
     scene: &Scene,
@@ -135,35 +145,52 @@ pub fn write(
     particles: &[Particle],
     view: &View,
 ) -> io::Result<()> {
-    let walls = decode(scene);
-    let shapes = walls
-        .iter()
-        .map(|w| w.shape.at(w.motion.position_or_origin(t)))
-        .collect();
-    write_shapes(out, &walls, shapes, t, particles, None, view)
+    let (walls, shapes, framing) = still(scene, t, particles, view)?;
+    write_shapes(out, &walls, shapes, t, particles, &framing)
 }
 
-/// Writes the scene of `walls` drawn as `shapes` (each wall's shape where it is) at `t`,
-/// with `particles`, framed by `bounds` (else the box around the walls and the drawn
-/// particles).
-fn write_shapes(
-    out: &mut impl Write,
-    walls: &[walls_geometry::Wall],
-    shapes: Vec<Shape>,
+/// The walls of `scene` at `t` and their shapes there, framed with `particles` (the box
+/// around the walls and the drawn particles), once [`crate::finite::check_frame`] has
+/// passed the walls (tessellated) and the particles.
+fn still(
+    scene: &Scene,
     t: f64,
     particles: &[Particle],
-    bounds: Option<(Vec3, Vec3)>,
     view: &View,
-) -> io::Result<()> {
+) -> io::Result<(Vec<walls_geometry::Wall>, Vec<Shape>, Framing)> {
+    let walls = decode(scene);
     let drawn_particles: Vec<Particle> = particles
         .iter()
         .filter(|p| drawn(p.color.into()))
         .cloned()
         .collect();
-    let (lo, hi) = bounds.unwrap_or_else(|| scene_bounds(walls, &drawn_particles));
-    // ssdraw's "Renormalize?": the scene is written in coordinates (p − centre)/size,
-    // so that POV-Ray sees numbers near 1 at any scale (a 5 cm tube in AU is 3.7e-13
-    // long, below POV-Ray's tolerances).
+    let bounds = scene_bounds(&walls, &drawn_particles);
+    let meshes = crate::wall_meshes_in(&walls, t, 8, &bounds);
+    crate::finite::check_frame(t, &meshes, particles)?;
+    let shapes = walls
+        .iter()
+        .map(|w| w.shape.at(w.motion.position_or_origin(t)))
+        .collect();
+    Ok((walls, shapes, framing(bounds, t, view)?))
+}
+
+/// How a scene is written: its box's centre and size, and the view in the renormalised
+/// coordinates (p − centre)/size.
+struct Framing {
+    lo: Vec3,
+    hi: Vec3,
+    centre: Vec3,
+    size: f64,
+    view: View,
+}
+
+/// The framing of the box `bounds` seen from `view`: ssdraw's "Renormalize?", every
+/// coordinate written as (p − centre)/size, so that POV-Ray sees numbers near 1 at any
+/// scale (a 5 cm tube in AU is 3.7e-13 long, below POV-Ray's tolerances). A box, or a
+/// camera renormalised, with a number that cannot be drawn is refused.
+fn framing(bounds: (Vec3, Vec3), t: f64, view: &View) -> Result<Framing, NotDrawable> {
+    crate::finite::check_box(&bounds, t)?;
+    let (lo, hi) = bounds;
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
     let size = if size > 0.0 && size.is_finite() {
@@ -171,6 +198,56 @@ fn write_shapes(
     } else {
         1.0
     };
+    let unit = |p: &Vec3, part| {
+        let q = (p - centre) / size;
+        match q.iter().find(|x| !x.is_finite()) {
+            Some(&value) => Err(NotDrawable {
+                subject: Subject::View,
+                part,
+                value,
+                t,
+                step: None,
+                frame: None,
+            }),
+            None => Ok(q),
+        }
+    };
+    let camera = match view.camera {
+        Some((at, to)) => Some((
+            unit(&at, "its camera position, in units of the scene's size,")?,
+            unit(&to, "its look-at point, in units of the scene's size,")?,
+        )),
+        None => None,
+    };
+    Ok(Framing {
+        lo,
+        hi,
+        centre,
+        size,
+        view: View {
+            camera,
+            ..view.clone()
+        },
+    })
+}
+
+/// Writes the scene of `walls` drawn as `shapes` (each wall's shape where it is) at `t`,
+/// with `particles`, as `framing` says.
+fn write_shapes(
+    out: &mut impl Write,
+    walls: &[walls_geometry::Wall],
+    shapes: Vec<Shape>,
+    t: f64,
+    particles: &[Particle],
+    framing: &Framing,
+) -> io::Result<()> {
+    let Framing {
+        lo,
+        hi,
+        centre,
+        size,
+        ref view,
+    } = *framing;
     let unit = |p: &Vec3| (p - centre) / size;
 
     writeln!(
@@ -189,11 +266,7 @@ fn write_shapes(
         num(size)
     )?;
     writeln!(out)?;
-    let view = View {
-        camera: view.camera.map(|(at, to)| (unit(&at), unit(&to))),
-        ..view.clone()
-    };
-    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, &view)?;
+    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, view)?;
     writeln!(out)?;
     for (i, (wall, shape)) in walls.iter().zip(&shapes).enumerate() {
         let color = wall.appearance.color;

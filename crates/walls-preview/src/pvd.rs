@@ -25,13 +25,15 @@ pub fn frame_files(path: &Path, frames: usize) -> Vec<PathBuf> {
 
 /// Writes the collection `path` of `frames` in `scale`'s units: the folder of frames
 /// beside it (made if missing) with one `.vtp` each, then the `.pvd`. `written` is told
-/// each frame's number once its file is written.
+/// each frame's number once its file is written. A frame with a number that cannot be
+/// drawn ([`crate::finite::check`]) is refused before any folder or file is made.
 pub fn write_file(
     path: &Path,
     frames: &[MovieFrame],
     scale: &Scale,
     mut written: impl FnMut(usize),
 ) -> io::Result<()> {
+    crate::finite::check(frames)?;
     let dir = path.parent().unwrap_or(Path::new(""));
     let files = frame_files(path, frames.len());
     if let Some(folder) = files.first().and_then(|f| f.parent()) {
@@ -49,8 +51,8 @@ pub fn write_file(
 }
 
 /// Writes the `.pvd` listing `files` (one per frame, relative to the `.pvd`) at the
-/// frames' times in `scale`'s time unit.
-pub fn write(
+/// frames' times in `scale`'s time unit (checked by [`write_file`]).
+fn write(
     out: &mut impl Write,
     frames: &[MovieFrame],
     files: &[PathBuf],

@@ -334,7 +334,9 @@ fn furniture(camera: &Camera, readout: &Readout) -> String {
 
 /// Writes `frames` as one SVG: a still picture for one frame, an animation playing the
 /// frames in turn over `seconds` for several. The view fits the box `lo`–`hi`; times
-/// and the scale bar are shown as `readout` says.
+/// and the scale bar are shown as `readout` says. A frame with a number that cannot be
+/// drawn ([`crate::finite`]) is refused with nothing written, as an
+/// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
 pub fn write(
     out: &mut impl io::Write,
     frames: &[Frame],
@@ -343,6 +345,28 @@ pub fn write(
     seconds: f64,
     readout: &Readout,
 ) -> io::Result<()> {
+    out.write_all(document(frames, view, bounds, seconds, readout)?.as_bytes())
+}
+
+/// The SVG [`write()`] writes, or the first number of `frames` (or of the box) it cannot
+/// draw.
+pub fn document(
+    frames: &[Frame],
+    view: &View,
+    bounds: (Vec3, Vec3),
+    seconds: f64,
+    readout: &Readout,
+) -> Result<String, crate::finite::NotDrawable> {
+    let n = frames.len();
+    for (k, f) in frames.iter().enumerate() {
+        crate::finite::check_frame(f.t, f.walls, f.particles).map_err(|e| {
+            crate::finite::NotDrawable {
+                frame: (n > 1).then_some((k + 1, n)),
+                ..e
+            }
+        })?;
+    }
+    crate::finite::check_box(&bounds, frames.first().map_or(0.0, |f| f.t))?;
     let centres = frames
         .iter()
         .flat_map(|f| f.particles.iter().map(|p| p.pos));
@@ -381,5 +405,5 @@ pub fn write(
     }
     s.push_str(&furniture(&camera, readout));
     s.push_str("</svg>\n");
-    out.write_all(s.as_bytes())
+    Ok(s)
 }
