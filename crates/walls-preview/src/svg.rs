@@ -13,6 +13,7 @@ use std::fmt::Write as _;
 use std::io;
 use walls_geometry::Particle;
 use walls_geometry::units::{Readout, number};
+use walls_model::direction;
 
 type Vec3 = Vector3<f64>;
 
@@ -65,9 +66,10 @@ struct Camera {
 impl Camera {
     /// Fits the box `lo`–`hi` (and the particles' `centres`) into the view, with a margin.
     fn new(view: &View, lo: &Vec3, hi: &Vec3, centres: impl Iterator<Item = Vec3>) -> Camera {
-        let towards = view.from.try_normalize(0.0).unwrap_or_else(Vec3::z);
-        let right = view
-            .up
+        // Directions of any length: 1e308 along x is x (scaled first, not squared).
+        let towards = direction(&view.from).unwrap_or_else(Vec3::z);
+        let right = direction(&view.up)
+            .unwrap_or_else(Vec3::z)
             .cross(&towards)
             .try_normalize(1e-12)
             .unwrap_or_else(|| towards.cross(&Vec3::x()).normalize());

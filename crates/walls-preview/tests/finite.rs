@@ -193,3 +193,31 @@ fn the_page_refuses_a_nan_plane_and_a_far_frame_writing_nothing() {
     assert_eq!(refused(e), FAR_PARTICLE);
     assert!(out.is_empty());
 }
+
+#[test]
+fn a_view_of_any_length_is_a_direction() {
+    // `--view 1e308 0 0` (or an ssdraw camera that far) looked along NaN: every point of
+    // the SVG was NaN. A view is a direction, whatever its length.
+    let s = scene(DISK);
+    let walls = wall_meshes(&s, 0.0, 16);
+    let readout = Readout::new(System::Pkdgrav, &s.units);
+    let frames = [svg::Frame {
+        t: 0.0,
+        walls: &walls,
+        particles: &[],
+    }];
+    let box_ = (Vector3::repeat(-1.0), Vector3::repeat(1.0));
+    let draw = |from: Vector3<f64>, up: Vector3<f64>| {
+        let view = svg::View {
+            from,
+            up,
+            ..svg::View::default()
+        };
+        let mut out = Vec::new();
+        svg::write(&mut out, &frames, &view, box_, 4.0, &readout).unwrap();
+        String::from_utf8(out).unwrap()
+    };
+    let far = draw(Vector3::new(1e308, 0.0, 0.0), Vector3::new(0.0, 0.0, 1e308));
+    assert!(!far.contains("NaN"), "{far:.600}");
+    assert_eq!(far, draw(Vector3::x(), Vector3::z()));
+}
