@@ -429,11 +429,10 @@ fn coords(s: &mut String, xs: impl IntoIterator<Item = Vec3>, centre: &Vec3, siz
 fn frame_box(frames: &[MovieFrame]) -> (Vec3, Vec3, Vec3, f64) {
     let mut lo = Vec3::repeat(f64::INFINITY);
     let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+    // Every number finite and within ±1e150: `write_movie` checked the frames.
     let mut add = |a: Vec3, b: Vec3| {
-        if a.iter().chain(b.iter()).all(|x| x.is_finite()) {
-            lo = lo.inf(&a);
-            hi = hi.sup(&b);
-        }
+        lo = lo.inf(&a);
+        hi = hi.sup(&b);
     };
     for frame in frames {
         for wm in frame.walls.iter().filter(|wm| wm.rgb.is_some()) {
@@ -446,7 +445,8 @@ fn frame_box(frames: &[MovieFrame]) -> (Vec3, Vec3, Vec3, f64) {
             add(p.pos - r, p.pos + r);
         }
     }
-    if !lo.iter().all(|x| x.is_finite()) {
+    if lo.x > hi.x {
+        // Nothing drawn.
         return (Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), 1.0);
     }
     let centre = (lo + hi) / 2.0;
