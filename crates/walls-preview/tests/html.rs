@@ -798,3 +798,23 @@ fn a_long_movie_holds_at_most_a_megabyte_of_pictures_evenly_spaced() {
         "{gaps:?}"
     );
 }
+
+#[test]
+fn a_page_of_no_frames_holds_the_picture_of_an_empty_scene() {
+    let (scene, _, options) = movie();
+    let mut out = Vec::new();
+    html::write_movie(&mut out, &scene, &[], &options).unwrap();
+    let page = String::from_utf8(out).unwrap();
+    let picture = element(&page, "<div id=\"no-webgl-picture\"");
+    assert_eq!(
+        picture,
+        "<div id=\"no-webgl-picture\" data-frames=\"\" data-of=\"1\">"
+    );
+    let i = page.find(picture).unwrap() + picture.len();
+    assert!(
+        page[i..].trim_start().starts_with("<svg xmlns="),
+        "{:.200}",
+        &page[i..]
+    );
+    assert!(!page.contains("<?xml"), "the SVG's declaration is left out");
+}
