@@ -7,6 +7,9 @@
 //! The page needs no network: the viewer, three.js and its OrbitControls come bundled in
 //! one script (`assets/viewer.bundle.js`, built by `web/bundle.sh` from the npm packages
 //! locked in `web/package-lock.json` and committed) and the movie is JSON in the page.
+//! Where the browser has no WebGL the page shows why and what to do, and the SVG that
+//! [`crate::svg`] draws of the frame asked for (every frame, or as many as
+//! fit in [`FALLBACK_BYTES`], evenly spaced).
 //!
 //! [`write_movie`] writes frames ([`MovieFrame`]); [`write`] builds frames of a scene
 //! (walls where their motion puts them at evenly spaced times, particles from
@@ -16,8 +19,9 @@
 //! centimetres converted to AU is 1e-13 across; `f32` would lose a 1e-13 offset added
 //! to a 1e-13 centre). Walls are drawn from the first frame's meshes and moved in each
 //! frame rigidly: turned by `turn_k · turn_0ᵀ` about their first origin and moved to
-//! their origin then. Between frames the page interpolates positions linearly and takes
-//! each wall's turn from the nearest frame. Particles are matched across frames by
+//! their origin then (a wall that never turns is written about the centre of its mesh,
+//! moved as its origin moves). Between frames the page interpolates positions linearly
+//! and takes each wall's turn from the nearest frame. Particles are matched across frames by
 //! [`Particle::index`]; one missing from a frame is not drawn in it.
 //!
 //! The URL's fragment sets the initial time (`page.html#t=0.25`) and can hover a point
@@ -166,28 +170,108 @@ fn particles_at(p: &Particles, t: f64) -> Vec<Particle> {
 }
 
 /// Writes the page of a movie: `frames` (in increasing time) of `scene`'s walls and the
-/// particles, shown as `options` says. No frames give a page of an empty scene.
+/// particles, shown as `options` says. No frames give a page of an empty scene. A frame
+/// with a number that cannot be drawn ([`crate::finite::check`]) is refused before
+/// anything is written, as an [`io::ErrorKind::InvalidData`] error holding its
+/// [`crate::finite::NotDrawable`].
 pub fn write_movie(
     out: &mut impl io::Write,
     scene: &Scene,
     frames: &[MovieFrame],
     options: &MovieOptions,
 ) -> io::Result<()> {
+    crate::finite::check(frames)?;
     let json = data(scene, frames, options);
+    let (shown, picture) = fallback(frames, &options.readout)?;
+    let shown: Vec<String> = shown.iter().map(usize::to_string).collect();
     let bundle = script_safe(BUNDLE);
     let title = escape(&options.title);
     write!(
         out,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{title}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n\
-         <script id=\"walls-data\" type=\"application/json\">"
+         <title>{title}</title>\n<style>{STYLE}</style>\n\
+         <noscript><style>#no-webgl{{display:block}}</style></noscript>\n</head>\n<body>\n\
+         <div id=\"no-webgl\" hidden>\n<p id=\"no-webgl-message\">{NO_WEBGL}</p>\n\
+         <div id=\"no-webgl-picture\" data-frames=\"{}\" data-of=\"{}\">\n",
+        shown.join(","),
+        frames.len().max(1)
+    )?;
+    out.write_all(picture.as_bytes())?;
+    write!(
+        out,
+        "</div>\n</div>\n<script id=\"walls-data\" type=\"application/json\">"
     )?;
     out.write_all(json.as_bytes())?;
     write!(
         out,
         "</script>\n<script>{bundle}</script>\n</body>\n</html>\n"
     )
+}
+
+/// What the page says where it cannot draw with WebGL, above the SVG picture; the
+/// viewer fills in why (`#no-webgl-reason`) and which frame is shown
+/// (`#no-webgl-frame`).
+const NO_WEBGL: &str = "<b>This page draws the walls with WebGL, which this browser does \
+not offer here</b> (<span id=\"no-webgl-reason\">WebGL, or JavaScript, is turned off: \
+a headless browser, a remote desktop or a machine without a graphics processor</span>). \
+Below is the same scene as an SVG picture, drawn by the code of <code>walls-sim preview \
+FILE --out picture.svg</code>, seen from (1, &minus;1.5, 1). To turn the scene, hover \
+its walls and play its frames, open this page in a browser with WebGL (on your own \
+desktop, say); or draw the picture you need with <code>walls-sim preview</code>: \
+<code>--out picture.svg</code> (with <code>--view</code> and <code>--size</code>), \
+<code>--out scene.pov</code> for POV-Ray or <code>--out scene.vtp</code> for ParaView. \
+<span id=\"no-webgl-frame\"></span>";
+
+/// The most bytes of SVG a page holds for browsers without WebGL: past the first
+/// frame's picture, a movie's pictures stop here (docs/preview.md).
+pub const FALLBACK_BYTES: usize = 1_000_000;
+
+/// The frames drawn for a browser without WebGL and their SVG (its XML declaration
+/// left out, for the page): every frame when their pictures fit in [`FALLBACK_BYTES`];
+/// else as many as fit, evenly spaced from the first to the last (the size of a
+/// frame's picture taken as the larger of the first's and the last's); at least the
+/// first. Several frames make one SVG with a group per frame, as `--out movie.svg`
+/// does, which the viewer shows one at a time (and which plays by itself where
+/// scripts are off).
+fn fallback(frames: &[MovieFrame], readout: &Readout) -> io::Result<(Vec<usize>, String)> {
+    let (lo, hi, _, _) = frame_box(frames);
+    let view = crate::svg::View::default();
+    let drawn = |ks: &[usize]| -> io::Result<String> {
+        let frames: Vec<crate::svg::Frame> = ks
+            .iter()
+            .map(|&k| crate::svg::Frame {
+                t: frames[k].t,
+                walls: &frames[k].walls,
+                particles: &frames[k].particles,
+            })
+            .collect();
+        let seconds = (ks.len() as f64 / 10.0).max(10.0);
+        let svg = crate::svg::document(&frames, &view, (lo, hi), seconds, readout)?;
+        Ok(match svg.split_once('\n') {
+            Some((declaration, rest)) if declaration.starts_with("<?xml") => rest.to_string(),
+            _ => svg,
+        })
+    };
+    let n = frames.len();
+    if n == 0 {
+        return Ok((Vec::new(), drawn(&[])?));
+    }
+    let first = drawn(&[0])?;
+    if n == 1 {
+        return Ok((vec![0], first));
+    }
+    let each = first.len().max(drawn(&[n - 1])?.len()).max(1);
+    let fit = (FALLBACK_BYTES / each).clamp(1, n);
+    if fit == 1 {
+        return Ok((vec![0], first));
+    }
+    let mut ks: Vec<usize> = (0..fit)
+        .map(|j| (j as f64 * (n - 1) as f64 / (fit - 1) as f64).round() as usize)
+        .collect();
+    ks.dedup();
+    let svg = drawn(&ks)?;
+    Ok((ks, svg))
 }
 
 const STYLE: &str = "html,body{margin:0;height:100%;overflow:hidden;background:#20232a;\
@@ -199,7 +283,12 @@ align-items:center;background:rgba(0,0,0,.45);padding:6px 10px;border-radius:6px
 #time-label{font-variant-numeric:tabular-nums;min-width:12em}\
 #tooltip{position:fixed;background:rgba(0,0,0,.8);padding:6px 8px;border-radius:4px;\
 pointer-events:none;white-space:nowrap;font:12px ui-monospace,monospace}\
-#tooltip .key{color:#9cdcfe}";
+#tooltip .key{color:#9cdcfe}\
+#no-webgl{position:fixed;inset:0;overflow:auto;padding:10px 16px;box-sizing:border-box;\
+line-height:1.45}#no-webgl p{max-width:60em;margin:0 0 10px}#no-webgl code{color:#9cdcfe}\
+#no-webgl svg{display:block;max-width:100%;height:auto}\
+#no-webgl-controls{display:flex;gap:10px;align-items:center;max-width:800px;margin:0 0 8px}\
+#no-webgl-controls input{flex:1}";
 
 /// `js` made safe inside a `<script>` element: no `</script` or `<!--` (each escaped
 /// with a backslash, which means the same in JavaScript's strings and regular
@@ -335,16 +424,15 @@ fn coords(s: &mut String, xs: impl IntoIterator<Item = Vec3>, centre: &Vec3, siz
     );
 }
 /// The box around the movie: every drawn wall's mesh in every frame and every particle.
-/// Its centre and size (the longest side), a size of 1 for a box of none (a point or
-/// nothing).
-fn frame_box(frames: &[MovieFrame]) -> (Vec3, f64) {
+/// Its corners, centre and size (the longest side), a size of 1 for a box of none (a
+/// point or nothing).
+fn frame_box(frames: &[MovieFrame]) -> (Vec3, Vec3, Vec3, f64) {
     let mut lo = Vec3::repeat(f64::INFINITY);
     let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+    // Every number finite and within ±1e150: `write_movie` checked the frames.
     let mut add = |a: Vec3, b: Vec3| {
-        if a.iter().chain(b.iter()).all(|x| x.is_finite()) {
-            lo = lo.inf(&a);
-            hi = hi.sup(&b);
-        }
+        lo = lo.inf(&a);
+        hi = hi.sup(&b);
     };
     for frame in frames {
         for wm in frame.walls.iter().filter(|wm| wm.rgb.is_some()) {
@@ -357,18 +445,30 @@ fn frame_box(frames: &[MovieFrame]) -> (Vec3, f64) {
             add(p.pos - r, p.pos + r);
         }
     }
-    if !lo.iter().all(|x| x.is_finite()) {
-        return (Vec3::zeros(), 1.0);
+    if lo.x > hi.x {
+        // Nothing drawn.
+        return (Vec3::zeros(), Vec3::zeros(), Vec3::zeros(), 1.0);
     }
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
-    if size > 0.0 && size.is_finite() {
-        (centre, size)
+    let size = if size > 0.0 && size.is_finite() {
+        size
     } else if centre.norm() > 0.0 {
-        (centre, centre.norm())
+        centre.norm()
     } else {
-        (centre, 1.0)
-    }
+        1.0
+    };
+    (lo, hi, centre, size)
+}
+
+/// The centre of the box around `mesh`'s vertices; `None` for an empty mesh.
+fn mesh_centre(mesh: &crate::Mesh) -> Option<Vec3> {
+    let first = *mesh.positions.first()?;
+    let (lo, hi) = mesh
+        .positions
+        .iter()
+        .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    Some((lo + hi) / 2.0)
 }
 
 /// One unit of a readout for the page: `[name, per pkdgrav unit]`.
@@ -382,7 +482,7 @@ fn unit(s: &mut String, unit: &Unit) {
 
 /// The page's data (the format is described at the top of `web/viewer.js`).
 fn data(scene: &Scene, frames: &[MovieFrame], options: &MovieOptions) -> String {
-    let (centre, size) = frame_box(frames);
+    let (_, _, centre, size) = frame_box(frames);
     let readout = &options.readout;
     let mut s = String::new();
     s.push_str("{\"times\":");
@@ -473,27 +573,41 @@ fn wall(
     string(s, color);
     s.push_str(",\"opacity\":");
     num(s, wm.opacity);
+    let turns: Vec<UnitQuaternion<f64>> = placements
+        .iter()
+        .map(|(_, turn)| UnitQuaternion::from_rotation_matrix(&(turn * wm.turn.inverse())))
+        .collect();
+    let turning = turns.iter().any(|q| q.angle() >= 1e-9);
+    // The point the mesh is written about: the origin a turning wall turns about, else
+    // the centre of the mesh's box, which is in the scene whatever the origin (a floor
+    // whose origin is 1e40 away along it would not fit an f32 about its origin).
+    let anchor = if turning {
+        wm.origin
+    } else {
+        mesh_centre(&wm.mesh).unwrap_or(wm.origin)
+    };
     s.push_str(",\"positions\":");
     nums(
         s,
         wm.mesh
             .positions
             .iter()
-            .flat_map(|p| <[f64; 3]>::from((p - wm.origin) / size)),
+            .flat_map(|p| <[f64; 3]>::from((p - anchor) / size)),
     );
     s.push_str(",\"indices\":");
     nums(s, wm.mesh.triangles.iter().flatten().map(|&i| f64::from(i)));
     s.push_str(",\"origins\":");
-    coords(s, placements.iter().map(|(o, _)| *o), centre, size);
+    coords(
+        s,
+        placements.iter().map(|(o, _)| o + (anchor - wm.origin)),
+        centre,
+        size,
+    );
     s.push_str(",\"turns\":");
-    let turns: Vec<UnitQuaternion<f64>> = placements
-        .iter()
-        .map(|(_, turn)| UnitQuaternion::from_rotation_matrix(&(turn * wm.turn.inverse())))
-        .collect();
-    if turns.iter().all(|q| q.angle() < 1e-9) {
-        s.push_str("null");
-    } else {
+    if turning {
         nums(s, turns.iter().flat_map(|q| [q.i, q.j, q.k, q.w]));
+    } else {
+        s.push_str("null");
     }
     s.push_str(",\"tokens\":");
     let shown = scene.walls.get(wm.wall).map(tokens).unwrap_or_default();

@@ -3,8 +3,11 @@
 //! ssdraw's colours, for the writers of each picture format to draw: [`svg`] (the
 //! embedded renderer), [`pov`] (POV-Ray), [`vtk`] (VTK PolyData for ParaView), [`pvd`] (a
 //! movie's frames as a ParaView collection) and [`html`] (an interactive page).
-//! [`ssdraw`] reads the view of a pkdgrav user's `ssdraw.par`.
+//! [`ssdraw`] reads the view of a pkdgrav user's `ssdraw.par`. [`finite`] is what every
+//! writer refuses before it writes a byte: a number that is not finite, or too large to
+//! draw.
 
+pub mod finite;
 pub mod html;
 pub mod mesh;
 pub mod movie;

@@ -21,6 +21,7 @@
 //! `walls.inc` beside it (`walls-sim preview --out scene.pov` writes both),
 //! `povray +I scene.pov +O scene.png +W640 +H480 -D +A` renders it.
 
+use crate::finite::{NotDrawable, Subject};
 use crate::palette;
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
@@ -75,7 +76,9 @@ impl Default for View {
 
 /// Writes one frame of a movie of `scene` to `out`: each wall where the frame places it
 /// (reactive walls as a run turned them), its particles, framed by `bounds` (the movie's
-/// box, the same for every frame). Like [`write`], it includes [`INCLUDE_NAME`].
+/// box, the same for every frame). Like [`write`], it includes [`INCLUDE_NAME`]. A number
+/// that cannot be drawn ([`crate::finite`]) is refused before anything is written, as an
+/// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
 pub fn write_frame(
     out: &mut impl Write,
     scene: &Scene,
@@ -83,6 +86,7 @@ pub fn write_frame(
     bounds: (Vec3, Vec3),
     view: &View,
 ) -> io::Result<()> {
+    crate::finite::check(std::slice::from_ref(frame))?;
     let walls = decode(scene);
     // The frame's walls by index, looked up once each (a hull of 10⁴ triangles).
     let placed: BTreeMap<usize, &crate::WallMesh> =
@@ -94,20 +98,24 @@ pub fn write_frame(
             None => w.shape.at(w.motion.position_or_origin(frame.t)),
         })
         .collect();
+    let framing = framing(bounds, frame.t, view).map_err(|e| NotDrawable {
+        step: frame.step,
+        ..e
+    })?;
     write_shapes(
         out,
         &walls,
         shapes,
         frame.t,
         &frame.particles,
-        Some(bounds),
-        view,
+        &framing,
     )
 }
 
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it
 /// includes `walls.inc` ([`INCLUDE`]), which must be beside it (or on POV-Ray's `+L`
-/// path) to render.
+/// path) to render. A number that cannot be drawn is refused before anything is
+/// written, as [`write_frame`] says.
 pub fn write(
     out: &mut impl Write,
     scene: &Scene,
@@ -115,35 +123,52 @@ pub fn write(
     particles: &[Particle],
     view: &View,
 ) -> io::Result<()> {
-    let walls = decode(scene);
-    let shapes = walls
-        .iter()
-        .map(|w| w.shape.at(w.motion.position_or_origin(t)))
-        .collect();
-    write_shapes(out, &walls, shapes, t, particles, None, view)
+    let (walls, shapes, framing) = still(scene, t, particles, view)?;
+    write_shapes(out, &walls, shapes, t, particles, &framing)
 }
 
-/// Writes the scene of `walls` drawn as `shapes` (each wall's shape where it is) at `t`,
-/// with `particles`, framed by `bounds` (else the box around the walls and the drawn
-/// particles).
-fn write_shapes(
-    out: &mut impl Write,
-    walls: &[walls_geometry::Wall],
-    shapes: Vec<Shape>,
+/// The walls of `scene` at `t` and their shapes there, framed with `particles` (the box
+/// around the walls and the drawn particles), once [`crate::finite::check_frame`] has
+/// passed the walls (tessellated) and the particles.
+fn still(
+    scene: &Scene,
     t: f64,
     particles: &[Particle],
-    bounds: Option<(Vec3, Vec3)>,
     view: &View,
-) -> io::Result<()> {
+) -> io::Result<(Vec<walls_geometry::Wall>, Vec<Shape>, Framing)> {
+    let walls = decode(scene);
     let drawn_particles: Vec<Particle> = particles
         .iter()
         .filter(|p| drawn(p.color.into()))
         .cloned()
         .collect();
-    let (lo, hi) = bounds.unwrap_or_else(|| scene_bounds(walls, &drawn_particles));
-    // ssdraw's "Renormalize?": the scene is written in coordinates (p − centre)/size,
-    // so that POV-Ray sees numbers near 1 at any scale (a 5 cm tube in AU is 3.7e-13
-    // long, below POV-Ray's tolerances).
+    let bounds = scene_bounds(&walls, &drawn_particles);
+    let meshes = crate::wall_meshes_in(&walls, t, 8, &bounds);
+    crate::finite::check_frame(t, &meshes, particles)?;
+    let shapes = walls
+        .iter()
+        .map(|w| w.shape.at(w.motion.position_or_origin(t)))
+        .collect();
+    Ok((walls, shapes, framing(bounds, t, view)?))
+}
+
+/// How a scene is written: its box's centre and size, and the view in the renormalised
+/// coordinates (p − centre)/size.
+struct Framing {
+    lo: Vec3,
+    hi: Vec3,
+    centre: Vec3,
+    size: f64,
+    view: View,
+}
+
+/// The framing of the box `bounds` seen from `view`: ssdraw's "Renormalize?", every
+/// coordinate written as (p − centre)/size, so that POV-Ray sees numbers near 1 at any
+/// scale (a 5 cm tube in AU is 3.7e-13 long, below POV-Ray's tolerances). A box, or a
+/// camera renormalised, with a number that cannot be drawn is refused.
+fn framing(bounds: (Vec3, Vec3), t: f64, view: &View) -> Result<Framing, NotDrawable> {
+    crate::finite::check_box(&bounds, t)?;
+    let (lo, hi) = bounds;
     let centre = (lo + hi) / 2.0;
     let size = (hi - lo).max();
     let size = if size > 0.0 && size.is_finite() {
@@ -151,6 +176,56 @@ fn write_shapes(
     } else {
         1.0
     };
+    let unit = |p: &Vec3, part| {
+        let q = (p - centre) / size;
+        match q.iter().find(|x| !x.is_finite()) {
+            Some(&value) => Err(NotDrawable {
+                subject: Subject::View,
+                part,
+                value,
+                t,
+                step: None,
+                frame: None,
+            }),
+            None => Ok(q),
+        }
+    };
+    let camera = match view.camera {
+        Some((at, to)) => Some((
+            unit(&at, "its camera position, in units of the scene's size,")?,
+            unit(&to, "its look-at point, in units of the scene's size,")?,
+        )),
+        None => None,
+    };
+    Ok(Framing {
+        lo,
+        hi,
+        centre,
+        size,
+        view: View {
+            camera,
+            ..view.clone()
+        },
+    })
+}
+
+/// Writes the scene of `walls` drawn as `shapes` (each wall's shape where it is) at `t`,
+/// with `particles`, as `framing` says.
+fn write_shapes(
+    out: &mut impl Write,
+    walls: &[walls_geometry::Wall],
+    shapes: Vec<Shape>,
+    t: f64,
+    particles: &[Particle],
+    framing: &Framing,
+) -> io::Result<()> {
+    let Framing {
+        lo,
+        hi,
+        centre,
+        size,
+        ref view,
+    } = *framing;
     let unit = |p: &Vec3| (p - centre) / size;
 
     writeln!(
@@ -169,11 +244,7 @@ fn write_shapes(
         num(size)
     )?;
     writeln!(out)?;
-    let view = View {
-        camera: view.camera.map(|(at, to)| (unit(&at), unit(&to))),
-        ..view.clone()
-    };
-    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, &view)?;
+    camera(out, Vec3::zeros(), (hi - lo).norm() / size / 2.0, view)?;
     writeln!(out)?;
     for (i, (wall, shape)) in walls.iter().zip(&shapes).enumerate() {
         let color = wall.appearance.color;

@@ -26,13 +26,15 @@ pub fn frame_files(path: &Path, frames: usize) -> Vec<PathBuf> {
 }
 
 /// Writes the `.pvd` listing `files` (one per frame, relative to the `.pvd`) at the
-/// frames' times in `scale`'s time unit.
+/// frames' times in `scale`'s time unit. A frame with a number that cannot be drawn
+/// ([`crate::finite::check`]) is refused before anything is written.
 pub fn write(
     out: &mut impl Write,
     frames: &[MovieFrame],
     files: &[PathBuf],
     scale: &Scale,
 ) -> io::Result<()> {
+    crate::finite::check(frames)?;
     writeln!(out, r#"<?xml version="1.0"?>"#)?;
     writeln!(
         out,

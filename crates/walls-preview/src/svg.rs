@@ -13,6 +13,7 @@ use std::fmt::Write as _;
 use std::io;
 use walls_geometry::Particle;
 use walls_geometry::units::{Readout, number};
+use walls_model::direction;
 
 type Vec3 = Vector3<f64>;
 
@@ -65,9 +66,10 @@ struct Camera {
 impl Camera {
     /// Fits the box `lo`–`hi` (and the particles' `centres`) into the view, with a margin.
     fn new(view: &View, lo: &Vec3, hi: &Vec3, centres: impl Iterator<Item = Vec3>) -> Camera {
-        let towards = view.from.try_normalize(0.0).unwrap_or_else(Vec3::z);
-        let right = view
-            .up
+        // Directions of any length: 1e308 along x is x (scaled first, not squared).
+        let towards = direction(&view.from).unwrap_or_else(Vec3::z);
+        let right = direction(&view.up)
+            .unwrap_or_else(Vec3::z)
             .cross(&towards)
             .try_normalize(1e-12)
             .unwrap_or_else(|| towards.cross(&Vec3::x()).normalize());
@@ -334,7 +336,9 @@ fn furniture(camera: &Camera, readout: &Readout) -> String {
 
 /// Writes `frames` as one SVG: a still picture for one frame, an animation playing the
 /// frames in turn over `seconds` for several. The view fits the box `lo`–`hi`; times
-/// and the scale bar are shown as `readout` says.
+/// and the scale bar are shown as `readout` says. A frame with a number that cannot be
+/// drawn ([`crate::finite`]) is refused with nothing written, as an
+/// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
 pub fn write(
     out: &mut impl io::Write,
     frames: &[Frame],
@@ -343,6 +347,28 @@ pub fn write(
     seconds: f64,
     readout: &Readout,
 ) -> io::Result<()> {
+    out.write_all(document(frames, view, bounds, seconds, readout)?.as_bytes())
+}
+
+/// The SVG [`write()`] writes, or the first number of `frames` (or of the box) it cannot
+/// draw.
+pub fn document(
+    frames: &[Frame],
+    view: &View,
+    bounds: (Vec3, Vec3),
+    seconds: f64,
+    readout: &Readout,
+) -> Result<String, crate::finite::NotDrawable> {
+    let n = frames.len();
+    for (k, f) in frames.iter().enumerate() {
+        crate::finite::check_frame(f.t, f.walls, f.particles).map_err(|e| {
+            crate::finite::NotDrawable {
+                frame: (n > 1).then_some((k + 1, n)),
+                ..e
+            }
+        })?;
+    }
+    crate::finite::check_box(&bounds, frames.first().map_or(0.0, |f| f.t))?;
     let centres = frames
         .iter()
         .flat_map(|f| f.particles.iter().map(|p| p.pos));
@@ -381,5 +407,5 @@ pub fn write(
     }
     s.push_str(&furniture(&camera, readout));
     s.push_str("</svg>\n");
-    out.write_all(s.as_bytes())
+    Ok(s)
 }

@@ -40,7 +40,8 @@
 //!   in 1/time units.
 //!
 //! Numbers are written in Rust's shortest exponent form (`1.5e-3`; +0 as `0`), which
-//! reads back to the same `f64`; connectivity and offsets are Int64. Walls whose mesh
+//! reads back to the same `f64`; a frame with a number that is not finite, or beyond
+//! ±1e150, is refused ([`crate::finite`]); connectivity and offsets are Int64. Walls whose mesh
 //! is empty (shapes of no area) have no cells and no points.
 
 use crate::WallMesh;
@@ -61,7 +62,9 @@ pub fn unit_names(scale: &Scale) -> [&'static str; 3] {
 
 /// Writes `walls` and `particles` at time `t` (pkdgrav units) to `out` as one VTK XML
 /// PolyData file, every number converted to `scale`'s units (see the module
-/// documentation for the arrays and their order).
+/// documentation for the arrays and their order). A number that cannot be drawn
+/// ([`crate::finite`]) is refused before anything is written, as an
+/// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
 pub fn write(
     out: &mut impl Write,
     walls: &[WallMesh],
@@ -69,6 +72,7 @@ pub fn write(
     t: f64,
     scale: &Scale,
 ) -> io::Result<()> {
+    crate::finite::check_frame(t, walls, particles)?;
     let (length, mass, time) = (
         scale.length.per_pkdgrav,
         scale.mass.per_pkdgrav,
@@ -263,16 +267,11 @@ trait Ascii {
 
 impl Ascii for f64 {
     fn ascii(&self, out: &mut impl Write) -> io::Result<()> {
+        // Finite: [`write`] checked every number, and the units' factors keep them so.
         if *self == 0.0 && self.is_sign_positive() {
             write!(out, "0")
-        } else if self.is_finite() {
-            write!(out, "{self:e}")
-        } else if self.is_nan() {
-            write!(out, "nan")
-        } else if *self > 0.0 {
-            write!(out, "inf")
         } else {
-            write!(out, "-inf")
+            write!(out, "{self:e}")
         }
     }
 }

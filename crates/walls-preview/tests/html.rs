@@ -99,9 +99,8 @@ fn the_page_is_self_contained_and_holds_each_drawn_wall_with_its_motion() {
     assert!((origin(0, 0, 0)).abs() < 1e-4);
     assert!((origin(0, 10, 0) - 1.0).abs() < 1e-4);
     assert!(origin(0, 10, 1).abs() < 1e-4 && origin(0, 10, 2).abs() < 1e-4);
-    assert!(
-        (0..41).all(|k| (0..3).all(|i| (origin(1, k, i) - [-3.0, -3.0, -1.0][i]).abs() < 1e-4))
-    );
+    // The floor never turns: it is written about its anchor, the centre of its mesh.
+    assert!((0..41).all(|k| (0..3).all(|i| (origin(1, k, i) - [0.0, 0.0, -1.0][i]).abs() < 1e-4)));
     // The hover's tokens: the origin, then what the wall sets.
     let tokens: Vec<String> = walls[0]["tokens"]
         .as_array()
@@ -137,19 +136,34 @@ fn chromium() -> PathBuf {
     )
 }
 
+/// WebGL on SwiftShader, Chromium's software GPU.
+const WEBGL: &[&str] = &["--use-angle=swiftshader", "--enable-unsafe-swiftshader"];
+
+/// No WebGL at all, as on a machine without a GPU where the software one is off
+/// (Debian's Chromium 156 keeps WebGL on SwiftShader with `--disable-gpu` alone).
+const NO_WEBGL: &[&str] = &["--disable-software-rasterizer"];
+
 /// Runs headless Chromium on `file` with `fragment` and `args` (WebGL on SwiftShader,
 /// an 800×600 window, five seconds of virtual time for the page to load and draw);
 /// returns its standard output.
 fn run_chromium(dir: &Path, file: &Path, fragment: &str, args: &[&str]) -> String {
+    run_chromium_with(dir, file, fragment, WEBGL, args)
+}
+
+/// [`run_chromium`] with the GPU flags `gpu` ([`WEBGL`] or [`NO_WEBGL`]).
+fn run_chromium_with(
+    dir: &Path,
+    file: &Path,
+    fragment: &str,
+    gpu: &[&str],
+    args: &[&str],
+) -> String {
     let profile = tempfile::tempdir_in(dir).unwrap();
     let url = format!("file://{}#{fragment}", file.display());
     let output = Command::new(chromium())
+        .args(["--headless", "--no-sandbox", "--disable-gpu"])
+        .args(gpu)
         .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--use-angle=swiftshader",
-            "--enable-unsafe-swiftshader",
             "--no-first-run",
             "--hide-scrollbars",
             "--window-size=800,600",
@@ -176,9 +190,14 @@ struct Shot {
 }
 
 fn screenshot(dir: &Path, file: &Path, fragment: &str, name: &str) -> Shot {
+    screenshot_with(dir, file, fragment, WEBGL, name)
+}
+
+/// [`screenshot`] with the GPU flags `gpu`.
+fn screenshot_with(dir: &Path, file: &Path, fragment: &str, gpu: &[&str], name: &str) -> Shot {
     let png_path = dir.join(name);
     let arg = format!("--screenshot={}", png_path.display());
-    run_chromium(dir, file, fragment, &[&arg]);
+    run_chromium_with(dir, file, fragment, gpu, &[&arg]);
     let decoder = png::Decoder::new(std::fs::File::open(&png_path).expect("the screenshot"));
     let mut reader = decoder.read_info().unwrap();
     let mut buf = vec![0; reader.output_buffer_size()];
@@ -561,4 +580,241 @@ fn chromium_plays_a_movie_frame_by_frame() {
     );
     assert!(label.contains("2e-7 (1.005 s)"), "{label}");
     assert!(dom.contains(&label), "{label} not in {dom:.3000}");
+}
+
+/// A floor whose origin is 1e40 along it: its mesh is written about the centre of its
+/// mesh, in the scene, not about that origin (the offsets, 1e40 / 6, were past f32 and
+/// written as 0: the floor drawn as a point).
+#[test]
+fn a_floor_whose_origin_is_far_along_it_is_drawn_where_it_is() {
+    let s = walls_test_support::model_scene(&format!(
+        "{SCENE}wall type plane\n  origin 1e40 0 -1\n  color 4\n"
+    ));
+    let mut out = Vec::new();
+    html::write(&mut out, &s, None, 0.0, 1).unwrap();
+    let d = data(&String::from_utf8(out).unwrap());
+    let floor = d["walls"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["index"] == 3)
+        .expect("the floor plane");
+    let xs: Vec<f64> = floor["positions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .step_by(3)
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(*x), hi.max(*x)));
+    // The plane cut to the scene's box: about one scene across along x, around its
+    // anchor.
+    assert!(
+        lo < -0.4 && hi > 0.4 && lo > -2.0 && hi < 2.0,
+        "{lo} to {hi}"
+    );
+    let size = d["size"].as_f64().unwrap();
+    let anchor: Vec<f64> = (0..3)
+        .map(|i| floor["origins"][i].as_f64().unwrap() * size + d["centre"][i].as_f64().unwrap())
+        .collect();
+    assert!(
+        anchor[0].abs() < 1e-3 && (anchor[2] + 1.0).abs() < 1e-3,
+        "{anchor:?}"
+    );
+}
+
+/// The part of the DOM from `start` to the end of that element's first line.
+fn element<'a>(dom: &'a str, start: &str) -> &'a str {
+    let i = dom
+        .find(start)
+        .unwrap_or_else(|| panic!("{start} not in {dom:.3000}"));
+    &dom[i..i + dom[i..].find('>').unwrap() + 1]
+}
+
+#[test]
+fn chromium_without_webgl_shows_why_and_the_svg_of_the_frame_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("scene.html");
+    std::fs::write(&file, page()).unwrap();
+
+    // The message is shown, says why and what to do, and the picture is walls-preview's
+    // SVG (its groups of frames, its polygons), every frame held (41 small ones).
+    let dom = run_chromium_with(dir.path(), &file, "t=0.25", NO_WEBGL, &["--dump-dom"]);
+    assert!(dom.contains("data-webgl=\"false\""), "{dom:.2000}");
+    assert!(dom.contains("data-ready=\"true\""), "{dom:.2000}");
+    assert_eq!(
+        element(&dom, "<div id=\"no-webgl\""),
+        "<div id=\"no-webgl\">"
+    );
+    for part in [
+        "This page draws the walls with WebGL, which this browser does not offer here",
+        "this browser offers no WebGL 2 here",
+        "open this page in a browser with WebGL",
+        "<code>--out picture.svg</code>",
+        "The picture is frame 11 of 41.",
+    ] {
+        assert!(dom.contains(part), "{part:?} not in the page");
+    }
+    let picture = element(&dom, "<div id=\"no-webgl-picture\"");
+    let held: String = (0..41).map(|k| k.to_string()).collect::<Vec<_>>().join(",");
+    assert!(
+        picture.contains(&format!("data-frames=\"{held}\"")),
+        "{picture}"
+    );
+    assert!(!dom.contains("<canvas"), "no canvas without WebGL");
+    assert!(
+        !dom.contains("<animate"),
+        "the page steps the frames itself"
+    );
+    // Frame 10 (t = 0.25) shown, the others not.
+    let groups: Vec<&str> = dom
+        .match_indices("<g class=\"frame\"")
+        .map(|(i, _)| &dom[i..i + 40])
+        .collect();
+    assert_eq!(groups.len(), 41);
+    for (k, g) in groups.iter().enumerate() {
+        let shown = if k == 10 { "inline" } else { "none" };
+        assert!(
+            g.contains(&format!("display=\"{shown}\"")),
+            "frame {k}: {g}"
+        );
+    }
+
+    // What a person sees: the message on top and the disk, floor and particle below it,
+    // the disk 1 to the right at t = 0.25.
+    let start = screenshot_with(dir.path(), &file, "t=0", NO_WEBGL, "no-webgl-0.png");
+    let later = screenshot_with(dir.path(), &file, "t=0.25", NO_WEBGL, "no-webgl-1.png");
+    let light = |[r, g, b]: [u8; 3]| r > 200 && g > 200 && b > 200;
+    let text = (0..40 * start.width)
+        .filter(|&i| light(start.rgb[i]))
+        .count();
+    assert!(text > 500, "{text} light pixels of text at the top");
+    let (reds, red_x, _) = start.region(red);
+    let (blues, _, _) = start.region(blue);
+    let (greens, _, _) = start.region(green);
+    let (reds_later, red_x_later, _) = later.region(red);
+    eprintln!(
+        "without WebGL: text {text}, red {reds} at x {red_x:.0} -> {reds_later} at \
+         {red_x_later:.0}, blue {blues}, green {greens}"
+    );
+    assert!(
+        reds > 3000 && blues > 20000 && greens > 100,
+        "the SVG is drawn"
+    );
+    assert!(red_x_later - red_x > 40.0, "{red_x} -> {red_x_later}");
+}
+
+#[test]
+fn chromium_without_webgl_steps_a_movie_through_its_pictures() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("movie.html");
+    std::fs::write(&file, movie_page()).unwrap();
+    let dom = run_chromium_with(dir.path(), &file, "frame=2", NO_WEBGL, &["--dump-dom"]);
+    assert!(dom.contains("data-webgl=\"false\""), "{dom:.2000}");
+    assert!(dom.contains("data-frame=\"2\""), "{dom:.2000}");
+    assert!(dom.contains("The picture is frame 3 of 3."), "{dom:.3000}");
+    // The slider steps through the held frames, at the one shown.
+    let slider = element(&dom, "<input id=\"no-webgl-time\"");
+    assert!(slider.contains("max=\"2\""), "{slider}");
+    // The title is escaped as before; the picture's time in the file's units.
+    assert!(dom.contains("<title>a &lt;movie&gt;</title>"));
+    assert!(dom.contains("t = 2e-7 (1.005 s)"), "{dom:.3000}");
+    // With WebGL the same page draws with three.js, its message hidden.
+    let dom = run_chromium(dir.path(), &file, "frame=2", &["--dump-dom"]);
+    assert!(dom.contains("data-webgl=\"true\""), "{dom:.2000}");
+    assert_eq!(
+        element(&dom, "<div id=\"no-webgl\""),
+        "<div id=\"no-webgl\" hidden=\"\">"
+    );
+}
+
+#[test]
+fn a_long_movie_holds_at_most_a_megabyte_of_pictures_evenly_spaced() {
+    use walls_preview::html::FALLBACK_BYTES;
+    let scene = scene();
+    let walls = walls_geometry::decode(&scene);
+    let box_ = (Vector3::new(-3.0, -3.0, -1.0), Vector3::new(3.0, 3.0, 1.0));
+    let n = 1000;
+    let frames: Vec<MovieFrame> = (0..n)
+        .map(|k| {
+            let t = k as f64 / n as f64;
+            let particles = (0..50)
+                .map(|i| {
+                    let mut p =
+                        Particle::at_rest(0.05, Vector3::new(i as f64 * 0.1 - 2.5, t, 0.0), i);
+                    p.color = 3;
+                    p
+                })
+                .collect();
+            MovieFrame {
+                t,
+                step: Some(k as u64),
+                walls: wall_meshes_in(&walls, t, 64, &box_),
+                particles,
+            }
+        })
+        .collect();
+    let options = MovieOptions {
+        readout: Readout::new(System::Auto, &scene.units),
+        trails: None,
+        title: "long".into(),
+    };
+    let mut out = Vec::new();
+    html::write_movie(&mut out, &scene, &frames, &options).unwrap();
+    let page = String::from_utf8(out).unwrap();
+    let i = page.find("<div id=\"no-webgl-picture\"").unwrap();
+    let j = i + page[i..].find("</svg>").unwrap();
+    let picture = &page[i..j];
+    let held: Vec<usize> = element(picture, "<div")
+        .split("data-frames=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|k| k.parse().unwrap())
+        .collect();
+    eprintln!(
+        "1000 frames: {} held, {} bytes of SVG, page {} bytes",
+        held.len(),
+        picture.len(),
+        page.len()
+    );
+    assert_eq!((held[0], *held.last().unwrap()), (0, n - 1));
+    assert!(held.len() > 10 && held.len() < n, "{} held", held.len());
+    assert!(
+        picture.len() <= FALLBACK_BYTES + FALLBACK_BYTES / 10,
+        "{}",
+        picture.len()
+    );
+    assert_eq!(picture.matches("<g class=\"frame\"").count(), held.len());
+    // Evenly spaced.
+    let gaps: Vec<usize> = held.windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(
+        gaps.iter().max().unwrap() - gaps.iter().min().unwrap() <= 1,
+        "{gaps:?}"
+    );
+}
+
+#[test]
+fn a_page_of_no_frames_holds_the_picture_of_an_empty_scene() {
+    let (scene, _, options) = movie();
+    let mut out = Vec::new();
+    html::write_movie(&mut out, &scene, &[], &options).unwrap();
+    let page = String::from_utf8(out).unwrap();
+    let picture = element(&page, "<div id=\"no-webgl-picture\"");
+    assert_eq!(
+        picture,
+        "<div id=\"no-webgl-picture\" data-frames=\"\" data-of=\"1\">"
+    );
+    let i = page.find(picture).unwrap() + picture.len();
+    assert!(
+        page[i..].trim_start().starts_with("<svg xmlns="),
+        "{:.200}",
+        &page[i..]
+    );
+    assert!(!page.contains("<?xml"), "the SVG's declaration is left out");
 }

@@ -10,9 +10,9 @@
 //     centre: [x, y, z], size, sizeLabel,                // the box, in pkdgrav units
 //     trails,                                            // frames of path drawn, or 0
 //     walls: [{ index, type, color: "#rrggbb", opacity,
-//               positions: [x, y, z, ...],   // the first frame's mesh about its origin
+//               positions: [x, y, z, ...],   // the first frame's mesh about its anchor
 //               indices: [a, b, c, ...],     // its triangles
-//               origins: [x, y, z, ...],     // its origin in each frame
+//               origins: [x, y, z, ...],     // its anchor in each frame
 //               turns: null | [qx, qy, qz, qw, ...],  // its turn from frame 0 in each
 //               tokens: [[name, value], ...] }],
 //     particles: null | { ids: [...], radii: [...], colors: ["#rrggbb" or null, ...],
@@ -25,6 +25,13 @@
 // fragment sets the initial time (#t=0.25) or frame (#frame=2, from 0) and can hover a point (#hover=0.5,0.5, as
 // fractions of the canvas's width and height), for tests; window.wallsPreview = { ready,
 // setTime(t), time(), setFrame(k), frame(), frames, hoverAt(x, y), ... }.
+// (A wall's anchor is its origin when it turns, else the centre of its mesh's box.)
+//
+// Where the browser has no WebGL 2 (which three.js needs), or three.js cannot start it,
+// the page shows #no-webgl instead: why, what to do, and the SVG picture(s) that
+// walls-preview's SVG writer drew into it (#no-webgl-picture, whose data-frames lists
+// the movie's frames it holds, one <g class="frame"> each). The frame shown is the one
+// the fragment asks for, or the nearest held; a slider steps through those held.
 //
 // bundle.sh bundles this file with three.js into ../assets/viewer.bundle.js.
 
@@ -87,8 +94,83 @@ function show(x, [name, per], withPkdgrav) {
   return withPkdgrav ? `${number(x)} (${own})` : own;
 }
 
+/** Whether this browser offers WebGL 2, which three.js needs. */
+function hasWebgl2() {
+  try {
+    return !!document.createElement('canvas').getContext('webgl2');
+  } catch {
+    return false;
+  }
+}
+
+/** The frame the fragment asks for (#frame=K, else #t=T: the frame nearest T), or null. */
+function askedFrame(times) {
+  const params = new URLSearchParams(window.location.hash.slice(1));
+  if (params.has('frame')) return Math.round(Number(params.get('frame'))) || 0;
+  if (!params.has('t')) return null;
+  const t = Number(params.get('t'));
+  if (!Number.isFinite(t)) return null;
+  const [k, f] = bracket(times, t);
+  return f < 0.5 ? k : Math.min(k + 1, times.length - 1);
+}
+
+/** The page without WebGL: the message with `reason`, and the SVG of the frame asked for. */
+function withoutWebgl(data, reason) {
+  const times = data.times.length ? data.times : [0];
+  const box = document.getElementById('no-webgl');
+  box.hidden = false;
+  document.getElementById('no-webgl-reason').textContent = reason;
+  const picture = document.getElementById('no-webgl-picture');
+  const held = (picture.dataset.frames || '0').split(',').map(Number);
+  const svg = picture.querySelector('svg');
+  const groups = svg ? Array.from(svg.querySelectorAll('g.frame')) : [];
+  // The page steps through the frames itself: the SVG's own animation is removed.
+  if (svg) svg.querySelectorAll('animate').forEach((a) => a.remove());
+  const note = document.getElementById('no-webgl-frame');
+  let shown = 0;
+  let slider = null;
+  function show(j) {
+    shown = Math.min(Math.max(Math.round(Number(j)) || 0, 0), Math.max(groups.length - 1, 0));
+    groups.forEach((g, i) => g.setAttribute('display', i === shown ? 'inline' : 'none'));
+    const k = held[shown] || 0;
+    if (slider) slider.value = String(shown);
+    note.textContent =
+      times.length > 1
+        ? `The picture is frame ${k + 1} of ${times.length}` +
+          (held.length < times.length ? ` (this page holds the pictures of ${held.length} frames, evenly spaced).` : '.')
+        : '';
+    document.body.dataset.frame = String(k);
+    document.body.dataset.time = String(times[k]);
+  }
+  /** The held picture nearest frame k. */
+  const nearestHeld = (k) => held.reduce((best, h, j) => (Math.abs(h - k) < Math.abs(held[best] - k) ? j : best), 0);
+  if (groups.length > 1) {
+    const bar = element('div', { id: 'no-webgl-controls' }, box);
+    box.insertBefore(bar, picture);
+    slider = element('input', { id: 'no-webgl-time', type: 'range', min: '0', max: String(groups.length - 1), step: '1', value: '0' }, bar);
+    slider.addEventListener('input', () => show(slider.value));
+  }
+  const fromHash = () => show(nearestHeld(askedFrame(times) ?? 0));
+  window.addEventListener('hashchange', fromHash);
+  fromHash();
+  window.wallsPreview = {
+    ready: true,
+    webgl: false,
+    frames: times.length,
+    setFrame: (k) => show(nearestHeld(Number(k))),
+    frame: () => held[shown] || 0,
+    time: () => times[held[shown] || 0],
+  };
+  document.body.dataset.webgl = 'false';
+  document.body.dataset.ready = 'true';
+}
+
 function main() {
   const data = JSON.parse(document.getElementById('walls-data').textContent);
+  if (!hasWebgl2()) {
+    withoutWebgl(data, 'this browser offers no WebGL 2 here');
+    return;
+  }
   const times = data.times.length ? data.times : [0];
   const frameCount = times.length;
   const tStart = times[0];
@@ -96,7 +178,14 @@ function main() {
   const readout = data.readout;
 
   // The page: the canvas, an info line, the time controls and the tooltip.
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  let renderer;
+  try {
+    renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  } catch (e) {
+    withoutWebgl(data, `WebGL could not start: ${e && e.message ? e.message : e}`);
+    return;
+  }
+  document.body.dataset.webgl = 'true';
   renderer.setPixelRatio(window.devicePixelRatio);
   renderer.setSize(window.innerWidth, window.innerHeight);
   renderer.setClearColor(0x20232a);

@@ -6,8 +6,10 @@
 mod output;
 
 use super::{UnitsArg, error, exit_status, read_walls, ruled};
-use crate::ContactModel;
+use crate::input::display_name;
 use crate::movie::{self, Snapshot, VizSteps};
+use crate::{Checked, ContactModel};
+
 use std::path::{Path, PathBuf};
 use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
@@ -168,6 +170,7 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
+    drawable(&movie, &file, &checked)?;
     // Every input, so that no output replaces one (`walls.inc` named as the walls file).
     let mut outputs = walls_output::Outputs::new(walls_output::Tool::PREVIEW, args.force);
     outputs.reads(&file);
@@ -190,6 +193,27 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         &outputs,
     )?;
     Ok(exit_status(errors))
+}
+
+/// Whether every frame of `movie` can be drawn ([`walls_preview::finite`]), before any
+/// file is opened: else why not, a wall named by its line in `file` (as `checked`
+/// read it).
+fn drawable(movie: &movie::Movie, file: &str, checked: &Checked) -> Result<(), String> {
+    use walls_preview::finite::{Subject, check, check_box};
+    let t0 = movie.frames.first().map_or(0.0, |f| f.t);
+    let e = match check(&movie.frames).and_then(|()| check_box(&movie.bounds, t0)) {
+        Ok(()) => return Ok(()),
+        Err(e) => e,
+    };
+    let at = match e.subject {
+        Subject::Wall { index, .. } => checked.scene.walls.get(index).map(|w| {
+            let lines = walls_diagnostics::LineIndex::new(&checked.text);
+            let place = lines.line_col(&checked.text, w.span.start);
+            format!("{}:{}:{}: ", display_name(file), place.line, place.column)
+        }),
+        _ => None,
+    };
+    Err(format!("{}{e}; nothing was drawn", at.unwrap_or_default()))
 }
 
 /// The times of --frames over [--time, --until].

@@ -325,7 +325,11 @@ fn svg_view(
     let v3 = |v: &Option<Vec<f64>>| v.as_ref().map(|v| Vector3::new(v[0], v[1], v[2]));
     let default = walls_preview::svg::View::default();
     let centre = (movie.bounds.0 + movie.bounds.1) / 2.0;
-    let from = ssdraw.and_then(|s| s.camera.map(|at| at - s.look_at.unwrap_or(centre)));
+    // Halves first: the direction is the same, and 1e308 − (−1e308) would overflow.
+    let from = ssdraw.and_then(|s| {
+        s.camera
+            .map(|at| at / 2.0 - s.look_at.unwrap_or(centre) / 2.0)
+    });
     let width = args.size.as_ref().map_or(default.width, |s| s[0]);
     let height = match (&args.size, ssdraw.and_then(|s| s.aspect)) {
         (Some(s), _) => s[1],
