@@ -102,14 +102,7 @@ pub fn write_frame(
         step: frame.step,
         ..e
     })?;
-    write_shapes(
-        out,
-        &walls,
-        shapes,
-        frame.t,
-        &frame.particles,
-        &framing,
-    )
+    write_shapes(out, &walls, shapes, frame.t, &frame.particles, &framing)
 }
 
 /// Writes the POV-Ray scene of `scene` at time `t` with `particles` seen from `view`; it
