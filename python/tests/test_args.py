@@ -295,3 +295,31 @@ def test_the_builders_refusals_are_value_errors():
     refused(lambda: walls.Wall(type="trangle"), ValueError, "unknown wall type `trangle`: did you mean `triangle`?")
     refused(lambda: walls.dumps([], units={"mass": 1}), ValueError,
             "`mass` is not a unit: the units are lengthunit, massunit and timeunit")
+
+
+def test_a_sequence_is_measured_before_it_is_read():
+    # A vector given 10**8 numbers is refused without a list of them.
+    refused(lambda: walls.Wall(origin=np.zeros(10**8)), TypeError,
+            "origin must be a sequence of 3 numbers, not a sequence of 100000000")
+    # A Sequence whose items never end (or end early) is not read past its length.
+    from collections.abc import Sequence
+
+    class Endless(Sequence):
+        def __len__(self):
+            return 3
+
+        def __getitem__(self, i):
+            return 1.0
+
+    class Short(Endless):
+        def __getitem__(self, i):
+            if i >= 2:
+                raise IndexError(i)
+            return 1.0
+
+    refused(lambda: walls.Wall(origin=Endless()), TypeError,
+            "origin must be a sequence of 3 numbers: its length is 3 but it holds more items")
+    refused(lambda: walls.Wall(origin=Short()), TypeError,
+            "origin must be a sequence of 3 numbers: its length is 3 but it holds fewer items")
+    refused(lambda: walls.Wall(origin=__import__("itertools").count()), TypeError,
+            "origin must be a sequence of 3 numbers, not itertools.count")

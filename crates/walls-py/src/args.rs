@@ -55,9 +55,9 @@ enum Kind<'py> {
     Real(Bound<'py, PyAny>),
     /// A `str` (or a subclass: NumPy's `str_`).
     Text(String),
-    /// The items of a sequence: a list, a tuple, a NumPy array, any other
-    /// `collections.abc.Sequence` but text and bytes.
-    Items(Vec<Bound<'py, PyAny>>),
+    /// A sequence: a list, a tuple, a NumPy array, any other `collections.abc.Sequence`
+    /// but text and bytes. Its length is asked before its items are made.
+    Items(Items<'py>),
     /// Anything else: complex numbers, bytes, None, mappings, sets, iterators, dates.
     Other,
 }
@@ -116,7 +116,37 @@ fn kind<'py>(value: &Bound<'py, PyAny>) -> PyResult<Kind<'py>> {
 
 /// The items of a sequence.
 fn items<'py>(value: &Bound<'py, PyAny>) -> PyResult<Kind<'py>> {
-    Ok(Kind::Items(value.try_iter()?.collect::<PyResult<_>>()?))
+    Ok(Kind::Items(Items {
+        sequence: value.clone(),
+        listed: false,
+    }))
+}
+
+/// A sequence whose items are made only when its length is right: a vector given a
+/// NumPy array of 10**8 numbers is refused without a list of them.
+struct Items<'py> {
+    sequence: Bound<'py, PyAny>,
+    /// Whether the items are the Python values of a NumPy array's (`tolist`, exact for
+    /// every dtype but `longdouble`, whose items stay NumPy scalars to be rounded once).
+    listed: bool,
+}
+
+impl<'py> Items<'py> {
+    /// How many items the sequence says it has.
+    fn len(&self) -> PyResult<usize> {
+        self.sequence.len()
+    }
+
+    /// At most `most` items (a sequence may hold more than its length says, without
+    /// end: a `Sequence` whose `__getitem__` never raises `IndexError`).
+    fn take(&self, most: usize) -> PyResult<Vec<Bound<'py, PyAny>>> {
+        let sequence = if self.listed {
+            self.sequence.call_method0("tolist")?
+        } else {
+            self.sequence.clone()
+        };
+        sequence.try_iter()?.take(most).collect()
+    }
 }
 
 /// NumPy's two base types, once NumPy is imported (this module never imports it).
@@ -159,9 +189,7 @@ fn refused_dtype(kind: &str) -> bool {
     matches!(kind, "M" | "m" | "V")
 }
 
-/// A NumPy array: a 0-d array is its item; another is the sequence of its items, as
-/// Python values (`tolist`, exact for every dtype but `longdouble`, whose items stay
-/// NumPy scalars to be rounded once).
+/// A NumPy array: a 0-d array is its item; another is the sequence of its items.
 fn array<'py>(value: &Bound<'py, PyAny>, numpy: &NumPy) -> PyResult<Kind<'py>> {
     let (dtype, wide) = self::dtype(value)?;
     if refused_dtype(&dtype) {
@@ -176,10 +204,10 @@ fn array<'py>(value: &Bound<'py, PyAny>, numpy: &NumPy) -> PyResult<Kind<'py>> {
             self::item(&item, numpy)
         };
     }
-    if wide {
-        return items(value);
-    }
-    items(&value.call_method0("tolist")?)
+    Ok(Kind::Items(Items {
+        sequence: value.clone(),
+        listed: !wide,
+    }))
 }
 
 /// A NumPy scalar: a `longdouble` rounded to a double, any other as its Python value
@@ -412,7 +440,7 @@ pub fn sequence<'py>(
     name: Name<'_>,
 ) -> PyResult<Vec<Bound<'py, PyAny>>> {
     match kind(value)? {
-        Kind::Items(items) => Ok(items),
+        Kind::Items(items) => items.take(items.len()?),
         _ => Err(wrong(
             name,
             "a sequence (a list, a tuple or a NumPy array)",
@@ -434,10 +462,17 @@ pub fn row<T: Copy + Default, const N: usize>(
         Kind::Items(items) => items,
         _ => return Err(wrong(name, &what, value)),
     };
+    let len = items.len()?;
+    if len != N {
+        return Err(PyTypeError::new_err(format!(
+            "{name} must be {what}, not a sequence of {len}"
+        )));
+    }
+    let items = items.take(N + 1)?;
     if items.len() != N {
         return Err(PyTypeError::new_err(format!(
-            "{name} must be {what}, not a sequence of {}",
-            items.len()
+            "{name} must be {what}: its length is {N} but it holds {} items",
+            if items.len() > N { "more" } else { "fewer" }
         )));
     }
     let mut out = [T::default(); N];
