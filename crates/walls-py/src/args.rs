@@ -348,6 +348,12 @@ pub fn integer(
 /// An index of a sequence argument of `len` items (`faces[0][1]`, an index of
 /// `vertices`), from 0.
 pub fn index(value: &Bound<'_, PyAny>, name: Name<'_>, of: &str, len: usize) -> PyResult<usize> {
+    if let Ok(i) = value.cast_exact::<PyInt>()
+        && let Ok(n) = i.extract::<usize>()
+        && n < len
+    {
+        return Ok(n);
+    }
     let i = match kind(value)? {
         Kind::Int(i) => i,
         _ => return Err(wrong(name, "an integer", value)),
@@ -378,6 +384,9 @@ fn within(i: &Bound<'_, PyInt>, name: Name<'_>, range: RangeInclusive<i128>) -> 
 /// `float` or any real (rounded once to the nearest double), finite and not a non-zero
 /// number that rounds to 0.
 pub fn number(value: &Bound<'_, PyAny>, name: Name<'_>) -> PyResult<f64> {
+    if let Ok(f) = value.cast_exact::<PyFloat>() {
+        return finite(name, value, f.value());
+    }
     match kind(value)? {
         Kind::Int(i) => real_of_int(&i, name),
         Kind::Real(real) => Ok(double(&real, name)?.0),
@@ -457,25 +466,36 @@ pub fn row<T: Copy + Default, const N: usize>(
     what: &str,
     each: impl Fn(&Bound<'_, PyAny>, Name<'_>) -> PyResult<T>,
 ) -> PyResult<[T; N]> {
-    let what = format!("a sequence of {N} {what}");
+    let what = || format!("a sequence of {N} {what}");
+    let mut out = [T::default(); N];
+    // A list or a tuple (the rows of a mesh, `tolist`'s): its items as they are.
+    if let Ok(list) = value.cast_exact::<PyList>()
+        && list.len() == N
+    {
+        for (i, slot) in out.iter_mut().enumerate() {
+            *slot = each(&list.get_item(i)?, &Item(name, i))?;
+        }
+        return Ok(out);
+    }
     let items = match kind(value)? {
         Kind::Items(items) => items,
-        _ => return Err(wrong(name, &what, value)),
+        _ => return Err(wrong(name, &what(), value)),
     };
     let len = items.len()?;
     if len != N {
         return Err(PyTypeError::new_err(format!(
-            "{name} must be {what}, not a sequence of {len}"
+            "{name} must be {}, not a sequence of {len}",
+            what()
         )));
     }
     let items = items.take(N + 1)?;
     if items.len() != N {
         return Err(PyTypeError::new_err(format!(
-            "{name} must be {what}: its length is {N} but it holds {} items",
+            "{name} must be {}: its length is {N} but it holds {} items",
+            what(),
             if items.len() > N { "more" } else { "fewer" }
         )));
     }
-    let mut out = [T::default(); N];
     for (i, (slot, item)) in out.iter_mut().zip(&items).enumerate() {
         *slot = each(item, &Item(name, i))?;
     }

@@ -1,8 +1,9 @@
 # Attack: a vector with no end, `walls.Wall(origin=itertools.count())`, or one far too long,
 # `walls.Wall(origin=np.zeros(10**8))`. Before: the extension read every item it was given
-# (itertools.count() without end, growing until memory ran out; 10**8 items into a list
-# of 10**8 values) before saying a vector has 3. Now: a vector is a sequence whose length
-# is asked first: an iterator is refused at once, a length other than 3 without reading.
+# before saying a vector has 3: itertools.count() without end (the process grew by 4 MB a
+# second), np.zeros(3 * 10**7) in 61 s and 946 MB. Now: a vector is a sequence whose
+# length is asked first: an iterator is refused at once, a length other than 3 without
+# reading an item.
 import itertools
 import resource
 import time
