@@ -323,3 +323,20 @@ def test_a_sequence_is_measured_before_it_is_read():
             "origin must be a sequence of 3 numbers: its length is 3 but it holds fewer items")
     refused(lambda: walls.Wall(origin=__import__("itertools").count()), TypeError,
             "origin must be a sequence of 3 numbers, not itertools.count")
+
+
+def test_text_that_is_not_utf8_and_paths_with_nul_are_named():
+    for call, name in [
+        (lambda: walls.lint("wall\ud800\n"), "text"),
+        (lambda: walls.format("wall\ud800\n"), "text"),
+        (lambda: walls.dumps([walls.Wall()], comment="\ud800"), "comment"),
+        (lambda: walls.Wall(type="\udcff"), "type"),
+        (lambda: walls.lint("", mode="\ud800"), "mode"),
+    ]:
+        with pytest.raises(ValueError) as raised:
+            call()
+        assert str(raised.value).startswith(f"{name} is not UTF-8 text: 'utf-8' codec can't encode"), raised.value
+    refused(lambda: walls.read_mesh("hull\x00.stl"), ValueError, "path must not hold a NUL character")
+    refused(lambda: walls.lint(bytearray(b"wall\n")), TypeError, "text must be str or bytes, not bytearray")
+    # bytes and str subclasses are bytes and str (NumPy's bytes_ and str_).
+    assert walls.lint(np.bytes_(b"wall\n")) == walls.lint(np.str_("wall\n")) == []

@@ -2,10 +2,11 @@
 //! a file is) to what `walls-lint --format json`, `walls-fmt` and `walls-sim scene` give
 //! for it, through the same library calls.
 
-use crate::{args, diagnostics};
-use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use crate::args::{self, Text};
+use crate::diagnostics;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyList, PyString};
+use pyo3::types::PyList;
 use walls_format::FormatOptions;
 use walls_ide::Checked;
 use walls_keywords::ContactModel;
@@ -19,35 +20,13 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
-/// A walls file as Python hands it over: text, or bytes to decode as a file's are.
-enum Source {
-    Text(String),
-    Bytes(Vec<u8>),
-}
-
-impl Source {
-    /// The `text` argument: `str` or `bytes`, anything else a `TypeError`.
-    fn of(text: &Bound<'_, PyAny>) -> PyResult<Source> {
-        if text.is_instance_of::<PyString>() {
-            Ok(Source::Text(text.extract()?))
-        } else if let Ok(bytes) = text.cast::<PyBytes>() {
-            Ok(Source::Bytes(bytes.as_bytes().to_vec()))
-        } else {
-            Err(PyTypeError::new_err(format!(
-                "text must be str or bytes, not {}",
-                text.get_type().name()?
-            )))
-        }
-    }
-
-    /// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
-    /// released.
-    fn check(self, py: Python<'_>, options: &Options) -> Checked {
-        py.detach(|| match self {
-            Source::Text(text) => walls_ide::check_text(text, options),
-            Source::Bytes(bytes) => walls_ide::check_bytes(bytes, options),
-        })
-    }
+/// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
+/// released.
+fn check(py: Python<'_>, text: Text, options: &Options) -> Checked {
+    py.detach(|| match text {
+        Text::Str(text) => walls_ide::check_text(text, options),
+        Text::Bytes(bytes) => walls_ide::check_bytes(bytes, options),
+    })
 }
 
 /// An optional argument that must be a positive, finite number (`min_radius`, `dt`).
@@ -92,7 +71,7 @@ fn lint<'py>(
         min_radius: positive("min_radius", min_radius)?,
         dt: positive("dt", dt)?,
     };
-    let checked = Source::of(text)?.check(py, &options);
+    let checked = check(py, args::text(text)?, &options);
     diagnostics::to_python(py, &checked.text, &checked.diagnostics)
 }
 
@@ -128,9 +107,9 @@ fn format<'py>(
         keep_blank_lines: args::optional(keep_blank_lines, |v| args::flag(v, &"keep_blank_lines"))?
             .unwrap_or(defaults.keep_blank_lines),
     };
-    let text = match Source::of(text)? {
-        Source::Text(text) => text,
-        Source::Bytes(bytes) => match walls_syntax::decode(bytes) {
+    let text = match args::text(text)? {
+        Text::Str(text) => text,
+        Text::Bytes(bytes) => match walls_syntax::decode(bytes) {
             Ok(text) => text,
             Err((prefix, d)) => {
                 return Err(diagnostics::error(py, NOT_FORMATTED, &prefix, &[*d]));
@@ -165,7 +144,7 @@ fn scene<'py>(
         mode,
         ..Options::default()
     };
-    let checked = Source::of(text)?.check(py, &options);
+    let checked = check(py, args::text(text)?, &options);
     if strict {
         let errors = checked.errors();
         if !errors.is_empty() {

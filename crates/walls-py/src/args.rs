@@ -17,7 +17,7 @@
 //!   integers and `float16` to `float64` exactly, `longdouble` rounded as above,
 //!   `bool_` as a bool, complex, dates, durations, bytes and records refused.
 
-use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyOverflowError, PyTypeError, PyUnicodeEncodeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{
@@ -53,8 +53,8 @@ enum Kind<'py> {
     /// Any other real: Python's `float`, NumPy's `longdouble`, any `numbers.Real`,
     /// `decimal.Decimal` ([`double`] rounds it).
     Real(Bound<'py, PyAny>),
-    /// A `str` (or a subclass: NumPy's `str_`).
-    Text(String),
+    /// A `str` (or a subclass: NumPy's `str_`), made a Rust string by [`string`].
+    Text(Bound<'py, PyString>),
     /// A sequence: a list, a tuple, a NumPy array, any other `collections.abc.Sequence`
     /// but text and bytes. Its length is asked before its items are made.
     Items(Items<'py>),
@@ -75,7 +75,7 @@ fn kind<'py>(value: &Bound<'py, PyAny>) -> PyResult<Kind<'py>> {
         return Ok(Kind::Real(value.clone()));
     }
     if let Ok(s) = value.cast::<PyString>() {
-        return Ok(Kind::Text(s.to_cow()?.into_owned()));
+        return Ok(Kind::Text(s.clone()));
     }
     if value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>() {
         return items(value);
@@ -411,8 +411,41 @@ pub fn flag(value: &Bound<'_, PyAny>, name: Name<'_>) -> PyResult<bool> {
 /// A `str` argument (`comment`, a token's name, a wall type's name), never `bytes`.
 pub fn word(value: &Bound<'_, PyAny>, name: Name<'_>) -> PyResult<String> {
     match kind(value)? {
-        Kind::Text(text) => Ok(text),
+        Kind::Text(text) => string(&text, name),
         _ => Err(wrong(name, "a str", value)),
+    }
+}
+
+/// A `str` as UTF-8, refused (`UnicodeEncodeError`, a `ValueError`) with the argument's
+/// name when it holds a lone surrogate (`"\ud800"`), which no file can hold.
+fn string(text: &Bound<'_, PyString>, name: Name<'_>) -> PyResult<String> {
+    text.to_cow().map(|t| t.into_owned()).map_err(|e| {
+        let py = text.py();
+        if e.is_instance_of::<PyUnicodeEncodeError>(py) {
+            PyValueError::new_err(format!("{name} is not UTF-8 text: {}", e.value(py)))
+        } else {
+            e
+        }
+    })
+}
+
+/// A walls file as Python hands it over.
+pub enum Text {
+    /// A `str`.
+    Str(String),
+    /// `bytes`, to decode as a file's are.
+    Bytes(Vec<u8>),
+}
+
+/// The `text` of `walls.lint`, `walls.format` and `walls.scene`: a `str`, or `bytes`
+/// (or a subclass of either) read as a file is.
+pub fn text(value: &Bound<'_, PyAny>) -> PyResult<Text> {
+    if let Ok(bytes) = value.cast::<PyBytes>() {
+        return Ok(Text::Bytes(bytes.as_bytes().to_vec()));
+    }
+    match kind(value)? {
+        Kind::Text(text) => string(&text, &"text").map(Text::Str),
+        _ => Err(wrong(&"text", "str or bytes", value)),
     }
 }
 
@@ -431,7 +464,7 @@ pub fn choice<T: Copy>(
         }
     };
     let given = match kind(value)? {
-        Kind::Text(text) => text,
+        Kind::Text(text) => string(&text, name)?,
         _ => return Err(wrong(name, &names(), value)),
     };
     choices
@@ -517,7 +550,7 @@ pub fn token(
     let what = shape.describe();
     match shape {
         ValueShape::TypeName => match kind(value)? {
-            Kind::Text(text) => Ok(Given::Text(text)),
+            Kind::Text(text) => string(&text, name).map(Given::Text),
             _ => Err(wrong(name, what, value)),
         },
         ValueShape::Number => number(value, name).map(Given::Float),
@@ -592,10 +625,14 @@ pub fn orientation(value: &Bound<'_, PyAny>) -> PyResult<Orientation> {
     choice(value, &"orientation", Orientation::ALL)
 }
 
-/// `path` of `walls.read_mesh`: a `str` or an `os.PathLike` (never `bytes`).
+/// `path` of `walls.read_mesh`: a `str` or an `os.PathLike` (never `bytes`), without a
+/// NUL character (which no file name holds: Python's `open` refuses it too).
 pub fn path(value: &Bound<'_, PyAny>) -> PyResult<PathBuf> {
     let bytes = value.is_instance_of::<PyBytes>() || value.is_instance_of::<PyByteArray>();
     match value.extract::<PathBuf>() {
+        Ok(path) if path.as_os_str().as_encoded_bytes().contains(&0) => {
+            Err(PyValueError::new_err("path must not hold a NUL character"))
+        }
         Ok(path) if !bytes => Ok(path),
         _ => Err(wrong(&"path", "a str or an os.PathLike", value)),
     }
