@@ -340,3 +340,12 @@ def test_text_that_is_not_utf8_and_paths_with_nul_are_named():
     refused(lambda: walls.lint(bytearray(b"wall\n")), TypeError, "text must be str or bytes, not bytearray")
     # bytes and str subclasses are bytes and str (NumPy's bytes_ and str_).
     assert walls.lint(np.bytes_(b"wall\n")) == walls.lint(np.str_("wall\n")) == []
+
+
+def test_the_console_scripts_entry_takes_only_a_tools_name():
+    from walls._walls import run_tool
+
+    refused(lambda: run_tool("walls-x", ["walls-x"]), ValueError,
+            'tool must be "walls-lint", "walls-fmt", "walls-sim", "walls-mesh" or "walls-lsp", not "walls-x"')
+    refused(lambda: run_tool(b"walls-lint", ["walls-lint"]), TypeError,
+            'tool must be "walls-lint", "walls-fmt", "walls-sim", "walls-mesh" or "walls-lsp", not bytes')
