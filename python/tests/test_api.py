@@ -103,9 +103,13 @@ def test_bad_arguments_are_named():
         walls.lint("", mode="soft")
     with pytest.raises(ValueError, match="min_radius must be a positive number, not -1"):
         walls.lint("", min_radius=-1)
-    with pytest.raises(ValueError, match="dt must be a positive number, not NaN"):
+    with pytest.raises(ValueError, match="dt must be a finite number, not nan"):
         walls.lint("", dt=float("nan"))
-    with pytest.raises(ValueError, match="indent_width 17 is more than 16"):
+    with pytest.raises(ValueError, match="max_walls must be an integer from 0 to 18446744073709551615, not -1"):
+        walls.lint("", max_walls=-1)
+    with pytest.raises(TypeError, match="max_walls must be an integer, not float"):
+        walls.lint("", max_walls=30.0)
+    with pytest.raises(ValueError, match="indent_width must be an integer from 0 to 16, not 17"):
         walls.format("", indent_width=17)
     with pytest.raises(ValueError, match="time must be a finite number, not inf"):
         walls.scene("", time=float("inf"))

@@ -41,7 +41,8 @@ class Diagnostic(TypedDict):
     fix: NotRequired[Fix]
 
 class WallsError(Exception):
-    """A walls file that could not be formatted or resolved."""
+    """A walls file that could not be formatted, resolved or written, or a mesh that makes
+    no walls (then `diagnostics` is empty)."""
 
     diagnostics: List[Diagnostic]
 

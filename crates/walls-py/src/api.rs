@@ -2,10 +2,11 @@
 //! a file is) to what `walls-lint --format json`, `walls-fmt` and `walls-sim scene` give
 //! for it, through the same library calls.
 
+use crate::args::{self, Text};
 use crate::diagnostics;
-use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyList, PyString};
+use pyo3::types::PyList;
 use walls_format::FormatOptions;
 use walls_ide::Checked;
 use walls_keywords::ContactModel;
@@ -19,56 +20,27 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
-/// A walls file as Python hands it over: text, or bytes to decode as a file's are.
-enum Source {
-    Text(String),
-    Bytes(Vec<u8>),
-}
-
-impl Source {
-    /// The `text` argument: `str` or `bytes`, anything else a `TypeError`.
-    fn of(text: &Bound<'_, PyAny>) -> PyResult<Source> {
-        if text.is_instance_of::<PyString>() {
-            Ok(Source::Text(text.extract()?))
-        } else if let Ok(bytes) = text.cast::<PyBytes>() {
-            Ok(Source::Bytes(bytes.as_bytes().to_vec()))
-        } else {
-            Err(PyTypeError::new_err(format!(
-                "text must be str or bytes, not {}",
-                text.get_type().name()?
-            )))
-        }
-    }
-
-    /// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
-    /// released.
-    fn check(self, py: Python<'_>, options: &Options) -> Checked {
-        py.detach(|| match self {
-            Source::Text(text) => walls_ide::check_text(text, options),
-            Source::Bytes(bytes) => walls_ide::check_bytes(bytes, options),
-        })
-    }
-}
-
-/// `mode`: the contact model, by the name the tools' `--mode` takes.
-pub(crate) fn contact_model(mode: &str) -> PyResult<ContactModel> {
-    match mode {
-        "ssdem" => Ok(ContactModel::Ssdem),
-        "hsdem" => Ok(ContactModel::Hsdem),
-        _ => Err(PyValueError::new_err(format!(
-            "mode must be \"ssdem\" or \"hsdem\", not {mode:?}"
-        ))),
-    }
+/// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
+/// released.
+fn check(py: Python<'_>, text: Text, options: &Options) -> Checked {
+    py.detach(|| match text {
+        Text::Str(text) => walls_ide::check_text(text, options),
+        Text::Bytes(bytes) => walls_ide::check_bytes(bytes, options),
+    })
 }
 
 /// An optional argument that must be a positive, finite number (`min_radius`, `dt`).
-fn positive(name: &str, value: Option<f64>) -> PyResult<Option<f64>> {
-    match value {
-        Some(x) if !(x > 0.0 && x.is_finite()) => Err(PyValueError::new_err(format!(
-            "{name} must be a positive number, not {x}"
-        ))),
-        _ => Ok(value),
-    }
+fn positive(name: &str, value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
+    args::optional(value, |v| {
+        let x = args::number(v, &name)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(PyValueError::new_err(format!(
+                "{name} must be a positive number, not {x}"
+            )))
+        }
+    })
 }
 
 /// Checks a walls file as `walls-lint` does and returns its diagnostics, each a dict as
@@ -80,23 +52,26 @@ fn positive(name: &str, value: Option<f64>) -> PyResult<Option<f64>> {
 /// `min_radius` (the smallest particle radius) turns on the SSDEM wall-speed check, with
 /// `dt` the timestep for walls whose `step` is 0.
 #[pyfunction]
-#[pyo3(signature = (text, mode = "ssdem", *, max_walls = None, min_radius = None, dt = None))]
+#[pyo3(
+    signature = (text, mode = ContactModel::Ssdem, *, max_walls = None, min_radius = None, dt = None),
+    text_signature = "(text, mode=\"ssdem\", *, max_walls=None, min_radius=None, dt=None)"
+)]
 fn lint<'py>(
     py: Python<'py>,
     text: &Bound<'py, PyAny>,
-    mode: &str,
-    max_walls: Option<usize>,
-    min_radius: Option<f64>,
-    dt: Option<f64>,
+    #[pyo3(from_py_with = args::mode)] mode: ContactModel,
+    max_walls: Option<&Bound<'py, PyAny>>,
+    min_radius: Option<&Bound<'py, PyAny>>,
+    dt: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyList>> {
     let defaults = Options::default();
     let options = Options {
-        mode: contact_model(mode)?,
-        max_walls: max_walls.unwrap_or(defaults.max_walls),
+        mode,
+        max_walls: args::optional(max_walls, args::max_walls)?.unwrap_or(defaults.max_walls),
         min_radius: positive("min_radius", min_radius)?,
         dt: positive("dt", dt)?,
     };
-    let checked = Source::of(text)?.check(py, &options);
+    let checked = check(py, args::text(text)?, &options);
     diagnostics::to_python(py, &checked.text, &checked.diagnostics)
 }
 
@@ -111,30 +86,30 @@ const NOT_FORMATTED: &str = "syntax errors prevent formatting";
 /// unclear (or the bytes are not UTF-8).
 #[pyfunction]
 #[pyo3(signature = (text, *, indent_width = None, align_trailing_comments = None, keep_blank_lines = None))]
-fn format(
-    py: Python<'_>,
-    text: &Bound<'_, PyAny>,
-    indent_width: Option<usize>,
-    align_trailing_comments: Option<bool>,
-    keep_blank_lines: Option<bool>,
+fn format<'py>(
+    py: Python<'py>,
+    text: &Bound<'py, PyAny>,
+    indent_width: Option<&Bound<'py, PyAny>>,
+    align_trailing_comments: Option<&Bound<'py, PyAny>>,
+    keep_blank_lines: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<String> {
     let defaults = FormatOptions::default();
-    let options = FormatOptions {
-        indent_width: indent_width.unwrap_or(defaults.indent_width),
-        align_trailing_comments: align_trailing_comments
-            .unwrap_or(defaults.align_trailing_comments),
-        keep_blank_lines: keep_blank_lines.unwrap_or(defaults.keep_blank_lines),
+    let width = |v: &Bound<'py, PyAny>| {
+        let most = walls_format::MAX_INDENT_WIDTH as i128;
+        args::integer(v, &"indent_width", 0..=most).map(|n| n as usize)
     };
-    if options.indent_width > walls_format::MAX_INDENT_WIDTH {
-        return Err(PyValueError::new_err(format!(
-            "indent_width {} is more than {}",
-            options.indent_width,
-            walls_format::MAX_INDENT_WIDTH
-        )));
-    }
-    let text = match Source::of(text)? {
-        Source::Text(text) => text,
-        Source::Bytes(bytes) => match walls_syntax::decode(bytes) {
+    let options = FormatOptions {
+        indent_width: args::optional(indent_width, width)?.unwrap_or(defaults.indent_width),
+        align_trailing_comments: args::optional(align_trailing_comments, |v| {
+            args::flag(v, &"align_trailing_comments")
+        })?
+        .unwrap_or(defaults.align_trailing_comments),
+        keep_blank_lines: args::optional(keep_blank_lines, |v| args::flag(v, &"keep_blank_lines"))?
+            .unwrap_or(defaults.keep_blank_lines),
+    };
+    let text = match args::text(text)? {
+        Text::Str(text) => text,
+        Text::Bytes(bytes) => match walls_syntax::decode(bytes) {
             Ok(text) => text,
             Err((prefix, d)) => {
                 return Err(diagnostics::error(py, NOT_FORMATTED, &prefix, &[*d]));
@@ -153,24 +128,23 @@ fn format(
 /// `strict=False` gives the scene resolved from what parsed, as `walls-sim scene` does
 /// beside its exit status 1. `mode` is "ssdem" or "hsdem".
 #[pyfunction]
-#[pyo3(signature = (text, time = None, strict = true, *, mode = "ssdem"))]
+#[pyo3(
+    signature = (text, time = None, strict = true, *, mode = ContactModel::Ssdem),
+    text_signature = "(text, time=None, strict=True, *, mode=\"ssdem\")"
+)]
 fn scene<'py>(
     py: Python<'py>,
     text: &Bound<'py, PyAny>,
-    time: Option<f64>,
-    strict: bool,
-    mode: &str,
+    time: Option<&Bound<'py, PyAny>>,
+    #[pyo3(from_py_with = args::strict)] strict: bool,
+    #[pyo3(from_py_with = args::mode)] mode: ContactModel,
 ) -> PyResult<Bound<'py, PyAny>> {
-    if let Some(t) = time.filter(|t| !t.is_finite()) {
-        return Err(PyValueError::new_err(format!(
-            "time must be a finite number, not {t}"
-        )));
-    }
+    let time = args::optional(time, |v| args::number(v, &"time"))?;
     let options = Options {
-        mode: contact_model(mode)?,
+        mode,
         ..Options::default()
     };
-    let checked = Source::of(text)?.check(py, &options);
+    let checked = check(py, args::text(text)?, &options);
     if strict {
         let errors = checked.errors();
         if !errors.is_empty() {

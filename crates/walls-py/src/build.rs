@@ -1,18 +1,21 @@
 //! `walls.Wall`, and the calls behind `walls.dumps`, `walls.from_mesh` and
 //! `walls.read_mesh` (python/walls/_build.py): the `walls-build` library's builder and
 //! meshes, with Python's values (numbers, tuples, lists, NumPy arrays and scalars)
-//! converted to the builder's and its refusals raised as `TypeError` or `WallsError`.
+//! converted to the builder's by [`crate::args`], its refusals raised as `TypeError` or
+//! `ValueError`, and a mesh's problems as `WallsError`.
 
-use crate::diagnostics::{self, WallsError};
+use crate::args;
+use crate::diagnostics;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use std::path::PathBuf;
 use walls_build::mesh::{self, Mesh, MeshOptions, Orientation};
 use walls_build::{
     BuildError, CheckOptions, DumpOptions, Given, LengthUnit, Units, Value, Wall, describe, dumps,
 };
 use walls_diagnostics::Severity;
+use walls_keywords::ContactModel;
 
 /// Adds the class and functions of this file to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -23,58 +26,32 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
-/// A refused token: `TypeError` for a value of the wrong kind, else `WallsError`.
+/// A refused token: `TypeError` for a value of the wrong kind, else `ValueError` (an
+/// unknown keyword or type, a keyword that is not a wall's or a unit).
 fn refused(e: BuildError) -> PyErr {
     if e.is_type_error() {
         PyTypeError::new_err(e.to_string())
     } else {
-        WallsError::new_err(e.to_string())
+        PyValueError::new_err(e.to_string())
     }
 }
 
-/// A Python value as the builder takes it: bools (Python's and NumPy's), strings, reals,
-/// iterables (tuples, lists, NumPy arrays) as lists, other integers (anything with
-/// `__index__`: NumPy's) and reals (anything with `__float__`).
-fn given(value: &Bound<'_, PyAny>) -> PyResult<Given> {
-    let numpy_bool = value
-        .get_type()
-        .name()
-        .is_ok_and(|n| n == "bool_" || n == "bool");
-    if value.is_instance_of::<PyBool>() || numpy_bool {
-        return Ok(Given::Bool(value.is_truthy()?));
-    }
-    if value.is_instance_of::<PyString>() {
-        return Ok(Given::Text(value.extract()?));
-    }
-    if value.is_instance_of::<PyFloat>() {
-        return Ok(Given::Float(value.extract()?));
-    }
-    let mapping = value.is_instance_of::<PyDict>() || value.hasattr("keys")?;
-    if !value.is_instance_of::<PyInt>() && !mapping && value.hasattr("__iter__")? {
-        let items = value.try_iter()?;
-        return Ok(Given::List(
-            items
-                .map(|item| given(&item?))
-                .collect::<PyResult<Vec<_>>>()?,
-        ));
-    }
-    if value.is_instance_of::<PyInt>() || value.hasattr("__index__")? {
-        let index = value
-            .py()
-            .import("operator")?
-            .call_method1("index", (value,))?;
-        return index
-            .extract::<i64>()
-            .map(Given::Int)
-            .or_else(|_| Ok(Given::Float(index.extract::<f64>()?)));
-    }
-    if value.hasattr("__float__")? {
-        return Ok(Given::Float(value.extract()?));
-    }
-    Err(PyTypeError::new_err(format!(
-        "a token's value is a number, a sequence of 3 numbers or a wall type name, not {}",
-        value.get_type().name()?
-    )))
+/// The token `name` set to `value` by `set` (a wall's or the units'), the value
+/// converted for the shape its keyword takes ([`args::token`]).
+fn set_token<T>(
+    name: &Bound<'_, PyAny>,
+    value: &Bound<'_, PyAny>,
+    set: impl FnOnce(&str, Given) -> Result<T, BuildError>,
+) -> PyResult<()> {
+    let name = args::word(name, &"a token's name")?;
+    // The builder's own lookup: any case, `_` for `-`; a name it does not know is left
+    // for its refusal.
+    let shape = walls_keywords::keyword(&name)
+        .or_else(|| walls_keywords::keyword(&name.replace('_', "-")))
+        .map(|k| k.shape());
+    let given = args::token(value, &name, shape)?;
+    set(&name, given).map_err(refused)?;
+    Ok(())
 }
 
 /// A checked value as Python sees it: a float, an int, a tuple of 3 floats or a str.
@@ -102,8 +79,7 @@ impl PyWall {
         let mut wall = Wall::new();
         if let Some(tokens) = tokens {
             for (name, value) in tokens.iter() {
-                let name: String = name.extract()?;
-                wall.set(&name, given(&value)?).map_err(refused)?;
+                set_token(&name, &value, |name, given| wall.set(name, given).map(drop))?;
             }
         }
         Ok(PyWall { wall })
@@ -122,10 +98,12 @@ impl PyWall {
     /// returns the wall.
     fn set<'py>(
         mut slf: PyRefMut<'py, Self>,
-        name: &str,
+        name: &Bound<'py, PyAny>,
         value: &Bound<'py, PyAny>,
     ) -> PyResult<PyRefMut<'py, Self>> {
-        slf.wall.set(name, given(value)?).map_err(refused)?;
+        set_token(name, value, |name, given| {
+            slf.wall.set(name, given).map(drop)
+        })?;
         Ok(slf)
     }
 
@@ -147,10 +125,15 @@ impl PyWall {
     }
 
     /// The value of the token `name`; `KeyError` if the wall does not set it.
-    fn __getitem__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        match self.wall.get(name) {
+    fn __getitem__<'py>(
+        &self,
+        py: Python<'py>,
+        name: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let name = args::word(name, &"a token's name")?;
+        match self.wall.get(&name) {
             Some(value) => to_python(py, value),
-            None => Err(pyo3::exceptions::PyKeyError::new_err(name.to_string())),
+            None => Err(pyo3::exceptions::PyKeyError::new_err(name)),
         }
     }
 
@@ -186,10 +169,11 @@ fn defaults(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Wall>> {
     }
     match value.cast::<PyDict>() {
         Ok(dict) => Ok(Some(PyWall::of(Some(dict))?.wall)),
-        Err(_) => Err(PyTypeError::new_err(format!(
-            "defaults must be a Wall or a dict of tokens, not {}",
-            value.get_type().name()?
-        ))),
+        Err(_) => Err(args::wrong(
+            &"defaults",
+            "a Wall or a dict of tokens",
+            value,
+        )),
     }
 }
 
@@ -199,7 +183,8 @@ fn units(value: Option<&Bound<'_, PyAny>>) -> PyResult<Units> {
     let Some(value) = value.filter(|v| !v.is_none()) else {
         return Ok(Units::new());
     };
-    if let Ok(name) = value.extract::<String>() {
+    if value.is_instance_of::<PyString>() {
+        let name = args::word(value, &"units")?;
         return LengthUnit::named(&name).map(Units::length).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "units must name a length unit (mm, cm, m, km, au) or be a dict, not {name:?}"
@@ -207,49 +192,61 @@ fn units(value: Option<&Bound<'_, PyAny>>) -> PyResult<Units> {
         });
     }
     let dict = value.cast::<PyDict>().map_err(|_| {
-        PyTypeError::new_err("units must be a length unit's name or a dict of unit tokens")
+        args::wrong(
+            &"units",
+            "a length unit's name or a dict of unit tokens",
+            value,
+        )
     })?;
     let mut units = Units::new();
     for (name, x) in dict.iter() {
-        let name: String = name.extract()?;
-        units.set(&name, given(&x)?).map_err(refused)?;
+        set_token(&name, &x, |name, given| units.set(name, given).map(drop))?;
     }
     Ok(units)
 }
 
+/// `walls` of `walls.dumps`: an iterable of `Wall`s (not a `Wall` itself).
+fn walls_of(walls: &Bound<'_, PyAny>) -> PyResult<Vec<Wall>> {
+    let not_walls = |w: &Bound<'_, PyAny>| args::wrong(&"walls", "an iterable of Wall objects", w);
+    if walls.extract::<PyWall>().is_ok() || walls.is_instance_of::<PyString>() {
+        return Err(not_walls(walls));
+    }
+    walls
+        .try_iter()
+        .map_err(|_| not_walls(walls))?
+        .enumerate()
+        .map(|(i, w)| {
+            let w = w?;
+            w.extract::<PyWall>()
+                .map(|w| w.wall)
+                .map_err(|_| args::wrong(&args::Item(&"walls", i), "a Wall", &w))
+        })
+        .collect()
+}
+
 /// `walls.dumps`: the text, and each warning as a line for `warnings.warn`.
 #[pyfunction]
-#[pyo3(signature = (walls, units = None, defaults = None, comment = None, *, mode = "ssdem", max_walls = 20))]
-fn _dumps(
-    py: Python<'_>,
-    walls: &Bound<'_, PyAny>,
-    units: Option<&Bound<'_, PyAny>>,
-    defaults: Option<&Bound<'_, PyAny>>,
-    comment: Option<String>,
-    mode: &str,
-    max_walls: usize,
+#[pyo3(
+    signature = (walls, units = None, defaults = None, comment = None, *, mode = ContactModel::Ssdem, max_walls = 20),
+    text_signature = "(walls, units=None, defaults=None, comment=None, *, mode=\"ssdem\", max_walls=20)"
+)]
+#[allow(clippy::too_many_arguments)]
+fn _dumps<'py>(
+    py: Python<'py>,
+    walls: &Bound<'py, PyAny>,
+    units: Option<&Bound<'py, PyAny>>,
+    defaults: Option<&Bound<'py, PyAny>>,
+    comment: Option<&Bound<'py, PyAny>>,
+    #[pyo3(from_py_with = args::mode)] mode: ContactModel,
+    #[pyo3(from_py_with = args::max_walls)] max_walls: usize,
 ) -> PyResult<(String, Vec<String>)> {
-    let walls = walls
-        .try_iter()?
-        .map(|w| {
-            let w = w?;
-            w.extract::<PyWall>().map(|w| w.wall).map_err(|_| {
-                PyTypeError::new_err(format!(
-                    "walls must hold Wall objects, not {}",
-                    w.get_type()
-                        .name()
-                        .map(|n| n.to_string())
-                        .unwrap_or_default()
-                ))
-            })
-        })
-        .collect::<PyResult<Vec<Wall>>>()?;
+    let walls = walls_of(walls)?;
     let options = DumpOptions {
         units: self::units(units)?,
         defaults: self::defaults(defaults)?,
-        comment,
+        comment: args::optional(comment, |v| args::word(v, &"comment"))?,
         check: CheckOptions {
-            mode: crate::api::contact_model(mode)?,
+            mode,
             max_walls,
             ..CheckOptions::default()
         },
@@ -284,33 +281,48 @@ fn _dumps(
     }
 }
 
-/// A mesh problem as a `WallsError`.
-fn mesh_error(e: mesh::Problem) -> PyErr {
-    WallsError::new_err(e.to_string())
+/// `vertices` of `walls.from_mesh`: rows of 3 numbers.
+fn vertices(value: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 3]>> {
+    let rows = args::sequence(value, &"vertices")?;
+    rows.iter()
+        .enumerate()
+        .map(|(i, v)| args::row(v, &args::Item(&"vertices", i), "numbers", args::number))
+        .collect()
+}
+
+/// `faces` of `walls.from_mesh`: rows of 3 indices of `vertices` rows (from 0).
+fn faces(value: &Bound<'_, PyAny>, vertices: usize) -> PyResult<Vec<[usize; 3]>> {
+    let rows = args::sequence(value, &"faces")?;
+    let index =
+        |v: &Bound<'_, PyAny>, name: args::Name<'_>| args::index(v, name, "vertices", vertices);
+    rows.iter()
+        .enumerate()
+        .map(|(i, f)| args::row(f, &args::Item(&"faces", i), "vertex indices", index))
+        .collect()
 }
 
 /// `walls.from_mesh`: the walls of a mesh given as arrays.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, orientation = "keep", merge_rectangles = false))]
-fn _from_mesh(
-    py: Python<'_>,
-    vertices: Vec<[f64; 3]>,
-    faces: Vec<[usize; 3]>,
-    orientation: &str,
-    merge_rectangles: bool,
+#[pyo3(
+    signature = (vertices, faces, orientation = Orientation::Keep, merge_rectangles = false),
+    text_signature = "(vertices, faces, orientation=\"keep\", merge_rectangles=False)"
+)]
+fn _from_mesh<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    #[pyo3(from_py_with = args::orientation)] orientation: Orientation,
+    #[pyo3(from_py_with = args::merge_rectangles)] merge_rectangles: bool,
 ) -> PyResult<Vec<PyWall>> {
-    let orientation = Orientation::named(orientation).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "orientation must be \"keep\", \"outward\" or \"inward\", not {orientation:?}"
-        ))
-    })?;
+    let vertices = self::vertices(vertices)?;
+    let faces = self::faces(faces, vertices.len())?;
     let options = MeshOptions {
         orientation,
         merge_rectangles,
     };
     let walls = py
         .detach(|| Mesh::from_arrays(vertices, &faces).and_then(|m| mesh::to_walls(&m, &options)))
-        .map_err(mesh_error)?;
+        .map_err(|e| diagnostics::plain(py, e.to_string()))?;
     Ok(walls.into_iter().map(|wall| PyWall { wall }).collect())
 }
 
@@ -319,12 +331,12 @@ fn _from_mesh(
 #[pyfunction]
 fn _read_mesh<'py>(
     py: Python<'py>,
-    path: PathBuf,
+    #[pyo3(from_py_with = args::path)] path: PathBuf,
 ) -> PyResult<(Bound<'py, PyList>, Bound<'py, PyList>, Vec<String>)> {
     let name = path.display().to_string();
     let read = py
         .detach(|| mesh::read_mesh(&path))
-        .map_err(|e| WallsError::new_err(e.in_file(&name)))?;
+        .map_err(|e| diagnostics::plain(py, e.in_file(&name)))?;
     let vertices = read
         .mesh
         .vertices

@@ -16,8 +16,9 @@ create_exception!(
     walls,
     WallsError,
     PyException,
-    "A walls file that could not be formatted or resolved. `diagnostics` holds the \
-     errors, as `walls.lint` gives them."
+    "A walls file that could not be formatted, resolved or written, or a mesh that makes \
+     no walls. `diagnostics` holds the file's errors, as `walls.lint` gives them (empty \
+     for a mesh's, whose message names its place)."
 );
 
 /// Adds `WallsError` to the module.
@@ -72,10 +73,22 @@ pub fn error(py: Python<'_>, what: &str, text: &str, diagnostics: &[Diagnostic])
         }
         None => what.to_string(),
     };
+    match to_python(py, text, diagnostics) {
+        Ok(list) => carrying(py, message, list),
+        Err(e) => e,
+    }
+}
+
+/// A `WallsError` that is not a walls file's (a mesh's, whose message names its line,
+/// facet, face or edge): its `diagnostics` is empty.
+pub fn plain(py: Python<'_>, message: String) -> PyErr {
+    carrying(py, message, PyList::empty(py))
+}
+
+/// A `WallsError` with `message` and `diagnostics`: every one has the attribute.
+fn carrying(py: Python<'_>, message: String, diagnostics: Bound<'_, PyList>) -> PyErr {
     let err = WallsError::new_err(message);
-    let attached = to_python(py, text, diagnostics)
-        .and_then(|list| err.value(py).setattr("diagnostics", list));
-    match attached {
+    match err.value(py).setattr("diagnostics", diagnostics) {
         Ok(()) => err,
         Err(e) => e,
     }

@@ -4,13 +4,15 @@
 //! formats or resolves on its own: [`api`] is `walls.lint`, `walls.format` and
 //! `walls.scene` over text; [`diagnostics`] is `walls.WallsError` and the diagnostics as
 //! `walls-lint --format json` gives them; [`tools`] runs the command-line tools for the
-//! wheel's console scripts. The work runs with the GIL released, so threads may lint
-//! files side by side.
+//! wheel's console scripts; [`build`] is `walls.Wall` and the builder's calls; [`args`]
+//! converts the arguments of them all, strictly and in one place. The work runs with the
+//! GIL released, so threads may lint files side by side.
 //!
 //! Each file of the module adds its own functions in its `register`; a new one is a
 //! `mod` line and a `register` call in [`_walls`].
 
 mod api;
+mod args;
 mod build;
 mod diagnostics;
 mod tools;

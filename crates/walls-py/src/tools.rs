@@ -3,7 +3,7 @@
 //! `walls-lint`, `walls-fmt`, `walls-sim`, `walls-mesh` and `walls-lsp` are Python scripts
 //! that call the tools' own entry points here, with the GIL released.
 
-use pyo3::exceptions::PyValueError;
+use crate::args;
 use pyo3::prelude::*;
 use std::ffi::OsString;
 use std::io::Write;
@@ -13,23 +13,27 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_tool, m)?)
 }
 
+/// A tool's entry point: its command line to the status its binary exits with.
+type Entry = fn(Vec<OsString>) -> i32;
+
+/// The tools, by the name of their binary, and their entry points.
+const TOOLS: &[(&str, Entry)] = &[
+    ("walls-lint", walls_cli::entry::lint),
+    ("walls-fmt", walls_cli::entry::fmt),
+    ("walls-sim", walls_cli::entry::sim),
+    ("walls-mesh", walls_cli::entry::mesh),
+    ("walls-lsp", walls_lsp::entry),
+];
+
 /// Runs the tool `tool` ("walls-lint", "walls-fmt", "walls-sim", "walls-mesh" or
 /// "walls-lsp") with the command line `argv` (argv[0] is the program's name) and returns
 /// the status its binary would exit with.
 #[pyfunction]
-fn run_tool(py: Python<'_>, tool: &str, argv: Vec<OsString>) -> PyResult<i32> {
-    let entry: fn(Vec<OsString>) -> i32 = match tool {
-        "walls-lint" => walls_cli::entry::lint,
-        "walls-fmt" => walls_cli::entry::fmt,
-        "walls-sim" => walls_cli::entry::sim,
-        "walls-mesh" => walls_cli::entry::mesh,
-        "walls-lsp" => walls_lsp::entry,
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "no tool {tool:?}: walls-lint, walls-fmt, walls-sim, walls-mesh or walls-lsp"
-            )));
-        }
-    };
+fn run_tool(
+    py: Python<'_>,
+    #[pyo3(from_py_with = tool)] entry: Entry,
+    argv: Vec<OsString>,
+) -> PyResult<i32> {
     Ok(py.detach(|| {
         let status = entry(argv);
         // A binary's runtime flushes standard output when main returns; a library's
@@ -37,4 +41,9 @@ fn run_tool(py: Python<'_>, tool: &str, argv: Vec<OsString>) -> PyResult<i32> {
         let _ = std::io::stdout().flush();
         status
     }))
+}
+
+/// `tool` of `run_tool`: a tool's entry point, by its binary's name.
+fn tool(value: &Bound<'_, PyAny>) -> PyResult<Entry> {
+    args::choice(value, &"tool", TOOLS)
 }
