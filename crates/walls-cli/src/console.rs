@@ -8,24 +8,43 @@
 //! * a failed write to standard error is dropped: the warning is lost, the command goes on
 //!   and still writes its results.
 //!
+//! What the tools print is of two kinds, and this is where the difference is kept:
+//!
+//! * **human output**: messages, warnings, summaries, explanations, advice, diffs, clap's
+//!   errors: [`outln!`], [`out!`] and [`errln!`] show every hazard of the text (a control
+//!   character, a bidirectional override: [`walls_diagnostics::terminal`]) as its escape
+//!   (`\x1b`), wherever the text came from (a file name, a `.par` value, a mesh's name).
+//!   Diagnostics are drawn by `walls_diagnostics::render::human`, which escapes what it
+//!   quotes and writes only its own colours, and diffs are escaped where they are made;
+//! * **data**: formatted walls text, the walls file `walls-mesh` writes, JSON, SARIF,
+//!   annotations, pictures and files: the bytes as they are, through [`out_data`] or the
+//!   commands' own writers (the JSON and annotation renderers escape in their own way).
+//!
 //! [`color_stderr`] decides whether to colour standard error, following <https://no-color.org>: only a
 //! non-empty `NO_COLOR` turns colour off.
 
+use std::borrow::Cow;
 use std::fmt::Arguments;
 use std::io::{ErrorKind, IsTerminal, Write};
+use walls_diagnostics::terminal;
 
-/// Writes to standard output; see the module documentation for what a closed stream does.
+/// Writes human text to standard output, its hazards escaped; see the module
+/// documentation for what a closed stream does.
 pub fn out(args: Arguments<'_>) {
+    let text = escaped(args);
     let mut stdout = std::io::stdout().lock();
-    if let Err(e) = stdout.write_fmt(args).and_then(|()| stdout.flush()) {
+    if let Err(e) = stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
         out_failed(&e);
     }
 }
 
-/// Lets `write` write to standard output through a buffer, as it produces its text (a
-/// large report is never held whole), then flushes it; a failed write ends the process
-/// as in [`out`].
-pub fn out_streamed(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+/// Lets `write` write data to standard output, as it is, through a buffer, as it produces
+/// its text (a large report is never held whole), then flushes it; a failed write ends
+/// the process as in [`out`].
+pub fn out_data(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
     if let Err(e) = write(&mut stdout).and_then(|()| stdout.flush()) {
         out_failed(&e);
@@ -47,9 +66,22 @@ fn out_failed(e: &std::io::Error) -> ! {
     std::process::exit(2);
 }
 
-/// Writes to standard error, dropping the text if it cannot be written.
+/// Writes human text to standard error, its hazards escaped, dropping it if it cannot be
+/// written.
 pub fn err(args: Arguments<'_>) {
-    let _ = std::io::stderr().lock().write_fmt(args);
+    let _ = std::io::stderr().lock().write_all(escaped(args).as_bytes());
+}
+
+/// The text of `args` with every hazard shown as its escape.
+fn escaped(args: Arguments<'_>) -> String {
+    let text = match args.as_str() {
+        Some(text) => text.to_string(),
+        None => args.to_string(),
+    };
+    match terminal::escape(&text) {
+        Cow::Borrowed(_) => text,
+        Cow::Owned(escaped) => escaped,
+    }
 }
 
 /// Whether to colour standard error, where the tools write diagnostics: on a terminal,
@@ -66,20 +98,20 @@ fn color_with(is_terminal: bool, no_color: Option<&std::ffi::OsStr>) -> bool {
     is_terminal && no_color.is_none_or(|v| v.is_empty())
 }
 
-/// `println!` that never panics: see [`out`].
+/// `println!` for human text, which never panics and escapes hazards: see [`out`].
 #[macro_export]
 macro_rules! outln {
     () => { $crate::console::out(format_args!("\n")) };
     ($($arg:tt)*) => { $crate::console::out(format_args!("{}\n", format_args!($($arg)*))) };
 }
 
-/// `print!` that never panics: see [`out`].
+/// `print!` for human text, which never panics and escapes hazards: see [`out`].
 #[macro_export]
 macro_rules! out {
     ($($arg:tt)*) => { $crate::console::out(format_args!($($arg)*)) };
 }
 
-/// `eprintln!` that never panics: see [`err`].
+/// `eprintln!` for human text, which never panics and escapes hazards: see [`err`].
 #[macro_export]
 macro_rules! errln {
     ($($arg:tt)*) => { $crate::console::err(format_args!("{}\n", format_args!($($arg)*))) };
@@ -87,8 +119,18 @@ macro_rules! errln {
 
 #[cfg(test)]
 mod tests {
-    use super::color_with;
+    use super::{color_with, escaped};
     use std::ffi::OsStr;
+
+    #[test]
+    fn human_text_is_escaped_whatever_its_arguments() {
+        let name = "a\x1b]52;c;aGk=\x07.walls";
+        assert_eq!(
+            escaped(format_args!("cannot read {name}: \u{202e}\r\n")),
+            "cannot read a\\x1b]52;c;aGk=\\x07.walls: \\u{202e}\r\n"
+        );
+        assert_eq!(escaped(format_args!("plain\tline\n")), "plain\tline\n");
+    }
 
     #[test]
     fn only_a_non_empty_no_color_turns_colour_off() {

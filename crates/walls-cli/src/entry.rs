@@ -3,7 +3,9 @@
 //! and [`mesh`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
-//! A command line clap refuses prints clap's message to standard error and returns 2;
+//! A command line clap refuses prints clap's message to standard error and returns 2
+//! (plain, with its hazards escaped, when the command line holds one: clap quotes the
+//! arguments it refuses as they are);
 //! `--help` and `--version` print to standard output and return 0, as does
 //! `--completions SHELL` (the shell's completion script, from the clap definitions).
 //! Nothing here ends the process; what the commands share can, as the binaries expect:
@@ -16,6 +18,7 @@ use clap::Parser;
 use clap_complete::Shell;
 use std::ffi::OsString;
 use std::io::Write;
+use walls_diagnostics::terminal;
 
 /// `walls-lint` with the command line `argv`; the exit status.
 pub fn lint(argv: Vec<OsString>) -> i32 {
@@ -84,8 +87,21 @@ impl Tool for MeshArgs {
 /// Parses `argv` as `T`'s command line and runs it, or prints clap's answer, or the
 /// completion script; the exit status.
 fn tool<T: Tool>(argv: Vec<OsString>) -> i32 {
+    let hazardous = argv
+        .iter()
+        .any(|a| terminal::find(&a.to_string_lossy(), 0).is_some());
     let args = match T::try_parse_from(argv) {
         Ok(args) => args,
+        Err(e) if hazardous => {
+            // clap's text without its colours, through the console, which escapes.
+            let text = e.render().to_string();
+            if e.use_stderr() {
+                crate::console::err(format_args!("{text}"));
+            } else {
+                crate::console::out(format_args!("{text}"));
+            }
+            return e.exit_code();
+        }
         Err(e) => {
             // A closed stream leaves nobody to tell; the status still says what happened.
             let _ = e.print();

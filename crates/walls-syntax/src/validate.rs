@@ -10,7 +10,7 @@ use crate::suggest;
 use crate::tree::{Item, Statement, SyntaxTree, TokenId};
 use std::collections::HashMap;
 use std::ops::Range;
-use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS};
+use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS, terminal};
 use walls_keywords::{Keyword, Role, ValueShape};
 
 /// pkdgrav reads lines into a 4096-byte buffer: at most 4095 bytes before the newline.
@@ -94,6 +94,26 @@ impl<'t> Validator<'t> {
             }
         }
         self.line_length(line_start, text.len());
+        self.control_characters();
+    }
+
+    /// Control characters and bidirectional controls ([`terminal`]): one warning for each
+    /// run of them within a token.
+    fn control_characters(&mut self) {
+        let text = self.tree.text();
+        let starts = self.tree.tokens().starts();
+        let mut from = 0;
+        while let Some((start, c)) = terminal::find(text, from) {
+            let token = starts.partition_point(|&s| s as usize <= start) - 1;
+            let token_end = starts.get(token + 1).map_or(text.len(), |&s| s as usize);
+            let mut end = start + c.len_utf8();
+            while let Some(c) = terminal::at_offset(text, end).filter(|_| end < token_end) {
+                end += c.len_utf8();
+            }
+            let kind = self.tree.tokens().kinds()[token];
+            self.out.push(control_run(text, start..end, kind));
+            from = end;
+        }
     }
 
     /// A byte-order mark, which pkdgrav reads as part of the word after it.
@@ -591,6 +611,63 @@ impl<'t> Validator<'t> {
     /// Whether a newline stands between two tokens.
     fn newline_between(&self, a: TokenId, b: TokenId) -> bool {
         self.tree.tokens().kinds()[a.0 as usize + 1..b.0 as usize].contains(&TokenKind::Newline)
+    }
+}
+
+/// The warning for the run of hazards at `span` of `text`, in a token of `kind`.
+fn control_run(text: &str, span: Range<usize>, kind: TokenKind) -> Diagnostic {
+    /// Characters of a run the message shows.
+    const SHOWN: usize = 8;
+    let run = &text[span.clone()];
+    let count = run.chars().count();
+    let bidi = |c: char| matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}');
+    let separator = |c: char| matches!(c, '\u{2028}' | '\u{2029}');
+    let (noun, effect) = if run.chars().all(bidi) {
+        (
+            "bidirectional control",
+            "editors and reviews show a line with bidirectional controls in another order than pkdgrav reads it",
+        )
+    } else if run.chars().all(separator) {
+        (
+            "line separator",
+            "editors show a line separator as a line break where pkdgrav sees none",
+        )
+    } else {
+        (
+            "control character",
+            "a terminal acts on control characters instead of showing them: `ESC ] 52` sets the clipboard, a carriage return writes over the line",
+        )
+    };
+    let end = run.char_indices().nth(SHOWN).map_or(run.len(), |(i, _)| i);
+    let shown = format!(
+        "{}{}",
+        terminal::escape(&run[..end]),
+        if end < run.len() { "…" } else { "" }
+    );
+    let (place, reading) = match kind {
+        TokenKind::Comment | TokenKind::GluedComment => {
+            ("in a comment", "pkdgrav ignores them in a comment")
+        }
+        TokenKind::Whitespace => ("between words", "pkdgrav reads them as a space"),
+        _ => ("in a word", "pkdgrav reads them as part of the word"),
+    };
+    let message = match count {
+        1 => format!("{noun} `{shown}` {place}"),
+        n => format!("{n} {noun}s `{shown}` {place}"),
+    };
+    let d = Diagnostic::warning(&codes::CONTROL_CHARACTER, span.clone(), message)
+        .with_help(format!("{effect}; {reading}"));
+    if kind == TokenKind::Whitespace {
+        d.with_fix(
+            Applicability::Safe,
+            "replace with a space",
+            vec![Edit {
+                span,
+                replacement: " ".into(),
+            }],
+        )
+    } else {
+        d
     }
 }
 
