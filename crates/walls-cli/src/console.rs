@@ -20,8 +20,10 @@
 //!   annotations, pictures and files: the bytes as they are, through [`out_data`] or the
 //!   commands' own writers (the JSON and annotation renderers escape in their own way).
 //!
-//! [`color_stderr`] decides whether to colour standard error, following <https://no-color.org>: only a
-//! non-empty `NO_COLOR` turns colour off.
+//! [`color_stderr`] decides whether to colour standard error: on a terminal, or anywhere
+//! when `CLICOLOR_FORCE` is set to anything but `0` (<https://bixense.com/clicolors/>, as
+//! clap's own messages do); never when `NO_COLOR` is set to a non-empty value
+//! (<https://no-color.org>), which wins.
 
 use std::borrow::Cow;
 use std::fmt::Arguments;
@@ -84,18 +86,25 @@ fn escaped(args: Arguments<'_>) -> String {
     }
 }
 
-/// Whether to colour standard error, where the tools write diagnostics: on a terminal,
-/// unless `NO_COLOR` is set to a non-empty value.
+/// Whether to colour standard error, where the tools write diagnostics: on a terminal
+/// or with `CLICOLOR_FORCE` (not `0`), unless `NO_COLOR` is set to a non-empty value.
 pub fn color_stderr() -> bool {
     color_with(
         std::io::stderr().is_terminal(),
         std::env::var_os("NO_COLOR").as_deref(),
+        std::env::var_os("CLICOLOR_FORCE").as_deref(),
     )
 }
 
-/// Whether to colour a stream that is (or is not) a terminal, given `NO_COLOR`'s value.
-fn color_with(is_terminal: bool, no_color: Option<&std::ffi::OsStr>) -> bool {
-    is_terminal && no_color.is_none_or(|v| v.is_empty())
+/// Whether to colour a stream that is (or is not) a terminal, given the values of
+/// `NO_COLOR` and `CLICOLOR_FORCE`.
+fn color_with(
+    is_terminal: bool,
+    no_color: Option<&std::ffi::OsStr>,
+    force: Option<&std::ffi::OsStr>,
+) -> bool {
+    let forced = force.is_some_and(|v| !v.is_empty() && v != std::ffi::OsStr::new("0"));
+    (is_terminal || forced) && no_color.is_none_or(|v| v.is_empty())
 }
 
 /// `println!` for human text, which never panics and escapes hazards: see [`out`].
@@ -134,12 +143,21 @@ mod tests {
 
     #[test]
     fn only_a_non_empty_no_color_turns_colour_off() {
-        assert!(color_with(true, None));
+        assert!(color_with(true, None, None));
         assert!(
-            color_with(true, Some(OsStr::new(""))),
+            color_with(true, Some(OsStr::new("")), None),
             "NO_COLOR= (empty) keeps colour"
         );
-        assert!(!color_with(true, Some(OsStr::new("1"))));
-        assert!(!color_with(false, None), "no colour off a terminal");
+        assert!(!color_with(true, Some(OsStr::new("1")), None));
+        assert!(!color_with(false, None, None), "no colour off a terminal");
+    }
+
+    #[test]
+    fn clicolor_force_colours_off_a_terminal_unless_no_color() {
+        let (one, zero, empty) = (OsStr::new("1"), OsStr::new("0"), OsStr::new(""));
+        assert!(color_with(false, None, Some(one)));
+        assert!(!color_with(false, None, Some(zero)));
+        assert!(!color_with(false, None, Some(empty)));
+        assert!(!color_with(false, Some(one), Some(one)), "NO_COLOR wins");
     }
 }

@@ -4,8 +4,8 @@
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
 //! A command line clap refuses prints clap's message to standard error and returns 2
-//! (plain, with its hazards escaped, when the command line holds one: clap quotes the
-//! arguments it refuses as they are);
+//! (quoting the arguments with their hazards escaped, `\x1b`: clap would quote them as
+//! they are);
 //! `--help` and `--version` print to standard output and return 0, as does
 //! `--completions SHELL` (the shell's completion script, from the clap definitions).
 //! Nothing here ends the process; what the commands share can, as the binaries expect:
@@ -87,25 +87,32 @@ impl Tool for MeshArgs {
 /// Parses `argv` as `T`'s command line and runs it, or prints clap's answer, or the
 /// completion script; the exit status.
 fn tool<T: Tool>(argv: Vec<OsString>) -> i32 {
-    let hazardous = argv
+    // clap quotes a refused argument as it is: the same command line with its hazards
+    // escaped is refused the same way, quoting them escaped.
+    let escaped: Option<Vec<OsString>> = argv
         .iter()
-        .any(|a| terminal::find(&a.to_string_lossy(), 0).is_some());
+        .any(|a| terminal::find(&a.to_string_lossy(), 0).is_some())
+        .then(|| {
+            argv.iter()
+                .map(|a| terminal::escape(&a.to_string_lossy()).into_owned().into())
+                .collect()
+        });
     let args = match T::try_parse_from(argv) {
         Ok(args) => args,
-        Err(e) if hazardous => {
-            // clap's text without its colours, through the console, which escapes.
-            let text = e.render().to_string();
-            if e.use_stderr() {
-                crate::console::err(format_args!("{text}"));
-            } else {
-                crate::console::out(format_args!("{text}"));
-            }
-            return e.exit_code();
-        }
         Err(e) => {
+            let shown = match escaped.map(T::try_parse_from) {
+                Some(Err(shown)) => shown,
+                // Escaped, it parses: clap's plain message (which drops the escape
+                // sequences it quoted), through the console, which escapes the rest.
+                Some(Ok(_)) => {
+                    crate::console::err(format_args!("{}", e.render()));
+                    return e.exit_code();
+                }
+                None => e,
+            };
             // A closed stream leaves nobody to tell; the status still says what happened.
-            let _ = e.print();
-            return e.exit_code();
+            let _ = shown.print();
+            return shown.exit_code();
         }
     };
     match args.completions() {

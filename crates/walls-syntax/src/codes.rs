@@ -129,7 +129,8 @@ shows a line with a right-to-left override in another order than pkdgrav reads i
 pkdgrav ignores them in a comment, reads a carriage return, vertical tab or form feed \
 between words as a space, and any other as part of the word it stands in (which is then \
 an unknown word, S101, or a malformed number, S102). So this is a warning, one for each \
-run of such characters. Between words, where pkdgrav reads them as a space, the fix \
+run of such characters, at most 1,000 in a file (the last says how many runs follow). \
+Between words, where pkdgrav reads them as a space, the fix \
 (safe) replaces them with one. In a comment or a word there is no fix: only the author \
 knows what the text should say (right-to-left text in a comment may use the isolates on \
 purpose), and the characters are best seen, escaped, before they go.

@@ -16,6 +16,10 @@ use walls_keywords::{Keyword, Role, ValueShape};
 /// pkdgrav reads lines into a 4096-byte buffer: at most 4095 bytes before the newline.
 pub const MAX_LINE_BYTES: usize = 4095;
 
+/// The most control-character warnings (S006) one file gets: the last of them says how
+/// many runs follow, so that a file of a million escapes is not a million warnings.
+pub const MAX_CONTROL_RUNS: usize = 1000;
+
 /// Finds every syntax mistake in `tree`, sorted by position.
 pub(crate) fn validate(tree: &SyntaxTree) -> Vec<Diagnostic> {
     let mut v = Validator {
@@ -98,11 +102,12 @@ impl<'t> Validator<'t> {
     }
 
     /// Control characters and bidirectional controls ([`terminal`]): one warning for each
-    /// run of them within a token.
+    /// run of them within a token, at most [`MAX_CONTROL_RUNS`].
     fn control_characters(&mut self) {
         let text = self.tree.text();
         let starts = self.tree.tokens().starts();
         let mut from = 0;
+        let mut reported = 0;
         while let Some((start, c)) = terminal::find(text, from) {
             let token = starts.partition_point(|&s| s as usize <= start) - 1;
             let token_end = starts.get(token + 1).map_or(text.len(), |&s| s as usize);
@@ -111,8 +116,20 @@ impl<'t> Validator<'t> {
                 end += c.len_utf8();
             }
             let kind = self.tree.tokens().kinds()[token];
-            self.out.push(control_run(text, start..end, kind));
+            let mut d = control_run(text, start..end, kind);
             from = end;
+            reported += 1;
+            if reported == MAX_CONTROL_RUNS {
+                let more = terminal::runs(&text[from..]).count();
+                if more > 0 {
+                    d.message.push_str(&format!(
+                        " (and at least {more} more runs of such characters after it, not reported one by one)"
+                    ));
+                }
+                self.out.push(d);
+                return;
+            }
+            self.out.push(d);
         }
     }
 
@@ -682,4 +699,39 @@ fn describe(kind: TokenKind, text: &str) -> String {
 
 fn ordinal(i: usize) -> &'static str {
     ["1st", "2nd", "3rd"].get(i).copied().unwrap_or("next")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::MAX_CONTROL_RUNS;
+
+    #[test]
+    fn control_characters_past_the_limit_are_counted_not_reported() {
+        let text = "# \u{1b}\n".repeat(MAX_CONTROL_RUNS + 500);
+        let found: Vec<_> = crate::parse(text.as_str())
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.code.id == "S006")
+            .collect();
+        assert_eq!(found.len(), MAX_CONTROL_RUNS);
+        let last = &found[MAX_CONTROL_RUNS - 1];
+        assert_eq!(last.span.start, 4 * (MAX_CONTROL_RUNS - 1) + 2);
+        assert_eq!(
+            last.message,
+            "control character `\\x1b` in a comment (and at least 500 more runs of such \
+             characters after it, not reported one by one)"
+        );
+        assert!(
+            crate::codes::CONTROL_CHARACTER
+                .explanation
+                .contains(&format!(
+                    "at most 1,{:03} in a file",
+                    MAX_CONTROL_RUNS - 1000
+                )),
+            "S006's explanation gives the limit"
+        );
+        let exactly = "# \u{1b}\n".repeat(MAX_CONTROL_RUNS);
+        let last = crate::parse(exactly.as_str()).diagnostics.pop().unwrap();
+        assert_eq!(last.message, "control character `\\x1b` in a comment");
+    }
 }
