@@ -1,7 +1,7 @@
 //! Writing to the terminal without panicking. `println!` and `eprintln!` panic when their
-//! stream is closed (`walls-sim run 2>&1 | head -1`); the tools print through [`outln!`]
-//! and [`errln!`] instead (clippy's `print_stdout` and `print_stderr` are denied in this
-//! crate):
+//! stream is closed (`walls-sim run 2>&1 | head -1`); the tools print through
+//! [`outln!`](crate::outln!) and [`errln!`](crate::errln!) instead (clippy's
+//! `print_stdout` and `print_stderr` are denied in this crate):
 //!
 //! * standard output closed by its reader (a broken pipe) ends the process quietly with
 //!   status 0, as `head` expects: nobody is left to read the rest;
@@ -11,9 +11,10 @@
 //! What the tools print is of two kinds, and this is where the difference is kept:
 //!
 //! * **human output**: messages, warnings, summaries, explanations, advice, diffs, clap's
-//!   errors: [`outln!`], [`out!`] and [`errln!`] show every hazard of the text (a control
-//!   character, a bidirectional override: [`walls_diagnostics::terminal`]) as its escape
-//!   (`\x1b`), wherever the text came from (a file name, a `.par` value, a mesh's name).
+//!   errors: [`outln!`](crate::outln!), [`out!`](crate::out!) and
+//!   [`errln!`](crate::errln!) show every hazard of the text (a control character, a
+//!   bidirectional override: [`walls_diagnostics::terminal`]) as its escape (`\x1b`),
+//!   wherever the text came from (a file name, a `.par` value, a mesh's name).
 //!   Diagnostics are drawn by `walls_diagnostics::render::human`, which escapes what it
 //!   quotes and writes only its own colours, and diffs are escaped where they are made;
 //! * **data**: formatted walls text, the walls file `walls-mesh` writes, JSON, SARIF,
