@@ -40,3 +40,23 @@ status() {
   "$@"
   echo "exit: $?"
 }
+
+# shown COMMAND...: runs COMMAND with standard error joined to standard output, prints what
+# it wrote with the colour sequences (SGR, `ESC [ … m`) and a line-ending carriage return
+# (a terminal's) taken out, then its exit status. If anything a terminal would act on is
+# left (a control character other than tab and newline, a C1 control, a line separator or
+# a bidirectional control), the output is shown with `cat -v` after `UNSAFE OUTPUT:`.
+shown() {
+  local status
+  "$@" > .shown 2>&1
+  status=$?
+  LC_ALL=C sed -e 's/\x1b\[[0-9;]*m//g' -e 's/\r$//' .shown > .shown.plain
+  if LC_ALL=C grep -qaP '[\x00-\x08\x0b-\x1f\x7f]|\xc2[\x80-\x9f]|\xe2\x80[\xa8-\xae]|\xe2\x81[\xa6-\xa9]' .shown.plain; then
+    echo "UNSAFE OUTPUT:"
+    cat -v .shown.plain
+  else
+    cat .shown.plain
+  fi
+  echo "exit: $status"
+  rm -f .shown .shown.plain
+}

@@ -1,31 +1,53 @@
 //! Writing to the terminal without panicking. `println!` and `eprintln!` panic when their
-//! stream is closed (`walls-sim run 2>&1 | head -1`); the tools print through [`outln!`]
-//! and [`errln!`] instead (clippy's `print_stdout` and `print_stderr` are denied in this
-//! crate):
+//! stream is closed (`walls-sim run 2>&1 | head -1`); the tools print through
+//! [`outln!`](crate::outln!) and [`errln!`](crate::errln!) instead (clippy's
+//! `print_stdout` and `print_stderr` are denied in this crate):
 //!
 //! * standard output closed by its reader (a broken pipe) ends the process quietly with
 //!   status 0, as `head` expects: nobody is left to read the rest;
 //! * a failed write to standard error is dropped: the warning is lost, the command goes on
 //!   and still writes its results.
 //!
-//! [`color_stderr`] decides whether to colour standard error, following <https://no-color.org>: only a
-//! non-empty `NO_COLOR` turns colour off.
+//! What the tools print is of two kinds, and this is where the difference is kept:
+//!
+//! * **human output**: messages, warnings, summaries, explanations, advice, diffs, clap's
+//!   errors: [`outln!`](crate::outln!), [`out!`](crate::out!) and
+//!   [`errln!`](crate::errln!) show every hazard of the text (a control character, a
+//!   bidirectional override: [`walls_diagnostics::terminal`]) as its escape (`\x1b`),
+//!   wherever the text came from (a file name, a `.par` value, a mesh's name).
+//!   Diagnostics are drawn by `walls_diagnostics::render::human`, which escapes what it
+//!   quotes and writes only its own colours, and diffs are escaped where they are made;
+//! * **data**: formatted walls text, the walls file `walls-mesh` writes, JSON, SARIF,
+//!   annotations, pictures and files: the bytes as they are, through [`out_data`] or the
+//!   commands' own writers (the JSON and annotation renderers escape in their own way).
+//!
+//! [`color_stderr`] decides whether to colour standard error: on a terminal, or anywhere
+//! when `CLICOLOR_FORCE` is set to anything but `0` (<https://bixense.com/clicolors/>, as
+//! clap's own messages do); never when `NO_COLOR` is set to a non-empty value
+//! (<https://no-color.org>), which wins.
 
+use std::borrow::Cow;
 use std::fmt::Arguments;
 use std::io::{ErrorKind, IsTerminal, Write};
+use walls_diagnostics::terminal;
 
-/// Writes to standard output; see the module documentation for what a closed stream does.
+/// Writes human text to standard output, its hazards escaped; see the module
+/// documentation for what a closed stream does.
 pub fn out(args: Arguments<'_>) {
+    let text = escaped(args);
     let mut stdout = std::io::stdout().lock();
-    if let Err(e) = stdout.write_fmt(args).and_then(|()| stdout.flush()) {
+    if let Err(e) = stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
         out_failed(&e);
     }
 }
 
-/// Lets `write` write to standard output through a buffer, as it produces its text (a
-/// large report is never held whole), then flushes it; a failed write ends the process
-/// as in [`out`].
-pub fn out_streamed(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+/// Lets `write` write data to standard output, as it is, through a buffer, as it produces
+/// its text (a large report is never held whole), then flushes it; a failed write ends
+/// the process as in [`out`].
+pub fn out_data(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
     let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
     if let Err(e) = write(&mut stdout).and_then(|()| stdout.flush()) {
         out_failed(&e);
@@ -47,39 +69,59 @@ fn out_failed(e: &std::io::Error) -> ! {
     std::process::exit(2);
 }
 
-/// Writes to standard error, dropping the text if it cannot be written.
+/// Writes human text to standard error, its hazards escaped, dropping it if it cannot be
+/// written.
 pub fn err(args: Arguments<'_>) {
-    let _ = std::io::stderr().lock().write_fmt(args);
+    let _ = std::io::stderr().lock().write_all(escaped(args).as_bytes());
 }
 
-/// Whether to colour standard error, where the tools write diagnostics: on a terminal,
-/// unless `NO_COLOR` is set to a non-empty value.
+/// The text of `args` with every hazard shown as its escape.
+fn escaped(args: Arguments<'_>) -> String {
+    let text = match args.as_str() {
+        Some(text) => text.to_string(),
+        None => args.to_string(),
+    };
+    match terminal::escape(&text) {
+        Cow::Borrowed(_) => text,
+        Cow::Owned(escaped) => escaped,
+    }
+}
+
+/// Whether to colour standard error, where the tools write diagnostics: on a terminal
+/// or with `CLICOLOR_FORCE` (not `0`), unless `NO_COLOR` is set to a non-empty value.
 pub fn color_stderr() -> bool {
     color_with(
         std::io::stderr().is_terminal(),
         std::env::var_os("NO_COLOR").as_deref(),
+        std::env::var_os("CLICOLOR_FORCE").as_deref(),
     )
 }
 
-/// Whether to colour a stream that is (or is not) a terminal, given `NO_COLOR`'s value.
-fn color_with(is_terminal: bool, no_color: Option<&std::ffi::OsStr>) -> bool {
-    is_terminal && no_color.is_none_or(|v| v.is_empty())
+/// Whether to colour a stream that is (or is not) a terminal, given the values of
+/// `NO_COLOR` and `CLICOLOR_FORCE`.
+fn color_with(
+    is_terminal: bool,
+    no_color: Option<&std::ffi::OsStr>,
+    force: Option<&std::ffi::OsStr>,
+) -> bool {
+    let forced = force.is_some_and(|v| !v.is_empty() && v != std::ffi::OsStr::new("0"));
+    (is_terminal || forced) && no_color.is_none_or(|v| v.is_empty())
 }
 
-/// `println!` that never panics: see [`out`].
+/// `println!` for human text, which never panics and escapes hazards: see [`out`].
 #[macro_export]
 macro_rules! outln {
     () => { $crate::console::out(format_args!("\n")) };
     ($($arg:tt)*) => { $crate::console::out(format_args!("{}\n", format_args!($($arg)*))) };
 }
 
-/// `print!` that never panics: see [`out`].
+/// `print!` for human text, which never panics and escapes hazards: see [`out`].
 #[macro_export]
 macro_rules! out {
     ($($arg:tt)*) => { $crate::console::out(format_args!($($arg)*)) };
 }
 
-/// `eprintln!` that never panics: see [`err`].
+/// `eprintln!` for human text, which never panics and escapes hazards: see [`err`].
 #[macro_export]
 macro_rules! errln {
     ($($arg:tt)*) => { $crate::console::err(format_args!("{}\n", format_args!($($arg)*))) };
@@ -87,17 +129,36 @@ macro_rules! errln {
 
 #[cfg(test)]
 mod tests {
-    use super::color_with;
+    use super::{color_with, escaped};
     use std::ffi::OsStr;
 
     #[test]
+    fn human_text_is_escaped_whatever_its_arguments() {
+        let name = "a\x1b]52;c;aGk=\x07.walls";
+        assert_eq!(
+            escaped(format_args!("cannot read {name}: \u{202e}\r\n")),
+            "cannot read a\\x1b]52;c;aGk=\\x07.walls: \\u{202e}\r\n"
+        );
+        assert_eq!(escaped(format_args!("plain\tline\n")), "plain\tline\n");
+    }
+
+    #[test]
     fn only_a_non_empty_no_color_turns_colour_off() {
-        assert!(color_with(true, None));
+        assert!(color_with(true, None, None));
         assert!(
-            color_with(true, Some(OsStr::new(""))),
+            color_with(true, Some(OsStr::new("")), None),
             "NO_COLOR= (empty) keeps colour"
         );
-        assert!(!color_with(true, Some(OsStr::new("1"))));
-        assert!(!color_with(false, None), "no colour off a terminal");
+        assert!(!color_with(true, Some(OsStr::new("1")), None));
+        assert!(!color_with(false, None, None), "no colour off a terminal");
+    }
+
+    #[test]
+    fn clicolor_force_colours_off_a_terminal_unless_no_color() {
+        let (one, zero, empty) = (OsStr::new("1"), OsStr::new("0"), OsStr::new(""));
+        assert!(color_with(false, None, Some(one)));
+        assert!(!color_with(false, None, Some(zero)));
+        assert!(!color_with(false, None, Some(empty)));
+        assert!(!color_with(false, Some(one), Some(one)), "NO_COLOR wins");
     }
 }

@@ -3,7 +3,9 @@
 //! and [`mesh`] take the whole argv (argv\[0] is the program's name, as in `std::env::args_os`)
 //! and return the status the binary exits with. The binaries are one call of these.
 //!
-//! A command line clap refuses prints clap's message to standard error and returns 2;
+//! A command line clap refuses prints clap's message to standard error and returns 2
+//! (quoting the arguments with their hazards escaped, `\x1b`: clap would quote them as
+//! they are);
 //! `--help` and `--version` print to standard output and return 0, as does
 //! `--completions SHELL` (the shell's completion script, from the clap definitions).
 //! Nothing here ends the process; what the commands share can, as the binaries expect:
@@ -16,6 +18,7 @@ use clap::Parser;
 use clap_complete::Shell;
 use std::ffi::OsString;
 use std::io::Write;
+use walls_diagnostics::terminal;
 
 /// `walls-lint` with the command line `argv`; the exit status.
 pub fn lint(argv: Vec<OsString>) -> i32 {
@@ -84,12 +87,32 @@ impl Tool for MeshArgs {
 /// Parses `argv` as `T`'s command line and runs it, or prints clap's answer, or the
 /// completion script; the exit status.
 fn tool<T: Tool>(argv: Vec<OsString>) -> i32 {
+    // clap quotes a refused argument as it is: the same command line with its hazards
+    // escaped is refused the same way, quoting them escaped.
+    let escaped: Option<Vec<OsString>> = argv
+        .iter()
+        .any(|a| terminal::find(&a.to_string_lossy(), 0).is_some())
+        .then(|| {
+            argv.iter()
+                .map(|a| terminal::escape(&a.to_string_lossy()).into_owned().into())
+                .collect()
+        });
     let args = match T::try_parse_from(argv) {
         Ok(args) => args,
         Err(e) => {
+            let shown = match escaped.map(T::try_parse_from) {
+                Some(Err(shown)) => shown,
+                // Escaped, it parses: clap's plain message (which drops the escape
+                // sequences it quoted), through the console, which escapes the rest.
+                Some(Ok(_)) => {
+                    crate::console::err(format_args!("{}", e.render()));
+                    return e.exit_code();
+                }
+                None => e,
+            };
             // A closed stream leaves nobody to tell; the status still says what happened.
-            let _ = e.print();
-            return e.exit_code();
+            let _ = shown.print();
+            return shown.exit_code();
         }
     };
     match args.completions() {

@@ -61,7 +61,8 @@ fn examples_in_explanations_are_true() {
         }
     }
     // These cannot be shown as a text block; the data-driven tests cover them.
-    assert_eq!(without_bad_block, ["S001", "S002", "S003"]);
+    // S006's would put a terminal's control characters into the documentation.
+    assert_eq!(without_bad_block, ["S001", "S002", "S003", "S006"]);
 }
 
 #[test]
@@ -116,6 +117,36 @@ that is not UTF-8 is never rewritten (its only diagnostic, the encoding error, h
 fix).
 ";
 
+/// What `docs/diagnostics.md` says about control characters in what the tools print.
+const CONTROL: &str = "
+## Control characters
+
+A file, a file name or a value can hold characters that a terminal acts on instead of
+showing them (`ESC ] 52 ; c ; … BEL` sets the clipboard, `ESC [ 2 J` clears the screen, a
+carriage return writes over the line) or that make an editor show a line in another order
+or on two lines: the C0 controls other than tab and newline (a carriage return that ends a
+line, `\\r\\n`, is a line end), DEL, the C1 controls (U+0080 to U+009F), the line and
+paragraph separators (U+2028, U+2029) and the bidirectional controls (U+202A to U+202E,
+U+2066 to U+2069). In walls files, [S006](#s006) reports them.
+
+Every human output of the tools (walls-lint, walls-fmt, walls-sim, walls-mesh) shows each
+of them as the escape a Rust string literal would use: `\\xHH` up to U+007F (`\\x1b` for
+escape, `\\x07` for bell, `\\x0d` for a carriage return), `\\u{H…}` above (`\\u{85}`,
+`\\u{202e}`). Human output is the diagnostics of `--format human` (the snippet too: the
+underline is under the escape), the messages, warnings and errors, summaries, `--diff`,
+`--explain`, `walls-sim advise` and `plan`, and clap's usage errors. A backslash is not
+escaped, so the escapes are for reading, not for reading back; a diff of a file that holds
+such characters does not apply with `patch`.
+
+Data keeps its bytes: the formatted text walls-fmt writes (to a file or to standard
+output), the fixed text of `walls-lint --fix -`, the walls file walls-mesh writes, every
+file a run or a preview writes. The machine formats are safe in their own way: JSON,
+SARIF and GitLab reports write these characters as JSON escapes (`\\u001b`, `\\u202e`),
+which any JSON reader reads back as the characters; GitHub annotations show them as in
+human output, and escape `%`, carriage returns and newlines (and, in properties, `:` and
+`,`), so that no input can start a workflow command or a line of its own.
+";
+
 /// What `docs/diagnostics.md` says about `walls-lint`'s inputs and exit statuses.
 const LINT_COMMAND: &str = "
 ## Files, folders and exit statuses
@@ -165,6 +196,7 @@ fn docs_list_every_code() {
     }
     doc.push_str(LINT_COMMAND);
     doc.push_str(FIXING);
+    doc.push_str(CONTROL);
     for c in all_codes() {
         doc.push_str(&format!(
             "\n## {}\n\n`{}`: {}.\n\n{}",

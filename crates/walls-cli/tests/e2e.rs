@@ -50,6 +50,7 @@ fn lint_cases() {
             .args(words)
             .current_dir(work.path())
             .env_remove("NO_COLOR")
+            .env_remove("CLICOLOR_FORCE")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())

@@ -6,10 +6,13 @@
 //! them into text for people (ariadne) or for machines (JSON, SARIF 2.1.0, GitHub
 //! workflow annotations, GitLab Code Quality). Spans are byte ranges everywhere;
 //! [`LineIndex`] turns them into
-//! 1-based lines and character columns only when rendering.
+//! 1-based lines and character columns only when rendering. [`terminal`] is the one
+//! definition of the characters a terminal would act on, and of how human output shows
+//! them.
 
 mod line_index;
 pub mod render;
+pub mod terminal;
 
 pub use line_index::{LineCol, LineIndex};
 use std::ops::Range;

@@ -12,7 +12,8 @@
 //! unknown word, a short vector, …) is not formatted: [`format`] returns the blocking
 //! diagnostics instead, and nothing is lost. The syntax errors formatting repairs (values
 //! off their keyword's line, a missing final newline, a comment glued to a word) do not
-//! block it.
+//! block it, nor do control characters (S006): kept byte for byte in a comment, and
+//! between words replaced by the canonical space as any other white space.
 
 mod config;
 mod layout;
@@ -69,6 +70,8 @@ fn blocks_formatting(d: &Diagnostic) -> bool {
         &LINE_TOO_LONG,
         &GLUED_COMMENT,
         &VALUE_ON_OTHER_LINE,
+        // A warning: kept as it is in a comment, written as a space between words.
+        &CONTROL_CHARACTER,
     ]
     .iter()
     .any(|c| std::ptr::eq(*c, d.code))

@@ -455,8 +455,13 @@ async fn hovers_say_where_values_really_come_from() {
 async fn a_lone_carriage_return_ends_a_line() {
     let mut c = Client::start(json!({})).await;
     let published = c.open("wall type plane\r  raduis 1\n").await;
+    // The carriage return itself (S006), then the misspelt keyword on the next line.
     assert_eq!(
         published["diagnostics"][0]["range"],
+        json!({"start": {"line": 0, "character": 15}, "end": {"line": 1, "character": 0}})
+    );
+    assert_eq!(
+        published["diagnostics"][1]["range"],
         json!({"start": {"line": 1, "character": 2}, "end": {"line": 1, "character": 8}})
     );
 }
@@ -545,15 +550,20 @@ async fn hover_and_diagnostics_agree_on_lines_with_lone_carriage_returns() {
         .map(|d| (d["code"].as_str().unwrap().to_string(), d["range"].clone()))
         .collect();
     let range = |line: u32, start: u32, end: u32| json!({"start": {"line": line, "character": start}, "end": {"line": line, "character": end}});
+    // The lone carriage return itself (S006: a terminal would write over the line).
+    let carriage_return =
+        json!({"start": {"line": 0, "character": 14}, "end": {"line": 1, "character": 0}});
     assert_eq!(
         ranges,
         [
+            ("S006".into(), carriage_return),
             ("C107".into(), range(1, 9, 11)),
             ("C114".into(), range(2, 7, 8))
         ]
     );
+    let ranges = &ranges[1..];
     // A hover where each diagnostic starts is about that diagnostic's statement.
-    for (_, r) in &ranges {
+    for (_, r) in ranges {
         let hover = c
             .request(
                 "textDocument/hover",
@@ -694,4 +704,58 @@ async fn without_a_settings_file_the_editor_settings_alone_apply() {
     assert_eq!(codes(&published), ["M003", "M003", "C209"]);
     let published = c.open_at(&uri, WARNING_AND_ERROR).await;
     assert_eq!(codes(&published), ["M003", "M003", "C201", "S101"]);
+}
+
+#[tokio::test]
+async fn control_characters_are_warnings_with_a_fix_only_between_words() {
+    let mut c = Client::start(json!({})).await;
+    // OSC 52 (set the clipboard) in a comment, a vertical tab between words.
+    let text = "# \u{1b}]52;c;aGk=\u{7}\nwall type\u{b}plane # \u{202e}x\n";
+    let published = c.open(text).await;
+    let found: Vec<_> = published["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| {
+            let r = &d["range"];
+            (
+                d["code"].as_str().unwrap().to_string(),
+                d["severity"].as_u64().unwrap(),
+                [
+                    &r["start"]["line"],
+                    &r["start"]["character"],
+                    &r["end"]["character"],
+                ]
+                .map(|v| v.as_u64().unwrap()),
+                d["message"]
+                    .as_str()
+                    .unwrap()
+                    .lines()
+                    .next()
+                    .unwrap()
+                    .to_string(),
+            )
+        })
+        .collect();
+    let warning = |at: [u64; 3], message: &str| ("S006".to_string(), 2, at, message.to_string());
+    assert_eq!(
+        found,
+        [
+            warning([0, 2, 3], "control character `\\x1b` in a comment"),
+            warning([0, 13, 14], "control character `\\x07` in a comment"),
+            warning([1, 9, 10], "control character `\\x0b` between words"),
+            warning(
+                [1, 18, 19],
+                "bidirectional control `\\u{202e}` in a comment"
+            ),
+        ]
+    );
+    assert_eq!(
+        titles(&c.actions(URI, (1, 9), (1, 10)).await),
+        ["replace with a space (S006)", "Fix all safe problems (1)"]
+    );
+    assert_eq!(
+        titles(&c.actions(URI, (0, 2), (0, 3)).await),
+        ["Fix all safe problems (1)"]
+    );
 }

@@ -110,6 +110,42 @@ wall type plane
 ",
 };
 
+/// A control character or a bidirectional control.
+pub static CONTROL_CHARACTER: Code = Code {
+    id: "S006",
+    name: "control-character",
+    summary: "a control character or a bidirectional control, which a terminal or an editor acts on instead of showing it",
+    explanation: "A walls file is read by pkdgrav, and by people in terminals, editors and code \
+review. Some characters are not shown as what they are: the C0 controls other than tab and \
+newline (escape, bell, NUL, vertical tab, form feed, a carriage return that does not end a \
+line), DEL, the C1 controls (U+0080 to U+009F), the line and paragraph separators (U+2028, \
+U+2029) and the bidirectional controls (U+202A to U+202E, U+2066 to U+2069). A terminal \
+obeys them: `ESC ] 52 ; c ; … BEL` in a comment sets the clipboard of whoever prints the \
+file, a carriage return writes the rest of the line over its start. An editor or a review \
+shows a line with a right-to-left override in another order than pkdgrav reads it \
+(\"Trojan Source\"). The walls tools show each as an escape: `\\x1b`, `\\u{202e}` \
+(docs/diagnostics.md, \"Control characters\").
+
+pkdgrav ignores them in a comment, reads a carriage return, vertical tab or form feed \
+between words as a space, and any other as part of the word it stands in (which is then \
+an unknown word, S101, or a malformed number, S102). So this is a warning, one for each \
+run of such characters, at most 1,000 in a file (the last says how many runs follow). \
+Between words, where pkdgrav reads them as a space, the fix \
+(safe) replaces them with one. In a comment or a word there is no fix: only the author \
+knows what the text should say (right-to-left text in a comment may use the isolates on \
+purpose), and the characters are best seen, escaped, before they go.
+
+Bad: a comment holding the bytes `ESC ] 52 ; c ; aGk= BEL`, or `# floor` with a \
+right-to-left override (U+202E) after the `#`.
+
+Good:
+```walls
+# floor
+wall type plane
+```
+",
+};
+
 /// A word that is no keyword of the language.
 pub static UNKNOWN_WORD: Code = Code {
     id: "S101",
@@ -355,6 +391,7 @@ pub static ALL: &[&Code] = &[
     &LINE_TOO_LONG,
     &GLUED_COMMENT,
     &BYTE_ORDER_MARK,
+    &CONTROL_CHARACTER,
     &UNKNOWN_WORD,
     &INVALID_NUMBER,
     &MISSING_VALUE,

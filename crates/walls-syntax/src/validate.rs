@@ -10,11 +10,15 @@ use crate::suggest;
 use crate::tree::{Item, Statement, SyntaxTree, TokenId};
 use std::collections::HashMap;
 use std::ops::Range;
-use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS};
+use walls_diagnostics::{Applicability, Diagnostic, Edit, MAX_LABELS, terminal};
 use walls_keywords::{Keyword, Role, ValueShape};
 
 /// pkdgrav reads lines into a 4096-byte buffer: at most 4095 bytes before the newline.
 pub const MAX_LINE_BYTES: usize = 4095;
+
+/// The most control-character warnings (S006) one file gets: the last of them says how
+/// many runs follow, so that a file of a million escapes is not a million warnings.
+pub const MAX_CONTROL_RUNS: usize = 1000;
 
 /// Finds every syntax mistake in `tree`, sorted by position.
 pub(crate) fn validate(tree: &SyntaxTree) -> Vec<Diagnostic> {
@@ -94,6 +98,39 @@ impl<'t> Validator<'t> {
             }
         }
         self.line_length(line_start, text.len());
+        self.control_characters();
+    }
+
+    /// Control characters and bidirectional controls ([`terminal`]): one warning for each
+    /// run of them within a token, at most [`MAX_CONTROL_RUNS`].
+    fn control_characters(&mut self) {
+        let text = self.tree.text();
+        let starts = self.tree.tokens().starts();
+        let mut from = 0;
+        let mut reported = 0;
+        while let Some((start, c)) = terminal::find(text, from) {
+            let token = starts.partition_point(|&s| s as usize <= start) - 1;
+            let token_end = starts.get(token + 1).map_or(text.len(), |&s| s as usize);
+            let mut end = start + c.len_utf8();
+            while let Some(c) = terminal::at_offset(text, end).filter(|_| end < token_end) {
+                end += c.len_utf8();
+            }
+            let kind = self.tree.tokens().kinds()[token];
+            let mut d = control_run(text, start..end, kind);
+            from = end;
+            reported += 1;
+            if reported == MAX_CONTROL_RUNS {
+                let more = terminal::runs(&text[from..]).count();
+                if more > 0 {
+                    d.message.push_str(&format!(
+                        " (and at least {more} more runs of such characters after it, not reported one by one)"
+                    ));
+                }
+                self.out.push(d);
+                return;
+            }
+            self.out.push(d);
+        }
     }
 
     /// A byte-order mark, which pkdgrav reads as part of the word after it.
@@ -594,6 +631,63 @@ impl<'t> Validator<'t> {
     }
 }
 
+/// The warning for the run of hazards at `span` of `text`, in a token of `kind`.
+fn control_run(text: &str, span: Range<usize>, kind: TokenKind) -> Diagnostic {
+    /// Characters of a run the message shows.
+    const SHOWN: usize = 8;
+    let run = &text[span.clone()];
+    let count = run.chars().count();
+    let bidi = |c: char| matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}');
+    let separator = |c: char| matches!(c, '\u{2028}' | '\u{2029}');
+    let (noun, effect) = if run.chars().all(bidi) {
+        (
+            "bidirectional control",
+            "editors and reviews show a line with bidirectional controls in another order than pkdgrav reads it",
+        )
+    } else if run.chars().all(separator) {
+        (
+            "line separator",
+            "editors show a line separator as a line break where pkdgrav sees none",
+        )
+    } else {
+        (
+            "control character",
+            "a terminal acts on control characters instead of showing them: `ESC ] 52` sets the clipboard, a carriage return writes over the line",
+        )
+    };
+    let end = run.char_indices().nth(SHOWN).map_or(run.len(), |(i, _)| i);
+    let shown = format!(
+        "{}{}",
+        terminal::escape(&run[..end]),
+        if end < run.len() { "…" } else { "" }
+    );
+    let (place, reading) = match kind {
+        TokenKind::Comment | TokenKind::GluedComment => {
+            ("in a comment", "pkdgrav ignores them in a comment")
+        }
+        TokenKind::Whitespace => ("between words", "pkdgrav reads them as a space"),
+        _ => ("in a word", "pkdgrav reads them as part of the word"),
+    };
+    let message = match count {
+        1 => format!("{noun} `{shown}` {place}"),
+        n => format!("{n} {noun}s `{shown}` {place}"),
+    };
+    let d = Diagnostic::warning(&codes::CONTROL_CHARACTER, span.clone(), message)
+        .with_help(format!("{effect}; {reading}"));
+    if kind == TokenKind::Whitespace {
+        d.with_fix(
+            Applicability::Safe,
+            "replace with a space",
+            vec![Edit {
+                span,
+                replacement: " ".into(),
+            }],
+        )
+    } else {
+        d
+    }
+}
+
 fn describe(kind: TokenKind, text: &str) -> String {
     match kind {
         TokenKind::Keyword(_) => format!("keyword `{text}`"),
@@ -605,4 +699,39 @@ fn describe(kind: TokenKind, text: &str) -> String {
 
 fn ordinal(i: usize) -> &'static str {
     ["1st", "2nd", "3rd"].get(i).copied().unwrap_or("next")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::MAX_CONTROL_RUNS;
+
+    #[test]
+    fn control_characters_past_the_limit_are_counted_not_reported() {
+        let text = "# \u{1b}\n".repeat(MAX_CONTROL_RUNS + 500);
+        let found: Vec<_> = crate::parse(text.as_str())
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.code.id == "S006")
+            .collect();
+        assert_eq!(found.len(), MAX_CONTROL_RUNS);
+        let last = &found[MAX_CONTROL_RUNS - 1];
+        assert_eq!(last.span.start, 4 * (MAX_CONTROL_RUNS - 1) + 2);
+        assert_eq!(
+            last.message,
+            "control character `\\x1b` in a comment (and at least 500 more runs of such \
+             characters after it, not reported one by one)"
+        );
+        assert!(
+            crate::codes::CONTROL_CHARACTER
+                .explanation
+                .contains(&format!(
+                    "at most 1,{:03} in a file",
+                    MAX_CONTROL_RUNS - 1000
+                )),
+            "S006's explanation gives the limit"
+        );
+        let exactly = "# \u{1b}\n".repeat(MAX_CONTROL_RUNS);
+        let last = crate::parse(exactly.as_str()).diagnostics.pop().unwrap();
+        assert_eq!(last.message, "control character `\\x1b` in a comment");
+    }
 }

@@ -18,6 +18,7 @@ use std::path::{Path, PathBuf};
 use walls_build::mesh::{self, MeshOptions, Orientation};
 use walls_build::{CheckOptions, DumpOptions, Given, LengthUnit, Units, Wall, dumps};
 use walls_diagnostics::render::{self, FileReport};
+use walls_diagnostics::terminal::Escaped;
 use walls_output::{Outputs, Tool};
 
 /// The command line of `walls-mesh`.
@@ -123,8 +124,11 @@ pub fn run(args: &MeshArgs) -> i32 {
         .iter()
         .find(|&&(_, o)| o == args.orientation)
         .map_or("keep", |&(n, _)| n);
+    // The comment is for people: the mesh's name with its control characters escaped,
+    // so that the walls file holds none (S006) that its name brought.
     let comment = format!(
-        "Made by walls-mesh from {name}: {} as {}, orientation {way}.",
+        "Made by walls-mesh from {}: {} as {}, orientation {way}.",
+        Escaped(&name),
         count(read.mesh.faces.len(), "face"),
         count(walls.len(), "wall")
     );

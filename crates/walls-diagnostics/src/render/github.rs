@@ -7,7 +7,10 @@
 //! A file that could not be read is one `::error file=PATH,title=walls-lint::WHY` line,
 //! after the diagnostics. Warnings use `::warning` and infos `::notice`. `col` and `endColumn` are left out
 //! when the span covers several lines, which Actions rejects. Message data escapes
-//! `%`, `\r` and `\n`; property values also escape `:` and `,`.
+//! `%`, `\r` and `\n`, so that no input can end the line and start a command of its own;
+//! property values also escape `:` and `,`, so that no input can end a property or the
+//! properties (`::`). Before that, both show every hazard as its escape (`\x1b`,
+//! [`crate::terminal`]): a message is text for people, in a log or a terminal.
 
 use super::{FileReport, Region, Unreadable, message_with_help};
 use crate::{LineIndex, Severity};
@@ -57,9 +60,10 @@ pub fn github(
     Ok(())
 }
 
-/// Escapes a command's message: `%`, `\r` and `\n`.
+/// Escapes a command's message: hazards as their escapes, then `%`, `\r` and `\n`.
 fn escape_data(s: &str) -> String {
-    s.replace('%', "%25")
+    crate::terminal::escape(s)
+        .replace('%', "%25")
         .replace('\r', "%0D")
         .replace('\n', "%0A")
 }
@@ -141,5 +145,30 @@ mod tests {
     fn escaping() {
         assert_eq!(escape_data("50%,a:b\r\n"), "50%25,a:b%0D%0A");
         assert_eq!(escape_property("50%,a:b\r\n"), "50%25%2Ca%3Ab%0D%0A");
+        // A lone carriage return (Actions ends a line at it) and the hazards.
+        assert_eq!(
+            escape_data("a\r::error::x\n\x1b]52;c;aGk=\x07\u{202e}%0A"),
+            "a\\x0d::error::x%0A\\x1b]52;c;aGk=\\x07\\u{202e}%250A"
+        );
+        assert_eq!(
+            escape_property("f\x1b.walls::error file=x,line=1::"),
+            "f\\x1b.walls%3A%3Aerror file=x%2Cline=1%3A%3A"
+        );
+    }
+
+    #[test]
+    fn a_message_or_a_path_cannot_start_a_command() {
+        let d = [Diagnostic::error(
+            &UNKNOWN_WORD,
+            0..1,
+            "unknown word `x\r\n::error file=a::owned\x1b]52;c;aGk=\x07`",
+        )];
+        let text = render("a\n::warning::b\r,x:y.walls", &d);
+        assert_eq!(
+            text,
+            "::error file=a%0A%3A%3Awarning%3A%3Ab\\x0d%2Cx%3Ay.walls,line=1,col=1,endLine=1,\
+             endColumn=2,title=walls-lint (S101)::unknown word `x%0D%0A::error file=a::owned\
+             \\x1b]52;c;aGk=\\x07`\n"
+        );
     }
 }

@@ -45,7 +45,7 @@ pub fn gitlab(
     files: &[FileReport],
     unreadable: &[Unreadable],
 ) -> io::Result<()> {
-    serde_json::to_writer_pretty(&mut *out, &Issues { files, unreadable })?;
+    super::safe_json::write(&mut *out, &Issues { files, unreadable })?;
     writeln!(out)
 }
 

@@ -12,10 +12,21 @@
 //! line longer than [`LONG_LINE`] bytes is never printed whole: a report that touches
 //! one shows, for each label, a window of its line around the span with `…` where text
 //! is cut ([`long`]), so a 10 MB line prints a few hundred bytes per diagnostic.
+//!
+//! Nothing from the input reaches the terminal as it is: the path, the messages, the
+//! help and the notes are shown through [`terminal::escape`], and a report that touches
+//! a line holding a hazard (a control character, a bidirectional override:
+//! [`crate::terminal`]) is drawn as a long line's is, with each hazard shown as its
+//! escape (`\x1b`) and the underline under the escape. ariadne, which would print such a
+//! line as it is (and count a vertical tab or a lone carriage return as a line end), is
+//! given the text with every hazard blanked, so that its line numbers stay those of
+//! [`LineIndex`]. With colour, the only escape sequences written are ariadne's and ours.
 
 use super::{FileReport, clamp_span};
+use crate::terminal::{self, escape};
 use crate::{Diagnostic, LineIndex, Severity};
 use ariadne::{Cache, Color, Config, IndexType, Label, Report, ReportKind, Source};
+use std::borrow::Cow;
 use std::fmt;
 use std::io::{self, Write};
 use std::ops::Range;
@@ -35,11 +46,13 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
         // Indexing the lines of a large clean file would cost more than linting it.
         return Ok(());
     }
-    let mut cache = Shared {
-        path: file.path,
-        source: Source::from(file.source),
-    };
     let index = LineIndex::new(file.source);
+    let (drawn, hazard_lines) = without_hazards(file.source, &index);
+    let path = escape(file.path);
+    let mut cache = Shared {
+        path: &path,
+        source: Source::from(&*drawn),
+    };
     for d in file.diagnostics {
         let labels = labels(file.source, d);
         let lines: Vec<(usize, usize)> = labels
@@ -56,13 +69,40 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
             .iter()
             .flat_map(|&(first, last)| first..=last)
             .any(|line| line_len(&index, file.source, line) > LONG_LINE);
-        if touches_long_line {
+        let touches_hazard = lines.iter().any(|&(first, last)| {
+            let i = hazard_lines.partition_point(|&line| line < first);
+            hazard_lines.get(i).is_some_and(|&line| line <= last)
+        });
+        if touches_long_line || touches_hazard {
             long::write(out, file, &index, d, &labels, color)?;
         } else {
             report(d, &labels, &lines, color).write(&mut cache, &mut *out)?;
         }
     }
     Ok(())
+}
+
+/// The text ariadne is given: `source` with every hazard replaced by as many spaces as it
+/// has bytes (offsets and line ends stay), borrowed when there is none; and the sorted
+/// 0-based lines that hold a hazard, which ariadne does not draw.
+fn without_hazards<'s>(source: &'s str, index: &LineIndex) -> (Cow<'s, str>, Vec<usize>) {
+    let mut lines: Vec<usize> = Vec::new();
+    let mut drawn = String::new();
+    let mut at = 0;
+    for run in terminal::runs(source) {
+        let line = index.line_of(run.start);
+        if lines.last() != Some(&line) {
+            lines.push(line);
+        }
+        drawn.push_str(&source[at..run.start]);
+        drawn.extend(std::iter::repeat_n(' ', run.len()));
+        at = run.end;
+    }
+    if lines.is_empty() {
+        return (Cow::Borrowed(source), lines);
+    }
+    drawn.push_str(&source[at..]);
+    (Cow::Owned(drawn), lines)
 }
 
 /// The length in bytes of 0-based `line`, without its line end.
@@ -76,10 +116,10 @@ fn line_len(index: &LineIndex, source: &str, line: usize) -> usize {
     end - start
 }
 
-/// One label to draw: its span (as shown), its message and its colour.
+/// One label to draw: its span (as shown), its message (escaped) and its colour.
 pub(crate) struct Shown<'d> {
     pub span: Range<usize>,
-    pub message: &'d str,
+    pub message: Cow<'d, str>,
     pub color: Color,
     pub primary: bool,
 }
@@ -95,13 +135,13 @@ fn labels<'d>(source: &str, d: &'d Diagnostic) -> Vec<Shown<'d>> {
     let mut labels: Vec<Shown> = Vec::with_capacity(1 + d.labels.len());
     labels.push(Shown {
         span: display_span(source, &d.span),
-        message: d.message.as_str(),
+        message: escape(&d.message),
         color: kind_color,
         primary: true,
     });
     labels.extend(d.labels.iter().map(|l| Shown {
         span: display_span(source, &l.span),
-        message: l.message.as_str(),
+        message: escape(&l.message),
         color: Color::Blue,
         primary: false,
     }));
@@ -160,9 +200,9 @@ fn report(
                 .with_color(color),
         )
         .with_code(d.code.id)
-        .with_message(&d.message)
+        .with_message(escape(&d.message))
         .with_labels(labels.iter().zip(&sections).map(|(l, &section)| {
-            let label = Label::new((section, l.span.clone())).with_message(l.message);
+            let label = Label::new((section, l.span.clone())).with_message(&l.message);
             // ariadne colours labels even with colour off; only ask when wanted.
             if color {
                 label.with_color(l.color)
@@ -171,10 +211,10 @@ fn report(
             }
         }));
     if let Some(help) = &d.help {
-        builder = builder.with_help(help);
+        builder = builder.with_help(escape(help));
     }
     if let Some(fix) = &d.fix {
-        builder = builder.with_note(format!("fix: {}", fix.message));
+        builder = builder.with_note(format!("fix: {}", escape(&fix.message)));
     }
     builder.finish()
 }
@@ -198,7 +238,7 @@ fn display_span(source: &str, span: &Range<usize>) -> Range<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::test_support::{SOURCE, UNKNOWN_WORD, diagnostics};
+    use crate::render::test_support::{SHAPE, SOURCE, UNKNOWN_WORD, diagnostics};
 
     fn render(source: &str, diags: &[Diagnostic]) -> String {
         let mut out = Vec::new();
@@ -329,5 +369,73 @@ mod tests {
                 s41 = " ".repeat(41),
             )
         );
+    }
+
+    #[test]
+    fn hazards_in_the_source_message_and_path_are_escaped_and_underlined() {
+        // OSC 52 (set the clipboard) in a comment, then a word after it on the same line.
+        let source = "wall type plane\n# \x1b]52;c;aGk=\x07 colr 3\n";
+        let esc = source.find('\x1b').unwrap();
+        let colr = source.find("colr").unwrap();
+        let diags = [
+            Diagnostic::warning(&SHAPE, esc..esc + 1, "control character `\x1b`")
+                .with_help("the terminal \x1b[2J"),
+            Diagnostic::error(&UNKNOWN_WORD, colr..colr + 4, "unknown word `colr`"),
+        ];
+        let file = FileReport {
+            path: "e\x1b]0;x\x07.walls",
+            source,
+            diagnostics: &diags,
+        };
+        for color in [false, true] {
+            let mut out = Vec::new();
+            human(&mut out, &file, color).unwrap();
+            let text = String::from_utf8(out).unwrap();
+            println!("{text}");
+            // Only the renderer's own colours: every ESC starts an SGR sequence.
+            for (i, _) in text.match_indices('\x1b') {
+                let sgr = &text[i..];
+                let end = sgr.find('m').unwrap();
+                assert!(
+                    sgr[1..end].starts_with('[')
+                        && sgr[2..end].bytes().all(|b| b.is_ascii_digit() || b == b';'),
+                    "{:?}",
+                    &sgr[..end + 1]
+                );
+            }
+            assert!(!text.contains('\x07'));
+            if color {
+                continue;
+            }
+            assert_eq!(
+                text,
+                "[C201] Warning: control character `\\x1b`\n   ╭─[ e\\x1b]0;x\\x07.walls:2:3 ]\n   │\n \
+                 2 │ # \\x1b]52;c;aGk=\\x07 colr 3\n   │   ──── control character `\\x1b`\n   │ \n   \
+                 │ Help: the terminal \\x1b[2J\n───╯\n\
+                 [S101] Error: unknown word `colr`\n   ╭─[ e\\x1b]0;x\\x07.walls:2:16 ]\n   │\n \
+                 2 │ # \\x1b]52;c;aGk=\\x07 colr 3\n   │                      ──── unknown word `colr`\n───╯\n"
+            );
+        }
+    }
+
+    #[test]
+    fn a_vertical_tab_or_a_lone_carriage_return_does_not_move_later_lines() {
+        // ariadne ends lines at both; pkdgrav and the line index only at `\n`.
+        let source = "# a\x0bb\rc\nwall type plane\nwall colr\n";
+        let colr = source.find("colr").unwrap();
+        let d = Diagnostic::error(&UNKNOWN_WORD, colr..colr + 4, "unknown word `colr`");
+        let text = render(source, &[d]);
+        println!("{text}");
+        assert!(text.contains("scene.walls:3:6"), "{text}");
+        assert!(text.contains(" 3 │ wall colr"), "{text}");
+    }
+
+    #[test]
+    fn a_crlf_line_with_a_hazard_shows_no_carriage_return() {
+        let source = "# \u{202e}x\r\nwall\r\n";
+        let d = Diagnostic::warning(&SHAPE, 2..5, "override");
+        let text = render(source, &[d]);
+        assert!(text.contains(" 1 │ # \\u{202e}x\n"), "{text:?}");
+        assert!(text.contains("   │   ──────── override\n"), "{text:?}");
     }
 }

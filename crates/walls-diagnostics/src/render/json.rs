@@ -48,7 +48,7 @@ pub fn json(
             warnings: summary.warnings,
         },
     };
-    serde_json::to_writer_pretty(&mut *out, &output)?;
+    super::safe_json::write(&mut *out, &output)?;
     writeln!(out)
 }
 

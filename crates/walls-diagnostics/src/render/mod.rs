@@ -11,6 +11,11 @@
 //!
 //! The machine formats also report the files that could not be read ([`Unreadable`]).
 //!
+//! Text from the input (a path, a message quoting a token) never reaches a terminal as
+//! it is: [`human`] and [`github`] show every hazard ([`crate::terminal`]) as its escape
+//! (`\x1b`), and the JSON formats ([`json`], [`sarif`], [`gitlab`]) write it as a JSON
+//! escape (`\u001b`), which any reader reads back as the character.
+//!
 //! The machine formats ([`json`], [`sarif`], [`github`], [`gitlab`]) write straight to a
 //! [`std::io::Write`] as they go, without building the whole output in memory first;
 //! give them a buffered writer.
@@ -23,6 +28,7 @@ mod github;
 mod gitlab;
 mod human;
 mod json;
+mod safe_json;
 mod sarif;
 
 pub use github::github;

@@ -81,7 +81,7 @@ pub fn sarif(
         }],
         version: "2.1.0",
     };
-    serde_json::to_writer_pretty(&mut *out, &log)?;
+    super::safe_json::write(&mut *out, &log)?;
     writeln!(out)
 }
 

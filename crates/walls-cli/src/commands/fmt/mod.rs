@@ -84,23 +84,18 @@ pub fn run(args: &FmtArgs) -> i32 {
         .map(|f| (input::display_name(f), format_one(f, args, &resolver)))
         .collect();
     let color = crate::console::color_stderr();
-    let mut err = std::io::BufWriter::new(std::io::stderr().lock());
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let (mut changed, mut unchanged, mut broken) = (0, 0, 0);
     let (mut unreadable, mut unwritten) = (0, 0);
     for (name, outcome) in &outcomes {
-        // Standard error is for people: if it is gone there is nobody to tell.
-        let _ = match outcome {
-            Outcome::Unchanged => {
-                unchanged += 1;
-                Ok(())
-            }
+        match outcome {
+            Outcome::Unchanged => unchanged += 1,
             Outcome::Changed { diff } => {
                 changed += 1;
                 match diff {
-                    Some(d) => write!(out, "{d}"),
-                    None if args.check => writeln!(err, "would reformat {name}"),
-                    None => Ok(()),
+                    // Escaped where it was made (`unified_diff`).
+                    Some(d) => crate::console::out_data(|out| out.write_all(d.as_bytes())),
+                    None if args.check => crate::errln!("would reformat {name}"),
+                    None => {}
                 }
             }
             Outcome::NotFormatted { text, report } => {
@@ -110,19 +105,21 @@ pub fn run(args: &FmtArgs) -> i32 {
                     source: text,
                     diagnostics: report,
                 };
-                render::human(&mut err, &file, color).and_then(|()| {
-                    writeln!(err, "walls-fmt: {name} has syntax errors: not formatted")
-                })
+                let mut err = std::io::BufWriter::new(std::io::stderr().lock());
+                // Standard error is for people: if it is gone there is nobody to tell.
+                let _ = render::human(&mut err, &file, color).and_then(|()| err.flush());
+                drop(err);
+                crate::errln!("walls-fmt: {name} has syntax errors: not formatted");
             }
             Outcome::Unreadable(e) => {
                 unreadable += 1;
-                writeln!(err, "walls-fmt: error: {e}")
+                crate::errln!("walls-fmt: error: {e}");
             }
             Outcome::NotWritten(e) => {
                 unwritten += 1;
-                writeln!(err, "walls-fmt: error: {e}")
+                crate::errln!("walls-fmt: error: {e}");
             }
-        };
+        }
     }
     let verb = if args.check || args.diff {
         "would be reformatted"
@@ -142,10 +139,7 @@ pub fn run(args: &FmtArgs) -> i32 {
             summary.push_str(&format!(", {n} {what}"));
         }
     }
-    let _ = writeln!(err, "{summary}");
-    if out.flush().is_err() || err.flush().is_err() {
-        return 2;
-    }
+    crate::errln!("{summary}");
     if unreadable + unwritten > 0 {
         2
     } else if broken > 0 || ((args.check || args.diff) && changed > 0) {
@@ -241,12 +235,16 @@ fn format_one(path: &str, args: &FmtArgs, resolver: &Resolver) -> Outcome {
     }
 }
 
-/// The unified diff from `old` to `new`, the text of the file shown as `name`.
+/// The unified diff from `old` to `new`, the text of the file shown as `name`, for
+/// people (walls-fmt's and walls-lint's `--diff`): its hazards are shown as their
+/// escapes (`\x1b`, [`walls_diagnostics::terminal`]), so the diff of a file that holds
+/// some shows them but does not apply with `patch`.
 pub(crate) fn unified_diff(name: &str, old: &str, new: &str) -> String {
-    similar::TextDiff::from_lines(old, new)
+    let diff = similar::TextDiff::from_lines(old, new)
         .unified_diff()
         .header(name, name)
-        .to_string()
+        .to_string();
+    walls_diagnostics::terminal::escape(&diff).into_owned()
 }
 
 fn override_with(mut options: FormatOptions, args: &FmtArgs) -> FormatOptions {

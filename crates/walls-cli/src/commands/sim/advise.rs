@@ -3,7 +3,6 @@
 //! lines. The advice, its text and its JSON are [`walls_sim::advise`]'s.
 
 use super::ruled;
-use std::io::Write;
 use walls_sim::io::par::Rule;
 
 /// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,
@@ -125,19 +124,11 @@ pub fn run(args: &AdviseArgs) -> i32 {
         }
     };
     let walls = args.walls.as_deref();
-    let text = if args.json {
-        advise::json(&advice, &inputs, walls)
+    if args.json {
+        let json = advise::json(&advice, &inputs, walls);
+        crate::console::out_data(|w| w.write_all(json.as_bytes()));
     } else {
-        advise::text(&advice, &inputs, walls)
-    };
-    let mut out = std::io::stdout().lock();
-    if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        if e.kind() != std::io::ErrorKind::BrokenPipe {
-            crate::errln!("walls-sim: error: cannot write output: {e}");
-        }
-        return 2;
-    }
-    if !args.json {
+        crate::out!("{}", advise::text(&advice, &inputs, walls));
         for w in &advice.warnings {
             crate::errln!("walls-sim: warning: {w}");
         }

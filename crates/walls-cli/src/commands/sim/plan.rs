@@ -34,7 +34,8 @@ pub fn run(args: &RunArgs) -> i32 {
             .iter()
             .map(|p| serde_json::json!({"part": p.name, "used": p.used, "reason": p.reason}))
             .collect();
-        crate::outln!("{}", serde_json::json!({ "plan": list }));
+        let plan = serde_json::json!({ "plan": list });
+        crate::console::out_data(|w| writeln!(w, "{plan}"));
     } else {
         for p in &parts {
             let mark = if p.used { "uses" } else { "skips" };

@@ -437,7 +437,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             }),
             _ => report,
         };
-        crate::console::out_streamed(|w| report.write_json(w));
+        crate::console::out_data(|w| report.write_json(w));
     } else {
         crate::errln!(
             "walls-sim: {}",

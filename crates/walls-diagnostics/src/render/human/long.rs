@@ -1,14 +1,19 @@
-//! Reports that touch a line longer than [`LONG_LINE`](super::LONG_LINE) bytes.
+//! Reports that touch a line longer than [`LONG_LINE`](super::LONG_LINE) bytes, or a
+//! line that holds a hazard ([`crate::terminal`]).
 //!
-//! ariadne prints every line it shows in full, so these reports are drawn here, in
+//! ariadne prints every line it shows in full, and as it is, so these reports are drawn
+//! here, in
 //! ariadne's frame: the header, a `file:line:column` box, then for each label (in
 //! source order) its line cut to a window of at most [`BEFORE`] characters before the
 //! span, [`SPAN`] of the span and [`AFTER`] after it, with `…` where text is cut, and a
 //! line underlining the span followed by the label's message; then help and fix note.
-//! Control characters in the window are shown as spaces so the underline stays aligned.
+//! In the window, a hazard is shown as its escape (`\x1b`: [`terminal::escape`]), with
+//! the underline under the escape, and a tab as a space, so the underline stays aligned;
+//! the path, the message, the help and the note are escaped too.
 
 use super::Shown;
 use crate::render::FileReport;
+use crate::terminal::{self, escape};
 use crate::{Diagnostic, LineIndex, Severity};
 use ariadne::{Color, Fmt};
 use std::io::{self, Write};
@@ -45,7 +50,7 @@ pub(super) fn write(
         out,
         "{} {}",
         paint(&format!("[{}] {kind}:", d.code.id), kind_color),
-        d.message
+        escape(&d.message)
     )?;
     let source = file.source;
     let last_line = labels
@@ -64,13 +69,22 @@ pub(super) fn write(
     writeln!(
         out,
         "{pad}╭─[ {}:{}:{} ]",
-        file.path, start.line, start.column
+        escape(file.path),
+        start.line,
+        start.column
     )?;
     writeln!(out, "{pad}{bar}")?;
     for label in labels {
         let line = index.line_of(label.span.start);
         let line_start = index.line_start(line);
         let line_end = line_start + super::line_len(index, source, line);
+        // A carriage return that ends the line is its line end, not shown.
+        let line_end = if source[..line_end].ends_with('\r') && source[line_end..].starts_with('\n')
+        {
+            line_end - 1
+        } else {
+            line_end
+        };
         let span_end = label.span.end.min(line_end).max(label.span.start);
         let before = back_chars(source, line_start, label.span.start, BEFORE);
         let shown_end = forward_chars(source, label.span.start, span_end, SPAN);
@@ -104,11 +118,11 @@ pub(super) fn write(
     }
     if let Some(help) = &d.help {
         writeln!(out, "{pad}{bar} ")?;
-        writeln!(out, "{pad}{bar} Help: {help}")?;
+        writeln!(out, "{pad}{bar} Help: {}", escape(help))?;
     }
     if let Some(fix) = &d.fix {
         writeln!(out, "{pad}{bar} ")?;
-        writeln!(out, "{pad}{bar} Note: fix: {}", fix.message)?;
+        writeln!(out, "{pad}{bar} Note: fix: {}", escape(&fix.message))?;
     }
     writeln!(out, "{}╯", "─".repeat(width + 2))
 }
@@ -130,9 +144,11 @@ fn forward_chars(source: &str, from: usize, to: usize, n: usize) -> usize {
         .map_or(to, |(i, _)| from + i)
 }
 
-/// `text` with every control character (tab, carriage return, …) shown as a space.
+/// `text` (part of one line) with every hazard shown as its escape and every other
+/// control character (a tab) as a space: one column each.
 fn visible(text: &str) -> String {
-    text.chars()
+    terminal::escape(text)
+        .chars()
         .map(|c| if c.is_control() { ' ' } else { c })
         .collect()
 }
