@@ -41,6 +41,9 @@ struct Writer {
     /// Whether it rewrites the file it reads (walls-fmt, --fix): then "its own input" is
     /// its purpose, not a hazard.
     rewrites: bool,
+    /// Whether the place is one the command names in a folder (not the user): a link
+    /// there is refused rather than written through.
+    in_folder: bool,
     /// The command line that reads the place as an input, for "its own input".
     own_input: Option<&'static [&'static str]>,
 }
@@ -51,6 +54,7 @@ const WRITERS: &[Writer] = &[
         args: &["walls-fmt", "{}"],
         place: "w.walls",
         rewrites: true,
+        in_folder: false,
         own_input: None,
     },
     Writer {
@@ -58,6 +62,7 @@ const WRITERS: &[Writer] = &[
         args: &["walls-lint", "--isolated", "--fix", "{}"],
         place: "w.walls",
         rewrites: true,
+        in_folder: false,
         own_input: None,
     },
     Writer {
@@ -65,6 +70,7 @@ const WRITERS: &[Writer] = &[
         args: &["walls-mesh", "tri.obj", "-o", "{}", "--force"],
         place: "out.walls",
         rewrites: false,
+        in_folder: false,
         own_input: Some(&["walls-mesh", "{}", "-o", "{}", "--force"]),
     },
     Writer {
@@ -85,6 +91,7 @@ const WRITERS: &[Writer] = &[
         ],
         place: "o/particles.csv",
         rewrites: false,
+        in_folder: true,
         own_input: Some(&[
             "walls-sim",
             "run",
@@ -114,6 +121,7 @@ const WRITERS: &[Writer] = &[
         ],
         place: "o/ss.00010",
         rewrites: false,
+        in_folder: true,
         own_input: Some(&[
             "walls-sim",
             "run",
@@ -139,6 +147,7 @@ const WRITERS: &[Writer] = &[
         ],
         place: "pic.svg",
         rewrites: false,
+        in_folder: false,
         own_input: Some(&["walls-sim", "preview", "{}", "--out", "{}", "--force"]),
     },
     Writer {
@@ -153,6 +162,7 @@ const WRITERS: &[Writer] = &[
         ],
         place: "walls.inc",
         rewrites: false,
+        in_folder: true,
         own_input: Some(&[
             "walls-sim",
             "preview",
@@ -178,6 +188,7 @@ const WRITERS: &[Writer] = &[
         ],
         place: "m/m_000001.vtp",
         rewrites: false,
+        in_folder: true,
         own_input: Some(&[
             "walls-sim",
             "preview",
@@ -393,6 +404,13 @@ fn cell(w: &Writer, hazard: Hazard) -> String {
             if !w.rewrites {
                 assert_eq!(status, 2, "{}: {stderr}", w.name);
             }
+        }
+        Hazard::Symlink if w.in_folder => {
+            assert_eq!(now, "link kept", "{}: {stderr}", w.name);
+            assert_eq!(status, 2, "{}: {stderr}", w.name);
+            let real = std::fs::read(place.with_file_name("real")).unwrap();
+            assert_eq!(real, old.as_bytes(), "{}: written through the link", w.name);
+            return format!("refused: a link ({status}), link and file kept");
         }
         Hazard::Symlink => {
             assert_eq!(now, "link kept", "{}: {stderr}", w.name);

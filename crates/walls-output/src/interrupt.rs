@@ -66,6 +66,7 @@ fn temp() -> MutexGuard<'static, BTreeSet<PathBuf>> {
 
 /// A file removed on a signal until this is dropped (drop it once the file has been
 /// renamed into place, or removed).
+#[derive(Debug)]
 pub struct Registration {
     path: PathBuf,
 }

@@ -1,14 +1,17 @@
-//! A command's outputs ([`Outputs`]): each planned ([`Outputs::plan`], [`Outputs::plan_in`])
-//! against the policy of the crate's documentation before anything is written, then
-//! written whole ([`Target::write`]) or row by row ([`Target::stream`], [`Target::append`]).
+//! A command's outputs ([`Outputs`]): each planned before anything is written, a file the
+//! user named ([`Outputs::plan`]) or a file in a folder the command writes to
+//! ([`Outputs::folder`], [`Folder::plan`]), then written whole ([`Target::write_with`]) or
+//! row by row ([`Target::stream`], [`Target::append`]).
 
+use crate::dir::Dir;
 use crate::new_file::{NewFile, Temporary};
-use crate::replace::{folder_of, keep_owner_and_mode, may_replace_now, replace_file, stamp_now};
+use crate::replace::{euid, folder_of, keep_owner_and_mode, may_replace, replace_file, stamp_now};
 use crate::stream::Placing;
 use crate::{FileKind, Refusal, Stamp, Stream, Tool, WriteError};
 use std::collections::BTreeSet;
+use std::ffi::{OsStr, OsString};
 use std::io::{self, BufWriter, Write};
-use std::os::unix::fs::OpenOptionsExt;
+use std::os::fd::AsFd;
 use std::path::{Component, Path, PathBuf};
 
 /// The outputs of one command: who writes them (for the messages), whether existing ones
@@ -21,13 +24,23 @@ pub struct Outputs {
     inputs: BTreeSet<(u64, u64)>,
 }
 
+/// A folder the command writes its outputs in, opened once: every output planned in it
+/// ([`Folder::plan`]) is made relative to the folder as it was opened, through no link.
+#[derive(Debug, Clone)]
+pub struct Folder {
+    dir: Dir,
+    outputs: Outputs,
+}
+
 /// An output that may be written: where, and what is there now.
 #[derive(Debug, Clone)]
 pub struct Target {
+    /// The folder it is in, held open.
+    dir: Dir,
+    /// Its name there.
+    name: OsString,
     /// The path as the user gave it or the command made it: what messages show.
     shown: PathBuf,
-    /// The file written: `shown` with a symbolic link followed.
-    real: PathBuf,
     /// The file there when it was planned, if any (a regular file that may be replaced or
     /// appended to).
     existing: Option<Stamp>,
@@ -40,6 +53,17 @@ enum Use {
     Replace,
     Append,
 }
+
+/// Paths that name a process's open files rather than a file: `/dev/stdout` through
+/// `/proc/self/fd/1` is whatever standard output is (a terminal, a pipe, a file opened for
+/// appending), which a file put in its place would replace.
+const STANDARD_STREAMS: [&str; 5] = [
+    "/dev/stdin",
+    "/dev/stdout",
+    "/dev/stderr",
+    "/dev/fd/",
+    "/proc/",
+];
 
 impl Outputs {
     /// The outputs of `tool`, which may replace existing files when `force`.
@@ -57,89 +81,127 @@ impl Outputs {
     }
 
     /// Notes that the command reads the file at `path` (whatever name a link gives it), so
-    /// that no output replaces it; a path that names nothing is no input.
+    /// that no output replaces it; a path that names nothing is no input. `-` is standard
+    /// input: the file it is redirected from, if any.
     pub fn reads(&mut self, path: impl AsRef<Path>) {
+        let path = path.as_ref();
+        if path == Path::new("-") {
+            if let Ok(m) = std::io::stdin()
+                .as_fd()
+                .try_clone_to_owned()
+                .map(std::fs::File::from)
+                .and_then(|f| f.metadata())
+            {
+                self.inputs.insert(Stamp::from(&m).identity());
+            }
+            return;
+        }
         if let Ok(m) = std::fs::metadata(path) {
             self.inputs.insert(Stamp::from(&m).identity());
         }
     }
 
     /// Plans the output `path`, named by the user: it may be written if nothing is there,
-    /// or, with `--force`, a regular file that the policy lets the user replace.
+    /// or, with `--force`, a regular file that the policy lets the user replace; a
+    /// symbolic link is followed to the file it names, which is replaced in its folder.
     pub fn plan(&self, path: &Path) -> Result<Target, WriteError> {
-        self.plan_checked(path, None, Use::Replace)
-    }
-
-    /// Plans the output `name` in the folder `root`: as [`Outputs::plan`], and `name` must
-    /// stay in `root` (a relative path without `..`, through no link that leaves it).
-    pub fn plan_in(&self, root: &Path, name: &Path) -> Result<Target, WriteError> {
-        self.plan_checked(&inside(root, name)?, Some(root), Use::Replace)
-    }
-
-    /// Plans `name` in `root` to be appended to (pkdgrav's WALLSREACT files): as
-    /// [`Outputs::plan_in`], but an existing file is no reason to refuse without
-    /// `--force`, since nothing in it is replaced.
-    pub fn plan_append_in(&self, root: &Path, name: &Path) -> Result<Target, WriteError> {
-        self.plan_checked(&inside(root, name)?, Some(root), Use::Append)
-    }
-
-    fn plan_checked(
-        &self,
-        shown: &Path,
-        root: Option<&Path>,
-        using: Use,
-    ) -> Result<Target, WriteError> {
-        let (real, existing) = match std::fs::symlink_metadata(shown) {
-            Err(e) if e.kind() == io::ErrorKind::NotFound => (shown.to_path_buf(), None),
-            Err(e) => return Err(e.into()),
-            Ok(m) if m.file_type().is_symlink() => match std::fs::canonicalize(shown) {
-                Ok(real) => {
-                    let m = std::fs::metadata(&real)?;
-                    (real, Some(Stamp::from(&m)))
-                }
+        let text = path.as_os_str().to_string_lossy();
+        if STANDARD_STREAMS
+            .iter()
+            .any(|s| text == s.trim_end_matches('/') || text.starts_with(s))
+        {
+            return Err(Refusal::StandardStream.into());
+        }
+        let real = match std::fs::symlink_metadata(path) {
+            Ok(m) if m.file_type().is_symlink() => match std::fs::canonicalize(path) {
+                Ok(real) => real,
                 Err(e) if e.kind() == io::ErrorKind::NotFound => {
-                    let to = std::fs::read_link(shown)?;
+                    let to = std::fs::read_link(path)?;
                     return Err(Refusal::DanglingLink { to }.into());
                 }
                 Err(e) => return Err(e.into()),
             },
-            Ok(m) => (shown.to_path_buf(), Some(Stamp::from(&m))),
+            Ok(_) => path.to_path_buf(),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => path.to_path_buf(),
+            Err(e) => return Err(e.into()),
         };
-        if let Some(stamp) = existing.as_ref().filter(|s| s.kind() != FileKind::Regular) {
-            return Err(Refusal::NotRegular { kind: stamp.kind() }.into());
+        let Some(name) = real.file_name() else {
+            return Err(Refusal::NotRegular {
+                kind: FileKind::Folder,
+            }
+            .into());
+        };
+        let dir = Dir::open(folder_of(&real)).map_err(|e| in_folder(e, folder_of(&real)))?;
+        self.target(dir, name, path.to_path_buf(), Use::Replace)
+    }
+
+    /// The folder `path` (made, with its parents, when `make`), opened once for the
+    /// outputs a command places in it.
+    pub fn folder(&self, path: &Path, make: bool) -> Result<Folder, WriteError> {
+        if make {
+            std::fs::create_dir_all(path).map_err(|e| in_folder(e, path))?;
         }
-        if let Some(root) = root {
-            confined(root, &real)?;
-        }
+        let dir = Dir::open(path).map_err(|e| in_folder(e, path))?;
+        Ok(Folder {
+            dir,
+            outputs: self.clone(),
+        })
+    }
+
+    /// The target `name` in `dir`, shown as `shown`, checked against the policy.
+    fn target(
+        &self,
+        dir: Dir,
+        name: &OsStr,
+        shown: PathBuf,
+        using: Use,
+    ) -> Result<Target, WriteError> {
+        let existing = dir.stat(name)?;
         if let Some(stamp) = &existing {
-            if self.inputs.contains(&stamp.identity()) {
-                return Err(Refusal::Input.into());
-            }
-            if using == Use::Replace && !self.force {
-                return Err(Refusal::Exists.into());
-            }
-            may_replace_now(&real, stamp)?;
+            self.check(&dir, name, stamp, using)?;
         }
         Ok(Target {
-            shown: shown.to_path_buf(),
-            real,
+            dir,
+            name: name.to_os_string(),
+            shown,
             existing,
             tool: self.tool,
         })
     }
+
+    /// Whether the file `name` of `dir`, now `stamp`, may be replaced (or appended to).
+    fn check(&self, dir: &Dir, name: &OsStr, stamp: &Stamp, using: Use) -> Result<(), Refusal> {
+        if stamp.kind() == FileKind::Symlink {
+            return Err(Refusal::Link);
+        }
+        if stamp.kind() != FileKind::Regular {
+            return Err(Refusal::NotRegular { kind: stamp.kind() });
+        }
+        if self.inputs.contains(&stamp.identity()) {
+            return Err(Refusal::Input);
+        }
+        match using {
+            Use::Replace if !self.force => Err(Refusal::Exists),
+            Use::Replace => may_replace(stamp, dir.may_write(name), euid()),
+            // Appending parts no names: only the permission to write counts.
+            Use::Append => {
+                let single = Stamp { nlink: 1, ..*stamp };
+                may_replace(&single, dir.may_write(name), euid())
+            }
+        }
+    }
 }
 
-/// `root/name` when `name` is a relative path that goes down only (no `..`, no root).
-fn inside(root: &Path, name: &Path) -> Result<PathBuf, Refusal> {
-    let down = name
-        .components()
-        .all(|c| matches!(c, Component::Normal(_) | Component::CurDir));
-    if !down || name.as_os_str().is_empty() {
-        return Err(Refusal::Outside {
-            root: root.to_path_buf(),
-        });
-    }
-    Ok(path_in(root, name))
+/// An error opening or making the folder `path`, saying which.
+fn in_folder(e: io::Error, path: &Path) -> WriteError {
+    let what = match e.kind() {
+        io::ErrorKind::NotADirectory | io::ErrorKind::AlreadyExists => "it is not a folder".into(),
+        _ => e.to_string(),
+    };
+    WriteError::Io(io::Error::new(
+        e.kind(),
+        format!("the folder {}: {what}", path.display()),
+    ))
 }
 
 /// The path of `name` in the folder `root`, as messages show it: the name alone in the
@@ -152,32 +214,82 @@ pub fn path_in(root: &Path, name: &Path) -> PathBuf {
     }
 }
 
-/// Whether the file at `real` (whose folder may not exist yet) is in the folder `root`,
-/// once every link of both is followed.
-fn confined(root: &Path, real: &Path) -> Result<(), WriteError> {
-    let outside = || Refusal::Outside {
-        root: root.to_path_buf(),
-    };
-    let root = std::fs::canonicalize(root)?;
-    // The nearest folder of `real` that exists, followed through its links; the rest is
-    // made below it.
-    let mut existing = folder_of(real).to_path_buf();
-    let found = loop {
-        match std::fs::canonicalize(&existing) {
-            Ok(found) => break found,
-            Err(e) if e.kind() == io::ErrorKind::NotFound => {
-                if existing.file_name().is_none() {
+/// Names `paths` for a message, in the order given: all of them when there are three or
+/// fewer, else the first and the last and how many (`a-000.svg … a-999.svg, 1000 files`).
+pub fn name_files(paths: &[&Path]) -> String {
+    let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    match shown.as_slice() {
+        [] => String::new(),
+        [one] => one.clone(),
+        [first, second] => format!("{first} and {second}"),
+        [first, second, third] => format!("{first}, {second} and {third}"),
+        [first, .., last] => format!("{first} … {last}, {} files", shown.len()),
+    }
+}
+
+impl Folder {
+    /// The folder's path, as messages show it.
+    pub fn path(&self) -> &Path {
+        self.dir.shown()
+    }
+
+    /// Plans the output `name` in the folder: a relative path that goes down only (no
+    /// `..`, no root), its sub-folders made if missing, no link on the way or in its place;
+    /// then as [`Outputs::plan`] for what is there.
+    pub fn plan(&self, name: &Path) -> Result<Target, WriteError> {
+        self.plan_as(name, Use::Replace)
+    }
+
+    /// Plans `name` in the folder to be appended to (pkdgrav's WALLSREACT files): as
+    /// [`Folder::plan`], but an existing file is no reason to refuse without `--force`,
+    /// and its other names are none of the output's business, since nothing in it is
+    /// replaced.
+    pub fn plan_append(&self, name: &Path) -> Result<Target, WriteError> {
+        self.plan_as(name, Use::Append)
+    }
+
+    fn plan_as(&self, name: &Path, using: Use) -> Result<Target, WriteError> {
+        let outside = || Refusal::Outside {
+            root: self.dir.shown().to_path_buf(),
+        };
+        let mut parts: Vec<&OsStr> = Vec::new();
+        for c in name.components() {
+            match c {
+                Component::Normal(part) => parts.push(part),
+                Component::CurDir => {}
+                _ => return Err(outside().into()),
+            }
+        }
+        let Some((last, folders)) = parts.split_last() else {
+            return Err(outside().into());
+        };
+        let mut dir = self.dir.clone();
+        for part in folders {
+            dir = match dir.sub(part, true) {
+                Ok(Some(sub)) => sub,
+                // A link (ELOOP) or a file (ENOTDIR) where a folder should be.
+                Err(e)
+                    if e.raw_os_error() == Some(rustix::io::Errno::LOOP.raw_os_error())
+                        || e.kind() == io::ErrorKind::NotADirectory =>
+                {
                     return Err(outside().into());
                 }
-                existing = folder_of(&existing).to_path_buf();
-            }
-            Err(e) => return Err(e.into()),
+                Err(e) => return Err(e.into()),
+                Ok(None) => return Err(outside().into()),
+            };
         }
-    };
-    if found.starts_with(&root) {
-        Ok(())
-    } else {
-        Err(outside().into())
+        let shown = path_in(self.dir.shown(), name);
+        self.outputs.target(dir, last, shown, using)
+    }
+
+    /// The names of the files in the folder.
+    pub fn names(&self) -> io::Result<Vec<OsString>> {
+        self.dir.names()
+    }
+
+    /// The folder's real path now (every link followed).
+    pub fn real(&self) -> io::Result<PathBuf> {
+        self.dir.real()
     }
 }
 
@@ -203,10 +315,10 @@ impl Target {
     }
 
     /// Writes the whole file with `write` (buffered): into a new file in the same folder,
-    /// flushed to disk, then put in place, replacing the file planned over (with its
-    /// owner, group, extended attributes and mode, if it has not changed meanwhile) or
-    /// taking a name nothing has (a file made there meanwhile is left alone). A failure,
-    /// or a signal, leaves what was there.
+    /// then put in place, replacing the file planned over (with its owner, group,
+    /// extended attributes and mode, flushed to disk first, if it has not changed
+    /// meanwhile) or taking a name nothing has (a file made there meanwhile is left
+    /// alone). A failure, or a signal, leaves what was there.
     pub fn write_with(
         &self,
         write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
@@ -219,88 +331,64 @@ impl Target {
         match &self.existing {
             Some(stamp) => {
                 self.unchanged()?;
-                replace_file(&self.real, stamp, Temporary::Unnamed, buffered)
+                replace_file(&self.dir, &self.name, stamp, Temporary::Unnamed, buffered)
             }
             None => {
-                let mut new = NewFile::create(folder_of(&self.real), Temporary::Unnamed, 0o666)?;
+                let mut new = NewFile::create(&self.dir, Temporary::Unnamed, 0o666)?;
                 buffered(new.file())?;
-                new.file().sync_all()?;
-                new.link_new(&self.real)
+                new.link_new(&self.dir, &self.name)
             }
         }
     }
 
-    /// Opens the file to be written row by row from empty ([`Stream`]): a new file; or, in
-    /// place of the file planned over (with `--force`), a new file in the same folder with
-    /// its owner, group, extended attributes and mode, which replaces it at the first
-    /// [`Stream::commit`]: until the first whole group of rows is written, the old file is
-    /// there as it was.
+    /// Opens the file to be written row by row from empty ([`Stream`]): a new file in the
+    /// folder, which takes the output's name at the first [`Stream::commit`] (in the place
+    /// of the file planned over, with `--force`, with its owner, group, extended
+    /// attributes and mode): until the first whole group of rows is written, nothing is
+    /// there but what was.
     pub fn stream(&self) -> Result<Stream, WriteError> {
+        let mode = if self.existing.is_some() {
+            0o600
+        } else {
+            0o666
+        };
+        let mut new = NewFile::create(&self.dir, Temporary::Unnamed, mode)?;
         if let Some(stamp) = &self.existing {
             self.unchanged()?;
-            let folder = folder_of(&self.real);
-            let mut new = NewFile::create(folder, Temporary::Unnamed, 0o600)?;
-            keep_owner_and_mode(&self.real, stamp, new.file())?;
-            let file = new.file().try_clone()?;
-            let placing = Placing {
-                new,
-                target: self.real.clone(),
-                stamp: *stamp,
-            };
-            return Ok(Stream::new(file, self.shown.clone(), 0).placing(placing));
+            keep_owner_and_mode(&self.dir, &self.name, stamp, new.file())?;
         }
-        self.open(false)
+        let file = new.file().try_clone()?;
+        let placing = Placing {
+            new,
+            dir: self.dir.clone(),
+            name: self.name.clone(),
+            replacing: self.existing,
+        };
+        Ok(Stream::new(file, self.shown.clone(), 0).placing(placing))
     }
 
-    /// Opens the file to be appended to row by row ([`Stream`]), made if missing.
+    /// Opens the file to be appended to row by row ([`Stream`]); one not there yet is
+    /// made as [`Target::stream`] makes it.
     pub fn append(&self) -> Result<Stream, WriteError> {
-        self.open(true)
-    }
-
-    fn open(&self, append: bool) -> Result<Stream, WriteError> {
-        let mut options = std::fs::OpenOptions::new();
-        options.write(true).mode(0o666);
         let Some(stamp) = &self.existing else {
-            let file = options
-                .create_new(true)
-                .open(&self.real)
-                .map_err(|e| match e.kind() {
-                    io::ErrorKind::AlreadyExists => Refusal::Changed.into(),
-                    _ => WriteError::Io(e),
-                })?;
-            return Ok(Stream::new(file, self.shown.clone(), 0));
+            return self.stream();
         };
-        // Not through a link swapped in since, and without blocking on a FIFO swapped in:
-        // the file opened must be the one planned.
-        let flags = rustix::fs::OFlags::NOFOLLOW.bits() | rustix::fs::OFlags::NONBLOCK.bits();
-        let file = options
-            .custom_flags(flags as i32)
-            .append(append)
-            .open(&self.real)
-            .map_err(|e| {
-                if e.raw_os_error() == Some(rustix::io::Errno::LOOP.raw_os_error()) {
-                    WriteError::from(Refusal::Changed)
-                } else {
-                    WriteError::Io(e)
-                }
-            })?;
-        let now = Stamp::from(&file.metadata()?);
-        if now.kind() != FileKind::Regular || now.identity() != stamp.identity() {
-            return Err(Refusal::Changed.into());
-        }
-        let start = if append {
-            now.size
-        } else {
-            file.set_len(0)?;
-            0
-        };
+        let file = self
+            .dir
+            .open_existing(
+                &self.name,
+                stamp,
+                rustix::fs::OFlags::WRONLY | rustix::fs::OFlags::APPEND,
+            )
+            .map_err(|_| Refusal::Changed)?;
+        let start = file.metadata()?.len();
         Ok(Stream::new(file, self.shown.clone(), start))
     }
 
     /// Whether the file planned over is still the version planned.
     fn unchanged(&self) -> Result<(), WriteError> {
         match &self.existing {
-            Some(stamp) if !stamp.same_version(&stamp_now(&self.real)?) => {
+            Some(stamp) if !stamp.same_version(&stamp_now(&self.dir, &self.name)?) => {
                 Err(Refusal::Changed.into())
             }
             _ => Ok(()),

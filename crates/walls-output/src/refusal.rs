@@ -51,6 +51,13 @@ pub enum Refusal {
     Exists,
     /// A file the command reads.
     Input,
+    /// A path that names one of the process's open files (`/dev/stdout`,
+    /// `/proc/self/fd/1`), not a file: a file put in its place would replace whatever
+    /// standard output is redirected to.
+    StandardStream,
+    /// A symbolic link where a command places an output in a folder: it would lead the
+    /// output elsewhere.
+    Link,
     /// Outside the folder the outputs must stay in.
     Outside {
         /// That folder.
@@ -150,6 +157,14 @@ impl Refusal {
             Refusal::Input => {
                 format!("{command} reads it: an output never replaces one of the command's inputs")
             }
+            Refusal::StandardStream => {
+                "it names an open file of the process, not a file: for standard output, \
+                 give - (or leave the option out) and redirect it"
+                    .into()
+            }
+            Refusal::Link => "it is a symbolic link, which an output placed in a folder \
+                 never follows: remove it, or write elsewhere"
+                .into(),
             Refusal::Outside { root } => format!(
                 "it is outside {}, the folder the outputs go to",
                 root.display()

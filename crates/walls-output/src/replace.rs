@@ -16,16 +16,21 @@
 //!
 //! Any failure before the rename leaves the original as it was.
 
+use crate::dir::Dir;
 use crate::new_file::{NewFile, Temporary};
 use crate::{FileKind, Refusal, Stamp, WriteError};
+use std::ffi::{OsStr, OsString};
 use std::fs::File;
 use std::io::{self, Read, Write};
 use std::os::unix::fs::PermissionsExt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Whether a file read as `read`, and now `now`, may be replaced by a user whose
 /// effective user id is `euid` and whom `access(2)` allows (`may_write`) or not.
 pub fn check(read: &Stamp, now: &Stamp, may_write: bool, euid: u32) -> Result<(), Refusal> {
+    if read.kind() != FileKind::Regular {
+        return Err(Refusal::NotRegular { kind: read.kind() });
+    }
     if now.kind() != FileKind::Regular {
         return Err(Refusal::NotRegular { kind: now.kind() });
     }
@@ -57,26 +62,23 @@ pub(crate) fn may_replace(now: &Stamp, may_write: bool, euid: u32) -> Result<(),
     Ok(())
 }
 
-/// [`may_replace`] for the file at `path` as it is now (`now`), asking the system.
-pub(crate) fn may_replace_now(path: &Path, now: &Stamp) -> Result<(), Refusal> {
-    let may_write = rustix::fs::access(path, rustix::fs::Access::WRITE_OK).is_ok();
-    may_replace(now, may_write, rustix::process::geteuid().as_raw())
+/// The effective user id.
+pub(crate) fn euid() -> u32 {
+    rustix::process::geteuid().as_raw()
 }
 
-/// The stamp of the file at `path` now (through links); a file gone is
+/// The stamp of `name` in `dir` now (not through a link); a file gone is
 /// [`Refusal::Changed`].
-pub(crate) fn stamp_now(path: &Path) -> Result<Stamp, WriteError> {
-    match std::fs::metadata(path) {
-        Ok(m) => Ok(Stamp::from(&m)),
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Err(Refusal::Changed.into()),
-        Err(e) => Err(e.into()),
-    }
+pub(crate) fn stamp_now(dir: &Dir, name: &OsStr) -> Result<Stamp, WriteError> {
+    dir.stat(name)?.ok_or_else(|| Refusal::Changed.into())
 }
 
 /// A file as it was read for rewriting.
 pub struct Original {
-    /// The file's path with symbolic links resolved: the file replaced.
-    path: PathBuf,
+    /// The folder of the file, links resolved, held open.
+    dir: Dir,
+    /// Its name there.
+    name: OsString,
     /// The version read.
     stamp: Stamp,
 }
@@ -91,6 +93,8 @@ pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
     // file, which `check` refuses to replace; if a link changed meanwhile, the identity
     // differs.
     let real = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let dir = Dir::open(folder_of(&real)).map_err(fail)?;
+    let name = real.file_name().unwrap_or(real.as_os_str()).to_os_string();
     let mut bytes = Vec::new();
     file.take(limit + 1).read_to_end(&mut bytes).map_err(fail)?;
     if bytes.len() as u64 > limit {
@@ -99,7 +103,7 @@ pub fn read(path: &Path, limit: u64) -> Result<(Original, Vec<u8>), String> {
             path.display()
         ));
     }
-    Ok((Original { path: real, stamp }, bytes))
+    Ok((Original { dir, name, stamp }, bytes))
 }
 
 impl Original {
@@ -116,53 +120,48 @@ impl Original {
         temporary: Temporary,
         write: impl FnOnce(&mut File) -> io::Result<()>,
     ) -> Result<(), WriteError> {
-        let now = stamp_now(&self.path)?;
-        let may_write = rustix::fs::access(&self.path, rustix::fs::Access::WRITE_OK).is_ok();
-        check(
-            &self.stamp,
-            &now,
-            may_write,
-            rustix::process::geteuid().as_raw(),
-        )?;
-        replace_file(&self.path, &self.stamp, temporary, write)
+        let now = stamp_now(&self.dir, &self.name)?;
+        check(&self.stamp, &now, self.dir.may_write(&self.name), euid())?;
+        replace_file(&self.dir, &self.name, &self.stamp, temporary, write)
     }
 }
 
-/// Replaces the regular file at `path`, whose version `stamp` has been checked, with
-/// what `write` writes: a new file in the same folder with the old one's owner, group,
-/// extended attributes and mode, flushed to disk, renamed over the old one if that has
-/// not changed meanwhile.
+/// Replaces the regular file `name` in `dir`, whose version `stamp` has been checked,
+/// with what `write` writes: a new file in the same folder with the old one's owner,
+/// group, extended attributes and mode, flushed to disk, renamed over the old one if that
+/// has not changed meanwhile.
 pub(crate) fn replace_file(
-    path: &Path,
+    dir: &Dir,
+    name: &OsStr,
     stamp: &Stamp,
     temporary: Temporary,
     write: impl FnOnce(&mut File) -> io::Result<()>,
 ) -> Result<(), WriteError> {
-    let dir = folder_of(path);
     let mut new = NewFile::create(dir, temporary, 0o600).map_err(|e| {
         io::Error::new(
             e.kind(),
             format!(
                 "cannot make a new file in {} to put in its place ({e}): rewriting a \
                  file needs permission to write its folder too",
-                dir.display()
+                dir.shown().display()
             ),
         )
     })?;
     let file = new.file();
-    keep_owner_and_mode(path, stamp, file)?;
+    keep_owner_and_mode(dir, name, stamp, file)?;
     write(file)?;
     file.sync_all()?;
-    if !stamp.same_version(&stamp_now(path)?) {
+    if !stamp.same_version(&stamp_now(dir, name)?) {
         return Err(Refusal::Changed.into());
     }
-    new.rename_over(dir, path)
+    new.rename_over(dir, name)
 }
 
-/// Gives `new` the owner, group, extended attributes and mode of the file at `path`
+/// Gives `new` the owner, group, extended attributes and mode of the file `name` in `dir`
 /// (whose version is `stamp`), or refuses.
 pub(crate) fn keep_owner_and_mode(
-    path: &Path,
+    dir: &Dir,
+    name: &OsStr,
     stamp: &Stamp,
     new: &File,
 ) -> Result<(), WriteError> {
@@ -172,7 +171,10 @@ pub(crate) fn keep_owner_and_mode(
             gid: stamp.gid,
         }
     })?;
-    copy_attributes(path, new)?;
+    let old = dir
+        .open_existing(name, stamp, rustix::fs::OFlags::RDONLY)
+        .map_err(|_| Refusal::Changed)?;
+    copy_attributes(&old, new)?;
     // After the chown, which clears set-user-id and set-group-id bits.
     new.set_permissions(std::fs::Permissions::from_mode(stamp.mode & 0o7777))?;
     Ok(())
@@ -188,17 +190,17 @@ pub(crate) fn folder_of(path: &Path) -> &Path {
 /// The most an extended attribute's value, and the list of their names, can hold (Linux).
 const XATTR_MAX: usize = 1 << 16;
 
-/// Gives `new` the extended attributes of the file at `path`, if its filesystem has any.
-fn copy_attributes(path: &Path, new: &File) -> Result<(), WriteError> {
+/// Gives `new` the extended attributes of `old`, if its filesystem has any.
+fn copy_attributes(old: &File, new: &File) -> Result<(), WriteError> {
     let mut names = vec![0; XATTR_MAX];
-    let len = match rustix::fs::listxattr(path, &mut names[..]) {
+    let len = match rustix::fs::flistxattr(old, &mut names[..]) {
         Ok(len) => len,
         Err(rustix::io::Errno::NOTSUP) => return Ok(()),
         Err(e) => return Err(io::Error::from(e).into()),
     };
     let mut value = vec![0; XATTR_MAX];
     for name in names[..len].split(|&b| b == 0).filter(|n| !n.is_empty()) {
-        let len = rustix::fs::getxattr(path, name, &mut value[..]).map_err(io::Error::from)?;
+        let len = rustix::fs::fgetxattr(old, name, &mut value[..]).map_err(io::Error::from)?;
         rustix::fs::fsetxattr(new, name, &value[..len], rustix::fs::XattrFlags::empty()).map_err(
             |_| Refusal::Attribute {
                 name: String::from_utf8_lossy(name).into_owned(),

@@ -44,6 +44,25 @@ impl From<&Metadata> for Stamp {
 }
 
 impl Stamp {
+    /// The stamp of what `stat(2)` says.
+    #[allow(
+        clippy::unnecessary_cast,
+        reason = "the fields' types differ between targets and backends"
+    )]
+    pub(crate) fn from_stat(st: &rustix::fs::Stat) -> Stamp {
+        Stamp {
+            dev: st.st_dev as u64,
+            ino: st.st_ino as u64,
+            size: st.st_size as u64,
+            mtime: (st.st_mtime as i64, st.st_mtime_nsec as i64),
+            ctime: (st.st_ctime as i64, st.st_ctime_nsec as i64),
+            mode: st.st_mode as u32,
+            uid: st.st_uid as u32,
+            gid: st.st_gid as u32,
+            nlink: st.st_nlink as u64,
+        }
+    }
+
     /// The kind of file.
     pub fn kind(&self) -> FileKind {
         FileKind::of(self.mode)

@@ -4,22 +4,26 @@
 //! after a failed write, [`Stream::rollback`] cuts the file back to the last mark, so
 //! that it ends on whole rows of whole steps, and nothing before is lost.
 
+use crate::dir::Dir;
 use crate::new_file::NewFile;
-use crate::replace::{folder_of, stamp_now};
+use crate::replace::stamp_now;
 use crate::{Refusal, Stamp, WriteError};
+use std::ffi::OsString;
 use std::fs::File;
 use std::io::{self, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
-/// A new file to be put in the place of an old one at the first mark.
+/// A new file to be given its name at the first mark.
 #[derive(Debug)]
 pub(crate) struct Placing {
     /// The new file (written through the stream's own handle on it).
     pub(crate) new: NewFile,
-    /// The old file, replaced.
-    pub(crate) target: PathBuf,
-    /// Its version when it was planned over.
-    pub(crate) stamp: Stamp,
+    /// Its folder.
+    pub(crate) dir: Dir,
+    /// Its name there.
+    pub(crate) name: OsString,
+    /// The version of the file it replaces, if there is one.
+    pub(crate) replacing: Option<Stamp>,
 }
 
 /// What is held before it goes to the file.
@@ -37,7 +41,7 @@ pub struct Stream {
     committed: u64,
     /// Whether sending to the file has failed.
     failed: bool,
-    /// The old file this one replaces at the first mark, if any.
+    /// The new file's name, given at the first mark: until then it has none.
     placing: Option<Placing>,
 }
 
@@ -55,7 +59,8 @@ impl Stream {
         }
     }
 
-    /// The stream, which replaces the old file of `placing` at its first mark.
+    /// The stream, whose file takes its name (and replaces what had it) at its first
+    /// mark.
     pub(crate) fn placing(self, placing: Placing) -> Stream {
         Stream {
             placing: Some(placing),
@@ -97,8 +102,8 @@ impl Stream {
     }
 
     /// After a failed write: drops what is buffered and cuts the file back to its last
-    /// mark, so that it ends on whole rows (a new file that was to replace an old one at
-    /// the first mark goes, and the old one stays).
+    /// mark, so that it ends on whole rows (a new file not given its name yet goes, and
+    /// what had the name stays).
     pub fn rollback(&mut self) -> io::Result<()> {
         if self.placing.take().is_some() {
             self.buffer.clear();
@@ -140,13 +145,24 @@ impl Stream {
     }
 }
 
-/// Puts the new file of `placing` in the place of its old one, if that has not changed.
+/// Gives the new file of `placing` its name: in the place of the file it replaces, if
+/// that has not changed, or a name nothing has.
 fn place(placing: Placing) -> Result<(), WriteError> {
-    let Placing { new, target, stamp } = placing;
-    if !stamp.same_version(&stamp_now(&target)?) {
-        return Err(Refusal::Changed.into());
+    let Placing {
+        new,
+        dir,
+        name,
+        replacing,
+    } = placing;
+    match replacing {
+        Some(stamp) => {
+            if !stamp.same_version(&stamp_now(&dir, &name)?) {
+                return Err(Refusal::Changed.into());
+            }
+            new.rename_over(&dir, &name)
+        }
+        None => new.link_new(&dir, &name),
     }
-    new.rename_over(folder_of(&target), &target)
 }
 
 impl Write for Stream {

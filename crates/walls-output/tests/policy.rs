@@ -181,6 +181,7 @@ fn outputs_in_a_folder_stay_in_it() {
     std::os::unix::fs::symlink(elsewhere.path(), out.join("away")).unwrap();
     let outside = Refusal::Outside { root: out.clone() };
     let outputs = outputs(true);
+    let folder = outputs.folder(&out, false).unwrap();
     for name in [
         "../e.00010",
         "/tmp/e.00010",
@@ -188,18 +189,67 @@ fn outputs_in_a_folder_stay_in_it() {
         "a/../../e",
         "",
     ] {
-        let e = outputs.plan_in(&out, Path::new(name)).unwrap_err();
+        let e = folder.plan(Path::new(name)).unwrap_err();
         assert_eq!(refusal(e), outside, "{name}");
     }
+    // A link in the folder is not followed, wherever it leads.
+    std::fs::write(out.join("real"), "x").unwrap();
+    std::os::unix::fs::symlink("real", out.join("link")).unwrap();
+    assert_eq!(
+        refusal(folder.plan(Path::new("link")).unwrap_err()),
+        Refusal::Link
+    );
     // Down into a folder not made yet is inside.
-    let t = outputs
-        .plan_in(&out, Path::new("movie/movie_000000.vtp"))
-        .unwrap();
+    let t = folder.plan(Path::new("movie/movie_000000.vtp")).unwrap();
     assert_eq!(t.path(), out.join("movie/movie_000000.vtp"));
     // In the current folder, the name alone is shown.
-    let here = outputs.plan_in(Path::new("."), Path::new("a.svg")).unwrap();
+    let here = outputs.folder(Path::new("."), false).unwrap();
+    let here = here.plan(Path::new("a.svg")).unwrap();
     assert_eq!(here.path(), Path::new("a.svg"));
     assert_eq!(std::fs::read_dir(elsewhere.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn a_folder_swapped_for_a_link_while_the_command_runs_does_not_move_its_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let folder = outputs(false).folder(&out, false).unwrap();
+    let elsewhere = tempfile::tempdir().unwrap();
+    // The folder is renamed and a link to another put in its place.
+    std::fs::rename(&out, dir.path().join("moved")).unwrap();
+    std::os::unix::fs::symlink(elsewhere.path(), &out).unwrap();
+    folder
+        .plan(Path::new("a.svg"))
+        .unwrap()
+        .write(b"x")
+        .unwrap();
+    let mut stream = folder.plan(Path::new("m/b.csv")).unwrap().stream().unwrap();
+    stream.write_all(b"1\n").unwrap();
+    stream.finish().unwrap();
+    assert_eq!(std::fs::read_dir(elsewhere.path()).unwrap().count(), 0);
+    assert_eq!(std::fs::read(dir.path().join("moved/a.svg")).unwrap(), b"x");
+    assert_eq!(
+        std::fs::read(dir.path().join("moved/m/b.csv")).unwrap(),
+        b"1\n"
+    );
+}
+
+#[test]
+fn a_standard_stream_is_never_a_file_to_replace() {
+    for path in [
+        "/dev/stdout",
+        "/dev/stderr",
+        "/dev/fd/1",
+        "/proc/self/fd/1",
+        "/dev/stdin",
+    ] {
+        assert_eq!(
+            refusal(outputs(true).plan(Path::new(path)).unwrap_err()),
+            Refusal::StandardStream,
+            "{path}"
+        );
+    }
 }
 
 #[test]
@@ -212,7 +262,10 @@ fn a_file_made_meanwhile_is_left_alone() {
         refusal(target.write(b"ours\n").unwrap_err()),
         Refusal::Changed
     );
-    assert_eq!(refusal(target.stream().unwrap_err()), Refusal::Changed);
+    // A stream takes its name at its first mark, which is then taken.
+    let mut stream = target.stream().unwrap();
+    stream.write_all(b"ours\n").unwrap();
+    assert!(stream.commit().is_err());
     assert_eq!(std::fs::read(&path).unwrap(), b"someone else's\n");
 }
 
@@ -223,6 +276,8 @@ fn a_stream_is_cut_back_to_its_last_whole_group_of_rows() {
     let target = outputs(false).plan(&path).unwrap();
     let mut stream = target.stream().unwrap();
     stream.write_all(b"step,x\n0,1\n").unwrap();
+    // Nothing has the name until the first whole group of rows.
+    assert!(!path.exists());
     stream.commit().unwrap();
     // A long group of rows, part of which has reached the file.
     stream.write_all(&b"100,2\n".repeat(20_000)).unwrap();
@@ -242,8 +297,12 @@ fn a_stream_over_an_existing_file_keeps_it_and_its_mode() {
     std::fs::write(&path, "0 1\n").unwrap();
     std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
     // Appending needs no --force: nothing in it is replaced.
+    // Its other names do not count: appending parts none.
+    std::fs::hard_link(&path, dir.path().join("other")).unwrap();
     let target = outputs(false)
-        .plan_append_in(dir.path(), Path::new("WALLSREACTdata.out"))
+        .folder(dir.path(), false)
+        .unwrap()
+        .plan_append(Path::new("WALLSREACTdata.out"))
         .unwrap();
     let mut stream = target.append().unwrap();
     stream.write_all(b"100 2\n").unwrap();
@@ -252,6 +311,7 @@ fn a_stream_over_an_existing_file_keeps_it_and_its_mode() {
     stream.rollback().unwrap();
     drop(stream);
     assert_eq!(std::fs::read(&path).unwrap(), b"0 1\n100 2\n");
+    std::fs::remove_file(dir.path().join("other")).unwrap();
     // Replaced from empty: the old file stays as it was until the new one holds a whole
     // group of rows, which then takes its place with its mode. (The file planned before
     // the append has changed since: planned again.)
@@ -277,7 +337,9 @@ fn a_stream_over_an_existing_file_keeps_it_and_its_mode() {
 /// The WALLSREACT file in `dir`, planned again as it is now.
 fn target_now(dir: &Path) -> walls_output::Target {
     outputs(true)
-        .plan_in(dir, Path::new("WALLSREACTdata.out"))
+        .folder(dir, false)
+        .unwrap()
+        .plan(Path::new("WALLSREACTdata.out"))
         .unwrap()
 }
 

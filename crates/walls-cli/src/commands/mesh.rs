@@ -88,7 +88,9 @@ pub fn run(args: &MeshArgs) -> i32 {
     // command at once.
     let mut outputs = Outputs::new(Tool::MESH, args.force);
     outputs.reads(input);
-    let target = match args.output.as_deref().filter(|out| *out != Path::new("-")) {
+    // `-` and /dev/stdout are standard output, which is written to, never replaced.
+    let stdout = [Path::new("-"), Path::new("/dev/stdout")];
+    let target = match args.output.as_deref().filter(|out| !stdout.contains(out)) {
         Some(out) => match outputs.plan(out) {
             Ok(target) => Some(target),
             Err(e) => return error(e.message(&out.display().to_string(), Tool::MESH)),
@@ -180,6 +182,10 @@ pub fn run(args: &MeshArgs) -> i32 {
             }
         }
         Some(target) => match target.write(dumped.text.as_bytes()) {
+            Ok(()) if target.exists() => {
+                crate::errln!("walls-mesh: replaced {} (--force)", target.path().display());
+                0
+            }
             Ok(()) => 0,
             Err(e) => error(target.message(&e)),
         },

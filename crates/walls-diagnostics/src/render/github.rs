@@ -50,9 +50,10 @@ pub fn github(
         }
     }
     for u in unreadable {
+        let line = u.line.map_or(String::new(), |n| format!(",line={n}"));
         writeln!(
             out,
-            "::error file={},title=walls-lint::{}",
+            "::error file={}{line},title=walls-lint::{}",
             escape_property(u.path),
             escape_data(u.error)
         )?;
@@ -133,6 +134,7 @@ mod tests {
         let u = Unreadable {
             path: "a,b.walls",
             error: "cannot read a,b.walls: Permission denied",
+            line: None,
         };
         github(&mut out, &[], &[u]).unwrap();
         assert_eq!(

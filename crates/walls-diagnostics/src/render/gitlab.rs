@@ -86,7 +86,10 @@ impl Serialize for Issues<'_> {
                 severity: "blocker",
                 location: Location {
                     path: &path,
-                    lines: Lines { begin: 1, end: 1 },
+                    lines: Lines {
+                        begin: u.line.unwrap_or(1),
+                        end: u.line.unwrap_or(1),
+                    },
                 },
             })?;
             *occurrence += 1;
@@ -273,6 +276,7 @@ mod tests {
         let u = Unreadable {
             path: "./gone.walls",
             error: "cannot read ./gone.walls: No such file or directory (os error 2)",
+            line: None,
         };
         let mut out = Vec::new();
         gitlab(&mut out, &[], &[u]).unwrap();
@@ -294,7 +298,11 @@ mod tests {
         let errors = ["cannot read a: denied", "cannot read a: denied", "a: other"];
         let unreadable: Vec<Unreadable> = errors
             .iter()
-            .map(|error| Unreadable { path: "a", error })
+            .map(|error| Unreadable {
+                path: "a",
+                error,
+                line: None,
+            })
             .collect();
         let diags = [Diagnostic::error(&UNKNOWN_WORD, 0..1, "x")];
         let file = FileReport {

@@ -39,6 +39,7 @@ pub fn json(
                 Entry::Unreadable(NotRead {
                     path: u.path,
                     error: u.error,
+                    line: u.line,
                     diagnostics: [],
                 })
             }))
@@ -72,6 +73,8 @@ enum Entry<'a> {
 struct NotRead<'a> {
     path: &'a str,
     error: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    line: Option<usize>,
     diagnostics: [(); 0],
 }
 
@@ -287,6 +290,7 @@ mod tests {
         let u = Unreadable {
             path: "gone.walls",
             error: "cannot read gone.walls: No such file or directory (os error 2)",
+            line: None,
         };
         let mut out = Vec::new();
         super::json(&mut out, &[report(&diags)], &[u]).unwrap();

@@ -61,6 +61,9 @@ pub struct Unreadable<'a> {
     pub path: &'a str,
     /// Why it could not be read, for people.
     pub error: &'a str,
+    /// The line of the file the error is about (a `.par` file's line naming a file not
+    /// followed), if any.
+    pub line: Option<usize>,
 }
 
 /// Name, version and docs address of the tool, for SARIF.

@@ -58,6 +58,7 @@ pub fn sarif(
                                     artifact_location: ArtifactUri {
                                         uri: path_to_uri(u.path),
                                     },
+                                    region: u.line.map(|start_line| LineRegion { start_line }),
                                 },
                             }],
                             message: Text::from(u.error),
@@ -132,6 +133,15 @@ struct NotificationLocation {
 #[serde(rename_all = "camelCase")]
 struct NotificationPlace {
     artifact_location: ArtifactUri<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    region: Option<LineRegion>,
+}
+
+/// A notification's line.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct LineRegion {
+    start_line: usize,
 }
 
 /// One entry of `artifacts`, per file in order.
@@ -475,6 +485,7 @@ mod tests {
         let u = Unreadable {
             path: "dir/gone one.walls",
             error: "cannot read dir/gone one.walls: No such file or directory (os error 2)",
+            line: None,
         };
         let mut out = Vec::new();
         sarif(&mut out, &[], &[u], &TOOL, &[]).unwrap();

@@ -179,17 +179,23 @@ pub fn run(args: &LintArgs) -> i32 {
             unreadable.push(Unreadable {
                 path: &c.name,
                 error: e,
+                line: None,
             });
         }
     }
-    for (path, e) in &targets.errors {
-        unreadable.push(Unreadable { path, error: e });
+    for e in &targets.errors {
+        unreadable.push(Unreadable {
+            path: &e.path,
+            error: &e.message,
+            line: e.line,
+        });
     }
     for (c, f) in checked.iter().zip(&fixes) {
         if let Some(e) = &f.not_written {
             unreadable.push(Unreadable {
                 path: &c.name,
                 error: e,
+                line: None,
             });
         }
     }

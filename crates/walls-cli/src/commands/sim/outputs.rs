@@ -3,19 +3,21 @@
 //! WALLSREACT files when the run has reactive walls, and, with `--ss-output`, a `.ss`
 //! file at each output step.
 //!
-//! Everything is planned before the run starts ([`RunOutputs::open`]): every file stays in
-//! DIR (`achOutName`'s folder part is not followed: [`ss_base`]), none is a file the run
-//! reads, none is a device, a FIFO, a hard link or a read-only file, and an existing one
-//! is replaced only with `--force` (the WALLSREACT files are appended to, as pkdgrav does,
-//! unless `--fresh` empties them). At each output step ([`RunOutputs::record`]) every
-//! file's rows are written and sent to the files, the `.ss` file is written whole, and
-//! only then is the step marked whole in each; after a failed write
-//! ([`RunOutputs::rollback`]) every file is cut back to the last step marked, so that all
-//! end at the same whole output step, and nothing is removed.
+//! Everything is planned before the run starts ([`RunOutputs::open`]), in DIR opened once
+//! (a folder renamed or swapped for a link meanwhile does not move the outputs): every
+//! file stays in DIR (`achOutName`'s folder part is not followed: [`ss_base`]), none is a
+//! link, a file the run reads, a device, a FIFO, a hard link or a read-only file, and an
+//! existing one is replaced only with `--force` (the WALLSREACT files are appended to, as
+//! pkdgrav does, unless `--fresh` empties them). The trajectory's files take their names
+//! when their first output step is whole: a run that fails before leaves DIR as it was. At
+//! each output step ([`RunOutputs::record`]) every file's rows are written and sent to the
+//! files, the `.ss` file is written whole, and only then is the step marked whole in each;
+//! after a failed write ([`RunOutputs::rollback`]) every file is cut back to the last step
+//! marked, so that all end at the same whole output step, and nothing is removed.
 
 use std::path::{Path, PathBuf};
 use walls_geometry::{Particle, Wall};
-use walls_output::{Outputs, Stream, Tool, WriteError, path_in};
+use walls_output::{Folder, Outputs, Stream, Tool, WriteError, path_in};
 use walls_sim::dynamics::reactive::Assembly;
 use walls_sim::io::particles::{ss_file_name, write_ss_output};
 use walls_sim::io::trajectory::{PARTICLES_FILE, Trajectory, WALLS_FILE};
@@ -74,7 +76,7 @@ pub struct Failure {
 /// The open outputs of a run.
 pub struct RunOutputs {
     dir: PathBuf,
-    outputs: Outputs,
+    folder: Folder,
     trajectory: Trajectory<Stream>,
     reactive: Option<ReactiveOutput<Stream>>,
     ss: Option<SsNames>,
@@ -82,6 +84,8 @@ pub struct RunOutputs {
     ss_written: Option<(String, String, usize)>,
     /// The last output step every file holds whole, and its time.
     last: Option<(u64, f64)>,
+    /// The files of an earlier run replaced (with `--force`).
+    replaced: Vec<PathBuf>,
 }
 
 impl RunOutputs {
@@ -97,27 +101,33 @@ impl RunOutputs {
         ss: Option<SsNames>,
         inputs: &[String],
     ) -> Result<RunOutputs, String> {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("cannot make the folder {}: {e}", dir.display()))?;
         let mut outputs = Outputs::new(Tool::RUN, force);
         for input in inputs {
             outputs.reads(input);
         }
+        // The folder is opened once: every output is made in it as it is now.
+        let folder = outputs.folder(dir, true).map_err(|e| match e {
+            WriteError::Io(e) => format!("cannot write the outputs: {e}"),
+            e => e.message(&dir.display().to_string(), Tool::RUN),
+        })?;
         let refused = |name: &Path, e: WriteError| {
             e.message(&path_in(dir, name).display().to_string(), Tool::RUN)
         };
         let plan = |name: &str| {
             let name = Path::new(name);
-            outputs.plan_in(dir, name).map_err(|e| refused(name, e))
+            folder.plan(name).map_err(|e| refused(name, e))
         };
         let particles = plan(PARTICLES_FILE)?;
         let walls = plan(WALLS_FILE)?;
+        let mut replaced: Vec<PathBuf> = [&particles, &walls]
+            .into_iter()
+            .filter(|t| t.exists())
+            .map(|t| t.path().to_path_buf())
+            .collect();
         let reacting = if reactive {
             let plan = |name: &str| {
                 let name = Path::new(name);
-                outputs
-                    .plan_append_in(dir, name)
-                    .map_err(|e| refused(name, e))
+                folder.plan_append(name).map_err(|e| refused(name, e))
             };
             Some((plan(DATA_FILE)?, plan(VIZ_FILE)?))
         } else {
@@ -126,18 +136,16 @@ impl RunOutputs {
         if let Some(names) = &ss {
             // Every .ss output of an earlier run in the folder, checked now rather than
             // when the run reaches its step.
-            for name in ss_files_in(dir, &names.base)? {
-                outputs
-                    .plan_in(dir, Path::new(&name))
-                    .map_err(|e| match e {
-                        WriteError::Refused(walls_output::Refusal::Exists) => format!(
-                            "not writing the .ss outputs in {}: {} holds {name}, an output of \
+            for name in ss_files_in(&folder, &names.base)? {
+                folder.plan(Path::new(&name)).map_err(|e| match e {
+                    WriteError::Refused(walls_output::Refusal::Exists) => format!(
+                        "not writing the .ss outputs in {}: {} holds {name}, an output of \
                              an earlier run: pass --force to replace such files",
-                            dir.display(),
-                            dir.display()
-                        ),
-                        e => refused(Path::new(&name), e),
-                    })?;
+                        dir.display(),
+                        dir.display()
+                    ),
+                    e => refused(Path::new(&name), e),
+                })?;
             }
         }
         let stream = |target: &walls_output::Target, fresh: bool| {
@@ -152,7 +160,14 @@ impl RunOutputs {
             .map_err(|e| format!("cannot write to {}: {e}", dir.display()))?;
         let reactive = match reacting {
             Some((data, viz)) => {
-                if !fresh {
+                if fresh {
+                    replaced.extend(
+                        [&data, &viz]
+                            .into_iter()
+                            .filter(|t| t.exists())
+                            .map(|t| t.path().to_path_buf()),
+                    );
+                } else {
                     for target in [&data, &viz].into_iter().filter(|t| t.exists()) {
                         crate::errln!(
                             "walls-sim: appending to {}, as pkdgrav does (--fresh empties it first)",
@@ -167,21 +182,16 @@ impl RunOutputs {
             }
             None => None,
         };
-        let mut opened = RunOutputs {
+        Ok(RunOutputs {
             dir: dir.to_path_buf(),
-            outputs,
+            folder,
             trajectory,
             reactive,
             ss,
             ss_written: None,
             last: None,
-        };
-        // The headers, whole, before the first step.
-        if let Err(e) = opened.commit() {
-            opened.rollback();
-            return Err(e);
-        }
-        Ok(opened)
+            replaced,
+        })
     }
 
     /// Writes the particles as the run starts with them (all alive), and the walls, at
@@ -231,18 +241,18 @@ impl RunOutputs {
         self.send().map_err(fail)?;
         if let (Some(names), Some(states)) = (&self.ss, states) {
             let name = ss_file_name(&names.base, names.digits, step);
-            let target = self
-                .outputs
-                .plan_in(&self.dir, Path::new(&name))
-                .map_err(|e| {
-                    fail(e.message(
-                        &path_in(&self.dir, Path::new(&name)).display().to_string(),
-                        Tool::RUN,
-                    ))
-                })?;
+            let target = self.folder.plan(Path::new(&name)).map_err(|e| {
+                fail(e.message(
+                    &path_in(&self.dir, Path::new(&name)).display().to_string(),
+                    Tool::RUN,
+                ))
+            })?;
             target
                 .write_with(|out| write_ss_output(out, t, states))
                 .map_err(|e| fail(target.message(&e)))?;
+            if target.exists() {
+                self.replaced.push(target.path().to_path_buf());
+            }
             self.ss_written = Some(match self.ss_written.take() {
                 None => (name.clone(), name, 1),
                 Some((first, _, n)) => (first, name, n + 1),
@@ -333,9 +343,20 @@ impl RunOutputs {
         self.last
     }
 
+    /// The files of an earlier run that this one replaced (with `--force`, or the
+    /// WALLSREACT files with `--fresh`), as a message says them; `None`: none.
+    pub fn replaced(&self) -> Option<String> {
+        let names: Vec<&Path> = self.replaced.iter().map(PathBuf::as_path).collect();
+        (!names.is_empty()).then(|| walls_output::name_files(&names))
+    }
+
     /// The files written, as paths to show: the trajectory's, the `.ss` outputs (the first
     /// and the last, and how many) and the WALLSREACT files.
     pub fn files(&self) -> Vec<String> {
+        // Nothing takes its name before the first output step is whole.
+        if self.last.is_none() {
+            return Vec::new();
+        }
         let path = |name: &str| path_in(&self.dir, Path::new(name)).display().to_string();
         let mut names = vec![path(PARTICLES_FILE), path(WALLS_FILE)];
         if let Some((first, last, n)) = &self.ss_written {
@@ -351,16 +372,16 @@ impl RunOutputs {
     }
 }
 
-/// The names of the files in `dir` that the `.ss` outputs named `base` could take:
+/// The names of the files in `folder` that the `.ss` outputs named `base` could take:
 /// `base.` and digits.
-fn ss_files_in(dir: &Path, base: &str) -> Result<Vec<String>, String> {
+fn ss_files_in(folder: &Folder, base: &str) -> Result<Vec<String>, String> {
     let prefix = format!("{base}.");
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
+    let entries = folder
+        .names()
+        .map_err(|e| format!("cannot read {}: {e}", folder.path().display()))?;
     let mut names = Vec::new();
     for entry in entries {
-        let entry = entry.map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
-        let name = entry.file_name().to_string_lossy().into_owned();
+        let name = entry.to_string_lossy().into_owned();
         if let Some(step) = name.strip_prefix(&prefix)
             && !step.is_empty()
             && step.bytes().all(|b| b.is_ascii_digit())

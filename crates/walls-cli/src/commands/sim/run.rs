@@ -263,7 +263,6 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     ]
     .into_iter()
     .flatten()
-    .filter(|f| f != "-")
     .collect();
     Ok(Prepared {
         walls,
@@ -409,6 +408,10 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     let mut written: Option<Written> = None;
     if let Some(mut out) = files {
         let (names, last) = (out.files(), out.last());
+        // Nothing is replaced before the first output step is whole.
+        if let Some(replaced) = out.replaced().filter(|_| last.is_some()) {
+            crate::errln!("walls-sim: replaced {replaced}");
+        }
         if failure.is_some() {
             for problem in out.rollback() {
                 crate::errln!("walls-sim: error: {problem}");
@@ -454,18 +457,18 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             readout.time(f.t),
             f.message
         );
-        crate::errln!(
-            "walls-sim: the outputs in {} {}: {}",
-            dir.display(),
-            match last {
-                Some((step, t)) => format!(
-                    "end at output step {step} (t = {}), their last whole one",
-                    readout.time(*t)
-                ),
-                None => "hold no whole output step".to_string(),
-            },
-            names.join(", ")
-        );
+        match last {
+            Some((step, t)) => crate::errln!(
+                "walls-sim: the outputs in {} end at output step {step} (t = {}), their last whole one: {}",
+                dir.display(),
+                readout.time(*t),
+                names.join(", ")
+            ),
+            None => crate::errln!(
+                "walls-sim: no output step was written whole: nothing in {} was made or replaced",
+                dir.display()
+            ),
+        }
         return Ok(2);
     }
     let Some(why) = outcome.stopped else {

@@ -11,7 +11,7 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use walls_geometry::units::{Readout, Scale};
 use walls_model::Scene;
-use walls_output::{Outputs, Target, Tool};
+use walls_output::{Outputs, Target, Tool, WriteError};
 use walls_preview::MovieFrame;
 use walls_preview::html::Particles;
 use walls_preview::ssdraw::SsdrawView;
@@ -103,6 +103,11 @@ pub(super) fn write(
             .map_err(|e| format!("cannot write the picture: {e}"));
     };
     let files = Files::plan(outputs, path, kind, frames.len())?;
+    let replaced: Vec<PathBuf> = files
+        .replaced()
+        .into_iter()
+        .map(Path::to_path_buf)
+        .collect();
     let write = |target: &Target, what: &mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>| {
         target.write_with(what).map_err(|e| target.message(&e))
     };
@@ -202,6 +207,13 @@ pub(super) fn write(
         }
     }
     bar.finish_and_clear();
+    if !replaced.is_empty() {
+        let names: Vec<&Path> = replaced.iter().map(PathBuf::as_path).collect();
+        crate::errln!(
+            "walls-sim: replaced {} (--force)",
+            walls_output::name_files(&names)
+        );
+    }
     Ok(())
 }
 
@@ -217,20 +229,25 @@ impl Files {
     /// Plans every file a picture of `kind` with `frames` frames at `path` writes, in
     /// `path`'s folder: refused before anything is written if any may not be.
     fn plan(outputs: &Outputs, path: &Path, kind: Kind, frames: usize) -> Result<Files, String> {
-        let folder = path
+        let refused =
+            |shown: &Path, e: WriteError| e.message(&shown.display().to_string(), Tool::PREVIEW);
+        // The file named is the user's: a link to a file is written through.
+        let main = outputs.plan(path).map_err(|e| refused(path, e))?;
+        // The others are the command's, in the same folder opened once, through no link.
+        let parent = path
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
             .unwrap_or(Path::new("."));
+        let folder = outputs.folder(parent, false).map_err(|e| match e {
+            WriteError::Io(e) => format!("cannot write {}: {e}", path.display()),
+            e => refused(parent, e),
+        })?;
         let plan = |name: &Path| {
-            outputs.plan_in(folder, name).map_err(|e| {
-                e.message(
-                    &walls_output::path_in(folder, name).display().to_string(),
-                    Tool::PREVIEW,
-                )
-            })
+            folder
+                .plan(name)
+                .map_err(|e| refused(&walls_output::path_in(parent, name), e))
         };
         let name = |p: &Path| p.file_name().map(PathBuf::from).unwrap_or_default();
-        let main = plan(&name(path))?;
         let numbered_names = |extension: &str| -> Vec<PathBuf> {
             (0..frames)
                 .map(|k| name(&numbered(path, k, extension)))
@@ -250,30 +267,52 @@ impl Files {
         let include = match kind {
             Kind::Pov => {
                 let name = Path::new(walls_preview::pov::INCLUDE_NAME);
-                // Read only if it is a regular file: a FIFO there would block the read.
-                let path = folder.join(name);
-                let regular = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
-                let there = regular.then(|| std::fs::read(&path).ok()).flatten();
-                match there.as_deref() == Some(walls_preview::pov::INCLUDE.as_bytes()) {
+                match is_the_include(&parent.join(name)) {
                     true => None,
                     false => Some(plan(name)?),
                 }
             }
             _ => None,
         };
-        if kind == Kind::Pvd
-            && let Some(sub) = frame_names.first().and_then(|f| f.parent())
-        {
-            std::fs::create_dir_all(folder.join(sub)).map_err(|e| {
-                format!("cannot make the folder {}: {e}", folder.join(sub).display())
-            })?;
-        }
         Ok(Files {
             main,
             frames,
             include,
         })
     }
+}
+
+impl Files {
+    /// The files there already, which writing replaces (with `--force`).
+    fn replaced(&self) -> Vec<&Path> {
+        std::iter::once(&self.main)
+            .chain(&self.frames)
+            .chain(&self.include)
+            .filter(|t| t.exists())
+            .map(Target::path)
+            .collect()
+    }
+}
+
+/// Whether the file at `path` is a regular file holding the include this preview writes
+/// (read only if its size is the include's, and without blocking on a FIFO).
+fn is_the_include(path: &Path) -> bool {
+    use std::io::Read;
+    let include = walls_preview::pov::INCLUDE.as_bytes();
+    let same_size = std::fs::symlink_metadata(path)
+        .is_ok_and(|m| m.is_file() && m.len() == include.len() as u64);
+    if !same_size {
+        return false;
+    }
+    let mut there = Vec::new();
+    let flags =
+        rustix::fs::OFlags::RDONLY | rustix::fs::OFlags::NONBLOCK | rustix::fs::OFlags::NOFOLLOW;
+    rustix::fs::open(path, flags, rustix::fs::Mode::empty())
+        .map(std::fs::File::from)
+        .map_err(std::io::Error::from)
+        .and_then(|f| f.take(include.len() as u64 + 1).read_to_end(&mut there))
+        .is_ok()
+        && there == include
 }
 
 /// The POV-Ray view: the SVG view's direction and aspect, ssdraw's camera, background and
