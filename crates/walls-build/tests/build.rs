@@ -288,4 +288,17 @@ fn errors_fail_the_dump_and_warnings_come_back() {
         describe(&dumped.text, &dumped.warnings),
         "2:3: warning[C201]: a triangle wall ignores `radius` (`radius 2`)\n"
     );
+
+    // A subnormal number is a warning (S110), as walls-lint gives it: the file is written
+    // and the warning comes back (it failed with no error before).
+    let tiny = Wall::of_type("disk")
+        .unwrap()
+        .with("radius", 1e-320)
+        .unwrap();
+    let dumped = dumps(&[tiny], &DumpOptions::default()).unwrap();
+    assert_eq!(dumped.text, "wall type disk\n  radius 1e-320\n");
+    assert_eq!(
+        describe(&dumped.text, &dumped.warnings),
+        "2:10: warning[S110]: `1e-320` is below the smallest normal double: pkdgrav reads it as 1e-320, with fewer significant digits (`radius 1e-320`)\n"
+    );
 }
