@@ -22,7 +22,7 @@ use crate::contact::ssdem::Sliding;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
-use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings};
+use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings, Warning};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -96,6 +96,9 @@ pub struct Run {
     /// `DEM_TWOLAYERS`, or without pkdgrav's integrator), in line order; the `.par`
     /// file's own warnings are in [`Params::warnings`].
     pub warnings: Vec<par::ParWarning>,
+    /// The subnormal numbers of the run's inputs (W701), each with where it is: the
+    /// options', the `.par` file's, the particle file's, then the cohesion file's.
+    pub numbers: Vec<Warning>,
 }
 
 /// Why a run cannot be set up.
@@ -135,15 +138,22 @@ pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and
 /// settles the run's settings against `scene`.
 pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, ConfigError> {
-    let particles = match particle_file(flags, par) {
+    let read = match particle_file(flags, par) {
         Some(f) => Some(particles::read_file(&f)?),
         None => None,
     };
+    let (particles, numbers) = match read {
+        Some(read) => (Some(read.particles), read.warnings),
+        None => (None, Vec::new()),
+    };
     let mut run = resolve(flags, par, scene, particles)?;
+    run.numbers.extend(numbers);
     if crate::run::optional::cohesion_on(&run.settings)
         && let Some(file) = cohesion_file(flags, par)
     {
-        run.settings.cohesion.colours = Some(crate::io::cohesion::read_file(&file)?);
+        let (colours, numbers) = crate::io::cohesion::read_file(&file)?;
+        run.settings.cohesion.colours = Some(colours);
+        run.numbers.extend(numbers);
     }
     Ok(run)
 }
@@ -302,13 +312,42 @@ pub fn resolve(
         dt_given: given_dt.is_some(),
         ..Settings::new(dt, t_end, material)
     };
+    let mut numbers = option_subnormals(flags);
+    numbers.extend(par.iter().flat_map(|p| p.subnormals.iter().cloned()));
     let run = Run {
         particles,
         settings,
         warnings,
+        numbers,
     };
     check(flags, par, &run, embedded)?;
     Ok(run)
+}
+
+/// The options given with a subnormal value (W701), in the order of `--help`.
+fn option_subnormals(flags: &Flags) -> Vec<Warning> {
+    let gravity = flags.gravity.map(|g| [g.x, g.y, g.z]).unwrap_or_default();
+    let options = [
+        ("--dt", flags.dt),
+        ("--t-end", flags.t_end),
+        ("--gravity", flags.gravity.map(|_| gravity[0])),
+        ("--gravity", flags.gravity.map(|_| gravity[1])),
+        ("--gravity", flags.gravity.map(|_| gravity[2])),
+        ("--epsn", flags.eps_n),
+        ("--epst", flags.eps_t),
+        ("--k-n", flags.k_n),
+        ("--k-t", flags.k_t),
+        ("--mu-s", flags.mu_s),
+        ("--mu-r", flags.mu_r),
+        ("--mu-t", flags.mu_t),
+    ];
+    let mut warnings = Vec::new();
+    for (option, value) in options {
+        if let Some(x) = value {
+            crate::io::subnormal(x, || option.to_string(), &mut warnings);
+        }
+    }
+    warnings
 }
 
 /// Whether the run can be computed in doubles: a finite spring, a positive finite

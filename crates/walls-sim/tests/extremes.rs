@@ -22,11 +22,15 @@ fn one(row: &str) -> String {
 fn particle_values_that_a_double_cannot_hold_are_located_errors() {
     assert_eq!(
         one("1,1e-400,0,0,1,0,0,0"),
-        "line 2: `radius` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+        "line 2: `radius` is `1e-400`, too small for a double: pkdgrav reads it as 0"
     );
-    assert!(
-        one("1,0.1,0,0,1e999,0,0,0")
-            .starts_with("line 2: `z` is `1e999`, beyond the largest double")
+    assert_eq!(
+        one("1,0.1,0,0,1e999,0,0,0"),
+        "line 2: `z` is `1e999`, too large for a double: pkdgrav reads it as infinity"
+    );
+    assert_eq!(
+        one("1,0.1,0,0,nan,0,0,0"),
+        "line 2: `z` is `nan`, not a finite number"
     );
     assert!(one("1,1e-300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
     assert!(one("1,1e300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
@@ -56,8 +60,8 @@ fn the_format_follows_the_content_when_the_extension_does_not_say() {
     assert_eq!(format_of("-", csv), Some(Format::Csv));
     assert_eq!(format_of("ss.00100", &ss), Some(Format::Ss));
     assert_eq!(format_of("p.CSV", &ss), Some(Format::Csv));
-    assert_eq!(read_bytes("p.txt", csv).unwrap().len(), 1);
-    assert_eq!(read_bytes("-", &ss).unwrap().len(), 1);
+    assert_eq!(read_bytes("p.txt", csv).unwrap().particles.len(), 1);
+    assert_eq!(read_bytes("-", &ss).unwrap().particles.len(), 1);
     assert!(
         read_bytes("p.txt", b"hello\n")
             .unwrap_err()
@@ -70,7 +74,81 @@ fn the_format_follows_the_content_when_the_extension_does_not_say() {
 fn par_values_that_underflow_are_errors() {
     assert_eq!(
         read_par("dKn = 1e-400\n").unwrap_err().to_string(),
-        "line 1: `dKn` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+        "line 1: `dKn` is `1e-400`, too small for a double: pkdgrav reads it as 0"
+    );
+    // Every real pkdgrav reads, also one of no effect on the run.
+    assert_eq!(
+        read_par("nSteps = 10\ndTheta = 1e999\n")
+            .unwrap_err()
+            .to_string(),
+        "line 2: `dTheta` is `1e999`, too large for a double: pkdgrav reads it as infinity"
+    );
+}
+
+/// The W701 warnings of `warnings`, as printed.
+fn shown(warnings: &[walls_sim::run::Warning]) -> Vec<String> {
+    warnings
+        .iter()
+        .map(|w| format!("{}: {w}", w.code()))
+        .collect()
+}
+
+#[test]
+fn subnormal_inputs_are_read_and_warned_about_where_they_are() {
+    let csv = "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,0\n1,0.1,0,0,1,2.5e-320,0,0\n";
+    let read = read_csv(csv).unwrap();
+    assert_eq!(read.particles[1].vel.x, 2.5e-320);
+    assert_eq!(
+        shown(&read.warnings),
+        [
+            "W701: line 3: `vx`: `2.5e-320` is below the smallest normal double: pkdgrav reads it as 2.5e-320, with fewer significant digits"
+        ]
+    );
+    let mut tiny = ball([0.0, 0.0, 1.0], [0.0; 3]);
+    tiny.spin.y = -1e-310;
+    let (_, read) = read_ss(&write_ss(1e-315, &[tiny])).unwrap();
+    assert_eq!(
+        shown(&read.warnings),
+        [
+            "W701: byte 0: the header's time: `1e-315` is below the smallest normal double: pkdgrav reads it as 1e-315, with fewer significant digits",
+            "W701: byte 88: particle 0's `wy`: `-1e-310` is below the smallest normal double: pkdgrav reads it as -1e-310, with fewer significant digits"
+        ]
+    );
+    let par = read_par("dDelta = 1e-3\ndMuS = 1e-310\ndTheta = 4e-320\n").unwrap();
+    assert_eq!(par.mu_s, Some(1e-310));
+    assert_eq!(
+        shown(&par.subnormals),
+        [
+            "W701: line 2: `dMuS`: `1e-310` is below the smallest normal double: pkdgrav reads it as 1e-310, with fewer significant digits",
+            "W701: line 3: `dTheta`: `4e-320` is below the smallest normal double: pkdgrav reads it as 4e-320, with fewer significant digits"
+        ]
+    );
+    let (_, numbers) = walls_sim::io::cohesion::read_cohesion("1 0\n3 1e-320\n").unwrap();
+    assert_eq!(
+        shown(&numbers),
+        [
+            "W701: line 2: the coefficient of colour 3: `1e-320` is below the smallest normal double: pkdgrav reads it as 1e-320, with fewer significant digits"
+        ]
+    );
+    // Options: a run's settings carry them, the options' first.
+    let walls = scene(FLOOR);
+    let flags = Flags {
+        gravity: Some(Vector3::new(0.0, 0.0, -1e-309)),
+        mu_s: Some(2e-310),
+        ..Flags::default()
+    };
+    let run = resolve(&flags, Some(&par), &walls, None).unwrap();
+    assert_eq!(
+        shown(&run.numbers)
+            .iter()
+            .map(|w| w.split(" is below").next().unwrap())
+            .collect::<Vec<_>>(),
+        [
+            "W701: --gravity: `-1e-309`",
+            "W701: --mu-s: `2e-310`",
+            "W701: line 2: `dMuS`: `1e-310`",
+            "W701: line 3: `dTheta`: `4e-320`"
+        ]
     );
 }
 

@@ -107,7 +107,8 @@ impl std::error::Error for Problem {}
 pub struct ReadMesh {
     /// The mesh.
     pub mesh: Mesh,
-    /// Statements that were not read (OBJ's lines, points, unknown words).
+    /// Statements that were not read (OBJ's lines, points, unknown words), and subnormal
+    /// numbers (read as they are, as pkdgrav reads them from the walls file).
     pub warnings: Vec<Problem>,
 }
 
@@ -134,10 +135,7 @@ pub fn read_mesh(path: &Path) -> Result<ReadMesh, Problem> {
 /// Reads an STL file: binary when its size is the 84 + 50 × facets its header announces,
 /// else ASCII (`solid` … `endsolid`). Identical vertices are welded into one.
 pub fn parse_stl(bytes: &[u8]) -> Result<ReadMesh, Problem> {
-    stl::parse(bytes).map(|mesh| ReadMesh {
-        mesh,
-        warnings: Vec::new(),
-    })
+    stl::parse(bytes)
 }
 
 /// Reads an OBJ file's `v` and `f` statements (polygons become fans of triangles).

@@ -16,6 +16,7 @@
 //! default the evaluator does not follow. Every error names the `.par` line.
 
 use super::{FileError, InputError, error};
+use crate::run::Warning;
 use nalgebra::Vector3;
 use std::collections::HashMap;
 
@@ -107,6 +108,9 @@ pub struct Params {
     pub optional_keys: Vec<OptionalKey>,
     /// What the evaluator does not follow, in line order.
     pub warnings: Vec<ParWarning>,
+    /// The subnormal numbers of the file's reals (W701), in line order, located in the
+    /// file (`line 4: \`dDelta\``; [`read_file`] puts the file's path before).
+    pub subnormals: Vec<Warning>,
 }
 
 /// pkdgrav's two-layer contact constants (docs/pkdgrav-physics.md §8), with its sentinels
@@ -493,15 +497,26 @@ impl<'a> Lines<'a> {
 
     /// `key`'s value as a number, with its line.
     fn real(&self, key: &str) -> Result<Option<(usize, f64)>, InputError> {
+        self.real_warned(key, &mut Vec::new())
+    }
+
+    /// `key`'s value as a number, with its line; a subnormal is warned about in
+    /// `warnings`.
+    fn real_warned(
+        &self,
+        key: &str,
+        warnings: &mut Vec<Warning>,
+    ) -> Result<Option<(usize, f64)>, InputError> {
         self.by_key
             .get(key)
             .map(|l| {
-                let x = super::number(l.value).map_err(|why| {
-                    error(
-                        format!("line {}", l.n),
-                        format!("`{key}` is `{}`, {why}", l.value),
-                    )
-                })?;
+                let x = super::number(l.value, || format!("line {}: `{key}`", l.n), warnings)
+                    .map_err(|why| {
+                        error(
+                            format!("line {}", l.n),
+                            format!("`{key}` is `{}`, {why}", l.value),
+                        )
+                    })?;
                 Ok((l.n, x))
             })
             .transpose()
@@ -603,6 +618,15 @@ impl<'a> Lines<'a> {
 /// others into its warnings ([`KEYS`]).
 pub fn read_par(text: &str) -> Result<Params, InputError> {
     let lines = Lines::split(text)?;
+    // Every real the file gives pkdgrav (a `d…` key it knows, followed or not), by the
+    // tools' rule for numbers: overflow and underflow are errors, a subnormal is read and
+    // warned about.
+    let mut subnormals = Vec::new();
+    for &(n, key) in &lines.order {
+        if key.starts_with('d') && use_of(key).is_some() && lines.line(key) == Some(n) {
+            lines.real_warned(key, &mut subnormals)?;
+        }
+    }
     let mut warnings = Vec::new();
     let mut warn = |line: Option<usize>, key: &str, message: String| {
         warnings.push(ParWarning {
@@ -784,6 +808,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
         cohesion_file: lines.text("achCohesionFile").filter(|f| !f.is_empty()),
         optional_keys,
         warnings,
+        subnormals,
     })
 }
 
@@ -837,5 +862,7 @@ fn two_layer(lines: &Lines, k_n: f64) -> Result<Option<TwoLayer>, InputError> {
 /// Reads the pkdgrav parameter file at `path`.
 pub fn read_file(path: &str) -> Result<Params, FileError> {
     let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
-    read_par(&text).map_err(|e| FileError::input(path, e))
+    let mut params = read_par(&text).map_err(|e| FileError::input(path, e))?;
+    params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
+    Ok(params)
 }

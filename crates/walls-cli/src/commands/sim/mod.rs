@@ -76,7 +76,10 @@ pub enum SimCommand {
 /// Runs the command `args` name; the exit status.
 pub fn dispatch(args: &SimArgs) -> i32 {
     match &args.command {
-        Some(SimCommand::Scene { file, time, mode }) => scene::run(file, *time, *mode),
+        Some(SimCommand::Scene { file, time, mode }) => {
+            warn_subnormal(time.map(|t| ("--time", t)));
+            scene::run(file, *time, *mode)
+        }
         Some(SimCommand::Run(args)) => run::run(args),
         Some(SimCommand::Plan(args)) => plan::run(args),
         Some(SimCommand::Preview(args)) => preview::run(args),
@@ -86,11 +89,25 @@ pub fn dispatch(args: &SimArgs) -> i32 {
     }
 }
 
-/// A value parser for a number that must obey `rule`, as the `.par` file's values must.
+/// A value parser for a number that must obey `rule`, as the `.par` file's values must,
+/// read by the tools' one rule for numbers ([`walls_keywords::number`]): overflow and
+/// underflow are refused; a subnormal is warned about by the command that takes it.
 pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |s| {
-        let x = walls_sim::io::number(s).map_err(|why| format!("`{s}` is {why}"))?;
+        let x = walls_keywords::number::read(s).map_err(|why| format!("`{s}` is {why}"))?;
         rule.check(x).map_err(|says| format!("it must be {says}"))
+    }
+}
+
+/// Warns about the options given with a subnormal value (pkdgrav would read them with
+/// fewer significant digits), as a run does (W701).
+fn warn_subnormal<'a>(options: impl IntoIterator<Item = (&'a str, f64)>) {
+    for (option, value) in options {
+        if walls_keywords::number::subnormal(value).is_some() {
+            let at = option.to_string();
+            let w = walls_sim::run::Warning::SubnormalInput { at, value };
+            crate::errln!("walls-sim: warning: {w}");
+        }
     }
 }
 

@@ -194,6 +194,8 @@ pub struct Prepared {
     pub ss_name: (String, usize),
     /// How the summary shows times: `--units` for the walls file's units.
     pub readout: walls_geometry::units::Readout,
+    /// The subnormal numbers of the inputs (W701), which come before the run's warnings.
+    pub numbers: Vec<walls_sim::run::Warning>,
 }
 
 /// Steps between outputs when neither `--every` nor the `.par` file says.
@@ -251,6 +253,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         every,
         ss_name,
         readout,
+        numbers: run.numbers,
     })
 }
 
@@ -314,6 +317,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         every,
         ss_name,
         readout,
+        numbers,
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
@@ -360,7 +364,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         .json
         .then(|| walls_sim::report::model(scene, &particles, &settings));
     let writing = args.out.is_some();
-    let outcome = run_watched(
+    let mut outcome = run_watched(
         scene,
         particles,
         &settings,
@@ -393,6 +397,8 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     if let Some(bar) = progress {
         bar.finish_and_clear();
     }
+    // The inputs' numbers are warned about first, with the run's warnings.
+    outcome.warnings.splice(0..0, numbers);
     if let Some(out) = trajectory {
         written = written.and_then(|()| out.finish());
     }

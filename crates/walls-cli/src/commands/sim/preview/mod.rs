@@ -86,6 +86,21 @@ pub fn run(args: &PreviewArgs) -> i32 {
 }
 
 fn draw(args: &PreviewArgs) -> Result<i32, String> {
+    let vector = |name: &'static str, v: &Option<Vec<f64>>| {
+        v.iter()
+            .flatten()
+            .map(move |&x| (name, x))
+            .collect::<Vec<_>>()
+    };
+    let options = [("--time", args.time), ("--seconds", args.seconds)];
+    let options = options
+        .into_iter()
+        .chain(args.until.map(|t| ("--until", t)));
+    super::warn_subnormal(
+        options
+            .chain(vector("--view", &args.view))
+            .chain(vector("--up", &args.up)),
+    );
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
