@@ -21,13 +21,20 @@
 //!
 //! [`read`] classifies a number's text, [`check`] a value already read, and
 //! [`subnormal`] says whether a value read deserves the warning; [`Problem`]'s and
-//! [`Subnormal`]'s texts are the messages every reader gives after "`TEXT` is ".
+//! [`Subnormal`]'s texts are the messages every reader gives after "`TEXT` is ". A count
+//! derived from numbers (steps of a run) fits up to [`EXACT_COUNT`].
 
 use std::fmt;
 
 /// The smallest normal double, about 2.2e-308: below it (and above 0) a double is
 /// subnormal.
 pub const SMALLEST_NORMAL: f64 = f64::MIN_POSITIVE;
+
+/// The most a count derived from numbers may be (steps from a time span and a timestep,
+/// a `.par` file's step numbers): 2⁵³, below which every whole number is a double, so
+/// that a step's time `step · dt` starts from the step exactly. A count beyond it (or
+/// beyond a `u64`, or from a quotient that is not finite) does not fit and is refused.
+pub const EXACT_COUNT: u64 = 1 << 53;
 
 /// Why a number is refused.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

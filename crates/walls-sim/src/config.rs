@@ -26,6 +26,7 @@ use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings,
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
+use walls_keywords::number::EXACT_COUNT;
 
 type Vec3 = Vector3<f64>;
 
@@ -402,19 +403,25 @@ fn check(
             s.dt, m.k_n
         ));
     }
+    let t_end_from = if flags.t_end.is_some() {
+        "--t-end"
+    } else if s.last_step.is_some() {
+        "the .par file's nSteps times the timestep"
+    } else {
+        "the default, from the scene"
+    };
     if !(s.t_end.is_finite() && s.t_end >= 0.0) {
-        return fail(format!("the end time comes to {:e}: give --t-end", s.t_end));
+        return fail(format!(
+            "the end time comes to {:e} ({t_end_from}): give --t-end",
+            s.t_end
+        ));
     }
+    steps_fit(s, dt_from, t_end_from)?;
     let limit = flags.max_steps.unwrap_or(MAX_STEPS);
     let steps = s.end_step().saturating_sub(s.start_step);
     if steps > limit {
-        let count = if steps == u64::MAX {
-            format!("{:e} ", (s.t_end - s.t_start()) / s.dt)
-        } else {
-            format!("{steps} ")
-        };
         return fail(format!(
-            "the run would take {count}steps of {:e} ({dt_from}) to t = {:e}, more than the limit of {limit}: give a longer --dt or a shorter --t-end, or raise the limit with --max-steps",
+            "the run would take {steps} steps of {:e} ({dt_from}) to t = {:e} ({t_end_from}), more than the limit of {limit}: give a longer --dt or a shorter --t-end, or raise the limit with --max-steps",
             s.dt, s.t_end
         ));
     }
@@ -438,6 +445,39 @@ fn check(
                 m.k_n, s.dt
             ));
         }
+    }
+    Ok(())
+}
+
+/// Whether the run's steps can be counted: its step numbers, and a run of time's count
+/// t_end/dt, at most [`EXACT_COUNT`] (2⁵³: the step numbers are `u64`s and a step's time
+/// is `step · dt` in doubles, exact in the step up to there). A quotient that is not
+/// finite (`--dt 1e-320`: 6/1e-320 is infinite) or beyond it is refused, naming where the
+/// timestep and the end time came from, whatever `--max-steps` says.
+fn steps_fit(s: &Settings, dt_from: &str, t_end_from: &str) -> Result<(), ConfigError> {
+    let fail = |why: String| Err(ConfigError::Unusable(why));
+    let beyond = format!(
+        "more than the {EXACT_COUNT} steps a run can count exactly (2^53: its step numbers are whole numbers and a step's time is step·dt in doubles)"
+    );
+    for (key, step) in [("iStartStep", Some(s.start_step)), ("nSteps", s.last_step)] {
+        if let Some(n) = step.filter(|&n| n > EXACT_COUNT) {
+            return fail(format!(
+                "the .par file's `{key}` is {n}, {beyond}: give at most {EXACT_COUNT}"
+            ));
+        }
+    }
+    let count = s.t_end / s.dt;
+    let fits = count.is_finite() && count <= EXACT_COUNT as f64;
+    if s.last_step.is_none() && !fits {
+        let count = if count.is_finite() {
+            format!("{count:e}")
+        } else {
+            "more than 1.8e308".to_string()
+        };
+        return fail(format!(
+            "the run would take {count} steps of {:e} ({dt_from}) to t = {:e} ({t_end_from}), {beyond}: give a longer --dt or a shorter --t-end",
+            s.dt, s.t_end
+        ));
     }
     Ok(())
 }

@@ -4,8 +4,9 @@
 //! stops being finite stops with a reason instead of panicking.
 
 use nalgebra::Vector3;
+use walls_keywords::number::EXACT_COUNT;
 use walls_sim::config::{ConfigError, Flags, MAX_STEPS, resolve};
-use walls_sim::io::par::read_par;
+use walls_sim::io::par::{Params, read_par};
 use walls_sim::io::particles::{Format, format_of, read_bytes, read_csv, read_ss, write_ss};
 use walls_sim::run::{Settings, Stop, run, run_watched};
 use walls_test_support::{ball, scene};
@@ -234,20 +235,122 @@ fn runs_beyond_the_step_limit_are_refused_with_the_count() {
         ..Flags::default()
     };
     let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
-    assert!(
-        why.starts_with("the run would take 9.999999999999999e299 steps of 1e-300 (--dt)"),
-        "{why}"
+    assert_eq!(
+        why,
+        "the run would take 9.999999999999999e299 steps of 1e-300 (--dt) to t = 1e0 (--t-end), more than the 9007199254740992 steps a run can count exactly (2^53: its step numbers are whole numbers and a step's time is step·dt in doubles): give a longer --dt or a shorter --t-end"
     );
-    assert!(why.contains(&format!("the limit of {MAX_STEPS}")) && why.contains("--max-steps"));
     let flags = Flags {
         dt: Some(0.01),
         t_end: Some(1.0),
         max_steps: Some(99),
         ..Flags::default()
     };
-    assert!(
-        refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])])
-            .starts_with("the run would take 100 steps")
+    let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert!(why.starts_with("the run would take 100 steps"), "{why}");
+    assert!(why.contains("the limit of 99") && why.contains("--max-steps"));
+    let flags = Flags {
+        dt: Some(1e-9),
+        t_end: Some(1.0),
+        ..Flags::default()
+    };
+    let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert!(why.contains(&format!("the limit of {MAX_STEPS}")), "{why}");
+}
+
+#[test]
+fn step_counts_that_do_not_fit_are_refused_whatever_the_limit() {
+    // t_end/dt beyond a double was NaN once rounded, and the run took 0 steps with
+    // exit 0 and no reason ("t = 0 after 0 steps", "stopped": null).
+    let ball = || vec![ball([0.0, 0.0, 1.0], [0.0; 3])];
+    for (dt, t_end) in [(Some(1e-320), None), (Some(1e-10), Some(1e299))] {
+        let flags = Flags {
+            dt,
+            t_end,
+            max_steps: Some(u64::MAX),
+            ..Flags::default()
+        };
+        let why = refusal(&flags, ball());
+        assert!(
+            why.starts_with("the run would take more than 1.8e308 steps of ")
+                && why.contains(" (--dt) to t = ")
+                && why.contains("more than the 9007199254740992 steps a run can count exactly"),
+            "{why}"
+        );
+    }
+    // Beyond 2^53 but within a u64: the times would not be exact.
+    let flags = Flags {
+        dt: Some(1e-16),
+        t_end: Some(1.0),
+        max_steps: Some(u64::MAX),
+        ..Flags::default()
+    };
+    assert!(refusal(&flags, ball()).starts_with("the run would take 1e16 steps of 1e-16"));
+    // Exactly 2^53 fits (and then meets the limit).
+    let flags = Flags {
+        dt: Some(1.0),
+        t_end: Some(2f64.powi(53)),
+        ..Flags::default()
+    };
+    assert!(refusal(&flags, ball()).contains("more than the limit of 100000000"));
+    // Step numbers given in code, counted exactly.
+    let walls = scene(FLOOR);
+    for (params, says) in [
+        (
+            Params {
+                dt: Some(1e-3),
+                steps: Some(EXACT_COUNT + 1),
+                ..Params::default()
+            },
+            "the .par file's `nSteps` is 9007199254740993, more than the 9007199254740992 steps",
+        ),
+        (
+            Params {
+                dt: Some(1e-3),
+                steps: Some(10),
+                start_step: Some(u64::MAX),
+                ..Params::default()
+            },
+            "the .par file's `iStartStep` is 18446744073709551615, more than",
+        ),
+        (
+            read_par("dDelta = 1e300\nnSteps = 2147483647\n").unwrap(),
+            "the end time comes to inf (the .par file's nSteps times the timestep): give --t-end",
+        ),
+    ] {
+        match resolve(&Flags::default(), Some(&params), &walls, Some(ball())) {
+            Err(ConfigError::Unusable(why)) => assert!(why.starts_with(says), "{why}"),
+            other => panic!("not refused: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn par_integers_beyond_a_c_int_are_errors() {
+    // pkdgrav reads them into C ints with %d, which would take another number.
+    for (text, says) in [
+        (
+            "nSteps = 2147483648\n",
+            "line 1: `nSteps` is `2147483648`, beyond a C int, which pkdgrav reads it into with %d (it would read another number): give at most 2147483647",
+        ),
+        (
+            "iStartStep = 99999999999999999999\n",
+            "line 1: `iStartStep` is `99999999999999999999`, beyond a C int",
+        ),
+        (
+            "bWallsEdgeDetect = 4294967296\n",
+            "line 1: `bWallsEdgeDetect` is `4294967296`, beyond a C int",
+        ),
+        (
+            "iCohesionModel = -99999999999999999999\n",
+            "line 1: `iCohesionModel` is `-99999999999999999999`, beyond a C int",
+        ),
+    ] {
+        let why = read_par(text).unwrap_err().to_string();
+        assert!(why.starts_with(says), "{why}");
+    }
+    assert_eq!(
+        read_par("nSteps = 2147483647\n").unwrap().steps,
+        Some(2147483647)
     );
 }
 
@@ -255,6 +358,10 @@ fn runs_beyond_the_step_limit_are_refused_with_the_count() {
 fn a_bad_timestep_stops_before_the_first_step_instead_of_panicking() {
     let walls = scene(FLOOR);
     let settings = Settings::new(0.0, 1.0, walls_sim::config::pkdgrav_material(1e5));
+    let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
+    assert_eq!((out.steps, out.stopped), (0, Some(Stop::Timestep)));
+    // Nor with a step count beyond a double (it was 0 steps and no reason).
+    let settings = Settings::new(1e-320, 1.0, walls_sim::config::pkdgrav_material(1e5));
     let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
     assert_eq!((out.steps, out.stopped), (0, Some(Stop::Timestep)));
 }

@@ -534,12 +534,19 @@ impl<'a> Lines<'a> {
                 let digits = text[sign..]
                     .find(|c: char| !c.is_ascii_digit())
                     .map_or(text.len(), |k| k + sign);
-                let x = text[..digits].parse::<i64>().map_err(|_| {
-                    error(
-                        format!("line {}", l.n),
+                let at = || format!("line {}", l.n);
+                let x = text[..digits].parse::<i64>().map_err(|e| match e.kind() {
+                    std::num::IntErrorKind::PosOverflow | std::num::IntErrorKind::NegOverflow => {
+                        error(at(), beyond_int(key, text))
+                    }
+                    _ => error(
+                        at(),
                         format!("`{key}` is `{text}`; pkdgrav reads a whole number here"),
-                    )
+                    ),
                 })?;
+                if i32::try_from(x).is_err() {
+                    return Err(error(at(), beyond_int(key, text)));
+                }
                 Ok((l.n, x, digits == text.len()))
             })
             .transpose()
@@ -571,15 +578,21 @@ impl<'a> Lines<'a> {
         self.by_key
             .get(key)
             .map(|l| {
-                l.value.parse::<u64>().map_err(|_| {
-                    error(
-                        format!("line {}", l.n),
+                let at = || format!("line {}", l.n);
+                match l.value.parse::<u64>() {
+                    Ok(n) if n <= i32::MAX as u64 => Ok(n),
+                    Ok(_) => Err(error(at(), beyond_int(key, l.value))),
+                    Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
+                        Err(error(at(), beyond_int(key, l.value)))
+                    }
+                    Err(_) => Err(error(
+                        at(),
                         format!(
                             "`{key}` is `{}`; it must be a whole number, 0 or more",
                             l.value
                         ),
-                    )
-                })
+                    )),
+                }
             })
             .transpose()
     }
@@ -612,6 +625,15 @@ impl<'a> Lines<'a> {
             Some((_, x)) => Ok(Some(x)),
         }
     }
+}
+
+/// The error for an integer key whose value a C `int` cannot hold: pkdgrav reads it
+/// with `%d` and would take another number without a word.
+fn beyond_int(key: &str, text: &str) -> String {
+    format!(
+        "`{key}` is `{text}`, beyond a C int, which pkdgrav reads it into with %d (it would read another number): give at most {}",
+        i32::MAX
+    )
 }
 
 /// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the

@@ -190,14 +190,19 @@ impl Settings {
     }
 
     /// The number of the run's last step: `last_step`, else the first whose time
-    /// reaches `t_end` (up to a billionth of the count: round-off, not a step).
+    /// reaches `t_end` (up to a billionth of the count: round-off, not a step);
+    /// `u64::MAX` when t_end/dt is not a finite number (NaN or beyond a double), which
+    /// `config` refuses with the options that made it.
     pub fn end_step(&self) -> u64 {
         match self.last_step {
             Some(last) => last,
             None => {
                 let x = self.t_end / self.dt;
-                let n = (x - 1e-9 * x.max(1.0)).ceil().max(0.0);
-                if n.is_finite() { n as u64 } else { u64::MAX }
+                if !x.is_finite() {
+                    // (inf − 1e-9·inf is NaN, which `max(0.0)` would make 0 steps.)
+                    return u64::MAX;
+                }
+                (x - 1e-9 * x.max(1.0)).ceil().max(0.0) as u64
             }
         }
     }
@@ -408,7 +413,9 @@ pub enum Stop {
     NotFinite(usize),
     /// The caller asked the run to stop (an interrupt).
     Interrupted,
-    /// The timestep is not a positive finite number: the run could not start.
+    /// The timestep is not a positive finite number, or the steps it makes cannot be
+    /// counted (more than [`walls_keywords::number::EXACT_COUNT`]): the run could not
+    /// start.
     Timestep,
 }
 
@@ -442,7 +449,10 @@ impl std::fmt::Display for Stop {
                 "particle {i}'s position, velocity or spin became infinite or NaN (the values outgrew a double: shorten the timestep or check the input's scale)"
             ),
             Stop::Interrupted => write!(f, "interrupted (Ctrl-C, SIGTERM or SIGHUP)"),
-            Stop::Timestep => write!(f, "the timestep is not a positive finite number"),
+            Stop::Timestep => write!(
+                f,
+                "the timestep is not a positive finite number, or makes more steps than a run can count (2^53)"
+            ),
         }
     }
 }
@@ -515,8 +525,8 @@ pub fn run_observed(
 /// [`run_observed`], asking `interrupted` after every step whether to stop there
 /// ([`Stop::Interrupted`]). A run also stops when a particle's numbers stop being
 /// finite ([`Stop::NotFinite`]), and does not start when the timestep is not a
-/// positive finite number ([`Stop::Timestep`]; callers check it first with
-/// `config::check`).
+/// positive finite number or its steps cannot be counted exactly ([`Stop::Timestep`];
+/// callers check both first with `config::check`).
 ///
 /// A run of 1,024 particles or more, with more than one thread in rayon's pool, runs on
 /// one of the pool's threads, `observe` and `interrupted` included, while the calling
@@ -532,7 +542,9 @@ pub fn run_watched(
 ) -> Outcome {
     let dt = settings.dt;
     let t0 = settings.t_start();
-    if !(dt > 0.0 && dt.is_finite()) {
+    let countable = |step: u64| step <= walls_keywords::number::EXACT_COUNT;
+    let steps_fit = countable(settings.start_step) && countable(settings.end_step());
+    if !(dt > 0.0 && dt.is_finite() && steps_fit) {
         let states: Vec<State> = particles.into_iter().map(State::from).collect();
         let e = energy(&states, &settings.gravity);
         return Outcome {

@@ -124,6 +124,14 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         }
         None => None,
     };
+    if let Some(until) = args.until
+        && !(until - args.time).is_finite()
+    {
+        return Err(format!(
+            "--time {:e} and --until {until:e} are farther apart than a double holds (about 1.8e308): the frames' times cannot be computed",
+            args.time
+        ));
+    }
     let series = snapshots.len() > 1;
     if series && (args.frames > 1 || args.until.is_some()) {
         return Err(
