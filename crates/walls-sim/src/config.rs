@@ -382,7 +382,7 @@ fn check(
     } else if par.is_some_and(|p| p.k_n.is_some()) {
         "the .par file's dKn"
     } else {
-        "derived from the particles' size and speed"
+        "the default, derived from the particles' size and speed"
     };
     if !(m.k_n.is_finite() && m.k_t.is_finite()) {
         return fail(format!(

@@ -222,7 +222,7 @@ fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
         balls(),
     );
     assert!(
-        g.starts_with("the spring constant k_n comes to inf (derived"),
+        g.starts_with("the spring constant k_n comes to inf (the default, derived"),
         "{g}"
     );
 }

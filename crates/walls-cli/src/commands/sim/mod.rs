@@ -148,7 +148,9 @@ fn exit_status(errors: usize) -> i32 {
 
 /// Reads and checks the walls file at `path` in `mode`, with its number of errors;
 /// when it has some, says so, and that the command goes on `doing` ("running",
-/// "drawing") what could be resolved.
+/// "drawing") what could be resolved. A length or speed whose squares overflow (C121)
+/// stays in the resolved scene, and a run or picture of it would compute infinities
+/// and NaN: such a file is refused.
 fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, usize), String> {
     let options = Options {
         mode,
@@ -174,6 +176,13 @@ fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, u
         // Standard error is only for people here; if it is gone there is nobody to tell.
         let _ = walls_diagnostics::render::human(&mut err, &report, color)
             .and_then(|()| std::io::Write::flush(&mut err));
+        let overflow = &walls_model::codes::ARITHMETIC_OVERFLOW;
+        if let Some(d) = errors.iter().find(|d| d.code.id == overflow.id) {
+            return Err(format!(
+                "{path}: {} ({}, shown above): nothing can be computed from it",
+                d.message, overflow.id
+            ));
+        }
         let mode = match mode {
             ContactModel::Ssdem => "ssdem",
             ContactModel::Hsdem => "hsdem",
