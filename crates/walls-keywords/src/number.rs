@@ -131,8 +131,14 @@ fn zero_as_written(text: &str) -> bool {
 /// only with a negative exponent or with 300 characters or more. A reader that only
 /// looks for underflow and subnormals (the walls-file check, which reads every value
 /// again later) passes over the others without parsing them.
+#[inline]
 pub fn may_be_tiny(text: &str) -> bool {
-    text.contains("e-") || text.contains("E-") || text.len() >= 300
+    // A decimal's only `-` after its first byte follows its `e` or `E`.
+    let b = text.as_bytes();
+    b.len() >= 300
+        || b.iter()
+            .rposition(|&c| c == b'-')
+            .is_some_and(|i| i > 0 && matches!(b[i - 1], b'e' | b'E'))
 }
 
 /// A value already read (from a binary file, a program's argument): refused if it is not
@@ -188,10 +194,15 @@ mod tests {
 
     #[test]
     fn only_a_tiny_text_needs_parsing_for_tininess() {
-        for text in ["1e-320", "1E-400", &format!("0.{}1", "0".repeat(330))] {
+        for text in [
+            "1e-320",
+            "1E-400",
+            "-2.5e-310",
+            &format!("0.{}1", "0".repeat(330)),
+        ] {
             assert!(may_be_tiny(text), "{text}");
         }
-        for text in ["1e300", "0.5", "12345"] {
+        for text in ["1e300", "0.5", "12345", "-0.25", "-1e5", "-1"] {
             assert!(!may_be_tiny(text), "{text}");
             assert!(read(text).is_ok_and(|x| x == 0.0 || x.abs() > 1e-300));
         }

@@ -8,7 +8,7 @@ use walls_keywords::number::EXACT_COUNT;
 use walls_sim::config::{ConfigError, Flags, MAX_STEPS, resolve};
 use walls_sim::io::par::{Params, read_par};
 use walls_sim::io::particles::{Format, format_of, read_bytes, read_csv, read_ss, write_ss};
-use walls_sim::run::{Settings, Stop, run, run_watched};
+use walls_sim::run::{ContactModel, Settings, Stop, run, run_watched};
 use walls_test_support::{ball, scene};
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
@@ -374,6 +374,50 @@ fn a_state_that_overflows_stops_the_run_with_a_reason() {
     let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
     assert_eq!(out.stopped, Some(Stop::NotFinite(0)));
     assert!(out.steps < 100);
+}
+
+#[test]
+fn a_run_shows_no_step_whose_numbers_overflowed() {
+    // The observer (which writes particles.csv, the .ss outputs and WALLSREACT files)
+    // saw the step that overflowed, and wrote `inf` and `NaN` into them.
+    for model in [ContactModel::Ssdem, ContactModel::Hsdem] {
+        let walls = scene(FLOOR);
+        let mut settings = Settings::new(1e100, 1e102, walls_sim::config::pkdgrav_material(1e5));
+        settings.build = walls_sim::build::Build::default_for(model);
+        settings.gravity = Vector3::new(1e150, 0.0, 0.0);
+        let mut seen = Vec::new();
+        let out = run_watched(
+            &walls,
+            vec![ball([0.0, 0.0, 1.0], [0.0; 3])],
+            &settings,
+            &mut |step, t, snapshot| {
+                let (states, _) = snapshot.look();
+                let finite = states.iter().all(|s| {
+                    let p = &s.particle;
+                    p.pos
+                        .iter()
+                        .chain(&p.vel)
+                        .chain(&p.spin)
+                        .all(|x| x.is_finite())
+                });
+                seen.push((step, t.is_finite() && finite));
+            },
+            &|| false,
+        );
+        assert_eq!(out.stopped, Some(Stop::NotFinite(0)), "{model:?}");
+        assert!(
+            seen.iter().all(|&(_, finite)| finite) && seen.len() as u64 + 1 == out.steps,
+            "{model:?}: {seen:?} of {} steps",
+            out.steps
+        );
+        // The report writes no number that is not finite: what overflowed is null.
+        let report = walls_sim::report::Report::new(Vec::new(), &settings, &out);
+        let mut json = Vec::new();
+        report.write_json(&mut json).unwrap();
+        let json = String::from_utf8(json).unwrap();
+        assert!(!json.contains("NaN") && !json.contains("inf"), "{json}");
+        assert!(json.contains("\"stopped\": \"not-finite\""));
+    }
 }
 
 #[test]

@@ -57,20 +57,25 @@ pub const LIMIT: f64 = 1e150;
 
 /// Reports each length and speed of `wall` (of type `t`) beyond [`LIMIT`].
 pub(crate) fn check(cx: &mut Checker, wall: &Wall, t: WallType) {
+    // One pass over what the wall sets; most values are small and end the look there.
+    let mut rates = false;
     for (k, setting) in wall.settings.iter() {
+        rates |= matches!(k, Keyword::OscFreq | Keyword::AngSpeed);
+        let size = match setting.value {
+            Value::Number(x) => x.abs(),
+            Value::Vector(v) => v.x.abs().max(v.y.abs()).max(v.z.abs()),
+            _ => continue,
+        };
+        if size <= LIMIT {
+            continue;
+        }
         let what = match k.dimension() {
             Dimension::Length => "length",
             Dimension::Velocity => "speed",
             _ => continue,
         };
-        let size = match setting.value {
-            Value::Number(x) => x.abs(),
-            Value::Vector(v) => v.amax(),
-            _ => continue,
-        };
         // A token the type ignores is C201's.
-        if size > LIMIT
-            && k.applies_to().contains(t)
+        if k.applies_to().contains(t)
             && let Some(span) = setting.source.span()
         {
             let message = format!(
@@ -79,6 +84,9 @@ pub(crate) fn check(cx: &mut Checker, wall: &Wall, t: WallType) {
             );
             report(cx, span, message, what);
         }
+    }
+    if !rates {
+        return;
     }
     motion(cx, wall, t, Keyword::OscAmpl, Keyword::OscFreq);
     if matches!(

@@ -411,6 +411,9 @@ pub enum Stop {
     /// A particle's position, velocity or spin became infinite or NaN (the particle's
     /// index): the numbers outgrew what a double holds.
     NotFinite(usize),
+    /// A reactive assembly's position, velocity, rotation or load became infinite or NaN
+    /// (its `assembly` number).
+    AssemblyNotFinite(i64),
     /// The caller asked the run to stop (an interrupt).
     Interrupted,
     /// The timestep is not a positive finite number, or the steps it makes cannot be
@@ -426,7 +429,7 @@ impl Stop {
             Stop::Overlap => "overlap",
             Stop::SingleMemberAggregate => "single-member-aggregate",
             Stop::AggregateHeld => "aggregate-held",
-            Stop::NotFinite(_) => "not-finite",
+            Stop::NotFinite(_) | Stop::AssemblyNotFinite(_) => "not-finite",
             Stop::Interrupted => "interrupted",
             Stop::Timestep => "timestep",
         }
@@ -448,6 +451,10 @@ impl std::fmt::Display for Stop {
                 f,
                 "particle {i}'s position, velocity or spin became infinite or NaN (the values outgrew a double: shorten the timestep or check the input's scale)"
             ),
+            Stop::AssemblyNotFinite(n) => write!(
+                f,
+                "reactive assembly {n}'s position, velocity, rotation or load became infinite or NaN (the values outgrew a double: shorten the timestep or check the walls' masses and moments)"
+            ),
             Stop::Interrupted => write!(f, "interrupted (Ctrl-C, SIGTERM or SIGHUP)"),
             Stop::Timestep => write!(
                 f,
@@ -462,14 +469,9 @@ fn first_not_finite(states: &[State]) -> Option<usize> {
     states.iter().position(|s| !s.finite())
 }
 
-/// How a stepper asks whether to go on after a step: [`Stop::NotFinite`] when a
-/// particle's numbers overflowed, [`Stop::Interrupted`] when `interrupted` says so.
-fn halt(states: &[State], interrupted: Interrupted) -> Option<Stop> {
-    halt_at(first_not_finite(states), interrupted)
-}
-
-/// [`halt`] when the stepper has already found the first particle whose numbers
-/// overflowed, if any.
+/// How a stepper asks whether to go on after a step, the first particle whose numbers
+/// overflowed being `not_finite` (if any): [`Stop::NotFinite`] then,
+/// [`Stop::Interrupted`] when `interrupted` says so.
 fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> {
     if let Some(i) = not_finite {
         return Some(Stop::NotFinite(i));
@@ -479,8 +481,10 @@ fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> 
 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
 /// from [`Settings::start_step`]), the time, and the step's [`Snapshot`] of the particles
-/// and the reactive walls' assemblies. It is `Send`: a run on several threads steps on
-/// one of rayon's, and calls it there (`pool::on_the_pool`).
+/// and the reactive walls' assemblies; not after a step whose numbers overflowed (the run
+/// stops there, [`Stop::NotFinite`], [`Stop::AssemblyNotFinite`]), so that what it
+/// writes is finite. It is `Send`: a run on several threads steps on one of rayon's, and
+/// calls it there (`pool::on_the_pool`).
 pub type Observer<'a> = &'a mut (dyn FnMut(u64, f64, &mut dyn Snapshot) + Send);
 
 /// Whether a run is asked to stop after a step ([`run_watched`]); `Sync` for the same
