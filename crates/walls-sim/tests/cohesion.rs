@@ -206,8 +206,13 @@ fn the_cohesion_files_errors_name_the_file_and_the_line() {
     );
     // A huge announced count is an error about the file, not memory reserved for it.
     assert_eq!(
-        err("4444444444 0 444444444 0 444444444"),
+        err("444444444 0 444444444 0 444444444"),
         "line 1: the file ends where the coefficient of colour 444444444 should be"
+    );
+    // A count beyond a C int, which pkdgrav would read as another number.
+    assert_eq!(
+        err("4444444444 0 444444444 0 444444444"),
+        "line 1: the number of colours is `4444444444`, beyond a C int, which pkdgrav reads it into (it would read another number): give at most 2147483647"
     );
     assert_eq!(
         err("2\n1\n0 1e-3\n"),

@@ -37,6 +37,16 @@ pub fn read_cohesion(text: &str) -> Result<(Colours, Vec<Warning>), InputError> 
             format!("the number of colours is `{n_word}`, not a whole number of 0 or more"),
         )
     })?;
+    // pkdgrav reads the count into a C int, which would hold another number.
+    if count > i32::MAX as usize {
+        return Err(error(
+            format!("line {n_line}"),
+            format!(
+                "the number of colours is `{n_word}`, beyond a C int, which pkdgrav reads it into (it would read another number): give at most {}",
+                i32::MAX
+            ),
+        ));
+    }
     let (r_line, r_word) = take("the rule (0 none, 1 mean, 2 max, 3 min)")?;
     let rule = r_word
         .parse::<i64>()
