@@ -362,14 +362,13 @@ fn real(keyword: &'static str, given: &Given) -> Option<Result<f64, BuildError>>
         Given::Int(i) => i as f64,
         _ => return None,
     };
-    Some(if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(BuildError::NotFinite {
+    // The tools' one rule for a value already read (a subnormal gets the file's S110).
+    Some(
+        walls_keywords::number::check(x).map_err(|_| BuildError::NotFinite {
             keyword,
             value: number(x),
-        })
-    })
+        }),
+    )
 }
 
 /// `x` as the shortest decimal that reads back as exactly `x` (Rust's float formatting
