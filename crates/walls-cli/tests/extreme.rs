@@ -378,6 +378,12 @@ fn numbers_follow_one_rule_in_every_input() {
             "m.obj:3: `1e999` is too large for a double".into(),
         ),
         (
+            s("walls-lint --min-radius 1e-400 w.walls"),
+            vec![floor()],
+            2,
+            "`1e-400` is too small for a double".into(),
+        ),
+        (
             s("walls-mesh m.obj -o m.walls --set epsn=1e-400"),
             vec![obj("0")],
             2,
