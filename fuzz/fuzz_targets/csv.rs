@@ -9,7 +9,7 @@ use walls_sim::io::{cohesion, particles, trajectory};
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
     if let Ok(read) = particles::read_csv(&text) {
-        for p in &read {
+        for p in &read.particles {
             assert!(p.mass > 0.0 && p.mass.is_finite(), "mass {}", p.mass);
             assert!(p.radius > 0.0 && p.radius.is_finite(), "radius {}", p.radius);
             assert!(p.pos.iter().chain(&p.vel).chain(&p.spin).all(|x| x.is_finite()));

@@ -7,9 +7,10 @@ use libfuzzer_sys::fuzz_target;
 use walls_sim::io::particles::{read_ss, write_ss};
 
 fuzz_target!(|data: &[u8]| {
-    let Ok((time, particles)) = read_ss(data) else {
+    let Ok((time, read)) = read_ss(data) else {
         return;
     };
+    let particles = read.particles;
     for p in &particles {
         assert!(p.mass > 0.0 && p.mass.is_finite(), "mass {}", p.mass);
         assert!(p.radius > 0.0 && p.radius.is_finite(), "radius {}", p.radius);

@@ -23,25 +23,34 @@ pub enum Given {
 
 impl Given {
     /// A value as written on a command line (`--set KEY=VALUE`): a whole number, a real,
-    /// three of them separated by commas or spaces (a vector), or a word.
-    pub fn parse(text: &str) -> Given {
+    /// three of them separated by commas or spaces (a vector), or a word. A real is read
+    /// by the tools' one rule for numbers ([`walls_keywords::number`]): one that is not
+    /// finite, overflows or underflows (`1e-400`, which pkdgrav would read as 0) is
+    /// refused, with what is wrong (a subnormal is read; the file gets its S110 warning).
+    pub fn parse(text: &str) -> Result<Given, String> {
+        use walls_keywords::number::{self, Problem};
         let parts: Vec<&str> = text
             .split([',', ' ', '\t'])
             .filter(|p| !p.is_empty())
             .collect();
         let one = |p: &str| {
             if let Ok(i) = p.parse::<i64>() {
-                Given::Int(i)
-            } else if let Ok(x) = p.parse::<f64>() {
-                Given::Float(x)
-            } else {
-                Given::Text(p.to_string())
+                return Ok(Given::Int(i));
+            }
+            match number::read(p) {
+                Ok(x) => Ok(Given::Float(x)),
+                Err(Problem::NotANumber) => Ok(Given::Text(p.to_string())),
+                Err(why) => Err(format!("`{p}` is {why}")),
             }
         };
         match parts.as_slice() {
             [p] => one(p),
-            [] => Given::Text(String::new()),
-            _ => Given::List(parts.into_iter().map(one).collect()),
+            [] => Ok(Given::Text(String::new())),
+            _ => parts
+                .into_iter()
+                .map(one)
+                .collect::<Result<_, _>>()
+                .map(Given::List),
         }
     }
 
@@ -353,14 +362,13 @@ fn real(keyword: &'static str, given: &Given) -> Option<Result<f64, BuildError>>
         Given::Int(i) => i as f64,
         _ => return None,
     };
-    Some(if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(BuildError::NotFinite {
+    // The tools' one rule for a value already read (a subnormal gets the file's S110).
+    Some(
+        walls_keywords::number::check(x).map_err(|_| BuildError::NotFinite {
             keyword,
             value: number(x),
-        })
-    })
+        }),
+    )
 }
 
 /// `x` as the shortest decimal that reads back as exactly `x` (Rust's float formatting
@@ -396,12 +404,31 @@ mod tests {
 
     #[test]
     fn command_line_values_parse_as_numbers_vectors_or_words() {
-        assert_eq!(Given::parse("3"), Given::Int(3));
-        assert_eq!(Given::parse("0.5"), Given::Float(0.5));
+        assert_eq!(Given::parse("3"), Ok(Given::Int(3)));
+        assert_eq!(Given::parse("0.5"), Ok(Given::Float(0.5)));
         assert_eq!(
             Given::parse("1,0, -2.5"),
-            Given::List(vec![Given::Int(1), Given::Int(0), Given::Float(-2.5)])
+            Ok(Given::List(vec![
+                Given::Int(1),
+                Given::Int(0),
+                Given::Float(-2.5)
+            ]))
         );
-        assert_eq!(Given::parse("disk"), Given::Text("disk".into()));
+        assert_eq!(Given::parse("disk"), Ok(Given::Text("disk".into())));
+        // The one rule for numbers: `1e-400` was 0 (`--set epsn=1e-400` made a sticky
+        // wall), `inf` a word.
+        assert_eq!(
+            Given::parse("1e-400"),
+            Err("`1e-400` is too small for a double: pkdgrav reads it as 0".into())
+        );
+        assert_eq!(
+            Given::parse("0,0,1e999"),
+            Err("`1e999` is too large for a double: pkdgrav reads it as infinity".into())
+        );
+        assert_eq!(
+            Given::parse("inf"),
+            Err("`inf` is not a finite number".into())
+        );
+        assert_eq!(Given::parse("1e-320"), Ok(Given::Float(1e-320)));
     }
 }

@@ -165,12 +165,13 @@ fn numbers_read_back_exactly() {
         f64::MAX,
         4.9e-324 * 1e16,
     ];
+    // A vector no rule limits (an origin of f64::MAX is C121's, whose squares overflow).
     let walls: Vec<Wall> = values
         .chunks(3)
         .map(|v| {
             Wall::of_type("plane")
                 .unwrap()
-                .with("origin", [v[0], v[1], v[2]])
+                .with("rot-vec", [v[0], v[1], v[2]])
                 .unwrap()
         })
         .collect();
@@ -181,7 +182,7 @@ fn numbers_read_back_exactly() {
         .walls
         .iter()
         .flat_map(|w| {
-            let v = w.vector(walls_keywords::Keyword::Origin);
+            let v = w.vector(walls_keywords::Keyword::RotVec);
             [v.x, v.y, v.z]
         })
         .collect();
@@ -194,7 +195,7 @@ fn numbers_read_back_exactly() {
     assert!(
         dumped
             .text
-            .contains("origin 0.30000000000000004 1e-300 6.68e-14\n")
+            .contains("rot-vec 0.30000000000000004 1e-300 6.68e-14\n")
     );
 }
 
@@ -287,5 +288,18 @@ fn errors_fail_the_dump_and_warnings_come_back() {
     assert_eq!(
         describe(&dumped.text, &dumped.warnings),
         "2:3: warning[C201]: a triangle wall ignores `radius` (`radius 2`)\n"
+    );
+
+    // A subnormal number is a warning (S110), as walls-lint gives it: the file is written
+    // and the warning comes back (it failed with no error before).
+    let tiny = Wall::of_type("disk")
+        .unwrap()
+        .with("radius", 1e-320)
+        .unwrap();
+    let dumped = dumps(&[tiny], &DumpOptions::default()).unwrap();
+    assert_eq!(dumped.text, "wall type disk\n  radius 1e-320\n");
+    assert_eq!(
+        describe(&dumped.text, &dumped.warnings),
+        "2:10: warning[S110]: `1e-320` is below the smallest normal double: pkdgrav reads it as 1e-320, with fewer significant digits (`radius 1e-320`)\n"
     );
 }

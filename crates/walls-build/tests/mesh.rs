@@ -207,6 +207,20 @@ fn a_face_without_area_is_refused_by_name() {
             .to_string(),
         "face 0: vertex 1 does not exist: the mesh has 1 vertex"
     );
+    // Far points: a face whose edges overflow says so (it "had no area"), and one whose
+    // edges are finite has its area (the file then fails C121 for the far point).
+    let far = |b: [f64; 3]| {
+        Mesh::from_arrays(vec![[1e308, 0.0, 0.0], b, [0.0; 3]], &[[0, 1, 2]]).unwrap()
+    };
+    assert_eq!(
+        to_walls(&far([-1e308, 1.0, 0.0]), &MeshOptions::default())
+            .unwrap_err()
+            .to_string(),
+        "face 0: the face with vertices 0, 1 and 2 spans more than a double holds"
+    );
+    let walls = to_walls(&far([1e308, 1e308, 0.0]), &MeshOptions::default()).unwrap();
+    let error = dumps(&walls, &DumpOptions::default()).unwrap_err();
+    assert_eq!(error.diagnostics[0].code.id, "C121");
 }
 
 #[test]

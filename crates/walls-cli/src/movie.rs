@@ -92,12 +92,19 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
             "{name}: neither a particle CSV (a text header row) nor a pkdgrav .ss file (a binary header with the magic number -1 or -10101 at byte 12)"
         )
     })?;
+    // The numbers pkdgrav reads with fewer digits (W701) are shown, located.
+    let warn = |warnings: &[walls_sim::run::Warning]| {
+        for w in warnings {
+            crate::errln!("walls-sim: warning: {name}: {w}");
+        }
+    };
     if format == Format::Ss {
-        let (t, particles) = read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?;
+        let (t, read) = read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?;
+        warn(&read.warnings);
         return Ok(vec![Snapshot {
             t: Some(t),
             step: trailing_step(path),
-            particles,
+            particles: read.particles,
         }]);
     }
     let text = String::from_utf8_lossy(&bytes);
@@ -105,11 +112,12 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
         let rows = read_particles(&text).map_err(|e| format!("{name}: {e}"))?;
         return Ok(trajectory_snapshots(&rows));
     }
-    let particles = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
+    let read = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
+    warn(&read.warnings);
     Ok(vec![Snapshot {
         t: None,
         step: None,
-        particles,
+        particles: read.particles,
     }])
 }
 

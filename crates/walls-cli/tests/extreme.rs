@@ -6,7 +6,9 @@
 //! double holds (1e-400, 1e999, nan, inf) in a particle file, an option or a `.par`
 //! file's real must be refused with exit 2 and an error naming it where it is. Then the
 //! interrupt of a run writing its outputs (whole rows, exit 1, `"stopped":
-//! "interrupted"`), and a run with its standard streams closed.
+//! "interrupted"`), and a run with its standard streams closed. A second table holds
+//! every input to the one rule for numbers: underflow refused like overflow, subnormals
+//! warned about where they are, step counts that do not fit refused.
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -16,8 +18,9 @@ use std::time::{Duration, Instant};
 /// The longest any one command may take before it counts as a hang.
 const LIMIT: Duration = Duration::from_secs(20);
 
-const VALUES: [&str; 11] = [
+const VALUES: [&str; 12] = [
     "1e-300",
+    "1e-320",
     "1e300",
     "1e308",
     "-1e308",
@@ -34,6 +37,7 @@ fn bin(name: &str) -> PathBuf {
     match name {
         "walls-lint" => env!("CARGO_BIN_EXE_walls-lint").into(),
         "walls-fmt" => env!("CARGO_BIN_EXE_walls-fmt").into(),
+        "walls-mesh" => env!("CARGO_BIN_EXE_walls-mesh").into(),
         _ => env!("CARGO_BIN_EXE_walls-sim").into(),
     }
 }
@@ -248,6 +252,187 @@ fn every_command_over_extreme_values_exits_0_1_or_2_and_refuses_what_no_double_h
         rows.len(),
         failures.join("\n")
     );
+}
+
+/// A row of the rule's table: the command line (the binary first), its files, the exit
+/// status it must give and what its standard error must say.
+type RuleRow = (Vec<String>, Vec<(&'static str, Vec<u8>)>, i32, String);
+
+/// One rule for numbers in every input (docs/reliability.md, "Numbers pkdgrav would
+/// misread"): each row is a command, its files, the exit status it must give and what
+/// its standard error must say: underflow refused like overflow with its place, a
+/// subnormal read with a warning at its place, a step count or a C int that does not
+/// fit refused, a length whose squares overflow reported.
+#[test]
+fn numbers_follow_one_rule_in_every_input() {
+    let s = |words: &str| -> Vec<String> { words.split_whitespace().map(String::from).collect() };
+    let floor = || ("w.walls", b"wall type plane\n".to_vec());
+    let ball = |x: &str| {
+        let row = format!("mass,radius,x,y,z,vx,vy,vz\n1,0.1,{x},0,0.3,0,0,-2\n");
+        ("p.csv", row.into_bytes())
+    };
+    let par = |line: &str| {
+        let text = format!("achInFile = p.csv\ndDelta = 1e-4\nnSteps = 100\n{line}\n");
+        ("run.par", text.into_bytes())
+    };
+    let obj = |z: &str| {
+        (
+            "m.obj",
+            format!("v 0 0 0\nv 1 0 0\nv 0 1 {z}\nf 1 2 3\n").into_bytes(),
+        )
+    };
+    let stl = |z: &str| {
+        let text = format!(
+            "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 {z}\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"
+        );
+        ("m.stl", text.into_bytes())
+    };
+    let subnormal = "is below the smallest normal double";
+    let run = "walls-sim run w.walls --particles p.csv --t-end 0.01";
+    let rows: Vec<RuleRow> = vec![
+        // Step counts that do not fit (0 steps, exit 0 before).
+        (
+            s("walls-sim run w.walls --dt 1e-320"),
+            vec![floor()],
+            2,
+            "steps a run can count exactly".into(),
+        ),
+        (
+            s("walls-sim run w.walls --dt 1e-10 --t-end 1e299 --max-steps 18446744073709551615"),
+            vec![floor()],
+            2,
+            "steps of 1e-10 (--dt) to t = 1e299 (--t-end)".into(),
+        ),
+        (
+            s("walls-sim run w.walls --par run.par"),
+            vec![floor(), ball("0"), par("nSteps = 2147483648")],
+            2,
+            "run.par: line 4: `nSteps` is `2147483648`, beyond a C int".into(),
+        ),
+        // Subnormals: warnings with their place, the run goes on.
+        (
+            s(&format!("{run} --mu-s 1e-320")),
+            vec![floor(), ball("0")],
+            0,
+            format!("--mu-s: `1e-320` {subnormal}"),
+        ),
+        (
+            s(run),
+            vec![floor(), ball("2e-320")],
+            0,
+            format!("p.csv: line 2: `x`: `2e-320` {subnormal}"),
+        ),
+        (
+            s("walls-sim run w.walls --par run.par"),
+            vec![floor(), ball("0"), par("dMuS = 1e-310")],
+            0,
+            format!("run.par: line 4: `dMuS`: `1e-310` {subnormal}"),
+        ),
+        (
+            s("walls-sim preview w.walls --out x.svg --time 1e-320"),
+            vec![floor()],
+            0,
+            format!("--time: `1e-320` {subnormal}"),
+        ),
+        (
+            s("walls-lint w.walls"),
+            vec![("w.walls", b"wall type disk\n  radius 1e-320\n".to_vec())],
+            0,
+            "S110".into(),
+        ),
+        (
+            s("walls-fmt w.walls"),
+            vec![("w.walls", b"wall type disk\nradius 1e-320\n".to_vec())],
+            0,
+            "1 file reformatted".into(),
+        ),
+        (
+            s("walls-mesh m.obj -o m.walls"),
+            vec![obj("1e-320")],
+            0,
+            format!("m.obj:3: `1e-320` {subnormal}"),
+        ),
+        (
+            s("walls-mesh m.stl -o m.walls"),
+            vec![stl("1e-320")],
+            0,
+            format!("m.stl:5: `1e-320` {subnormal}"),
+        ),
+        // Underflow refused like overflow (read as 0 before, in meshes).
+        (
+            s("walls-mesh m.obj -o m.walls"),
+            vec![obj("1e-400")],
+            2,
+            "m.obj:3: `1e-400` is too small for a double".into(),
+        ),
+        (
+            s("walls-mesh m.stl -o m.walls"),
+            vec![stl("1e-400")],
+            2,
+            "m.stl:5: `1e-400` is too small for a double".into(),
+        ),
+        (
+            s("walls-mesh m.obj -o m.walls"),
+            vec![obj("1e999")],
+            2,
+            "m.obj:3: `1e999` is too large for a double".into(),
+        ),
+        (
+            s("walls-lint --min-radius 1e-400 w.walls"),
+            vec![floor()],
+            2,
+            "`1e-400` is too small for a double".into(),
+        ),
+        (
+            s("walls-mesh m.obj -o m.walls --set epsn=1e-400"),
+            vec![obj("0")],
+            2,
+            "--set epsn=1e-400: `1e-400` is too small for a double".into(),
+        ),
+        (
+            s(run),
+            vec![floor(), ball("1e-400")],
+            2,
+            "p.csv: line 2: `x` is `1e-400`, too small for a double".into(),
+        ),
+        // A length whose squares overflow (lint-clean, NaN in pictures before).
+        (
+            s("walls-lint w.walls"),
+            vec![(
+                "w.walls",
+                b"wall type plane\n  origin 1e308 1e308 1e308\n".to_vec(),
+            )],
+            1,
+            "C121".into(),
+        ),
+        (
+            s("walls-sim run w.walls"),
+            vec![(
+                "w.walls",
+                b"wall type plane\n  origin 1e308 1e308 1e308\n".to_vec(),
+            )],
+            2,
+            "nothing can be computed from it".into(),
+        ),
+    ];
+    let mut failures = Vec::new();
+    for (args, files, code, says) in &rows {
+        let dir = tempfile::tempdir().unwrap();
+        for (name, bytes) in files {
+            std::fs::write(dir.path().join(name), bytes).unwrap();
+        }
+        let line = args.join(" ");
+        match run_in(dir.path(), args) {
+            Ok((got, stderr)) if got != *code || !stderr.contains(says.as_str()) => {
+                failures.push(format!(
+                    "{line}: exit {got} (want {code}), standard error {stderr:?} (want {says:?})"
+                ))
+            }
+            Ok(_) => {}
+            Err(why) => failures.push(format!("{line}: {why}")),
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 /// A floor and a ball bouncing on it for a long time, every step written.

@@ -61,7 +61,8 @@ fn ss_outputs_are_pkdgrav_s() {
     let scales = [largest(3..6), largest(6..9), largest(9..12)];
     for step in steps {
         let bytes = std::fs::read(dir.path().join("out").join(format!("ss.{step:06}"))).unwrap();
-        let (time, particles) = read_ss(&bytes).unwrap();
+        let (time, read) = read_ss(&bytes).unwrap();
+        let particles = read.particles;
         let at_step: Vec<&Vec<f64>> = rows.iter().filter(|r| r[0] as u64 == step).collect();
         assert_eq!(time, at_step[0][1], "the header time after step {step}");
         assert_eq!(particles.len(), at_step.len());

@@ -12,15 +12,16 @@
 //! unknown word, a short vector, …) is not formatted: [`format`] returns the blocking
 //! diagnostics instead, and nothing is lost. The syntax errors formatting repairs (values
 //! off their keyword's line, a missing final newline, a comment glued to a word) do not
-//! block it, nor do control characters (S006): kept byte for byte in a comment, and
-//! between words replaced by the canonical space as any other white space.
+//! block it, nor does any warning: control characters (S006) are kept byte for byte in a
+//! comment and between words replaced by the canonical space as any other white space,
+//! and a subnormal number (S110) is read as written and its text kept.
 
 mod config;
 mod layout;
 
 pub use config::{FormatTable, MAX_INDENT_WIDTH};
 use std::ops::Range;
-use walls_diagnostics::{Diagnostic, Edit};
+use walls_diagnostics::{Diagnostic, Edit, Severity};
 use walls_syntax::Parse;
 
 /// How the canonical layout may vary (`.walls-fmt.toml`, the `[format]` table of `walls.toml`).
@@ -62,19 +63,19 @@ pub struct Formatted {
     pub(crate) pieces: Vec<(Range<usize>, Range<usize>)>,
 }
 
-/// The syntax codes whose statements the formatter cannot lay out safely.
+/// The syntax errors whose statements the formatter cannot lay out safely: every error
+/// but those it repairs. A warning never blocks: its statement parsed.
 fn blocks_formatting(d: &Diagnostic) -> bool {
     use walls_syntax::codes::*;
-    ![
-        &MISSING_FINAL_NEWLINE,
-        &LINE_TOO_LONG,
-        &GLUED_COMMENT,
-        &VALUE_ON_OTHER_LINE,
-        // A warning: kept as it is in a comment, written as a space between words.
-        &CONTROL_CHARACTER,
-    ]
-    .iter()
-    .any(|c| std::ptr::eq(*c, d.code))
+    d.severity == Severity::Error
+        && ![
+            &MISSING_FINAL_NEWLINE,
+            &LINE_TOO_LONG,
+            &GLUED_COMMENT,
+            &VALUE_ON_OTHER_LINE,
+        ]
+        .iter()
+        .any(|c| std::ptr::eq(*c, d.code))
 }
 
 /// Formats a parsed file, or says which syntax errors prevent it.
@@ -130,4 +131,23 @@ pub fn format_range(
             replacement: replacement.to_string(),
         }),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_warning_does_not_block_formatting() {
+        // S110 is a warning for a subnormal and an error for a number that reads as 0.
+        let options = FormatOptions::default();
+        assert_eq!(
+            format_text("wall type disk\nradius   1e-320\n", &options).unwrap(),
+            "wall type disk\n  radius 1e-320\n"
+        );
+        let not = format_text("wall type disk\nradius 1e-400\n", &options).unwrap_err();
+        assert_eq!(not.diagnostics.len(), 1);
+        assert_eq!(not.diagnostics[0].code.id, "S110");
+        assert_eq!(not.diagnostics[0].severity, Severity::Error);
+    }
 }

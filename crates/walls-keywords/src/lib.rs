@@ -7,6 +7,12 @@
 //! is one row here plus its lexer attribute (a test keeps the two in step). A row's
 //! [`ValueRange`] column names the rule that checks the keyword's value as pkdgrav reads
 //! it; `walls-model` maps each range to the rule file that reports it.
+//!
+//! Beside the words, [`number`] is the one rule for numbers that every reader of the
+//! tools follows: what a number's text or value means to pkdgrav, and which are refused
+//! (not finite, overflow, underflow) or warned about (subnormal).
+
+pub mod number;
 
 /// pkdgrav's two contact models: what a file is checked for, and how a run treats
 /// contacts. The keyword table records which keywords only the soft-sphere model reads.

@@ -7,11 +7,12 @@
 //! through.
 
 use crate::rules::{
-    assembly_without_mass, axes_not_orthogonal, degenerate_triangle, hole_not_inside,
-    hsdem_particle_value::AtNinetyNine, ignored_by_type, k_t_before_k_n, lone_oscillation,
-    mass_without_assembly::NoAssembly, no_walls, not_in_hsdem, osc_vec_not_following_orient,
-    reactive_spinning, reactive_type, rectangle_not_rectangular, repeated_token,
-    sticky_wall_order::StickyOrder, taper_on_ring, too_many_walls, unused_default, wall_too_fast,
+    arithmetic_overflow, assembly_without_mass, axes_not_orthogonal, degenerate_triangle,
+    hole_not_inside, hsdem_particle_value::AtNinetyNine, ignored_by_type, k_t_before_k_n,
+    lone_oscillation, mass_without_assembly::NoAssembly, no_walls, not_in_hsdem,
+    osc_vec_not_following_orient, reactive_spinning, reactive_type, rectangle_not_rectangular,
+    repeated_token, sticky_wall_order::StickyOrder, taper_on_ring, too_many_walls, unused_default,
+    wall_too_fast,
 };
 use crate::scene::{Scene, Wall};
 use crate::{ContactModel, Options};
@@ -110,6 +111,7 @@ impl Checker<'_> {
         for wall in &scene.walls {
             let t = wall.wall_type();
             ignored_by_type::check(self, wall, t);
+            arithmetic_overflow::check(self, wall, t);
             degenerate_triangle::check(self, wall, t);
             rectangle_not_rectangular::check(self, wall, t);
             hole_not_inside::check(self, wall, t);

@@ -9,6 +9,7 @@
 
 use walls_diagnostics::Code;
 
+pub use crate::rules::arithmetic_overflow::ARITHMETIC_OVERFLOW;
 pub use crate::rules::assembly_without_mass::ASSEMBLY_WITHOUT_MASS;
 pub use crate::rules::axes_not_orthogonal::AXES_NOT_ORTHOGONAL;
 pub use crate::rules::axis_not_unit::AXIS_NOT_UNIT;
@@ -73,6 +74,7 @@ pub static ALL: &[&Code] = &[
     &MATERIAL_RANGE,
     &COHESION_MODEL,
     &NUMBER_TOO_LARGE,
+    &ARITHMETIC_OVERFLOW,
     &IGNORED_BY_TYPE,
     &REPEATED_TOKEN,
     &KT_BEFORE_KN,

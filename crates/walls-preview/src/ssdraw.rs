@@ -93,9 +93,12 @@ pub fn read(text: &str) -> Result<SsdrawView, SsdrawError> {
         let err = |message: String| SsdrawError { line, message };
         let numbers = |n: usize| -> Result<Vec<f64>, SsdrawError> {
             let words: Vec<&str> = values.split_whitespace().collect();
-            let parsed: Option<Vec<f64>> = words.iter().map(|w| w.parse().ok()).collect();
+            // The tools' one rule for numbers: not finite, overflow, underflow refused.
+            let parsed: Option<Vec<f64>> = (words.iter())
+                .map(|w| walls_keywords::number::read(w).ok())
+                .collect();
             match parsed {
-                Some(v) if v.len() == n && v.iter().all(|x: &f64| x.is_finite()) => Ok(v),
+                Some(v) if v.len() == n => Ok(v),
                 _ => Err(err(format!(
                     "`{label}` takes {n} number{}, not `{values}`",
                     if n == 1 { "" } else { "s" }
@@ -258,6 +261,11 @@ Particle shape = 2
                 "line 1: `Aspect ratio` must be above 0, not -1",
             ),
             ("Wall data file =", "line 1: `Wall data file` names no file"),
+            // A number the tools' rule refuses (1e-400 was read as 0).
+            (
+                "Camera up = 0 0 1e-400",
+                "line 1: `Camera up` takes 3 numbers, not `0 0 1e-400`",
+            ),
         ] {
             assert_eq!(read(text).unwrap_err().to_string(), message, "{text:?}");
         }

@@ -22,10 +22,11 @@ use crate::contact::ssdem::Sliding;
 use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
-use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings};
+use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings, Warning};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
+use walls_keywords::number::EXACT_COUNT;
 
 type Vec3 = Vector3<f64>;
 
@@ -96,6 +97,9 @@ pub struct Run {
     /// `DEM_TWOLAYERS`, or without pkdgrav's integrator), in line order; the `.par`
     /// file's own warnings are in [`Params::warnings`].
     pub warnings: Vec<par::ParWarning>,
+    /// The subnormal numbers of the run's inputs (W701), each with where it is: the
+    /// options', the `.par` file's, the particle file's, then the cohesion file's.
+    pub numbers: Vec<Warning>,
 }
 
 /// Why a run cannot be set up.
@@ -135,15 +139,22 @@ pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and
 /// settles the run's settings against `scene`.
 pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, ConfigError> {
-    let particles = match particle_file(flags, par) {
+    let read = match particle_file(flags, par) {
         Some(f) => Some(particles::read_file(&f)?),
         None => None,
     };
+    let (particles, numbers) = match read {
+        Some(read) => (Some(read.particles), read.warnings),
+        None => (None, Vec::new()),
+    };
     let mut run = resolve(flags, par, scene, particles)?;
+    run.numbers.extend(numbers);
     if crate::run::optional::cohesion_on(&run.settings)
         && let Some(file) = cohesion_file(flags, par)
     {
-        run.settings.cohesion.colours = Some(crate::io::cohesion::read_file(&file)?);
+        let (colours, numbers) = crate::io::cohesion::read_file(&file)?;
+        run.settings.cohesion.colours = Some(colours);
+        run.numbers.extend(numbers);
     }
     Ok(run)
 }
@@ -302,13 +313,42 @@ pub fn resolve(
         dt_given: given_dt.is_some(),
         ..Settings::new(dt, t_end, material)
     };
+    let mut numbers = option_subnormals(flags);
+    numbers.extend(par.iter().flat_map(|p| p.subnormals.iter().cloned()));
     let run = Run {
         particles,
         settings,
         warnings,
+        numbers,
     };
     check(flags, par, &run, embedded)?;
     Ok(run)
+}
+
+/// The options given with a subnormal value (W701), in the order of `--help`.
+fn option_subnormals(flags: &Flags) -> Vec<Warning> {
+    let gravity = flags.gravity.map(|g| [g.x, g.y, g.z]).unwrap_or_default();
+    let options = [
+        ("--dt", flags.dt),
+        ("--t-end", flags.t_end),
+        ("--gravity", flags.gravity.map(|_| gravity[0])),
+        ("--gravity", flags.gravity.map(|_| gravity[1])),
+        ("--gravity", flags.gravity.map(|_| gravity[2])),
+        ("--epsn", flags.eps_n),
+        ("--epst", flags.eps_t),
+        ("--k-n", flags.k_n),
+        ("--k-t", flags.k_t),
+        ("--mu-s", flags.mu_s),
+        ("--mu-r", flags.mu_r),
+        ("--mu-t", flags.mu_t),
+    ];
+    let mut warnings = Vec::new();
+    for (option, value) in options {
+        if let Some(x) = value {
+            crate::io::subnormal(x, || option.to_string(), &mut warnings);
+        }
+    }
+    warnings
 }
 
 /// Whether the run can be computed in doubles: a finite spring, a positive finite
@@ -342,7 +382,7 @@ fn check(
     } else if par.is_some_and(|p| p.k_n.is_some()) {
         "the .par file's dKn"
     } else {
-        "derived from the particles' size and speed"
+        "the default, derived from the particles' size and speed"
     };
     if !(m.k_n.is_finite() && m.k_t.is_finite()) {
         return fail(format!(
@@ -363,19 +403,25 @@ fn check(
             s.dt, m.k_n
         ));
     }
+    let t_end_from = if flags.t_end.is_some() {
+        "--t-end"
+    } else if s.last_step.is_some() {
+        "the .par file's nSteps times the timestep"
+    } else {
+        "the default, from the scene"
+    };
     if !(s.t_end.is_finite() && s.t_end >= 0.0) {
-        return fail(format!("the end time comes to {:e}: give --t-end", s.t_end));
+        return fail(format!(
+            "the end time comes to {:e} ({t_end_from}): give --t-end",
+            s.t_end
+        ));
     }
+    steps_fit(s, dt_from, t_end_from)?;
     let limit = flags.max_steps.unwrap_or(MAX_STEPS);
     let steps = s.end_step().saturating_sub(s.start_step);
     if steps > limit {
-        let count = if steps == u64::MAX {
-            format!("{:e} ", (s.t_end - s.t_start()) / s.dt)
-        } else {
-            format!("{steps} ")
-        };
         return fail(format!(
-            "the run would take {count}steps of {:e} ({dt_from}) to t = {:e}, more than the limit of {limit}: give a longer --dt or a shorter --t-end, or raise the limit with --max-steps",
+            "the run would take {steps} steps of {:e} ({dt_from}) to t = {:e} ({t_end_from}), more than the limit of {limit}: give a longer --dt or a shorter --t-end, or raise the limit with --max-steps",
             s.dt, s.t_end
         ));
     }
@@ -399,6 +445,39 @@ fn check(
                 m.k_n, s.dt
             ));
         }
+    }
+    Ok(())
+}
+
+/// Whether the run's steps can be counted: its step numbers, and a run of time's count
+/// t_end/dt, at most [`EXACT_COUNT`] (2⁵³: the step numbers are `u64`s and a step's time
+/// is `step · dt` in doubles, exact in the step up to there). A quotient that is not
+/// finite (`--dt 1e-320`: 6/1e-320 is infinite) or beyond it is refused, naming where the
+/// timestep and the end time came from, whatever `--max-steps` says.
+fn steps_fit(s: &Settings, dt_from: &str, t_end_from: &str) -> Result<(), ConfigError> {
+    let fail = |why: String| Err(ConfigError::Unusable(why));
+    let beyond = format!(
+        "more than the {EXACT_COUNT} steps a run can count exactly (2^53: its step numbers are whole numbers and a step's time is step·dt in doubles)"
+    );
+    for (key, step) in [("iStartStep", Some(s.start_step)), ("nSteps", s.last_step)] {
+        if let Some(n) = step.filter(|&n| n > EXACT_COUNT) {
+            return fail(format!(
+                "the .par file's `{key}` is {n}, {beyond}: give at most {EXACT_COUNT}"
+            ));
+        }
+    }
+    let count = s.t_end / s.dt;
+    let fits = count.is_finite() && count <= EXACT_COUNT as f64;
+    if s.last_step.is_none() && !fits {
+        let count = if count.is_finite() {
+            format!("{count:e}")
+        } else {
+            "more than 1.8e308".to_string()
+        };
+        return fail(format!(
+            "the run would take {count} steps of {:e} ({dt_from}) to t = {:e} ({t_end_from}), {beyond}: give a longer --dt or a shorter --t-end",
+            s.dt, s.t_end
+        ));
     }
     Ok(())
 }

@@ -162,14 +162,17 @@ fn the_cohesion_file_is_n_then_the_rule_then_colour_coefficient_lines() {
     let t = read_cohesion("2\n1\n0 1e-3\n5 2.5e-3\n").unwrap();
     assert_eq!(
         t,
-        Colours {
-            rule: Rule::Mean,
-            coefficients: vec![(0, 1e-3), (5, 2.5e-3)],
-        }
+        (
+            Colours {
+                rule: Rule::Mean,
+                coefficients: vec![(0, 1e-3), (5, 2.5e-3)],
+            },
+            vec![]
+        )
     );
     // N and the rule may share a line.
-    assert_eq!(read_cohesion("1 3\n4 1\n").unwrap().rule, Rule::Min);
-    assert_eq!(read_cohesion("0 0\n").unwrap().coefficients, vec![]);
+    assert_eq!(read_cohesion("1 3\n4 1\n").unwrap().0.rule, Rule::Min);
+    assert_eq!(read_cohesion("0 0\n").unwrap().0.coefficients, vec![]);
 }
 
 #[test]
@@ -195,16 +198,21 @@ fn the_cohesion_files_errors_name_the_file_and_the_line() {
     // infinity without a word.
     assert_eq!(
         err("1\n1\n0 1e-400\n"),
-        "line 3: the coefficient of colour 0 is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+        "line 3: the coefficient of colour 0 is `1e-400`, too small for a double: pkdgrav reads it as 0"
     );
     assert_eq!(
         err("1\n1\n0 1e999\n"),
-        "line 3: the coefficient of colour 0 is `1e999`, beyond the largest double (about 1.8e308): C's atof, and so pkdgrav, would read infinity"
+        "line 3: the coefficient of colour 0 is `1e999`, too large for a double: pkdgrav reads it as infinity"
     );
     // A huge announced count is an error about the file, not memory reserved for it.
     assert_eq!(
-        err("4444444444 0 444444444 0 444444444"),
+        err("444444444 0 444444444 0 444444444"),
         "line 1: the file ends where the coefficient of colour 444444444 should be"
+    );
+    // A count beyond a C int, which pkdgrav would read as another number.
+    assert_eq!(
+        err("4444444444 0 444444444 0 444444444"),
+        "line 1: the number of colours is `4444444444`, beyond a C int, which pkdgrav reads it into (it would read another number): give at most 2147483647"
     );
     assert_eq!(
         err("2\n1\n0 1e-3\n"),

@@ -4,10 +4,11 @@
 //! stops being finite stops with a reason instead of panicking.
 
 use nalgebra::Vector3;
+use walls_keywords::number::EXACT_COUNT;
 use walls_sim::config::{ConfigError, Flags, MAX_STEPS, resolve};
-use walls_sim::io::par::read_par;
+use walls_sim::io::par::{Params, read_par};
 use walls_sim::io::particles::{Format, format_of, read_bytes, read_csv, read_ss, write_ss};
-use walls_sim::run::{Settings, Stop, run, run_watched};
+use walls_sim::run::{ContactModel, Settings, Stop, run, run_watched};
 use walls_test_support::{ball, scene};
 
 const FLOOR: &str = "wall type plane origin 0 0 0\n";
@@ -22,11 +23,15 @@ fn one(row: &str) -> String {
 fn particle_values_that_a_double_cannot_hold_are_located_errors() {
     assert_eq!(
         one("1,1e-400,0,0,1,0,0,0"),
-        "line 2: `radius` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+        "line 2: `radius` is `1e-400`, too small for a double: pkdgrav reads it as 0"
     );
-    assert!(
-        one("1,0.1,0,0,1e999,0,0,0")
-            .starts_with("line 2: `z` is `1e999`, beyond the largest double")
+    assert_eq!(
+        one("1,0.1,0,0,1e999,0,0,0"),
+        "line 2: `z` is `1e999`, too large for a double: pkdgrav reads it as infinity"
+    );
+    assert_eq!(
+        one("1,0.1,0,0,nan,0,0,0"),
+        "line 2: `z` is `nan`, not a finite number"
     );
     assert!(one("1,1e-300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
     assert!(one("1,1e300,0,0,1,0,0,0").starts_with("line 2: its moment of inertia 0.4·m·r²"));
@@ -56,8 +61,8 @@ fn the_format_follows_the_content_when_the_extension_does_not_say() {
     assert_eq!(format_of("-", csv), Some(Format::Csv));
     assert_eq!(format_of("ss.00100", &ss), Some(Format::Ss));
     assert_eq!(format_of("p.CSV", &ss), Some(Format::Csv));
-    assert_eq!(read_bytes("p.txt", csv).unwrap().len(), 1);
-    assert_eq!(read_bytes("-", &ss).unwrap().len(), 1);
+    assert_eq!(read_bytes("p.txt", csv).unwrap().particles.len(), 1);
+    assert_eq!(read_bytes("-", &ss).unwrap().particles.len(), 1);
     assert!(
         read_bytes("p.txt", b"hello\n")
             .unwrap_err()
@@ -70,7 +75,81 @@ fn the_format_follows_the_content_when_the_extension_does_not_say() {
 fn par_values_that_underflow_are_errors() {
     assert_eq!(
         read_par("dKn = 1e-400\n").unwrap_err().to_string(),
-        "line 1: `dKn` is `1e-400`, below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
+        "line 1: `dKn` is `1e-400`, too small for a double: pkdgrav reads it as 0"
+    );
+    // Every real pkdgrav reads, also one of no effect on the run.
+    assert_eq!(
+        read_par("nSteps = 10\ndTheta = 1e999\n")
+            .unwrap_err()
+            .to_string(),
+        "line 2: `dTheta` is `1e999`, too large for a double: pkdgrav reads it as infinity"
+    );
+}
+
+/// The W701 warnings of `warnings`, as printed.
+fn shown(warnings: &[walls_sim::run::Warning]) -> Vec<String> {
+    warnings
+        .iter()
+        .map(|w| format!("{}: {w}", w.code()))
+        .collect()
+}
+
+#[test]
+fn subnormal_inputs_are_read_and_warned_about_where_they_are() {
+    let csv = "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,0\n1,0.1,0,0,1,2.5e-320,0,0\n";
+    let read = read_csv(csv).unwrap();
+    assert_eq!(read.particles[1].vel.x, 2.5e-320);
+    assert_eq!(
+        shown(&read.warnings),
+        [
+            "W701: line 3: `vx`: `2.5e-320` is below the smallest normal double: pkdgrav reads it as 2.5e-320, with fewer significant digits"
+        ]
+    );
+    let mut tiny = ball([0.0, 0.0, 1.0], [0.0; 3]);
+    tiny.spin.y = -1e-310;
+    let (_, read) = read_ss(&write_ss(1e-315, &[tiny])).unwrap();
+    assert_eq!(
+        shown(&read.warnings),
+        [
+            "W701: byte 0: the header's time: `1e-315` is below the smallest normal double: pkdgrav reads it as 1e-315, with fewer significant digits",
+            "W701: byte 88: particle 0's `wy`: `-1e-310` is below the smallest normal double: pkdgrav reads it as -1e-310, with fewer significant digits"
+        ]
+    );
+    let par = read_par("dDelta = 1e-3\ndMuS = 1e-310\ndTheta = 4e-320\n").unwrap();
+    assert_eq!(par.mu_s, Some(1e-310));
+    assert_eq!(
+        shown(&par.subnormals),
+        [
+            "W701: line 2: `dMuS`: `1e-310` is below the smallest normal double: pkdgrav reads it as 1e-310, with fewer significant digits",
+            "W701: line 3: `dTheta`: `4e-320` is below the smallest normal double: pkdgrav reads it as 4e-320, with fewer significant digits"
+        ]
+    );
+    let (_, numbers) = walls_sim::io::cohesion::read_cohesion("1 0\n3 1e-320\n").unwrap();
+    assert_eq!(
+        shown(&numbers),
+        [
+            "W701: line 2: the coefficient of colour 3: `1e-320` is below the smallest normal double: pkdgrav reads it as 1e-320, with fewer significant digits"
+        ]
+    );
+    // Options: a run's settings carry them, the options' first.
+    let walls = scene(FLOOR);
+    let flags = Flags {
+        gravity: Some(Vector3::new(0.0, 0.0, -1e-309)),
+        mu_s: Some(2e-310),
+        ..Flags::default()
+    };
+    let run = resolve(&flags, Some(&par), &walls, None).unwrap();
+    assert_eq!(
+        shown(&run.numbers)
+            .iter()
+            .map(|w| w.split(" is below").next().unwrap())
+            .collect::<Vec<_>>(),
+        [
+            "W701: --gravity: `-1e-309`",
+            "W701: --mu-s: `2e-310`",
+            "W701: line 2: `dMuS`: `1e-310`",
+            "W701: line 3: `dTheta`: `4e-320`"
+        ]
     );
 }
 
@@ -143,7 +222,7 @@ fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
         balls(),
     );
     assert!(
-        g.starts_with("the spring constant k_n comes to inf (derived"),
+        g.starts_with("the spring constant k_n comes to inf (the default, derived"),
         "{g}"
     );
 }
@@ -156,20 +235,122 @@ fn runs_beyond_the_step_limit_are_refused_with_the_count() {
         ..Flags::default()
     };
     let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
-    assert!(
-        why.starts_with("the run would take 9.999999999999999e299 steps of 1e-300 (--dt)"),
-        "{why}"
+    assert_eq!(
+        why,
+        "the run would take 9.999999999999999e299 steps of 1e-300 (--dt) to t = 1e0 (--t-end), more than the 9007199254740992 steps a run can count exactly (2^53: its step numbers are whole numbers and a step's time is step·dt in doubles): give a longer --dt or a shorter --t-end"
     );
-    assert!(why.contains(&format!("the limit of {MAX_STEPS}")) && why.contains("--max-steps"));
     let flags = Flags {
         dt: Some(0.01),
         t_end: Some(1.0),
         max_steps: Some(99),
         ..Flags::default()
     };
-    assert!(
-        refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])])
-            .starts_with("the run would take 100 steps")
+    let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert!(why.starts_with("the run would take 100 steps"), "{why}");
+    assert!(why.contains("the limit of 99") && why.contains("--max-steps"));
+    let flags = Flags {
+        dt: Some(1e-9),
+        t_end: Some(1.0),
+        ..Flags::default()
+    };
+    let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
+    assert!(why.contains(&format!("the limit of {MAX_STEPS}")), "{why}");
+}
+
+#[test]
+fn step_counts_that_do_not_fit_are_refused_whatever_the_limit() {
+    // t_end/dt beyond a double was NaN once rounded, and the run took 0 steps with
+    // exit 0 and no reason ("t = 0 after 0 steps", "stopped": null).
+    let ball = || vec![ball([0.0, 0.0, 1.0], [0.0; 3])];
+    for (dt, t_end) in [(Some(1e-320), None), (Some(1e-10), Some(1e299))] {
+        let flags = Flags {
+            dt,
+            t_end,
+            max_steps: Some(u64::MAX),
+            ..Flags::default()
+        };
+        let why = refusal(&flags, ball());
+        assert!(
+            why.starts_with("the run would take more than 1.8e308 steps of ")
+                && why.contains(" (--dt) to t = ")
+                && why.contains("more than the 9007199254740992 steps a run can count exactly"),
+            "{why}"
+        );
+    }
+    // Beyond 2^53 but within a u64: the times would not be exact.
+    let flags = Flags {
+        dt: Some(1e-16),
+        t_end: Some(1.0),
+        max_steps: Some(u64::MAX),
+        ..Flags::default()
+    };
+    assert!(refusal(&flags, ball()).starts_with("the run would take 1e16 steps of 1e-16"));
+    // Exactly 2^53 fits (and then meets the limit).
+    let flags = Flags {
+        dt: Some(1.0),
+        t_end: Some(2f64.powi(53)),
+        ..Flags::default()
+    };
+    assert!(refusal(&flags, ball()).contains("more than the limit of 100000000"));
+    // Step numbers given in code, counted exactly.
+    let walls = scene(FLOOR);
+    for (params, says) in [
+        (
+            Params {
+                dt: Some(1e-3),
+                steps: Some(EXACT_COUNT + 1),
+                ..Params::default()
+            },
+            "the .par file's `nSteps` is 9007199254740993, more than the 9007199254740992 steps",
+        ),
+        (
+            Params {
+                dt: Some(1e-3),
+                steps: Some(10),
+                start_step: Some(u64::MAX),
+                ..Params::default()
+            },
+            "the .par file's `iStartStep` is 18446744073709551615, more than",
+        ),
+        (
+            read_par("dDelta = 1e300\nnSteps = 2147483647\n").unwrap(),
+            "the end time comes to inf (the .par file's nSteps times the timestep): give --t-end",
+        ),
+    ] {
+        match resolve(&Flags::default(), Some(&params), &walls, Some(ball())) {
+            Err(ConfigError::Unusable(why)) => assert!(why.starts_with(says), "{why}"),
+            other => panic!("not refused: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn par_integers_beyond_a_c_int_are_errors() {
+    // pkdgrav reads them into C ints with %d, which would take another number.
+    for (text, says) in [
+        (
+            "nSteps = 2147483648\n",
+            "line 1: `nSteps` is `2147483648`, beyond a C int, which pkdgrav reads it into with %d (it would read another number): give at most 2147483647",
+        ),
+        (
+            "iStartStep = 99999999999999999999\n",
+            "line 1: `iStartStep` is `99999999999999999999`, beyond a C int",
+        ),
+        (
+            "bWallsEdgeDetect = 4294967296\n",
+            "line 1: `bWallsEdgeDetect` is `4294967296`, beyond a C int",
+        ),
+        (
+            "iCohesionModel = -99999999999999999999\n",
+            "line 1: `iCohesionModel` is `-99999999999999999999`, beyond a C int",
+        ),
+    ] {
+        let why = read_par(text).unwrap_err().to_string();
+        assert!(why.starts_with(says), "{why}");
+    }
+    assert_eq!(
+        read_par("nSteps = 2147483647\n").unwrap().steps,
+        Some(2147483647)
     );
 }
 
@@ -177,6 +358,10 @@ fn runs_beyond_the_step_limit_are_refused_with_the_count() {
 fn a_bad_timestep_stops_before_the_first_step_instead_of_panicking() {
     let walls = scene(FLOOR);
     let settings = Settings::new(0.0, 1.0, walls_sim::config::pkdgrav_material(1e5));
+    let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
+    assert_eq!((out.steps, out.stopped), (0, Some(Stop::Timestep)));
+    // Nor with a step count beyond a double (it was 0 steps and no reason).
+    let settings = Settings::new(1e-320, 1.0, walls_sim::config::pkdgrav_material(1e5));
     let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
     assert_eq!((out.steps, out.stopped), (0, Some(Stop::Timestep)));
 }
@@ -189,6 +374,50 @@ fn a_state_that_overflows_stops_the_run_with_a_reason() {
     let out = run(&walls, vec![ball([0.0, 0.0, 1.0], [0.0; 3])], &settings);
     assert_eq!(out.stopped, Some(Stop::NotFinite(0)));
     assert!(out.steps < 100);
+}
+
+#[test]
+fn a_run_shows_no_step_whose_numbers_overflowed() {
+    // The observer (which writes particles.csv, the .ss outputs and WALLSREACT files)
+    // saw the step that overflowed, and wrote `inf` and `NaN` into them.
+    for model in [ContactModel::Ssdem, ContactModel::Hsdem] {
+        let walls = scene(FLOOR);
+        let mut settings = Settings::new(1e100, 1e102, walls_sim::config::pkdgrav_material(1e5));
+        settings.build = walls_sim::build::Build::default_for(model);
+        settings.gravity = Vector3::new(1e150, 0.0, 0.0);
+        let mut seen = Vec::new();
+        let out = run_watched(
+            &walls,
+            vec![ball([0.0, 0.0, 1.0], [0.0; 3])],
+            &settings,
+            &mut |step, t, snapshot| {
+                let (states, _) = snapshot.look();
+                let finite = states.iter().all(|s| {
+                    let p = &s.particle;
+                    p.pos
+                        .iter()
+                        .chain(&p.vel)
+                        .chain(&p.spin)
+                        .all(|x| x.is_finite())
+                });
+                seen.push((step, t.is_finite() && finite));
+            },
+            &|| false,
+        );
+        assert_eq!(out.stopped, Some(Stop::NotFinite(0)), "{model:?}");
+        assert!(
+            seen.iter().all(|&(_, finite)| finite) && seen.len() as u64 + 1 == out.steps,
+            "{model:?}: {seen:?} of {} steps",
+            out.steps
+        );
+        // The report writes no number that is not finite: what overflowed is null.
+        let report = walls_sim::report::Report::new(Vec::new(), &settings, &out);
+        let mut json = Vec::new();
+        report.write_json(&mut json).unwrap();
+        let json = String::from_utf8(json).unwrap();
+        assert!(!json.contains("NaN") && !json.contains("inf"), "{json}");
+        assert!(json.contains("\"stopped\": \"not-finite\""));
+    }
 }
 
 #[test]

@@ -6,8 +6,9 @@ use walls_sim::io::particles::{read_csv, read_ss};
 
 #[test]
 fn csv_with_and_without_optional_columns() {
-    let ps =
-        read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,-2\n2, 0.2, 1,2,3, 4,5,6\n").unwrap();
+    let ps = read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,1,0,0,-2\n2, 0.2, 1,2,3, 4,5,6\n")
+        .unwrap()
+        .particles;
     assert_eq!(ps.len(), 2);
     assert_eq!(
         (
@@ -19,12 +20,14 @@ fn csv_with_and_without_optional_columns() {
         ),
         (2.0, 0.2, 3.0, 4.0, 1)
     );
-    let ps =
-        read_csv("radius,mass,x,y,z,vx,vy,vz,wx,wy,wz,color\n0.1,1,0,0,0,0,0,0,1,2,3,7\n").unwrap();
+    let ps = read_csv("radius,mass,x,y,z,vx,vy,vz,wx,wy,wz,color\n0.1,1,0,0,0,0,0,0,1,2,3,7\n")
+        .unwrap()
+        .particles;
     assert_eq!((ps[0].mass, ps[0].spin.y, ps[0].color), (1.0, 2.0, 7));
     // Spaces around the names and the values are trimmed, row after row.
     let ps = read_csv("mass , radius,x,y,z,vx,vy,vz\n 1 ,0.1,0,0,0,0,0,0\n2, 0.2 ,0,0,5,0,0,0\n")
-        .unwrap();
+        .unwrap()
+        .particles;
     assert_eq!(
         (ps[0].mass, ps[1].radius, ps[1].pos.z, ps[1].index),
         (1.0, 0.2, 5.0, 1)
@@ -78,7 +81,7 @@ fn standard_and_reduced_ss_files() {
     assert_eq!(b.len(), 16 + 96);
     let (time, ps) = read_ss(&b).unwrap();
     assert_eq!(time, 1.5);
-    let p = &ps[0];
+    let p = &ps.particles[0];
     assert_eq!(
         (
             p.mass, p.radius, p.pos.y, p.vel.x, p.vel.z, p.spin.z, p.color, p.index
@@ -94,7 +97,7 @@ fn standard_and_reduced_ss_files() {
         r.extend(3i32.to_be_bytes());
         r.extend(i.to_be_bytes());
     }
-    let (_, ps) = read_ss(&r).unwrap();
+    let ps = read_ss(&r).unwrap().1.particles;
     assert_eq!(
         (ps.len(), ps[1].pos.x, ps[1].radius, ps[1].index),
         (2, 1.0, 0.5, 1)
@@ -232,10 +235,8 @@ fn ss_files_written_read_back_exactly_with_pkdgrav_s_names() {
     let ps = vec![a, b];
     let bytes = write_ss(1.4743270000000004e-10, &ps);
     assert_eq!(bytes.len(), 16 + 2 * 96);
-    assert_eq!(
-        read_ss(&bytes).unwrap(),
-        (1.4743270000000004e-10, ps.clone())
-    );
+    let (time, read) = read_ss(&bytes).unwrap();
+    assert_eq!((time, read.particles), (1.4743270000000004e-10, ps.clone()));
     // A run's output: the living particles, stuck ones with the colour that says so,
     // written record by record as the file made whole.
     use walls_sim::run::State;

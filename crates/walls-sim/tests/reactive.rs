@@ -7,7 +7,7 @@ use walls_sim::build::Build;
 use walls_sim::dynamics::euler_rigid;
 use walls_sim::dynamics::reactive::assemblies;
 use walls_sim::dynamics::rigid::Rotation;
-use walls_sim::run::{Integrator, Settings, Warning, run};
+use walls_sim::run::{Integrator, Settings, Stop, Warning, run};
 
 use walls_test_support::{ball as particle, scene};
 
@@ -93,6 +93,30 @@ fn a_particle_hitting_a_free_plate_keeps_the_total_momentum() {
     assert!(out.particles[0].particle.vel.z > 0.0 && a.velocity.z < 0.0);
     // Walls follow their assembly: the plate is where its centre of gravity went.
     assert!((a.origin(0) - (a.cog + Vec3::new(-1.0, -1.0, 0.0))).norm() < 1e-12);
+}
+
+#[test]
+fn an_assembly_whose_numbers_overflow_stops_the_run_before_it_is_shown() {
+    // A plate of mass 1e-305 pressed by a particle: its acceleration is beyond a double.
+    // The run went on with an infinite plate, and its WALLSREACT rows said `inf` and
+    // `nan`.
+    let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 1e-305\n assembly 0\n cog 0 0 0\n";
+    let mut shown = Vec::new();
+    let out = walls_sim::run::run_watched(
+        &scene(plate),
+        vec![particle([0.0, 0.0, 0.07], [0.0, 0.0, 0.0])],
+        &settings(0.2),
+        &mut |step, _, snapshot| {
+            let (_, assemblies) = snapshot.look();
+            shown.push((step, assemblies.iter().all(|a| a.finite())));
+        },
+        &|| false,
+    );
+    assert_eq!(out.stopped, Some(Stop::AssemblyNotFinite(0)));
+    assert!(!out.assemblies[0].finite());
+    assert!(shown.iter().all(|&(_, finite)| finite), "{shown:?}");
+    assert_eq!(shown.len() as u64 + 1, out.steps);
+    assert_eq!(Stop::AssemblyNotFinite(0).code(), "not-finite");
 }
 
 #[test]

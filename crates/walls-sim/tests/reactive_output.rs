@@ -251,6 +251,10 @@ fn viz_lines_read_back_as_the_walls_written() {
     let cut: Vec<&str> = line.split(' ').collect();
     assert_eq!(parse_viz_line(&cut[..cut.len() - 1].join(" ")), None);
     assert_eq!(parse_viz_line("1 0 x"), None);
+    // Nor are numbers the tools' rule refuses (a wall at NaN was read).
+    let nan = line.replacen("5.0000000000000000e-01", "nan", 1);
+    assert_ne!(nan, line);
+    assert_eq!(parse_viz_line(&nan), None);
     assert_eq!(parse_viz_line(""), None);
 }
 

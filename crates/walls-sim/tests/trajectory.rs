@@ -97,6 +97,10 @@ fn the_readers_say_what_is_wrong() {
     let e = read_particles(&format!("{header}{good}{bad_x}")).unwrap_err();
     assert_eq!(e, ReadError::NotANumber { line: 3, column: 7 });
     assert_eq!(e.to_string(), "line 3: column 7 is not a number");
+    // By the tools' one rule for numbers: a cell that underflows is no number either.
+    let tiny_x = bad_x.replace("nan", "1e-400");
+    let e = read_particles(&format!("{header}{good}{tiny_x}")).unwrap_err();
+    assert_eq!(e, ReadError::NotANumber { line: 3, column: 7 });
     assert_eq!(
         read_particles(&format!("{header}0,0,0\n")).unwrap_err(),
         ReadError::NotANumber { line: 2, column: 4 }

@@ -206,7 +206,11 @@ double, such as `1e-400`, into 0 without a word (it only sets `errno`, which pkd
 not look at): `epsn 1e-400` becomes a sticky wall, `radius 1e-400` a wall of no size. \
 This is an error. A number below the smallest normal double (about 2.2e-308), such as \
 `1e-310`, is read as a subnormal double with fewer significant digits (again with only \
-`errno` set): a warning. Write 0 if you mean 0, or choose units that keep values in range.
+`errno` set): a warning. Write 0 if you mean 0, or choose units that keep values in range. \
+Every number the tools read follows the same rule (`.par`, particle, cohesion and mesh \
+files, options): a number that reads as 0 is refused, a subnormal read with a warning, \
+each with its file and line or option; a subnormal a program gives (`walls.Wall`, \
+`walls.dumps`) gets this warning in the file written.
 
 Bad:
 ```walls

@@ -315,35 +315,32 @@ impl<'t> Validator<'t> {
             && self.keyword_like(text).is_some()
     }
 
-    /// A real number that is not zero as written but reads as 0, or as a subnormal.
+    /// A real number that is not zero as written but reads as 0 (an error), or as a
+    /// subnormal (a warning): the rule of [`walls_keywords::number`]. Overflow is judged
+    /// once the value is scaled by its unit (C120).
     fn underflow(&mut self, tok: TokenId) {
+        use walls_keywords::number::{self, Problem};
         let text = self.text(tok);
-        let negative_exponent = text.contains("e-") || text.contains("E-");
-        if !negative_exponent && text.len() < 300 {
-            // At least 300 digits are needed to write a number below 1e-300 without one.
+        if !number::may_be_tiny(text) {
             return;
         }
-        let Ok(x) = text.parse::<f64>() else { return };
-        let mantissa = text.split(['e', 'E']).next().unwrap_or_default();
-        let zero_as_written = !mantissa.bytes().any(|b| matches!(b, b'1'..=b'9'));
-        let d = if x == 0.0 && !zero_as_written {
-            Diagnostic::error(
+        let d = match number::read(text) {
+            Err(Problem::Underflow) => Diagnostic::error(
                 &codes::NUMBER_UNDERFLOW,
                 self.span(tok),
-                format!("`{text}` is too small for a double: pkdgrav reads it as 0"),
+                format!("`{text}` is {}", Problem::Underflow),
             )
-            .with_help("C's atof underflows to 0 silently; write 0 if you mean 0, or use units that keep the value above about 2.2e-308")
-        } else if x != 0.0 && x.abs() < f64::MIN_POSITIVE {
-            Diagnostic::warning(
-                &codes::NUMBER_UNDERFLOW,
-                self.span(tok),
-                format!(
-                    "`{text}` is below the smallest normal double: pkdgrav reads it as {x:e}, with fewer significant digits"
-                ),
-            )
-            .with_help("use units that keep the value above about 2.2e-308")
-        } else {
-            return;
+            .with_help(Problem::Underflow.help()),
+            Ok(x) => match number::subnormal(x) {
+                Some(tiny) => Diagnostic::warning(
+                    &codes::NUMBER_UNDERFLOW,
+                    self.span(tok),
+                    format!("`{text}` is {tiny}"),
+                )
+                .with_help(number::Subnormal::HELP),
+                None => return,
+            },
+            Err(_) => return,
         };
         self.out.push(d);
     }

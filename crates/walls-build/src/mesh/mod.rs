@@ -107,7 +107,8 @@ impl std::error::Error for Problem {}
 pub struct ReadMesh {
     /// The mesh.
     pub mesh: Mesh,
-    /// Statements that were not read (OBJ's lines, points, unknown words).
+    /// Statements that were not read (OBJ's lines, points, unknown words), and subnormal
+    /// numbers (read as they are, as pkdgrav reads them from the walls file).
     pub warnings: Vec<Problem>,
 }
 
@@ -134,10 +135,7 @@ pub fn read_mesh(path: &Path) -> Result<ReadMesh, Problem> {
 /// Reads an STL file: binary when its size is the 84 + 50 × facets its header announces,
 /// else ASCII (`solid` … `endsolid`). Identical vertices are welded into one.
 pub fn parse_stl(bytes: &[u8]) -> Result<ReadMesh, Problem> {
-    stl::parse(bytes).map(|mesh| ReadMesh {
-        mesh,
-        warnings: Vec::new(),
-    })
+    stl::parse(bytes)
 }
 
 /// Reads an OBJ file's `v` and `f` statements (polygons become fans of triangles).
@@ -244,13 +242,19 @@ pub fn to_walls(mesh: &Mesh, options: &MeshOptions) -> Result<Vec<Wall>, Problem
     mesh.check_indices()?;
     for face in &mesh.faces {
         let [a, b, c] = face.vertices.map(|i| mesh.vertices[i]);
-        if !has_area(a, b, c) {
-            let [i, j, k] = face.vertices.map(|i| mesh.vertex_name(i));
-            return Err(Problem::at(
-                face.origin,
-                format!("the face with vertices {i}, {j} and {k} has no area"),
-            ));
-        }
+        let edges = (sub(b, a), sub(c, a));
+        let why = if !edges.0.iter().chain(&edges.1).all(|x| x.is_finite()) {
+            "spans more than a double holds"
+        } else if !has_area(edges) {
+            "has no area"
+        } else {
+            continue;
+        };
+        let [i, j, k] = face.vertices.map(|i| mesh.vertex_name(i));
+        return Err(Problem::at(
+            face.origin,
+            format!("the face with vertices {i}, {j} and {k} {why}"),
+        ));
     }
     let windings = match options.orientation {
         Orientation::Keep => mesh.faces.iter().map(|f| f.vertices).collect(),
@@ -278,17 +282,15 @@ pub fn to_walls(mesh: &Mesh, options: &MeshOptions) -> Result<Vec<Wall>, Problem
     Ok(walls)
 }
 
-/// Whether a triangle has an area, by the test of walls-lint's C105 (its two edges'
-/// directions are not parallel), so that no wall made from a face fails it.
-fn has_area(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
-    let (e1, e2) = (sub(b, a), sub(c, a));
-    let (n1, n2) = (norm(e1), norm(e2));
-    if n1 == 0.0 || n2 == 0.0 {
+/// Whether a triangle of finite edges has an area, by the test of walls-lint's C105
+/// (its two edges' directions, found as the checker finds them, whatever their length,
+/// are not parallel), so that no wall made from a face fails it.
+fn has_area((e1, e2): ([f64; 3], [f64; 3])) -> bool {
+    let direction = |e: [f64; 3]| walls_model::scene::direction(&e.into());
+    let (Some(d1), Some(d2)) = (direction(e1), direction(e2)) else {
         return false;
-    }
-    let d1 = e1.map(|x| x / n1);
-    let d2 = e2.map(|x| x / n2);
-    norm(cross(d1, d2)) > 1e-12
+    };
+    d1.cross(&d2).norm() > 1e-12
 }
 
 pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

@@ -35,7 +35,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<ReadMesh, Problem> {
                         ),
                     ));
                 }
-                vertices.push(point(&rest[..3], n)?);
+                vertices.push(point(&rest[..3], n, &mut warnings)?);
             }
             "f" => {
                 if rest.len() < 3 {
@@ -96,8 +96,15 @@ fn index(reference: &str, count: usize, line: usize) -> Result<usize, Problem> {
     Ok(resolved as usize)
 }
 
-/// Three finite numbers: a point of a text mesh.
-pub(super) fn point(words: &[&str], line: usize) -> Result<[f64; 3], Problem> {
+/// Three numbers: a point of a text mesh, read by the tools' one rule for numbers
+/// ([`walls_keywords::number`]): one that is not finite, overflows or underflows is an
+/// error, a subnormal a warning in `warnings`, each with its line.
+pub(super) fn point(
+    words: &[&str],
+    line: usize,
+    warnings: &mut Vec<Problem>,
+) -> Result<[f64; 3], Problem> {
+    use walls_keywords::number;
     if words.len() != 3 {
         return Err(Problem::at(
             Origin::Line(line),
@@ -106,15 +113,14 @@ pub(super) fn point(words: &[&str], line: usize) -> Result<[f64; 3], Problem> {
     }
     let mut p = [0.0; 3];
     for (x, word) in p.iter_mut().zip(words) {
-        *x = match word.parse::<f64>() {
-            Ok(v) if v.is_finite() => v,
-            _ => {
-                return Err(Problem::at(
-                    Origin::Line(line),
-                    format!("`{word}` is not a number"),
-                ));
-            }
-        };
+        *x = number::read(word)
+            .map_err(|why| Problem::at(Origin::Line(line), format!("`{word}` is {why}")))?;
+        if let Some(tiny) = number::subnormal(*x) {
+            warnings.push(Problem::at(
+                Origin::Line(line),
+                format!("`{word}` is {tiny}"),
+            ));
+        }
     }
     Ok(p)
 }
@@ -153,12 +159,22 @@ mod tests {
 
     #[test]
     fn mistakes_are_named_by_line() {
-        let cases: [(&[u8], &str); 7] = [
+        let cases: [(&[u8], &str); 10] = [
             (
                 b"v 0 0\n",
                 "line 1: a point `v` takes 3 coordinates (x y z), found 2",
             ),
             (b"v 0 0 x\n", "line 1: `x` is not a number"),
+            // Underflow is refused like overflow (1e-400 was read as 0 before).
+            (
+                b"v 0 0 1e-400\n",
+                "line 1: `1e-400` is too small for a double: pkdgrav reads it as 0",
+            ),
+            (
+                b"v 0 0 -1e999\n",
+                "line 1: `-1e999` is too large for a double: pkdgrav reads it as infinity",
+            ),
+            (b"v 0 inf 0\n", "line 1: `inf` is not a finite number"),
             (
                 b"v 0 0 0\nf 1 1\n",
                 "line 2: a face `f` takes at least 3 points, found 2",
@@ -184,5 +200,20 @@ mod tests {
             let got = parse(obj).map(|_| ()).unwrap_err().to_string();
             assert_eq!(got, message);
         }
+    }
+
+    #[test]
+    fn a_subnormal_point_is_read_with_a_warning() {
+        let read = parse(b"v 0 0 0\nv 1 0 0\nv 0 1 -2e-310\nf 1 2 3\n").unwrap();
+        assert_eq!(read.mesh.vertices[2], [0.0, 1.0, -2e-310]);
+        assert_eq!(
+            read.warnings
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>(),
+            [
+                "line 3: `-2e-310` is below the smallest normal double: pkdgrav reads it as -2e-310, with fewer significant digits"
+            ]
+        );
     }
 }

@@ -4,14 +4,17 @@
 //! are not read: the winding says which way a facet faces, as the format requires them
 //! to agree.
 
-use super::{Face, Mesh, Origin, Problem};
+use super::{Face, Mesh, Origin, Problem, ReadMesh};
 use std::collections::HashMap;
 
 /// Reads a binary STL (when the file's size is the one its header announces) or an
-/// ASCII one.
-pub(super) fn parse(bytes: &[u8]) -> Result<Mesh, Problem> {
+/// ASCII one (whose subnormal numbers are warned about).
+pub(super) fn parse(bytes: &[u8]) -> Result<ReadMesh, Problem> {
     if let Some(count) = binary_count(bytes) {
-        return binary(bytes, count);
+        return binary(bytes, count).map(|mesh| ReadMesh {
+            mesh,
+            warnings: Vec::new(),
+        });
     }
     let text_start = bytes.iter().position(|b| !b.is_ascii_whitespace());
     if text_start.is_some_and(|i| bytes[i..].starts_with(b"solid")) {
@@ -118,9 +121,10 @@ enum State {
 
 /// `solid NAME`, then facets (`facet normal x y z`, `outer loop`, three `vertex x y z`,
 /// `endloop`, `endfacet`), then `endsolid NAME`; more than one solid may follow.
-fn ascii(bytes: &[u8]) -> Result<Mesh, Problem> {
+fn ascii(bytes: &[u8]) -> Result<ReadMesh, Problem> {
     let text = super::obj::text(bytes)?;
     let mut welder = Welder::default();
+    let mut warnings = Vec::new();
     let mut state = State::Outside;
     let mut points = [[0.0; 3]; 3];
     let mut facet_line = 0;
@@ -143,7 +147,7 @@ fn ascii(bytes: &[u8]) -> Result<Mesh, Problem> {
             (State::Solid, "endsolid") => State::Outside,
             (State::Facet, "outer") if second.as_deref() == Some("loop") => State::Loop(0),
             (State::Loop(k), "vertex") if k < 3 => {
-                points[k] = super::obj::point(&words[1..], n)?;
+                points[k] = super::obj::point(&words[1..], n, &mut warnings)?;
                 State::Loop(k + 1)
             }
             (State::Loop(3), "endloop") => State::Looped,
@@ -174,7 +178,10 @@ fn ascii(bytes: &[u8]) -> Result<Mesh, Problem> {
             format!("the file ends where {} should follow", expected(state)),
         ));
     }
-    Ok(welder.mesh())
+    Ok(ReadMesh {
+        mesh: welder.mesh(),
+        warnings,
+    })
 }
 
 /// What may come in `state`, for messages.
@@ -214,7 +221,7 @@ mod tests {
             [a, [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             [[1.0, 0.0, 0.0], a, [0.0, -0.0, 1.0]],
         ]);
-        let mesh = parse(&bytes).unwrap();
+        let mesh = parse(&bytes).unwrap().mesh;
         assert_eq!(mesh.vertices.len(), 4);
         assert_eq!(mesh.vertices[0], [0.1, 0.0, 0.0]);
         assert_eq!(mesh.faces[1].vertices, [1, 0, 3]);
@@ -233,7 +240,7 @@ mod tests {
     #[test]
     fn ascii_facets_are_read_and_mistakes_named_by_line() {
         let good = "solid s\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid s\n";
-        let mesh = parse(good.as_bytes()).unwrap();
+        let mesh = parse(good.as_bytes()).unwrap().mesh;
         assert_eq!(mesh.faces[0].origin, Origin::Line(2));
         assert_eq!(mesh.vertices[2], [0.0, 1.0, 0.0]);
         let short = good.replace("   vertex 0 1 0\n", "");
@@ -250,6 +257,33 @@ mod tests {
         assert_eq!(
             parse(bad.as_bytes()).unwrap_err().to_string(),
             "line 5: `O` is not a number"
+        );
+        // Numbers as every tool reads them: underflow is refused like overflow, with the
+        // line (1e-400 was read as 0 before); a subnormal is read, with a warning.
+        for (number, message) in [
+            (
+                "1e-400",
+                "line 5: `1e-400` is too small for a double: pkdgrav reads it as 0",
+            ),
+            (
+                "1e999",
+                "line 5: `1e999` is too large for a double: pkdgrav reads it as infinity",
+            ),
+            ("nan", "line 5: `nan` is not a finite number"),
+        ] {
+            let bad = good.replace("vertex 1 0 0", &format!("vertex 1 0 {number}"));
+            assert_eq!(parse(bad.as_bytes()).unwrap_err().to_string(), message);
+        }
+        let tiny = parse(good.replace("vertex 1 0 0", "vertex 1 0 1e-320").as_bytes()).unwrap();
+        assert_eq!(tiny.mesh.vertices[1], [1.0, 0.0, 1e-320]);
+        assert_eq!(
+            tiny.warnings
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>(),
+            [
+                "line 5: `1e-320` is below the smallest normal double: pkdgrav reads it as 1e-320, with fewer significant digits"
+            ]
         );
     }
 

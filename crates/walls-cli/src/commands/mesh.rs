@@ -102,7 +102,11 @@ pub fn run(args: &MeshArgs) -> i32 {
         let Some((key, value)) = token.split_once('=') else {
             return error(format!("--set {token}: give a token as KEY=VALUE"));
         };
-        if let Err(e) = defaults.set(key.trim(), Given::parse(value)) {
+        let set = Given::parse(value).and_then(|v| {
+            defaults.set(key.trim(), v).map_err(|e| e.to_string())?;
+            Ok(())
+        });
+        if let Err(e) = set {
             return error(format!("--set {token}: {e}"));
         }
     }

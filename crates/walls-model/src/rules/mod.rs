@@ -12,13 +12,14 @@
 //!   transparency as a fraction); it does no checking of its own.
 //! * `osc-freq` (C113) is read like any value but reported when its block ends, so that
 //!   the fix can use the block's final amplitude and phase.
-//! * **Block, wall and file rules** (C105, C106, C108, C110, C2xx, C301–C304, C307,
-//!   M001, M003) run on the resolved scene, from `check.rs` in a fixed order (which
+//! * **Block, wall and file rules** (C105, C106, C108, C110, C121, C2xx, C301–C304,
+//!   C307, M001, M003) run on the resolved scene, from `check.rs` in a fixed order (which
 //!   orders diagnostics at the same span); M002 runs on the syntax tree.
 //!
 //! Codes share a file only where they share their check: none do today. C104 is one
 //! code for two ranges (a direction, normalised, and a vertex).
 
+pub(crate) mod arithmetic_overflow;
 pub(crate) mod assembly_without_mass;
 pub(crate) mod axes_not_orthogonal;
 pub(crate) mod axis_not_unit;

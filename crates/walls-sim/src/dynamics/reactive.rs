@@ -208,6 +208,16 @@ impl Assembly {
         a[0] * w.x + a[1] * w.y + a[2] * w.z
     }
 
+    /// Whether its numbers are all finite: where it is, how it moves and turns, and the
+    /// load on it.
+    pub fn finite(&self) -> bool {
+        let r = &self.rotation;
+        [self.cog, self.velocity, r.omega, self.force, self.torque]
+            .iter()
+            .chain(&r.axes)
+            .all(|v| v.iter().all(|x| x.is_finite()))
+    }
+
     /// Where the `k`-th wall's origin is now.
     pub fn origin(&self, k: usize) -> Vec3 {
         if let Some(placed) = &self.placed {

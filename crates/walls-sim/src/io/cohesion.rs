@@ -6,6 +6,7 @@
 
 use super::{FileError, InputError, error};
 use crate::contact::cohesion::{Colours, Rule};
+use crate::run::Warning;
 
 /// The whitespace-separated words of `text`, each with its line (1-based).
 fn words(text: &str) -> Vec<(usize, &str)> {
@@ -15,8 +16,9 @@ fn words(text: &str) -> Vec<(usize, &str)> {
         .collect()
 }
 
-/// Reads a cohesion file's text.
-pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
+/// Reads a cohesion file's text: the colours, and the warnings about its subnormal
+/// coefficients (W701, located in the file: `line 3: …`).
+pub fn read_cohesion(text: &str) -> Result<(Colours, Vec<Warning>), InputError> {
     let words = words(text);
     let last_line = text.lines().count().max(1);
     let mut next = words.iter().copied();
@@ -35,6 +37,16 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
             format!("the number of colours is `{n_word}`, not a whole number of 0 or more"),
         )
     })?;
+    // pkdgrav reads the count into a C int, which would hold another number.
+    if count > i32::MAX as usize {
+        return Err(error(
+            format!("line {n_line}"),
+            format!(
+                "the number of colours is `{n_word}`, beyond a C int, which pkdgrav reads it into (it would read another number): give at most {}",
+                i32::MAX
+            ),
+        ));
+    }
     let (r_line, r_word) = take("the rule (0 none, 1 mean, 2 max, 3 min)")?;
     let rule = r_word
         .parse::<i64>()
@@ -52,6 +64,7 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
     // announce 10¹⁰ colours, and is then short of them.
     let mut coefficients: Vec<(i32, f64)> = Vec::with_capacity(count.min(words.len() / 2));
     let mut listed = std::collections::HashSet::new();
+    let mut warnings = Vec::new();
     for k in 1..=count {
         let (c_line, c_word) = take(&format!("colour {k} of {count}"))?;
         let colour: i32 = c_word.parse().map_err(|_| {
@@ -61,7 +74,8 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
             )
         })?;
         let (x_line, x_word) = take(&format!("the coefficient of colour {colour}"))?;
-        let x = super::number(x_word).map_err(|why| {
+        let at = || format!("line {x_line}: the coefficient of colour {colour}");
+        let x = super::number(x_word, at, &mut warnings).map_err(|why| {
             error(
                 format!("line {x_line}"),
                 format!("the coefficient of colour {colour} is `{x_word}`, {why}"),
@@ -81,11 +95,12 @@ pub fn read_cohesion(text: &str) -> Result<Colours, InputError> {
             format!("`{word}` follows the {count} colours the file's first number announces"),
         ));
     }
-    Ok(Colours { rule, coefficients })
+    Ok((Colours { rule, coefficients }, warnings))
 }
 
-/// Reads the cohesion file at `path`.
-pub fn read_file(path: &str) -> Result<Colours, FileError> {
+/// Reads the cohesion file at `path`, the warnings located in it.
+pub fn read_file(path: &str) -> Result<(Colours, Vec<Warning>), FileError> {
     let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
-    read_cohesion(&text).map_err(|e| FileError::input(path, e))
+    let (colours, warnings) = read_cohesion(&text).map_err(|e| FileError::input(path, e))?;
+    Ok((colours, super::in_file(path, warnings)))
 }

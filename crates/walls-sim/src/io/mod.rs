@@ -14,28 +14,42 @@ pub mod particles;
 pub mod trajectory;
 pub mod wallsreact;
 
-/// A decimal number as the tools read it: a finite double, and not one that a number
-/// written with a non-zero digit rounds to 0 (`1e-400`: C's `atof`, and so pkdgrav,
-/// would read 0 without a word). The error says what is wrong.
-pub fn number(text: &str) -> Result<f64, String> {
-    let x: f64 = text.parse().map_err(|_| "not a number".to_string())?;
-    if x.is_nan() || (x.is_infinite() && !text.chars().any(|c| c.is_ascii_digit())) {
-        return Err("not a finite number".into());
-    }
-    if x.is_infinite() {
-        return Err(
-            "beyond the largest double (about 1.8e308): C's atof, and so pkdgrav, would read infinity"
-                .into(),
-        );
-    }
-    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
-    if x == 0.0 && mantissa.chars().any(|c| ('1'..='9').contains(&c)) {
-        return Err(
-            "below the smallest double (about 4.9e-324): C's atof, and so pkdgrav, would read 0"
-                .into(),
-        );
-    }
+use crate::run::Warning;
+use walls_keywords::number::Problem;
+
+/// A number's text as every reader of a run's inputs takes it, by the tools' one rule
+/// ([`walls_keywords::number`]): its value, or why it is refused (not a number, not
+/// finite, overflow, underflow). A subnormal is read, and warned about in `warnings`
+/// (W701) at `at` (where it is; called only then).
+pub(crate) fn number(
+    text: &str,
+    at: impl FnOnce() -> String,
+    warnings: &mut Vec<Warning>,
+) -> Result<f64, Problem> {
+    let x = walls_keywords::number::read(text)?;
+    subnormal(x, at, warnings);
     Ok(x)
+}
+
+/// Warns in `warnings` (W701) about `x`, read at `at`, if it is subnormal.
+pub(crate) fn subnormal(x: f64, at: impl FnOnce() -> String, warnings: &mut Vec<Warning>) {
+    if walls_keywords::number::subnormal(x).is_some() {
+        warnings.push(Warning::SubnormalInput { at: at(), value: x });
+    }
+}
+
+/// `warnings` about numbers of the file `path`, located in it (`path: line 3: …`).
+fn in_file(path: &str, warnings: Vec<Warning>) -> Vec<Warning> {
+    warnings
+        .into_iter()
+        .map(|w| match w {
+            Warning::SubnormalInput { at, value } => Warning::SubnormalInput {
+                at: format!("{path}: {at}"),
+                value,
+            },
+            other => other,
+        })
+        .collect()
 }
 
 /// Why an input could not be read, and where.

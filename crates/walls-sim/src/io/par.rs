@@ -16,6 +16,7 @@
 //! default the evaluator does not follow. Every error names the `.par` line.
 
 use super::{FileError, InputError, error};
+use crate::run::Warning;
 use nalgebra::Vector3;
 use std::collections::HashMap;
 
@@ -109,6 +110,9 @@ pub struct Params {
     pub warnings: Vec<ParWarning>,
     /// The line of each path the file gives ([`PATH_KEYS`]), for the messages about it.
     pub path_lines: Vec<(&'static str, usize)>,
+    /// The subnormal numbers of the file's reals (W701), in line order, located in the
+    /// file (`line 4: \`dDelta\``; [`read_file`] puts the file's path before).
+    pub subnormals: Vec<Warning>,
 }
 
 /// The keys whose values are paths: files the run reads or writes.
@@ -507,15 +511,26 @@ impl<'a> Lines<'a> {
 
     /// `key`'s value as a number, with its line.
     fn real(&self, key: &str) -> Result<Option<(usize, f64)>, InputError> {
+        self.real_warned(key, &mut Vec::new())
+    }
+
+    /// `key`'s value as a number, with its line; a subnormal is warned about in
+    /// `warnings`.
+    fn real_warned(
+        &self,
+        key: &str,
+        warnings: &mut Vec<Warning>,
+    ) -> Result<Option<(usize, f64)>, InputError> {
         self.by_key
             .get(key)
             .map(|l| {
-                let x = super::number(l.value).map_err(|why| {
-                    error(
-                        format!("line {}", l.n),
-                        format!("`{key}` is `{}`, {why}", l.value),
-                    )
-                })?;
+                let x = super::number(l.value, || format!("line {}: `{key}`", l.n), warnings)
+                    .map_err(|why| {
+                        error(
+                            format!("line {}", l.n),
+                            format!("`{key}` is `{}`, {why}", l.value),
+                        )
+                    })?;
                 Ok((l.n, x))
             })
             .transpose()
@@ -533,12 +548,19 @@ impl<'a> Lines<'a> {
                 let digits = text[sign..]
                     .find(|c: char| !c.is_ascii_digit())
                     .map_or(text.len(), |k| k + sign);
-                let x = text[..digits].parse::<i64>().map_err(|_| {
-                    error(
-                        format!("line {}", l.n),
+                let at = || format!("line {}", l.n);
+                let x = text[..digits].parse::<i64>().map_err(|e| match e.kind() {
+                    std::num::IntErrorKind::PosOverflow | std::num::IntErrorKind::NegOverflow => {
+                        error(at(), beyond_int(key, text))
+                    }
+                    _ => error(
+                        at(),
                         format!("`{key}` is `{text}`; pkdgrav reads a whole number here"),
-                    )
+                    ),
                 })?;
+                if i32::try_from(x).is_err() {
+                    return Err(error(at(), beyond_int(key, text)));
+                }
                 Ok((l.n, x, digits == text.len()))
             })
             .transpose()
@@ -570,15 +592,21 @@ impl<'a> Lines<'a> {
         self.by_key
             .get(key)
             .map(|l| {
-                l.value.parse::<u64>().map_err(|_| {
-                    error(
-                        format!("line {}", l.n),
+                let at = || format!("line {}", l.n);
+                match l.value.parse::<u64>() {
+                    Ok(n) if n <= i32::MAX as u64 => Ok(n),
+                    Ok(_) => Err(error(at(), beyond_int(key, l.value))),
+                    Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
+                        Err(error(at(), beyond_int(key, l.value)))
+                    }
+                    Err(_) => Err(error(
+                        at(),
                         format!(
                             "`{key}` is `{}`; it must be a whole number, 0 or more",
                             l.value
                         ),
-                    )
-                })
+                    )),
+                }
             })
             .transpose()
     }
@@ -613,10 +641,28 @@ impl<'a> Lines<'a> {
     }
 }
 
+/// The error for an integer key whose value a C `int` cannot hold: pkdgrav reads it
+/// with `%d` and would take another number without a word.
+fn beyond_int(key: &str, text: &str) -> String {
+    format!(
+        "`{key}` is `{text}`, beyond a C int, which pkdgrav reads it into with %d (it would read another number): give at most {}",
+        i32::MAX
+    )
+}
+
 /// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the
 /// others into its warnings ([`KEYS`]).
 pub fn read_par(text: &str) -> Result<Params, InputError> {
     let lines = Lines::split(text)?;
+    // Every real the file gives pkdgrav (a `d…` key it knows, followed or not), by the
+    // tools' rule for numbers: overflow and underflow are errors, a subnormal is read and
+    // warned about.
+    let mut subnormals = Vec::new();
+    for &(n, key) in &lines.order {
+        if key.starts_with('d') && use_of(key).is_some() && lines.line(key) == Some(n) {
+            lines.real_warned(key, &mut subnormals)?;
+        }
+    }
     let mut warnings = Vec::new();
     let mut warn = |line: Option<usize>, key: &str, message: String| {
         warnings.push(ParWarning {
@@ -802,6 +848,7 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             .into_iter()
             .filter_map(|key| Some((key, lines.line(key)?)))
             .collect(),
+        subnormals,
     })
 }
 
@@ -855,5 +902,7 @@ fn two_layer(lines: &Lines, k_n: f64) -> Result<Option<TwoLayer>, InputError> {
 /// Reads the pkdgrav parameter file at `path`.
 pub fn read_file(path: &str) -> Result<Params, FileError> {
     let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
-    read_par(&text).map_err(|e| FileError::input(path, e))
+    let mut params = read_par(&text).map_err(|e| FileError::input(path, e))?;
+    params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
+    Ok(params)
 }

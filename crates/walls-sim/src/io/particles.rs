@@ -13,15 +13,25 @@
 //! Every error says where: the CSV line or the `.ss` byte offset.
 
 use super::{FileError, InputError, error};
-use crate::run::State;
+use crate::run::{State, Warning};
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
 
+/// Particles read from a file, with the warnings about its numbers.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Particles {
+    /// The particles, in the file's order.
+    pub particles: Vec<Particle>,
+    /// Its subnormal numbers (W701), each located in the file (`line 3: \`x\``, `byte
+    /// 40: particle 0's \`x\``; [`read_file`] puts the file's path before).
+    pub warnings: Vec<Warning>,
+}
+
 /// Reads particles from CSV text.
-pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
+pub fn read_csv(text: &str) -> Result<Particles, InputError> {
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -52,6 +62,7 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
     // (allocating both for every row took 5 % of the instructions of a run's set-up
     // from 10⁵ rows).
     let mut out = Vec::new();
+    let mut warnings = Vec::new();
     let mut record = csv::StringRecord::new();
     for n in 0_usize.. {
         let line = || format!("line {}", n + 2);
@@ -60,12 +71,12 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
             Ok(false) => break,
             Err(e) => return Err(error(line(), e.to_string())),
         }
-        let number = |name: &str| -> Result<f64, InputError> {
+        let mut number = |name: &str| -> Result<f64, InputError> {
             let Some(i) = column(name) else {
                 return Ok(0.0);
             };
             let field = record.get(i).unwrap_or("");
-            super::number(field)
+            super::number(field, || format!("{}: `{name}`", line()), &mut warnings)
                 .map_err(|why| error(line(), format!("`{name}` is `{field}`, {why}")))
         };
         let particle = Particle {
@@ -88,7 +99,10 @@ pub fn read_csv(text: &str) -> Result<Vec<Particle>, InputError> {
         check(&particle).map_err(|says| error(line(), says))?;
         out.push(particle);
     }
-    Ok(out)
+    Ok(Particles {
+        particles: out,
+        warnings,
+    })
 }
 
 /// Whether a run can use particle `p`: a positive mass and radius, finite values, and
@@ -176,8 +190,13 @@ impl Xdr<'_> {
 const STANDARD: i32 = -1;
 const REDUCED: i32 = -10101;
 
+/// The fields of a standard `.ss` record's doubles, in the file's order.
+const SS_FIELDS: [&str; 11] = [
+    "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz",
+];
+
 /// Reads a pkdgrav `.ss` file: its time and particles.
-pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
+pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
     let mut x = Xdr { bytes, at: 0 };
     let time = x.f64()?;
     if !time.is_finite() {
@@ -186,6 +205,8 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
             format!("the header's time is {time}, not a finite number"),
         ));
     }
+    let mut warnings = Vec::new();
+    super::subnormal(time, || "byte 0: the header's time".into(), &mut warnings);
     let count = x.i32()?;
     let magic = x.i32()?;
     let record = match magic {
@@ -242,9 +263,26 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Vec<Particle>), InputError> {
         };
         check(&p)
             .map_err(|says| error(format!("byte {start}"), format!("particle {k}: {says}")))?;
+        if magic == STANDARD {
+            // (A reduced record's single-precision numbers are normal doubles.)
+            let values = [p.mass, p.radius].into_iter().chain(p.pos.iter().copied());
+            let values = values
+                .chain(p.vel.iter().copied())
+                .chain(p.spin.iter().copied());
+            for ((i, value), name) in values.enumerate().zip(SS_FIELDS) {
+                let at = || format!("byte {}: particle {k}'s `{name}`", start + 8 * i);
+                super::subnormal(value, at, &mut warnings);
+            }
+        }
         out.push(p);
     }
-    Ok((time, out))
+    Ok((
+        time,
+        Particles {
+            particles: out,
+            warnings,
+        },
+    ))
 }
 
 /// `particles` as a pkdgrav `.ss` file at `time` (standard records, big-endian XDR):
@@ -333,7 +371,7 @@ pub fn format_of(name: &str, bytes: &[u8]) -> Option<Format> {
 
 /// Particles from `bytes`, the contents of the particle file `name`, in the format
 /// [`format_of`] finds.
-pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Vec<Particle>, InputError> {
+pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Particles, InputError> {
     match format_of(name, bytes) {
         Some(Format::Csv) => read_csv(&String::from_utf8_lossy(bytes)),
         Some(Format::Ss) => read_ss(bytes).map(|(_, ps)| ps),
@@ -356,11 +394,13 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
 }
 
 /// Particles from the file at `path` (`-`: standard input), CSV or a pkdgrav `.ss`
-/// file ([`format_of`]).
-pub fn read_file(path: &str) -> Result<Vec<Particle>, FileError> {
+/// file ([`format_of`]), the warnings located in it.
+pub fn read_file(path: &str) -> Result<Particles, FileError> {
     let bytes = read_input(path)?;
-    read_bytes(path, &bytes).map_err(|e| {
-        let name = if path == "-" { "<stdin>" } else { path };
-        FileError::input(name, e)
+    let name = if path == "-" { "<stdin>" } else { path };
+    let read = read_bytes(path, &bytes).map_err(|e| FileError::input(name, e))?;
+    Ok(Particles {
+        warnings: super::in_file(name, read.warnings),
+        ..read
     })
 }

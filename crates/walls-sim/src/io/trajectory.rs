@@ -288,8 +288,7 @@ fn numbers<'a>(
             .map(|k| {
                 cells
                     .get(k)
-                    .and_then(|c| c.parse::<f64>().ok())
-                    .filter(|x| x.is_finite())
+                    .and_then(|c| walls_keywords::number::read(c).ok())
                     .ok_or(ReadError::NotANumber {
                         line: n + 1,
                         column: k + 1,

@@ -198,11 +198,12 @@ pub fn viz_line(step: u64, walls: &[VizWall]) -> String {
 }
 
 /// Reads a `WALLSREACTviz.out` line back: its step and walls, or `None` if it is not a
-/// viz line. A wall whose orientation flag is 0 is a polygon, any other a round wall.
+/// viz line (a field is not a number the tools' rule reads: `nan`, `inf`, `1e-400`). A
+/// wall whose orientation flag is 0 is a polygon, any other a round wall.
 pub fn parse_viz_line(line: &str) -> Option<(u64, Vec<VizWall>)> {
     let fields: Vec<f64> = line
         .split_whitespace()
-        .map(|x| x.parse::<f64>().ok())
+        .map(|x| walls_keywords::number::read(x).ok())
         .collect::<Option<_>>()?;
     let step = *fields.first()?;
     let v3 = |k: usize| -> Option<Vec3> {

@@ -686,8 +686,12 @@ pub(super) fn run(
     let mut run = HardStepper::new(scene, states, settings, plan);
     while run.running() {
         run.step();
-        observe(run.steps, run.t, &mut super::Settled(&run.states, &[]));
-        if let Some(stop) = super::halt(&run.states, interrupted) {
+        // As in the soft-sphere run: a step whose numbers overflowed is not observed.
+        let not_finite = super::first_not_finite(&run.states);
+        if not_finite.is_none() {
+            observe(run.steps, run.t, &mut super::Settled(&run.states, &[]));
+        }
+        if let Some(stop) = super::halt_at(not_finite, interrupted) {
             return run.outcome(Some(stop));
         }
     }

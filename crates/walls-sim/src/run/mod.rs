@@ -190,14 +190,19 @@ impl Settings {
     }
 
     /// The number of the run's last step: `last_step`, else the first whose time
-    /// reaches `t_end` (up to a billionth of the count: round-off, not a step).
+    /// reaches `t_end` (up to a billionth of the count: round-off, not a step);
+    /// `u64::MAX` when t_end/dt is not a finite number (NaN or beyond a double), which
+    /// `config` refuses with the options that made it.
     pub fn end_step(&self) -> u64 {
         match self.last_step {
             Some(last) => last,
             None => {
                 let x = self.t_end / self.dt;
-                let n = (x - 1e-9 * x.max(1.0)).ceil().max(0.0);
-                if n.is_finite() { n as u64 } else { u64::MAX }
+                if !x.is_finite() {
+                    // (inf − 1e-9·inf is NaN, which `max(0.0)` would make 0 steps.)
+                    return u64::MAX;
+                }
+                (x - 1e-9 * x.max(1.0)).ceil().max(0.0) as u64
             }
         }
     }
@@ -406,9 +411,14 @@ pub enum Stop {
     /// A particle's position, velocity or spin became infinite or NaN (the particle's
     /// index): the numbers outgrew what a double holds.
     NotFinite(usize),
+    /// A reactive assembly's position, velocity, rotation or load became infinite or NaN
+    /// (its `assembly` number).
+    AssemblyNotFinite(i64),
     /// The caller asked the run to stop (an interrupt).
     Interrupted,
-    /// The timestep is not a positive finite number: the run could not start.
+    /// The timestep is not a positive finite number, or the steps it makes cannot be
+    /// counted (more than [`walls_keywords::number::EXACT_COUNT`]): the run could not
+    /// start.
     Timestep,
 }
 
@@ -419,7 +429,7 @@ impl Stop {
             Stop::Overlap => "overlap",
             Stop::SingleMemberAggregate => "single-member-aggregate",
             Stop::AggregateHeld => "aggregate-held",
-            Stop::NotFinite(_) => "not-finite",
+            Stop::NotFinite(_) | Stop::AssemblyNotFinite(_) => "not-finite",
             Stop::Interrupted => "interrupted",
             Stop::Timestep => "timestep",
         }
@@ -441,8 +451,15 @@ impl std::fmt::Display for Stop {
                 f,
                 "particle {i}'s position, velocity or spin became infinite or NaN (the values outgrew a double: shorten the timestep or check the input's scale)"
             ),
+            Stop::AssemblyNotFinite(n) => write!(
+                f,
+                "reactive assembly {n}'s position, velocity, rotation or load became infinite or NaN (the values outgrew a double: shorten the timestep or check the walls' masses and moments)"
+            ),
             Stop::Interrupted => write!(f, "interrupted (Ctrl-C, SIGTERM or SIGHUP)"),
-            Stop::Timestep => write!(f, "the timestep is not a positive finite number"),
+            Stop::Timestep => write!(
+                f,
+                "the timestep is not a positive finite number, or makes more steps than a run can count (2^53)"
+            ),
         }
     }
 }
@@ -452,14 +469,9 @@ fn first_not_finite(states: &[State]) -> Option<usize> {
     states.iter().position(|s| !s.finite())
 }
 
-/// How a stepper asks whether to go on after a step: [`Stop::NotFinite`] when a
-/// particle's numbers overflowed, [`Stop::Interrupted`] when `interrupted` says so.
-fn halt(states: &[State], interrupted: Interrupted) -> Option<Stop> {
-    halt_at(first_not_finite(states), interrupted)
-}
-
-/// [`halt`] when the stepper has already found the first particle whose numbers
-/// overflowed, if any.
+/// How a stepper asks whether to go on after a step, the first particle whose numbers
+/// overflowed being `not_finite` (if any): [`Stop::NotFinite`] then,
+/// [`Stop::Interrupted`] when `interrupted` says so.
 fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> {
     if let Some(i) = not_finite {
         return Some(Stop::NotFinite(i));
@@ -469,8 +481,10 @@ fn halt_at(not_finite: Option<usize>, interrupted: Interrupted) -> Option<Stop> 
 
 /// What watches a run: called after every step with the step number (pkdgrav's, counted
 /// from [`Settings::start_step`]), the time, and the step's [`Snapshot`] of the particles
-/// and the reactive walls' assemblies. It is `Send`: a run on several threads steps on
-/// one of rayon's, and calls it there (`pool::on_the_pool`).
+/// and the reactive walls' assemblies; not after a step whose numbers overflowed (the run
+/// stops there, [`Stop::NotFinite`], [`Stop::AssemblyNotFinite`]), so that what it
+/// writes is finite. It is `Send`: a run on several threads steps on one of rayon's, and
+/// calls it there (`pool::on_the_pool`).
 pub type Observer<'a> = &'a mut (dyn FnMut(u64, f64, &mut dyn Snapshot) + Send);
 
 /// Whether a run is asked to stop after a step ([`run_watched`]); `Sync` for the same
@@ -515,8 +529,8 @@ pub fn run_observed(
 /// [`run_observed`], asking `interrupted` after every step whether to stop there
 /// ([`Stop::Interrupted`]). A run also stops when a particle's numbers stop being
 /// finite ([`Stop::NotFinite`]), and does not start when the timestep is not a
-/// positive finite number ([`Stop::Timestep`]; callers check it first with
-/// `config::check`).
+/// positive finite number or its steps cannot be counted exactly ([`Stop::Timestep`];
+/// callers check both first with `config::check`).
 ///
 /// A run of 1,024 particles or more, with more than one thread in rayon's pool, runs on
 /// one of the pool's threads, `observe` and `interrupted` included, while the calling
@@ -532,7 +546,9 @@ pub fn run_watched(
 ) -> Outcome {
     let dt = settings.dt;
     let t0 = settings.t_start();
-    if !(dt > 0.0 && dt.is_finite()) {
+    let countable = |step: u64| step <= walls_keywords::number::EXACT_COUNT;
+    let steps_fit = countable(settings.start_step) && countable(settings.end_step());
+    if !(dt > 0.0 && dt.is_finite() && steps_fit) {
         let states: Vec<State> = particles.into_iter().map(State::from).collect();
         let e = energy(&states, &settings.gravity);
         return Outcome {

@@ -1817,7 +1817,8 @@ impl<'a> SoftStepper<'a> {
                     &mut self.warnings,
                 );
             }
-            if let Some(travel) = report.too_fast
+            // A travel that overflowed is the not-finite stop's, not a warning's.
+            if let Some(travel) = report.too_fast.filter(|x| x.is_finite())
                 && !self.once.fast
             {
                 self.once.fast = true;
@@ -1989,8 +1990,17 @@ pub(super) fn run(
         if run.step() == Flow::Stop {
             break;
         }
-        observe(run.steps, run.t, &mut run);
-        if let Some(stop) = super::halt_at(run.not_finite(), interrupted) {
+        // A step whose numbers overflowed is not shown to the observer: what it writes
+        // ends at the last step whose numbers are all finite.
+        let not_finite = run.not_finite();
+        let assembly = run.assemblies.iter().find(|a| !a.finite());
+        if let Some(number) = assembly.map(|a| a.number) {
+            return run.outcome(Some(super::Stop::AssemblyNotFinite(number)));
+        }
+        if not_finite.is_none() {
+            observe(run.steps, run.t, &mut run);
+        }
+        if let Some(stop) = super::halt_at(not_finite, interrupted) {
             return run.outcome(Some(stop));
         }
     }

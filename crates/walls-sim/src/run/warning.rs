@@ -13,7 +13,8 @@
 //!   99, the collision cap;
 //! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores;
 //! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow;
-//! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run.
+//! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run;
+//! * `W7xx`, the run's inputs: numbers pkdgrav reads, but not as written.
 
 use super::COLLISION_CAP;
 use std::fmt;
@@ -261,6 +262,15 @@ pub enum Warning {
         /// When.
         t: f64,
     },
+    /// W701: a number of the run's inputs (an option, a `.par` value, a particle or
+    /// cohesion file) below the smallest normal double: read as it is, with fewer
+    /// significant digits, as pkdgrav reads it ([`walls_keywords::number`]).
+    SubnormalInput {
+        /// Where: the option, or the file with its line (or byte) and field.
+        at: String,
+        /// The value read.
+        value: f64,
+    },
 }
 
 impl Warning {
@@ -288,6 +298,7 @@ impl Warning {
             Warning::AggregatesIgnored { .. } => "W601",
             Warning::SingleMemberAggregate { .. } => "W602",
             Warning::AggregateHeld { .. } => "W603",
+            Warning::SubnormalInput { .. } => "W701",
         }
     }
 }
@@ -431,6 +442,11 @@ impl fmt::Display for Warning {
                 f,
                 "particle {particle}, a member of an aggregate, reached sticky or death wall {wall} (t = {t}): pkdgrav asserts that aggregates cannot stick; the run stops"
             ),
+            Warning::SubnormalInput { at, value } => write!(
+                f,
+                "{at}: `{value:e}` is {}",
+                walls_keywords::number::Subnormal(*value)
+            ),
         }
     }
 }
@@ -540,6 +556,10 @@ mod tests {
                 particle: 0,
                 wall: 1,
                 t: 0.5,
+            },
+            Warning::SubnormalInput {
+                at: "--gravity".into(),
+                value: 1e-310,
             },
         ]
     }

@@ -310,11 +310,13 @@ fn lint(
     (linted, fixes)
 }
 
-/// A strictly positive real, for `--min-radius` and `--dt`.
+/// A strictly positive real, for `--min-radius` and `--dt`, read by the tools' one rule
+/// for numbers (`1e-400`, which a double rounds to 0, is refused as such).
 fn positive(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
-        _ => Err(format!("`{s}` is not a positive number")),
+    match walls_keywords::number::read(s) {
+        Ok(x) if x > 0.0 => Ok(x),
+        Ok(_) => Err(format!("`{s}` is not a positive number")),
+        Err(why) => Err(format!("`{s}` is {why}")),
     }
 }
 

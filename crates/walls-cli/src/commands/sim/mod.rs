@@ -77,7 +77,10 @@ pub enum SimCommand {
 /// Runs the command `args` name; the exit status.
 pub fn dispatch(args: &SimArgs) -> i32 {
     match &args.command {
-        Some(SimCommand::Scene { file, time, mode }) => scene::run(file, *time, *mode),
+        Some(SimCommand::Scene { file, time, mode }) => {
+            warn_subnormal(time.map(|t| ("--time", t)));
+            scene::run(file, *time, *mode)
+        }
         Some(SimCommand::Run(args)) => run::run(args),
         Some(SimCommand::Plan(args)) => plan::run(args),
         Some(SimCommand::Preview(args)) => preview::run(args),
@@ -87,11 +90,25 @@ pub fn dispatch(args: &SimArgs) -> i32 {
     }
 }
 
-/// A value parser for a number that must obey `rule`, as the `.par` file's values must.
+/// A value parser for a number that must obey `rule`, as the `.par` file's values must,
+/// read by the tools' one rule for numbers ([`walls_keywords::number`]): overflow and
+/// underflow are refused; a subnormal is warned about by the command that takes it.
 pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |s| {
-        let x = walls_sim::io::number(s).map_err(|why| format!("`{s}` is {why}"))?;
+        let x = walls_keywords::number::read(s).map_err(|why| format!("`{s}` is {why}"))?;
         rule.check(x).map_err(|says| format!("it must be {says}"))
+    }
+}
+
+/// Warns about the options given with a subnormal value (pkdgrav would read them with
+/// fewer significant digits), as a run does (W701).
+fn warn_subnormal<'a>(options: impl IntoIterator<Item = (&'a str, f64)>) {
+    for (option, value) in options {
+        if walls_keywords::number::subnormal(value).is_some() {
+            let at = option.to_string();
+            let w = walls_sim::run::Warning::SubnormalInput { at, value };
+            crate::errln!("walls-sim: warning: {w}");
+        }
     }
 }
 
@@ -132,7 +149,9 @@ fn exit_status(errors: usize) -> i32 {
 
 /// Reads and checks the walls file at `path` in `mode`, with its number of errors;
 /// when it has some, says so, and that the command goes on `doing` ("running",
-/// "drawing") what could be resolved.
+/// "drawing") what could be resolved. A length or speed whose squares overflow (C121)
+/// stays in the resolved scene, and a run or picture of it would compute infinities
+/// and NaN: such a file is refused.
 fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, usize), String> {
     let options = Options {
         mode,
@@ -158,6 +177,13 @@ fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, u
         // Standard error is only for people here; if it is gone there is nobody to tell.
         let _ = walls_diagnostics::render::human(&mut err, &report, color)
             .and_then(|()| std::io::Write::flush(&mut err));
+        let overflow = &walls_model::codes::ARITHMETIC_OVERFLOW;
+        if let Some(d) = errors.iter().find(|d| d.code.id == overflow.id) {
+            return Err(format!(
+                "{path}: {} ({}, shown above): nothing can be computed from it",
+                d.message, overflow.id
+            ));
+        }
         let mode = match mode {
             ContactModel::Ssdem => "ssdem",
             ContactModel::Hsdem => "hsdem",

@@ -11,6 +11,9 @@ pub fn run(args: &RunArgs) -> i32 {
         Ok(p) => p,
         Err(e) => return error(e),
     };
+    for w in &prepared.numbers {
+        crate::errln!("walls-sim: warning: {w}");
+    }
     let (_, mut parts) =
         walls_sim::run::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
     // Where the build came from.

@@ -204,6 +204,8 @@ pub struct Prepared {
     pub inputs: Vec<String>,
     /// How the summary shows times: `--units` for the walls file's units.
     pub readout: walls_geometry::units::Readout,
+    /// The subnormal numbers of the inputs (W701), which come before the run's warnings.
+    pub numbers: Vec<walls_sim::run::Warning>,
 }
 
 /// Steps between outputs when neither `--every` nor the `.par` file says.
@@ -273,6 +275,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         ss_name,
         inputs,
         readout,
+        numbers: run.numbers,
     })
 }
 
@@ -337,6 +340,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         ss_name,
         inputs,
         readout,
+        numbers,
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
@@ -380,7 +384,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     let model = args
         .json
         .then(|| walls_sim::report::model(scene, &particles, &settings));
-    let outcome = run_watched(
+    let mut outcome = run_watched(
         scene,
         particles,
         &settings,
@@ -403,6 +407,8 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     if let Some(bar) = progress {
         bar.finish_and_clear();
     }
+    // The inputs' numbers are warned about first, with the run's warnings.
+    outcome.warnings.splice(0..0, numbers);
     // Where the outputs end: after a failure, every file cut back to the last output step
     // all of them hold whole.
     let mut written: Option<Written> = None;

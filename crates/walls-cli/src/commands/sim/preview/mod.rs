@@ -93,6 +93,21 @@ pub fn run(args: &PreviewArgs) -> i32 {
 }
 
 fn draw(args: &PreviewArgs) -> Result<i32, String> {
+    let vector = |name: &'static str, v: &Option<Vec<f64>>| {
+        v.iter()
+            .flatten()
+            .map(move |&x| (name, x))
+            .collect::<Vec<_>>()
+    };
+    let options = [("--time", args.time), ("--seconds", args.seconds)];
+    let options = options
+        .into_iter()
+        .chain(args.until.map(|t| ("--until", t)));
+    super::warn_subnormal(
+        options
+            .chain(vector("--view", &args.view))
+            .chain(vector("--up", &args.up)),
+    );
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
@@ -120,6 +135,14 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         }
         None => None,
     };
+    if let Some(until) = args.until
+        && !(until - args.time).is_finite()
+    {
+        return Err(format!(
+            "--time {:e} and --until {until:e} are farther apart than a double holds (about 1.8e308): the frames' times cannot be computed",
+            args.time
+        ));
+    }
     let series = snapshots.len() > 1;
     if series && (args.frames > 1 || args.until.is_some()) {
         return Err(
