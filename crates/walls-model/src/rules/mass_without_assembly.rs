@@ -101,19 +101,19 @@ struct Reach {
     defaults: Vec<usize>,
     /// How many of the first i walls set their own `assembly`.
     own: Vec<usize>,
-    /// How many walls take each `defaults` assembly, by where its values start.
-    users: HashMap<usize, usize>,
+    /// The walls that take each `defaults` assembly, by where its values start.
+    users: HashMap<usize, Vec<usize>>,
 }
 
 impl Reach {
     fn new(scene: &Scene) -> Self {
         let mut own = Vec::with_capacity(scene.walls.len() + 1);
         own.push(0);
-        let mut users = HashMap::new();
+        let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
         for w in &scene.walls {
             own.push(own[own.len() - 1] + usize::from(own_assembly(w).is_some()));
             if let Some(s) = inherited_assembly(w) {
-                *users.entry(s.start).or_insert(0) += 1;
+                users.entry(s.start).or_default().push(w.index);
             }
         }
         Reach {
@@ -159,7 +159,10 @@ impl Reach {
 /// only these walls take is set to 0 where it is written. The other walls get one
 /// `assembly 0` after the mass when the mass is in their block, or is in `defaults` and
 /// that reaches them and no other wall; else `assembly 0` at the end of each one's block.
-/// So no `defaults` assembly is left that no wall takes.
+/// The `defaults` assembly such a wall took keeps a wall that no fix of this code takes
+/// from it (one without a mass, else the last that takes it, whose fix waits until it is
+/// the only one and then sets it in place), so that none is left that no wall takes,
+/// whichever of these fixes are applied together; `None` where that cannot be.
 fn fix(
     cx: &Checker,
     scene: &Scene,
@@ -167,7 +170,7 @@ fn fix(
     mass: &Range<usize>,
     from_defaults: bool,
     walls: &[&Wall],
-) -> (String, Vec<Edit>) {
+) -> Option<(String, Vec<Edit>)> {
     let reach = reach.get_or_insert_with(|| Reach::new(scene));
     let mut edits = Vec::new();
     let mut inherit: Vec<&Wall> = Vec::new();
@@ -189,7 +192,18 @@ fn fix(
             }
         }
     }
-    let only_theirs = |s: &Range<usize>, n: usize| reach.users.get(&s.start) == Some(&n);
+    let users = |s: &Range<usize>| reach.users.get(&s.start).map_or(&[][..], Vec::as_slice);
+    let only_theirs = |s: &Range<usize>, n: usize| users(s).len() == n;
+    let named = |w: &usize| walls.binary_search_by_key(w, |x| x.index).is_ok();
+    for (s, n) in &sources {
+        let kept = users(s)
+            .iter()
+            .any(|w| !named(w) && !scene.walls[*w].is_reactive())
+            || users(s).last().is_some_and(|w| !named(w));
+        if !only_theirs(s, *n) && !kept {
+            return None;
+        }
+    }
     let mut message = match walls {
         [w] => format!("put wall {} in assembly 0", w.index),
         _ => format!("put these {} walls in assembly 0", walls.len()),
@@ -221,7 +235,7 @@ fn fix(
         }
     }
     edits.sort_by_key(|e| e.span.start);
-    (message, edits)
+    Some((message, edits))
 }
 
 /// One error for the `mass` token that gave `walls` their mass.
@@ -259,8 +273,11 @@ fn report(cx: &mut Checker, scene: &Scene, reach: &mut Option<Reach>, walls: &[&
     d = d.with_help(
         "pkdgrav would index its per-assembly arrays at -1 and corrupt the run: give every inertial wall an assembly, 0 or 1",
     );
-    if setting.is_some() {
-        let (message, edits) = fix(cx, scene, reach, &span, from_defaults, walls);
+    if let Some((message, edits)) = setting
+        .is_some()
+        .then(|| fix(cx, scene, reach, &span, from_defaults, walls))
+        .flatten()
+    {
         d = d.with_fix(Applicability::Unsafe, message, edits);
     }
     cx.push_about(d, Some(Keyword::Mass));

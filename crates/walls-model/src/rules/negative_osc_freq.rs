@@ -126,7 +126,10 @@ fn rewritten(k: Keyword, x: f64) -> f64 {
 /// it; otherwise it is added after the frequency. In a wall's block that reaches the
 /// wall alone; in `defaults` it reaches the walls made after the block that take the
 /// value the block ended with, which is allowed only when they are all in `reached` and
-/// the value was set before the block (so that the block does not set it twice).
+/// the value was set before the block (so that the block does not set it twice). Either
+/// way the place keeps a wall that no fix of this code takes from it (one with a frequency
+/// that is not negative, else the last that reads it), so that no `defaults` is left that
+/// no wall takes, whichever of these fixes are applied together.
 fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Edit>> {
     let reached = users.get(&(Keyword::OscFreq, p.freq.start))?;
     let mut edits = vec![Edit {
@@ -169,7 +172,16 @@ fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Ed
                 let after = read_by.len() - read_by.partition_point(|&w| w < p.first_after);
                 after == n
             };
-            if !(from_before && reaches_only_reached) {
+            // Adding the value takes the reached walls from the place that set it, and
+            // the fixes of other negative frequencies may take the rest: a wall must keep
+            // it, one whose frequency is not negative, else the last wall that reads it
+            // (whose fix waits until it is the only one, and then edits it in place).
+            let outside = |w: &usize| reached.binary_search(w).is_err();
+            let kept = read_by
+                .iter()
+                .any(|w| outside(w) && scene.walls[*w].number(Keyword::OscFreq) >= 0.0)
+                || read_by.last().is_some_and(outside);
+            if !(from_before && reaches_only_reached && kept) {
                 return None;
             }
             let factor = k
