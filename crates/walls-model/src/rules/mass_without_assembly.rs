@@ -13,7 +13,7 @@ use super::{ByPlace, walls_named};
 use crate::check::Checker;
 use crate::fix::append;
 use crate::scene::{Place, Scene, Source, Wall};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::ops::Range;
 use walls_diagnostics::{Applicability, Code, Diagnostic, Edit, MAX_LABELS};
 use walls_keywords::Keyword;
@@ -103,6 +103,9 @@ struct Reach {
     own: Vec<usize>,
     /// The walls that take each `defaults` assembly, by where its values start.
     users: HashMap<usize, Vec<usize>>,
+    /// The `defaults` assemblies that a wall without a mass takes (no fix of this code
+    /// takes such a wall from one), by where their values start.
+    steady: HashSet<usize>,
 }
 
 impl Reach {
@@ -110,10 +113,14 @@ impl Reach {
         let mut own = Vec::with_capacity(scene.walls.len() + 1);
         own.push(0);
         let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
+        let mut steady = HashSet::new();
         for w in &scene.walls {
             own.push(own[own.len() - 1] + usize::from(own_assembly(w).is_some()));
             if let Some(s) = inherited_assembly(w) {
                 users.entry(s.start).or_default().push(w.index);
+                if !w.is_reactive() {
+                    steady.insert(s.start);
+                }
             }
         }
         Reach {
@@ -125,6 +132,7 @@ impl Reach {
                 .collect(),
             own,
             users,
+            steady,
         }
     }
 
@@ -175,7 +183,7 @@ fn fix(
     let mut edits = Vec::new();
     let mut inherit: Vec<&Wall> = Vec::new();
     // The `defaults` assemblies these walls take, with how many of them take each.
-    let mut sources: Vec<(Range<usize>, usize)> = Vec::new();
+    let mut sources: HashMap<usize, (Range<usize>, usize)> = HashMap::new();
     for &w in walls {
         if let Some(values) = own_assembly(w) {
             edits.push(Edit {
@@ -186,20 +194,14 @@ fn fix(
         }
         inherit.push(w);
         if let Some(s) = inherited_assembly(w) {
-            match sources.iter_mut().find(|(x, _)| *x == s) {
-                Some(x) => x.1 += 1,
-                None => sources.push((s, 1)),
-            }
+            sources.entry(s.start).or_insert((s, 0)).1 += 1;
         }
     }
     let users = |s: &Range<usize>| reach.users.get(&s.start).map_or(&[][..], Vec::as_slice);
     let only_theirs = |s: &Range<usize>, n: usize| users(s).len() == n;
     let named = |w: &usize| walls.binary_search_by_key(w, |x| x.index).is_ok();
-    for (s, n) in &sources {
-        let kept = users(s)
-            .iter()
-            .any(|w| !named(w) && !scene.walls[*w].is_reactive())
-            || users(s).last().is_some_and(|w| !named(w));
+    for (s, n) in sources.values() {
+        let kept = reach.steady.contains(&s.start) || users(s).last().is_some_and(|w| !named(w));
         if !only_theirs(s, *n) && !kept {
             return None;
         }
@@ -208,16 +210,16 @@ fn fix(
         [w] => format!("put wall {} in assembly 0", w.index),
         _ => format!("put these {} walls in assembly 0", walls.len()),
     };
-    let set_in_place: Vec<&Range<usize>> = sources
-        .iter()
+    let set_in_place: HashSet<usize> = sources
+        .values()
         .filter(|(s, n)| only_theirs(s, *n))
-        .map(|(s, _)| s)
+        .map(|(s, _)| s.start)
         .collect();
-    edits.extend(set_in_place.iter().map(|&s| Edit {
-        span: s.clone(),
+    edits.extend(set_in_place.iter().map(|s| Edit {
+        span: sources[s].0.clone(),
         replacement: "0".into(),
     }));
-    inherit.retain(|w| inherited_assembly(w).is_none_or(|s| !set_in_place.contains(&&s)));
+    inherit.retain(|w| inherited_assembly(w).is_none_or(|s| !set_in_place.contains(&s.start)));
     if !inherit.is_empty() {
         if !from_defaults || reach.exactly(cx, scene, mass, &inherit) {
             if edits.is_empty() {

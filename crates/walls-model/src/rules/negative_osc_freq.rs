@@ -83,7 +83,15 @@ pub(crate) struct Pending {
 
 /// The walls that take each amplitude, frequency and phase, by where it was set: the
 /// start of its values.
-type Users = HashMap<(Keyword, usize), Vec<usize>>;
+type Users = HashMap<(Keyword, usize), Readers>;
+
+/// The walls that take a value, in file order, and whether one of them has a frequency
+/// that is not negative (no fix of this code takes such a wall from the value).
+#[derive(Default)]
+struct Readers {
+    walls: Vec<usize>,
+    steady: bool,
+}
 
 /// Gives each pending diagnostic of `out` its fix where one keeps every wall's motion.
 pub(crate) fn add_fixes(pending: &[Pending], scene: &Scene, text: &str, out: &mut [Diagnostic]) {
@@ -92,9 +100,12 @@ pub(crate) fn add_fixes(pending: &[Pending], scene: &Scene, text: &str, out: &mu
     }
     let mut users = Users::new();
     for w in &scene.walls {
+        let steady = w.number(Keyword::OscFreq) >= 0.0;
         for k in [Keyword::OscFreq, Keyword::OscAmpl, Keyword::OscPhase] {
             if let Some(s) = w.settings.get(k).and_then(|s| s.source.span()) {
-                users.entry((k, s.start)).or_default().push(w.index);
+                let readers = users.entry((k, s.start)).or_default();
+                readers.walls.push(w.index);
+                readers.steady |= steady;
             }
         }
     }
@@ -131,7 +142,7 @@ fn rewritten(k: Keyword, x: f64) -> f64 {
 /// that is not negative, else the last that reads it), so that no `defaults` is left that
 /// no wall takes, whichever of these fixes are applied together.
 fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Edit>> {
-    let reached = users.get(&(Keyword::OscFreq, p.freq.start))?;
+    let reached = &users.get(&(Keyword::OscFreq, p.freq.start))?.walls;
     let mut edits = vec![Edit {
         span: p.freq.clone(),
         replacement: negated(&text[p.freq.clone()]),
@@ -140,7 +151,7 @@ fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Ed
     for (k, end) in [(Keyword::OscAmpl, &p.ampl), (Keyword::OscPhase, &p.phase)] {
         // The places that set a value a reached wall needs rewritten, with how many
         // reached walls read each.
-        let mut places: Vec<(Range<usize>, f64, usize)> = Vec::new();
+        let mut places: HashMap<usize, (Range<usize>, f64, usize)> = HashMap::new();
         for &i in reached {
             let setting = scene.walls[i].setting(k)?;
             let Value::Number(x) = setting.value else {
@@ -151,13 +162,11 @@ fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Ed
             }
             // A built-in amplitude or phase (0) needs no rewriting.
             let span = setting.source.span()?;
-            match places.iter_mut().find(|(s, _, _)| *s == span) {
-                Some(place) => place.2 += 1,
-                None => places.push((span, x, 1)),
-            }
+            places.entry(span.start).or_insert((span, x, 0)).2 += 1;
         }
-        for (span, x, n) in places {
-            let read_by = users.get(&(k, span.start)).map_or(&[][..], Vec::as_slice);
+        for (span, x, n) in places.into_values() {
+            let readers = users.get(&(k, span.start));
+            let read_by = readers.map_or(&[][..], |r| r.walls.as_slice());
             if read_by.len() == n {
                 let replacement = match k {
                     Keyword::OscAmpl => negated(&text[span.clone()]),
@@ -176,11 +185,10 @@ fn edits(p: &Pending, scene: &Scene, text: &str, users: &Users) -> Option<Vec<Ed
             // the fixes of other negative frequencies may take the rest: a wall must keep
             // it, one whose frequency is not negative, else the last wall that reads it
             // (whose fix waits until it is the only one, and then edits it in place).
-            let outside = |w: &usize| reached.binary_search(w).is_err();
-            let kept = read_by
-                .iter()
-                .any(|w| outside(w) && scene.walls[*w].number(Keyword::OscFreq) >= 0.0)
-                || read_by.last().is_some_and(outside);
+            let kept = readers.is_some_and(|r| r.steady)
+                || read_by
+                    .last()
+                    .is_some_and(|w| reached.binary_search(w).is_err());
             if !(from_before && reaches_only_reached && kept) {
                 return None;
             }
