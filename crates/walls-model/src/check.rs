@@ -105,7 +105,9 @@ impl<'a> Checker<'a> {
             block.keyed.extend(tree.body(b).iter().filter_map(|s| {
                 tree.keyword(s)
                     .filter(|k| k.role() == Role::Property)
-                    .filter(|_| !unread.contains(tree.span(tree.head(s)).start))
+                    .filter(|_| {
+                        unread.is_empty() || !unread.contains(tree.span(tree.head(s)).start)
+                    })
                     .map(|k| (k, s))
             }));
             block.keyed.sort_by_key(|&(k, _)| k);

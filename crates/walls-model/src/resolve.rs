@@ -17,7 +17,7 @@ use std::ops::Range;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
 use walls_keywords::{Keyword, Role, ValueRange, ValueShape};
-use walls_syntax::{Statement, SyntaxTree, TokenKind};
+use walls_syntax::{Statement, SyntaxTree, TokenId, TokenKind};
 
 /// Resolves `tree` into the scene pkdgrav would build, with the diagnostics about single
 /// values found on the way.
@@ -34,6 +34,11 @@ pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>
 pub(crate) struct Unread(Vec<usize>);
 
 impl Unread {
+    /// Whether every property statement set its value.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
     /// Whether the statement whose keyword starts at `offset` set nothing.
     pub(crate) fn contains(&self, offset: usize) -> bool {
         self.0.binary_search(&offset).is_ok()
@@ -189,7 +194,7 @@ impl<'t> Resolver<'t> {
                 });
                 self.target = Target::Wall(index);
                 self.block_type_unread = false;
-                self.note_unread_type(keyword, stmt, None);
+                self.note_unread_type(keyword, self.tree.values(stmt), None);
                 return;
             }
             Keyword::Defaults => {
@@ -197,7 +202,7 @@ impl<'t> Resolver<'t> {
                 self.block_start = self.tree.span(self.tree.head(stmt)).start;
                 self.target = Target::Defaults;
                 self.block_type_unread = false;
-                self.note_unread_type(keyword, stmt, None);
+                self.note_unread_type(keyword, self.tree.values(stmt), None);
                 return;
             }
             _ => {}
@@ -206,8 +211,9 @@ impl<'t> Resolver<'t> {
             self.close_block();
             self.target = Target::None;
         }
-        let raw = self.read(keyword, stmt);
-        self.note_unread_type(keyword, stmt, raw);
+        let values = self.tree.values(stmt);
+        let raw = self.read(keyword, values);
+        self.note_unread_type(keyword, values, raw);
         let Some(raw) = raw else {
             self.set_nothing(keyword, stmt);
             return;
@@ -232,11 +238,15 @@ impl<'t> Resolver<'t> {
     /// statement read): a `type` whose value is not a type name, or a type name that is
     /// not the value of a `type` (`wall shell`, or one after a misspelled `type`). The wall
     /// (or the walls the defaults make) is then judged by no type.
-    fn note_unread_type(&mut self, keyword: Keyword, stmt: &Statement, raw: Option<Raw>) {
-        let values = self.tree.values(stmt);
-        let read = usize::from(matches!(raw, Some(Raw::Type(_))));
+    fn note_unread_type(&mut self, keyword: Keyword, values: &[TokenId], raw: Option<Raw>) {
+        // What read is a number or a type name that is the statement's value: only the
+        // values after it, or those of a statement that did not read, can be a stray one.
+        let read = raw.map_or(0, |_| keyword.shape().arity());
+        if read >= values.len() && raw.is_some() {
+            return;
+        }
         let unread = (keyword == Keyword::Type && raw.is_none())
-            || values[read..]
+            || values[read.min(values.len())..]
                 .iter()
                 .any(|&v| matches!(self.tree.kind(v), TokenKind::TypeName(_)));
         if !unread {
@@ -255,8 +265,7 @@ impl<'t> Resolver<'t> {
 
     /// The values of a statement if they fit its keyword (the syntax check reports the
     /// ones that do not).
-    fn read(&self, keyword: Keyword, stmt: &Statement) -> Option<Raw> {
-        let values = self.tree.values(stmt);
+    fn read(&self, keyword: Keyword, values: &[TokenId]) -> Option<Raw> {
         let shape = keyword.shape();
         if values.len() < shape.arity() {
             return None;

@@ -170,7 +170,7 @@ impl Settings {
     }
 
     /// Says whether a type written for these settings did not read.
-    pub fn set_type_unread(&mut self, unread: bool) {
+    pub(crate) fn set_type_unread(&mut self, unread: bool) {
         self.type_unread = unread;
     }
 }
@@ -211,7 +211,7 @@ impl WallSettings {
 
     /// Notes that a type written in the wall's block did not read: the wall's type is
     /// unknown, whatever else its block or its defaults say.
-    pub fn set_type_unread(&mut self) {
+    pub(crate) fn set_type_unread(&mut self) {
         self.own.set_type_unread(true);
     }
 
