@@ -88,8 +88,23 @@ const FIXING: &str = "
 
 Many diagnostics carry a fix (the JSON and SARIF reports list it, and editors offer it).
 A fix is *safe* when it keeps what the author evidently meant (a missing final newline,
-a comment glued to a word, a repeated token) and *unsafe* when it is a guess (a spelling
-suggestion, a unit axis computed from the values given).
+a comment glued to a word, a repeated token) and *unsafe* when it is a judgement call
+(a rectangle's vertex2 made square, a unit axis computed from the values given, walls put
+in assembly 0).
+
+Every fix, safe or unsafe, keeps what the file means, by construction: applied alone, it
+changes the resolved scene in the one thing its diagnostic names and nothing else (a
+token that has no effect removed: the walls pkdgrav builds are the same; a negative
+frequency rewritten: every wall it reaches moves as before; an assembly given: exactly to
+the walls the diagnostic lists), and the fixed file has no finding the original did not
+have. A fix that cannot be made so is not offered, and the help says what to write: a
+spelling suggestion (`S101`, `S106`) and a type name without `type` (`S109`) are help
+only, since the statement a guess makes is judged like any other and the type decides
+what every other token of a wall means. A wall whose `type` did not read is judged by no
+type: the checks that depend on the type are silent on it, so no fix touches it on the
+type's account. `crates/walls-cli/tests/fix_meaning.rs` checks all of this for every code
+with a fix, over every walls file of the repository, the codes' examples and generated
+files.
 
 * `walls-lint --fix PATH…` applies the safe fixes and rewrites the files, then reports
   what remains, with the number of fixes applied in the summary (`1 error, 0 warnings in
@@ -109,7 +124,11 @@ suggestion, a unit axis computed from the values given).
 The fixes are applied in rounds: each round takes every applicable fix whose edits do
 not overlap an edit already taken (the first in the file wins), and the file is checked
 again; the next round applies what an overlap held back or what a fix made possible, up
-to 10 rounds. The diagnostics reported are those of the fixed text. A file is rewritten as
+to 10 rounds. A round keeps the meaning too, and adds no finding: where fixes together
+would take every wall from a `defaults` value (negative frequencies or masses that share
+an inherited amplitude or assembly), the last wall's fix waits for the next round, when it
+edits the value in place. The diagnostics reported are those of the fixed text. A file is
+rewritten as
 `walls-fmt` rewrites one ([docs/formatting.md](formatting.md#what-walls-fmt-promises-about-your-files)): keeping its owner, group,
 mode and links, atomically, and never over an edit saved meanwhile; a file it refuses is
 reported with its unchanged text's diagnostics and an error, with exit status 2. A file

@@ -70,7 +70,8 @@ fn entry_points_return_the_exit_status_without_ending_the_process() {
     assert_eq!(walls_cli::entry::sim(argv(&["walls-sim"])), 2);
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("scene.walls");
-    std::fs::write(&file, "wall type plane\n  raduis 1\n").unwrap();
+    // No final newline: an error (S002) whose fix the formatter agrees with.
+    std::fs::write(&file, "wall type plane").unwrap();
     let file = file.to_str().unwrap();
     assert_eq!(walls_cli::entry::lint(argv(&["walls-lint", file])), 1);
     assert_eq!(

@@ -15,6 +15,7 @@ pub mod render;
 pub mod terminal;
 
 pub use line_index::{LineCol, LineIndex};
+use std::collections::BTreeMap;
 use std::ops::Range;
 
 /// The most secondary places one diagnostic lists: a mistake repeated over thousands of
@@ -191,37 +192,52 @@ pub fn apply_fixes(source: &str, diagnostics: &[Diagnostic], level: Applicabilit
     apply_fixes_counted(source, diagnostics, level).0
 }
 
-/// [`apply_fixes`], with the number of fixes it applied.
+/// [`apply_fixes`], with the number of fixes it applied. A fix whose own edits overlap is
+/// malformed and never applied. Linear in the number of edits (up to a logarithm).
 pub fn apply_fixes_counted(
     source: &str,
     diagnostics: &[Diagnostic],
     level: Applicability,
 ) -> (String, usize) {
-    let mut edits: Vec<&Edit> = Vec::new();
+    // The edits taken, by start (no two share one): end and edit.
+    let mut taken: BTreeMap<usize, (usize, &Edit)> = BTreeMap::new();
     let mut applied = 0;
     for fix in diagnostics.iter().filter_map(|d| d.fix.as_ref()) {
         if level == Applicability::Safe && fix.applicability == Applicability::Unsafe {
             continue;
         }
-        let overlaps = fix
-            .edits
-            .iter()
-            .any(|e| edits.iter().any(|t| edits_overlap(e, t)));
-        if !overlaps {
-            edits.extend(fix.edits.iter());
-            applied += 1;
+        let mut own: Vec<&Edit> = fix.edits.iter().collect();
+        own.sort_by_key(|e| (e.span.start, e.span.end));
+        let malformed = own.windows(2).any(|w| edits_overlap(w[0], w[1]));
+        if malformed || own.iter().any(|e| overlaps_taken(&taken, e)) {
+            continue;
         }
+        for e in own {
+            taken.insert(e.span.start, (e.span.end, e));
+        }
+        applied += 1;
     }
-    edits.sort_by_key(|e| (e.span.start, e.span.end));
     let mut out = String::with_capacity(source.len());
     let mut at = 0;
-    for e in edits {
+    for (_, (_, e)) in taken {
         out.push_str(&source[at..e.span.start]);
         out.push_str(&e.replacement);
         at = e.span.end;
     }
     out.push_str(&source[at..]);
     (out, applied)
+}
+
+/// Whether `e` conflicts with an edit already taken (see [`edits_overlap`]): the one that
+/// starts last at or before it, or one that starts inside it.
+fn overlaps_taken(taken: &BTreeMap<usize, (usize, &Edit)>, e: &Edit) -> bool {
+    let before = taken
+        .range(..=e.span.start)
+        .next_back()
+        .is_some_and(|(&start, &(end, _))| start == e.span.start || end > e.span.start);
+    before
+        || (e.span.end > e.span.start + 1
+            && taken.range(e.span.start + 1..e.span.end).next().is_some())
 }
 
 /// Two edits conflict when their ranges share a byte, or both insert at one place.
@@ -250,23 +266,57 @@ mod tests {
 
     #[test]
     fn fixes_are_counted_the_first_of_overlapping_ones_taken_unsafe_ones_only_if_asked() {
-        let diagnostics = [
-            fixed(0..1, Applicability::Safe, "A"),
-            fixed(0..2, Applicability::Safe, "overlaps the first"),
-            fixed(2..3, Applicability::Unsafe, "C"),
-            fixed(3..3, Applicability::Safe, "+"),
+        use Applicability::{Safe, Unsafe};
+        // Each case: fixes, level, what is left, how many were applied. Two edits that
+        // start at one place conflict (the first wins); one that starts where another
+        // ends does not.
+        let cases = [
+            (
+                vec![
+                    fixed(0..1, Safe, "A"),
+                    fixed(0..2, Safe, "overlaps the first"),
+                    fixed(2..3, Unsafe, "C"),
+                    fixed(3..3, Safe, "+"),
+                ],
+                [(Safe, "Abc+", 2), (Unsafe, "AbC+", 3)],
+            ),
+            (
+                vec![
+                    fixed(1..2, Safe, "B"),
+                    fixed(1..1, Safe, "<"),
+                    fixed(2..2, Safe, ">"),
+                    fixed(0..3, Safe, "whole"),
+                    fixed(2..2, Safe, "again"),
+                ],
+                [(Safe, "aB>c", 2), (Unsafe, "aB>c", 2)],
+            ),
         ];
-        assert_eq!(
-            apply_fixes_counted("abc", &diagnostics, Applicability::Safe),
-            ("Abc+".to_string(), 2)
+        for (diagnostics, levels) in cases {
+            for (level, left, applied) in levels {
+                assert_eq!(
+                    apply_fixes_counted("abc", &diagnostics, level),
+                    (left.to_string(), applied)
+                );
+                assert_eq!(apply_fixes("abc", &diagnostics, level), left);
+            }
+        }
+    }
+
+    #[test]
+    fn a_fix_whose_own_edits_overlap_is_never_applied() {
+        let edit = |span: Range<usize>, with: &str| Edit {
+            span,
+            replacement: with.into(),
+        };
+        let malformed = Diagnostic::warning(&CODE, 0..2, "m").with_fix(
+            Applicability::Safe,
+            "f",
+            vec![edit(0..2, "X"), edit(1..3, "Y")],
         );
+        let fine = fixed(2..3, Applicability::Safe, "Z");
         assert_eq!(
-            apply_fixes_counted("abc", &diagnostics, Applicability::Unsafe),
-            ("AbC+".to_string(), 3)
-        );
-        assert_eq!(
-            apply_fixes("abc", &diagnostics, Applicability::Safe),
-            "Abc+"
+            apply_fixes_counted("abc", &[malformed, fine], Applicability::Safe),
+            ("abZ".to_string(), 1)
         );
     }
 }

@@ -607,15 +607,18 @@ async fn the_settings_ignores_hide_warnings_but_never_errors() {
     let mut c = Client::start(json!({})).await;
     assert_eq!(codes(&c.open(WARNING_AND_ERROR).await), ["C201", "S101"]);
     let (dir, uri) = project(
-        "[lint]\nmax-walls = 1\nignore = [\"ignored-by-type\", \"S101\"]\n\n[lint.per-file-ignores]\n\"old/*.walls\" = [\"C209\"]\n",
+        "[lint]\nmax-walls = 1\nignore = [\"ignored-by-type\", \"S101\", \"C304\"]\n\n[lint.per-file-ignores]\n\"old/*.walls\" = [\"C209\"]\n",
         "scene.walls",
     );
     assert_eq!(codes(&c.open_at(&uri, WARNING_AND_ERROR).await), ["S101"]);
-    // Nor are the fixes of ignored diagnostics offered: the error's fix only.
+    // Nor are the fixes of ignored diagnostics offered: the error's fix only (a disk's
+    // `open-angle`, the C201 warning, and a mass without an assembly, the C304 error).
+    let fixable = "wall type disk\n  open-angle 2\n  mass 1\n";
+    assert_eq!(codes(&c.change(&uri, 2, fixable).await), ["C304"]);
     let actions = c.actions(&uri, (0, 0), (9, 0)).await;
-    assert_eq!(titles(&actions), ["replace with `radius` (S101)"]);
+    assert_eq!(titles(&actions), ["add `assembly 0` after the mass (C304)"]);
     // Per-file ignores: only in the files their glob matches.
-    assert_eq!(codes(&c.change(&uri, 2, TWO_WALLS).await), ["C209"]);
+    assert_eq!(codes(&c.change(&uri, 3, TWO_WALLS).await), ["C209"]);
     let old = format!("file://{}/old/a.walls", dir.path().display());
     assert!(codes(&c.open_at(&old, TWO_WALLS).await).is_empty());
 }

@@ -1,6 +1,7 @@
 //! Building fixes: numbers written back as text, for the rules' fixes and messages.
 
 use crate::scene::Vec3;
+use walls_diagnostics::Edit;
 
 /// A real as the shortest decimal text that reads back as the same double: plain
 /// notation for ordinary magnitudes (`1`, `0.25`), exponent notation for very large or
@@ -23,6 +24,25 @@ pub(crate) fn rounded(x: f64) -> String {
 /// A computed vector, each component [`rounded`].
 pub(crate) fn vector(v: &Vec3) -> String {
     format!("{} {} {}", rounded(v.x), rounded(v.y), rounded(v.z))
+}
+
+/// Whether each number of `words` reads as 0 or a normal double: a value a fix adds must
+/// not be one pkdgrav reads with fewer digits (S110).
+pub(crate) fn normal_numbers(words: &str) -> bool {
+    words
+        .split(' ')
+        .filter_map(|w| w.parse::<f64>().ok())
+        .all(|x| x == 0.0 || x.is_normal())
+}
+
+/// An edit adding `words` (which start with a space) right after byte `at`, before a
+/// comment glued there (which then stays glued to nothing new: a space follows `words`).
+pub(crate) fn append(text: &str, at: usize, words: String) -> Edit {
+    let glued = text[at..].starts_with(['#', '!']);
+    Edit {
+        span: at..at,
+        replacement: if glued { words + " " } else { words },
+    }
 }
 
 /// The text of a number with its sign flipped, exactly (`0.1` → `-0.1`, `-2` → `2`).

@@ -63,8 +63,8 @@ pub struct Analysis {
 /// Resolves and checks a parsed file. Works on files with syntax errors too: statements
 /// whose values did not parse are skipped.
 pub fn analyze(tree: &SyntaxTree, options: &Options) -> Analysis {
-    let (scene, mut diagnostics) = resolve(tree, options.mode);
-    diagnostics.extend(check::check(tree, &scene, options));
+    let (scene, mut diagnostics, unread) = resolve::resolve_noting_unread(tree, options.mode);
+    diagnostics.extend(check::check(tree, &scene, &unread, options));
     if options.mode == ContactModel::Hsdem {
         diagnostics.extend(rules::ignored_in_hsdem::check(tree));
     }

@@ -17,11 +17,39 @@ use std::ops::Range;
 use std::sync::Arc;
 use walls_diagnostics::Diagnostic;
 use walls_keywords::{Keyword, Role, ValueRange, ValueShape};
-use walls_syntax::{Statement, SyntaxTree, TokenKind};
+use walls_syntax::{Statement, SyntaxTree, TokenId, TokenKind};
 
 /// Resolves `tree` into the scene pkdgrav would build, with the diagnostics about single
 /// values found on the way.
 pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>) {
+    let (scene, diagnostics, _) = resolve_noting_unread(tree, mode);
+    (scene, diagnostics)
+}
+
+/// Where the keywords of the property statements that set nothing start, in file order:
+/// their values did not read, or overflow once scaled. The block rules count only the
+/// statements that set their value (a `radius` after which a broken `radius` stands is not
+/// overridden by it).
+#[derive(Default)]
+pub(crate) struct Unread(Vec<usize>);
+
+impl Unread {
+    /// Whether every property statement set its value.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// Whether the statement whose keyword starts at `offset` set nothing.
+    pub(crate) fn contains(&self, offset: usize) -> bool {
+        self.0.binary_search(&offset).is_ok()
+    }
+}
+
+/// [`resolve`], with the property statements that set nothing.
+pub(crate) fn resolve_noting_unread(
+    tree: &SyntaxTree,
+    mode: ContactModel,
+) -> (Scene, Vec<Diagnostic>, Unread) {
     let mut r = Resolver {
         tree,
         mode,
@@ -33,6 +61,9 @@ pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>
         out: Vec::new(),
         block_osc_freq: None,
         block_start: 0,
+        block_type_unread: false,
+        unread: Unread::default(),
+        pending_freqs: Vec::new(),
     };
     let walls = tree
         .items()
@@ -45,7 +76,8 @@ pub fn resolve(tree: &SyntaxTree, mode: ContactModel) -> (Scene, Vec<Diagnostic>
     }
     r.close_block();
     r.scene.units = r.units;
-    (r.scene, r.out)
+    negative_osc_freq::add_fixes(&r.pending_freqs, &r.scene, tree.text(), &mut r.out);
+    (r.scene, r.out, r.unread)
 }
 
 /// Reads a number token (already validated by the lexer) exactly as `str::parse` does.
@@ -116,11 +148,17 @@ struct Resolver<'t> {
     scene: Scene,
     target: Target,
     out: Vec<Diagnostic>,
-    /// A negative `osc-freq` set in the open block: reported when the block closes,
-    /// with a fix computed from the block's final amplitude and phase.
-    block_osc_freq: Option<(Range<usize>, f64)>,
+    /// A negative `osc-freq` set in the open block, with the units in force there:
+    /// reported when the block closes, its fix made once every wall is read.
+    block_osc_freq: Option<(Range<usize>, Units)>,
     /// Where the open block's keyword starts.
     block_start: usize,
+    /// A type written in the open block did not read.
+    block_type_unread: bool,
+    /// The property statements that set nothing.
+    unread: Unread,
+    /// The negative frequencies reported, whose fixes are made once every wall is read.
+    pending_freqs: Vec<negative_osc_freq::Pending>,
 }
 
 impl Resolver<'_> {
@@ -155,12 +193,16 @@ impl<'t> Resolver<'t> {
                     units: self.units,
                 });
                 self.target = Target::Wall(index);
+                self.block_type_unread = false;
+                self.note_unread_type(keyword, self.tree.values(stmt), None);
                 return;
             }
             Keyword::Defaults => {
                 self.close_block();
                 self.block_start = self.tree.span(self.tree.head(stmt)).start;
                 self.target = Target::Defaults;
+                self.block_type_unread = false;
+                self.note_unread_type(keyword, self.tree.values(stmt), None);
                 return;
             }
             _ => {}
@@ -169,7 +211,11 @@ impl<'t> Resolver<'t> {
             self.close_block();
             self.target = Target::None;
         }
-        let Some(raw) = self.read(keyword, stmt) else {
+        let values = self.tree.values(stmt);
+        let raw = self.read(keyword, values);
+        self.note_unread_type(keyword, values, raw);
+        let Some(raw) = raw else {
+            self.set_nothing(keyword, stmt);
             return;
         };
         let values = self.values_span(stmt);
@@ -180,10 +226,46 @@ impl<'t> Resolver<'t> {
         }
     }
 
+    /// Notes a property statement that set nothing.
+    fn set_nothing(&mut self, keyword: Keyword, stmt: &Statement) {
+        if keyword.role() == Role::Property {
+            let start = self.tree.span(self.tree.head(stmt)).start;
+            self.unread.0.push(start);
+        }
+    }
+
+    /// Notes a type written in the open block that did not read (`raw` is what the
+    /// statement read): a `type` whose value is not a type name, or a type name that is
+    /// not the value of a `type` (`wall shell`, or one after a misspelled `type`). The wall
+    /// (or the walls the defaults make) is then judged by no type.
+    fn note_unread_type(&mut self, keyword: Keyword, values: &[TokenId], raw: Option<Raw>) {
+        // What read is a number or a type name that is the statement's value: only the
+        // values after it, or those of a statement that did not read, can be a stray one.
+        let read = raw.map_or(0, |_| keyword.shape().arity());
+        if read >= values.len() && raw.is_some() {
+            return;
+        }
+        let unread = (keyword == Keyword::Type && raw.is_none())
+            || values[read.min(values.len())..]
+                .iter()
+                .any(|&v| matches!(self.tree.kind(v), TokenKind::TypeName(_)));
+        if !unread {
+            return;
+        }
+        self.block_type_unread = true;
+        match self.target {
+            Target::Wall(i) => self.scene.walls[i].settings.set_type_unread(),
+            Target::Defaults => {
+                self.shared = None;
+                self.defaults.set_type_unread(true);
+            }
+            Target::None => {}
+        }
+    }
+
     /// The values of a statement if they fit its keyword (the syntax check reports the
     /// ones that do not).
-    fn read(&self, keyword: Keyword, stmt: &Statement) -> Option<Raw> {
-        let values = self.tree.values(stmt);
+    fn read(&self, keyword: Keyword, values: &[TokenId]) -> Option<Raw> {
         let shape = keyword.shape();
         if values.len() < shape.arity() {
             return None;
@@ -272,6 +354,7 @@ impl<'t> Resolver<'t> {
         };
         let at = self.read_at(keyword, values.clone());
         if !number_too_large::check(&at, value, &mut self.out) {
+            self.set_nothing(keyword, stmt);
             return;
         }
         let value = rules::check_property(&at, value, &mut self.out);
@@ -290,7 +373,7 @@ impl<'t> Resolver<'t> {
         };
         if keyword.value_range() == ValueRange::NonNegativeFrequency {
             self.block_osc_freq =
-                negative_osc_freq::is_negative(value).then(|| (values.clone(), self.units.length));
+                negative_osc_freq::is_negative(value).then(|| (values.clone(), self.units));
         }
         // Setting a normal spring constant sets the tangential one to 2/7 of it.
         let derived = match keyword {
@@ -330,6 +413,11 @@ impl<'t> Resolver<'t> {
             _ => {
                 // The defaults change: walls created from now on share a new copy.
                 self.shared = None;
+                if keyword == Keyword::Type {
+                    // A type that reads makes the defaults' type known, unless another
+                    // written in this block did not read.
+                    self.defaults.set_type_unread(self.block_type_unread);
+                }
                 self.defaults.set(keyword, setting);
                 if let Some((kt, s)) = derived {
                     self.defaults.set(kt, s);
@@ -338,37 +426,43 @@ impl<'t> Resolver<'t> {
         }
     }
 
-    /// Ends the open block: reports a negative `osc-freq` set in it, with a fix from the
-    /// block's final amplitude and phase.
+    /// Ends the open block: reports a negative `osc-freq` set in it, and keeps what its
+    /// fix needs: the block's final amplitude and phase.
     fn close_block(&mut self) {
-        let Some((values, length_unit)) = self.block_osc_freq.take() else {
+        let Some((freq, units)) = self.block_osc_freq.take() else {
             return;
         };
-        let get = |k: Keyword| match self.target {
-            Target::Wall(i) => self.scene.walls[i].settings.get(k),
-            _ => self.defaults.get(k),
+        let settings = match self.target {
+            Target::Wall(i) => Some(&self.scene.walls[i].settings),
+            _ => None,
         };
-        let lookup = |k: Keyword| {
-            get(k).cloned().unwrap_or_else(|| Setting {
-                value: match k.builtin() {
-                    walls_keywords::Builtin::Number(x) => Value::Number(x),
-                    _ => Value::Number(0.0),
-                },
-                source: Source::Builtin,
-            })
+        let end = |k: Keyword| {
+            settings
+                .map_or_else(|| self.defaults.get(k), |s| s.get(k))
+                .cloned()
+                .unwrap_or_else(|| Setting {
+                    value: match k.builtin() {
+                        walls_keywords::Builtin::Number(x) => Value::Number(x),
+                        _ => Value::Number(0.0),
+                    },
+                    source: Source::Builtin,
+                })
         };
-        let d = negative_osc_freq::at_block_end(
+        let pending = negative_osc_freq::Pending {
+            at: self.out.len(),
+            in_wall: matches!(self.target, Target::Wall(_)),
+            block_start: self.block_start,
+            first_after: self.scene.walls.len(),
+            units,
+            ampl: end(Keyword::OscAmpl),
+            phase: end(Keyword::OscPhase),
+            freq,
+        };
+        self.out.push(negative_osc_freq::at_block_end(
             self.tree.text(),
-            self.block_start,
-            length_unit,
-            &values,
-            lookup,
-        );
-        self.push(d);
-    }
-
-    fn push(&mut self, d: Diagnostic) {
-        self.out.push(d);
+            &pending.freq,
+        ));
+        self.pending_freqs.push(pending);
     }
 }
 

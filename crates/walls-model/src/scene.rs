@@ -28,6 +28,12 @@ pub enum Value {
 }
 
 impl Value {
+    /// The value of `k` before anything sets it (`None` for keywords without a value).
+    #[inline]
+    pub fn builtin(k: Keyword) -> Option<Value> {
+        Value::from_builtin(k.builtin())
+    }
+
     #[inline]
     fn from_builtin(b: Builtin) -> Option<Value> {
         match b {
@@ -131,6 +137,8 @@ pub struct Setting {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Settings {
     entries: SmallVec<[(Keyword, Setting); 4]>,
+    /// A type was written that did not read (see [`Wall::known_type`]).
+    type_unread: bool,
 }
 
 impl Settings {
@@ -154,6 +162,16 @@ impl Settings {
     /// Every setting, in the order first set.
     pub fn iter(&self) -> impl Iterator<Item = &(Keyword, Setting)> {
         self.entries.iter()
+    }
+
+    /// Whether a type written for these settings did not read.
+    pub fn type_unread(&self) -> bool {
+        self.type_unread
+    }
+
+    /// Says whether a type written for these settings did not read.
+    pub(crate) fn set_type_unread(&mut self, unread: bool) {
+        self.type_unread = unread;
     }
 }
 
@@ -184,6 +202,24 @@ impl WallSettings {
     /// Sets `k` for this wall, over what it inherited.
     pub fn set(&mut self, k: Keyword, setting: Setting) {
         self.own.set(k, setting);
+    }
+
+    /// The setting for `k` the wall takes from its `defaults`, whatever it sets itself.
+    pub fn inherited(&self, k: Keyword) -> Option<&Setting> {
+        self.inherited.get(k)
+    }
+
+    /// Notes that a type written in the wall's block did not read: the wall's type is
+    /// unknown, whatever else its block or its defaults say.
+    pub(crate) fn set_type_unread(&mut self) {
+        self.own.set_type_unread(true);
+    }
+
+    /// Whether the wall's type is unknown: a type written in its block did not read, or
+    /// its block sets no type and it inherits defaults whose type did not read.
+    pub fn type_unread(&self) -> bool {
+        self.own.type_unread()
+            || (self.own.get(Keyword::Type).is_none() && self.inherited.type_unread())
     }
 
     /// Every setting: the inherited ones in their order (each as the wall overrides it),
@@ -272,7 +308,18 @@ impl Wall {
         }
     }
 
-    /// The wall's type.
+    /// The wall's type, if it is known: `None` when a type written for the wall (in its
+    /// block, or in the `defaults` it inherits its type from) did not read: a `type`
+    /// without a type name after it, or a type name that is not the value of a `type`
+    /// (`wall shell`). Such a wall is judged by no type: the checks that depend on the
+    /// type are silent on it, and the syntax error is the finding.
+    #[inline]
+    pub fn known_type(&self) -> Option<WallType> {
+        (!self.settings.type_unread()).then(|| self.wall_type())
+    }
+
+    /// The wall's type as pkdgrav's reader leaves it: the last `type` that read, plane
+    /// if none did (see [`Wall::known_type`] for the checks).
     #[inline]
     pub fn wall_type(&self) -> WallType {
         match self.value(Keyword::Type) {

@@ -154,8 +154,11 @@ pub static UNKNOWN_WORD: Code = Code {
     explanation: "pkdgrav stops at a word it does not know. Keywords and type names are \
 matched without regard to case, so the usual causes are misspellings (`raduis`), `_` \
 written for `-` or the reverse (`osc_ampl`), or a stray word. When a keyword is close, \
-the diagnostic suggests it (an unsafe fix: check it is the one you meant). The numbers \
-after an unknown word are taken as its values, so they cause no further diagnostics.
+the diagnostic suggests it in its help. It offers no fix: a fix never changes what the \
+file means, and the statement a guessed keyword makes is read and judged like any other \
+(it may set a value a later token overrides, that the wall's type ignores, or that another \
+wall inherited from `defaults`). The numbers after an unknown word are taken as its values, \
+so they cause no further diagnostics.
 
 Bad:
 ```walls
@@ -303,7 +306,9 @@ pub static UNKNOWN_WALL_TYPE: Code = Code {
     summary: "`type` is followed by something that is not a wall type",
     explanation: "The wall types are plane, triangle, rectangle, disk (or disc), \
 cylinder-infinite, cylinder-finite and shell, matched without regard to case. When a \
-type is close, the diagnostic suggests it.
+type is close, the diagnostic suggests it in its help (not as a fix: the type decides \
+what every other token of the wall means). Until the type reads, the wall is judged by no \
+type: the checks that depend on it are silent on the wall.
 
 Bad:
 ```walls
@@ -374,7 +379,9 @@ pub static TYPE_NAME_WITHOUT_TYPE: Code = Code {
     name: "type-name-without-type",
     summary: "a wall type name stands where a keyword belongs",
     explanation: "A type name is the value of `type`: `wall plane` is read by pkdgrav as \
-the keyword `wall` and then an unknown word. The fix (unsafe) inserts `type`.
+the keyword `wall` and then an unknown word. The help says where `type` goes; there is \
+no fix, since the type decides what every other token of the wall means. Until it reads, \
+the wall is judged by no type: the checks that depend on it are silent on the wall.
 
 Bad:
 ```walls

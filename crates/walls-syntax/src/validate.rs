@@ -410,14 +410,9 @@ impl<'t> Validator<'t> {
                     };
                     let d = Diagnostic::error(&codes::UNKNOWN_WALL_TYPE, span.clone(), message);
                     match suggest::type_like(&text) {
-                        suggest::Suggestion::One(t) => d.with_help(format!("did you mean `{t}`?")).with_fix(
-                            Applicability::Unsafe,
-                            format!("replace with `{t}`"),
-                            vec![Edit {
-                                span,
-                                replacement: t.into(),
-                            }],
-                        ),
+                        // A guess at the type: help, not a fix (a fix keeps the meaning, and a
+                        // type decides what every other token of the wall means).
+                        suggest::Suggestion::One(t) => d.with_help(format!("did you mean `{t}`?")),
                         suggest::Suggestion::Several(names) => {
                             d.with_help(format!("did you mean {}?", names.join(" or ")))
                         }
@@ -572,15 +567,7 @@ impl<'t> Validator<'t> {
                     .with_help(format!(
                         "a type name is the value of `type`: write `type {}`",
                         t.name()
-                    ))
-                    .with_fix(
-                        Applicability::Unsafe,
-                        "insert `type`",
-                        vec![Edit {
-                            span: span.start..span.start,
-                            replacement: "type ".into(),
-                        }],
-                    ),
+                    )),
                 );
                 j += 1;
                 continue;
@@ -591,15 +578,10 @@ impl<'t> Validator<'t> {
                 format!("unknown word `{text}`"),
             );
             let suggestion = self.keyword_like(self.text(tok));
+            // A guess at the keyword: help, not a fix (the statement it would make is
+            // judged by every rule, and may change other walls' values).
             d = match suggestion {
-                Some(k) => d.with_help(format!("did you mean `{k}`?")).with_fix(
-                    Applicability::Unsafe,
-                    format!("replace with `{k}`"),
-                    vec![Edit {
-                        span,
-                        replacement: k.into(),
-                    }],
-                ),
+                Some(k) => d.with_help(format!("did you mean `{k}`?")),
                 None => {
                     d.with_help("see `walls-lint --explain S101` for the keywords of the language")
                 }

@@ -4,9 +4,9 @@
 
 use crate::check::Checker;
 use crate::fix;
-use crate::scene::{Source, Wall};
-use walls_diagnostics::{Applicability, Code, Diagnostic, Edit};
-use walls_keywords::{Keyword, Types};
+use crate::scene::{Place, Source, Wall};
+use walls_diagnostics::{Applicability, Code, Diagnostic};
+use walls_keywords::{Keyword, Types, WallType};
 
 /// An oscillating wall still shakes along +z although its normal is not +z.
 pub static OSC_VEC_NOT_FOLLOWING_ORIENT: Code = Code {
@@ -17,7 +17,8 @@ pub static OSC_VEC_NOT_FOLLOWING_ORIENT: Code = Code {
         "`osc-vec` defaults to the *initial* orient, 0 0 1, and does not follow a later `orient`
 (or a triangle's or rectangle's normal). A wall tilted away from z that oscillates without
 an `osc-vec` therefore shakes along z. The fix (unsafe: you may want z) sets `osc-vec` to
-the wall's normal.
+the wall's normal, after the wall's own `orient` (for an `orient` from `defaults`, which
+other walls share, the help says what to add).
 
 Bad:
 ```walls
@@ -39,7 +40,7 @@ wall type plane
 };
 
 /// Reports an oscillating wall without `osc-vec` whose normal is not ±z.
-pub(crate) fn check(cx: &mut Checker, wall: &Wall) {
+pub(crate) fn check(cx: &mut Checker, wall: &Wall, t: WallType) {
     let (a, w) = (wall.number(Keyword::OscAmpl), wall.number(Keyword::OscFreq));
     if a == 0.0 || w == 0.0 || wall.settings.get(Keyword::OscVec).is_some() {
         return;
@@ -48,7 +49,7 @@ pub(crate) fn check(cx: &mut Checker, wall: &Wall) {
     if normal.norm() == 0.0 || normal.z.abs() > 1.0 - 1e-9 {
         return;
     }
-    let polygon = Types::POLYGON.contains(wall.wall_type());
+    let polygon = Types::POLYGON.contains(t);
     let orient = (!polygon).then(|| wall.setting(Keyword::Orient)).flatten();
     let mut d = Diagnostic::warning(
         &OSC_VEC_NOT_FOLLOWING_ORIENT,
@@ -65,14 +66,22 @@ pub(crate) fn check(cx: &mut Checker, wall: &Wall) {
     if let Some(span) = cx.span_of(wall, Keyword::OscAmpl) {
         d = d.with_label(span, "it oscillates");
     }
+    // Only the wall's own `orient` gets the fix: an `osc-vec` added to `defaults` would
+    // reach other walls too.
+    let written = fix::vector(&normal);
     d = match orient.map(|s| s.source) {
-        Some(Source::Set { values, .. }) => d.with_fix(
+        Some(Source::Set {
+            values,
+            place: Place::Wall,
+            ..
+        }) if fix::normal_numbers(&written) => d.with_fix(
             Applicability::Unsafe,
             "oscillate along the normal: set osc-vec to orient",
-            vec![Edit {
-                span: values.range().end..values.range().end,
-                replacement: format!(" osc-vec {}", fix::vector(&normal)),
-            }],
+            vec![fix::append(
+                cx.tree.text(),
+                values.range().end,
+                format!(" osc-vec {written}"),
+            )],
         ),
         _ => d.with_help(format!(
             "add `osc-vec {}` to oscillate along the normal",

@@ -4,7 +4,7 @@
 
 use crate::check::Checker;
 use crate::fix;
-use crate::scene::{Setting, Source, Vec3, Wall, direction};
+use crate::scene::{Place, Setting, Source, Vec3, Wall, direction};
 use walls_diagnostics::{Applicability, Code, Diagnostic, Edit};
 use walls_keywords::{Keyword, WallType};
 
@@ -15,8 +15,8 @@ pub static RECTANGLE_NOT_RECTANGULAR: Code = Code {
     summary: "a rectangle's `vertex1` and `vertex2` are not perpendicular",
     explanation:
         "pkdgrav's rectangles have square corners: |cos| of the angle between vertex1 and vertex2
-must be at most 0.001. The fix (unsafe: it moves a vertex) replaces vertex2 by its part
-perpendicular to vertex1.
+must be at most 0.001. The fix (unsafe: it moves a vertex) replaces the wall's own vertex2
+by its part perpendicular to vertex1 (offered when that part is not zero).
 
 Bad:
 ```walls
@@ -62,27 +62,37 @@ pub(crate) fn check(cx: &mut Checker, wall: &Wall, t: WallType) {
             cos.abs()
         ),
     );
+    // Only the wall's own vertex2 gets the fix (one from `defaults` is other walls' too),
+    // and only where its part across vertex1 is a vertex that reads back square.
     if let Some(Setting {
-        source: Source::Set { values, .. },
+        source:
+            Source::Set {
+                values,
+                place: Place::Wall,
+                ..
+            },
         ..
     }) = wall.setting(Keyword::Vertex2)
     {
-        // Back to the units vertex2 was written in: the ratio of its largest component
-        // to that component as written.
-        let written: Vec<f64> = cx.tree.text()[values.range()]
-            .split([' ', '\t', ',', '='])
-            .filter_map(|w| w.parse::<f64>().ok())
+        // Back to the units vertex2 was written in.
+        let unit = wall.units.length;
+        let written = fix::vector(&((v2 - d1 * v2.dot(&d1)) / unit));
+        let read: Vec<f64> = written
+            .split(' ')
+            .filter_map(|x| x.parse::<f64>().ok())
             .collect();
-        let written_max = written.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let scale = v2.amax() / written_max;
-        let perpendicular: Vec3 = (v2 - d1 * v2.dot(&d1)) / scale;
-        if perpendicular.iter().all(|x| x.is_finite()) {
+        let square = match read[..] {
+            [x, y, z] => direction(&(Vec3::new(x, y, z) * unit))
+                .is_some_and(|d| d.dot(&d1).abs() <= RECTANGLE_COS_TOLERANCE),
+            _ => false,
+        };
+        if square {
             d = d.with_fix(
                 Applicability::Unsafe,
                 "make vertex2 perpendicular to vertex1 (keep its part across vertex1)",
                 vec![Edit {
                     span: values.range(),
-                    replacement: fix::vector(&perpendicular),
+                    replacement: written,
                 }],
             );
         }

@@ -12,7 +12,8 @@ pub static REPEATED_TOKEN: Code = Code {
     name: "repeated-token",
     summary: "a token is set twice in one block",
     explanation:
-        "The last value wins, so the earlier one has no effect. The fix (safe) removes the earlier
+        "The last value wins, so the earlier one has no effect. Only statements whose values read
+count: a later `radius` without a value overrides nothing. The fix (safe) removes the earlier
 one.
 
 Bad:
@@ -49,18 +50,15 @@ pub(crate) fn check(cx: &mut Checker, block: &Block) {
     for (earlier, last) in repeated {
         let head = tree.head(earlier);
         let name = tree.token_text(head);
-        cx.push(
-            Diagnostic::warning(
-                &REPEATED_TOKEN,
-                tree.span(head),
-                format!("`{name}` is set again later in this block, so this value has no effect"),
-            )
-            .with_label(tree.span(tree.head(last)), "the last one wins")
-            .with_fix(
-                Applicability::Safe,
-                format!("remove this `{name}`"),
-                vec![cx.delete(earlier)],
-            ),
-        );
+        let mut d = Diagnostic::warning(
+            &REPEATED_TOKEN,
+            tree.span(head),
+            format!("`{name}` is set again later in this block, so this value has no effect"),
+        )
+        .with_label(tree.span(tree.head(last)), "the last one wins");
+        if let Some(edits) = cx.delete_all(std::iter::once(earlier)) {
+            d = d.with_fix(Applicability::Safe, format!("remove this `{name}`"), edits);
+        }
+        cx.push(d);
     }
 }

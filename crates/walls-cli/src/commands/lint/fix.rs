@@ -155,6 +155,16 @@ fn fix(
     fixed.map(|checked| (checked, count))
 }
 
+/// The text `walls-lint --fix` (with `Unsafe`: `--unsafe-fixes`) makes of `text` with no
+/// settings file, and how many fixes it applied: the same rounds as a file's.
+pub fn fix_text(text: &str, options: &Options, level: Applicability) -> (String, usize) {
+    let checked = check_text(text, options);
+    match fix(&checked, options, &|_| {}, level) {
+        Some((fixed, count)) => (fixed.text.to_string(), count),
+        None => (text.to_string(), 0),
+    }
+}
+
 /// Writes to standard output what fixing gave for it, file after file: the diffs, or
 /// standard input's fixed text.
 pub(super) fn write_outputs(fixes: &[FileFixes]) -> std::io::Result<()> {

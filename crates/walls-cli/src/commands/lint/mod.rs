@@ -12,6 +12,8 @@
 mod fix;
 mod walk;
 
+pub use fix::{MAX_ROUNDS as MAX_FIX_ROUNDS, fix_text};
+
 use super::settings::{Resolver, SettingsArgs, absolute_file};
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
 use clap::{Parser, ValueEnum};
