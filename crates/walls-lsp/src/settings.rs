@@ -108,10 +108,17 @@ impl Check {
 }
 
 /// The LSP position (UTF-16) of 1-based `line` and character `column` of the file at
-/// `path`; characters are counted as UTF-16 units if the file cannot be read again.
+/// `path`; characters are counted as UTF-16 units if the file cannot be read again (or
+/// is no longer a regular file within the limit: a pipe is never waited on).
 fn position_in(path: &Path, line: usize, column: usize) -> Position {
     let characters = column.saturating_sub(1);
-    let text = std::fs::read_to_string(path).unwrap_or_default();
+    let text = std::fs::metadata(path)
+        .ok()
+        .filter(|m| m.is_file())
+        .and_then(|_| std::fs::File::open(path).ok())
+        .and_then(|f| walls_config::read_at_most(f, walls_config::MAX_FILE_BYTES).ok())
+        .and_then(|bytes| String::from_utf8(bytes).ok())
+        .unwrap_or_default();
     let units = text
         .lines()
         .nth(line.saturating_sub(1))
