@@ -30,9 +30,14 @@ pub struct Action {
     pub edits: Vec<Edit>,
 }
 
-/// A quick fix for every diagnostic touching `range` that has one, then "Fix all safe
-/// problems (N)" if any fix is safe.
-pub fn code_actions(analysis: &Analysis, range: Range<usize>) -> Vec<Action> {
+/// A quick fix for each diagnostic touching `range` that has one (the first
+/// `max_quick_fixes` of them), then "Fix all safe problems (N)" if any fix is safe: one
+/// edit of the text, however many fixes.
+pub fn code_actions(
+    analysis: &Analysis,
+    range: Range<usize>,
+    max_quick_fixes: usize,
+) -> Vec<Action> {
     let text = analysis.text();
     let diagnostics = analysis.diagnostics();
     let mut actions = Vec::new();
@@ -40,6 +45,9 @@ pub fn code_actions(analysis: &Analysis, range: Range<usize>) -> Vec<Action> {
         let Some(fix) = &d.fix else { continue };
         if d.span.end < range.start || range.end < d.span.start {
             continue;
+        }
+        if actions.len() == max_quick_fixes {
+            break;
         }
         actions.push(Action {
             title: format!("{} ({})", fix.message, d.code.id),

@@ -39,5 +39,5 @@ pub use format::{format, format_range};
 pub use hints::{InlayHint, inlay_hints};
 pub use hover::{Hover, hover};
 pub use lines::Lines;
-pub use outline::{Symbol, SymbolKind, folding, symbols};
+pub use outline::{MAX_DETAIL, Symbol, SymbolKind, folding, symbols};
 pub use tokens::{Highlight, HighlightKind, semantic_tokens};
