@@ -808,3 +808,28 @@ async fn tokens_folds_hints_and_fixes_are_bounded() {
         "wall type plane\n"
     );
 }
+
+#[cfg(unix)]
+#[tokio::test]
+async fn a_fifo_named_walls_toml_is_named_not_waited_on() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("walls.toml");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let uri = format!("file://{}/scene.walls", dir.path().display());
+    let mut c = Client::start(json!({"maxWalls": 1})).await;
+    let published = c.open_at(&uri, TWO_WALLS).await;
+    let settings = std::fs::canonicalize(&fifo).unwrap();
+    assert_eq!(
+        published["diagnostics"][0]["message"],
+        format!(
+            "{}: is a fifo, not a settings file (a settings file found in a folder is a regular file)\n\
+             this file is checked with the editor's settings instead",
+            settings.display()
+        )
+    );
+    assert_eq!(codes(&published), ["-", "C209"]);
+}
