@@ -119,17 +119,52 @@ impl std::fmt::Display for ReadError {
     }
 }
 
+/// The pieces [`read_at_most`] reads a long input in.
+const PIECE: usize = 64 << 20;
+
 /// Reads all of `reader`, up to `limit` bytes: more is an error, found after reading one
-/// byte past the limit (so never more than `limit + 1` bytes are kept). Every reader of
-/// the tools' files uses it, with [`MAX_FILE_BYTES`].
+/// byte past the limit. Never more than `limit + 1` bytes are held: an input longer than
+/// a piece of 64 MiB is read in pieces (a growing buffer would hold its old and its new
+/// copy at once: an endless pipe took 8.4 GB to refuse at 4 GB), joined once at the end
+/// when it is within the limit. Every reader of the tools' files uses it, with
+/// [`MAX_FILE_BYTES`].
 pub fn read_at_most(reader: impl Read, limit: u64) -> Result<Vec<u8>, ReadError> {
-    let mut bytes = Vec::new();
-    reader
-        .take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(ReadError::Io)?;
-    if bytes.len() as u64 > limit {
-        return Err(ReadError::TooLarge(limit));
+    read_in_pieces(reader, limit, PIECE)
+}
+
+/// [`read_at_most`], in pieces of `piece` bytes.
+fn read_in_pieces(reader: impl Read, limit: u64, piece: usize) -> Result<Vec<u8>, ReadError> {
+    let mut reader = reader.take(limit.saturating_add(1));
+    let mut pieces: Vec<Vec<u8>> = Vec::new();
+    let mut total = 0u64;
+    loop {
+        // The first piece grows as it needs (a small input is one small buffer); the
+        // others are one piece each.
+        let mut next = match pieces.is_empty() {
+            true => Vec::new(),
+            false => Vec::with_capacity(piece),
+        };
+        let n = (&mut reader)
+            .take(piece as u64)
+            .read_to_end(&mut next)
+            .map_err(ReadError::Io)?;
+        total += n as u64;
+        if total > limit {
+            return Err(ReadError::TooLarge(limit));
+        }
+        if n > 0 {
+            pieces.push(next);
+        }
+        if n < piece {
+            break;
+        }
+    }
+    if pieces.len() <= 1 {
+        return Ok(pieces.pop().unwrap_or_default());
+    }
+    let mut bytes = Vec::with_capacity(total as usize);
+    for p in pieces {
+        bytes.extend_from_slice(&p);
     }
     Ok(bytes)
 }
@@ -355,4 +390,27 @@ impl File<'_> {
 fn line_column(lines: &LineIndex, text: &str, offset: usize) -> (usize, usize) {
     let at = lines.line_col(text, offset);
     (at.line, at.column)
+}
+
+#[cfg(test)]
+mod pieces {
+    use super::{ReadError, read_in_pieces};
+
+    #[test]
+    fn an_input_in_pieces_is_joined_whole_or_refused_one_byte_past_the_limit() {
+        let input: Vec<u8> = (0..=255).cycle().take(1000).collect();
+        for piece in [1, 7, 10, 999, 1000, 4096] {
+            assert_eq!(
+                read_in_pieces(&input[..], 1000, piece).unwrap(),
+                input,
+                "{piece}"
+            );
+            let e = read_in_pieces(&input[..], 999, piece).unwrap_err();
+            assert!(matches!(e, ReadError::TooLarge(999)), "{piece}: {e}");
+        }
+        assert_eq!(read_in_pieces(&b""[..], 0, 10).unwrap(), b"");
+        // An endless input is read to one byte past the limit, then refused.
+        let e = read_in_pieces(std::io::repeat(0), 95, 10).unwrap_err();
+        assert!(matches!(e, ReadError::TooLarge(95)));
+    }
 }
