@@ -10,8 +10,8 @@ pub struct Input {
     pub bytes: Result<Vec<u8>, String>,
 }
 
-/// Largest file the tools accept: spans are stored as 32-bit offsets.
-pub const MAX_FILE_BYTES: u64 = u32::MAX as u64;
+/// Largest file the tools accept (settings files too): spans are stored as 32-bit offsets.
+pub use walls_config::MAX_FILE_BYTES;
 
 /// The name messages give the input `path`: `<stdin>` for `-`, else the path as given.
 pub fn display_name(path: &str) -> String {
@@ -46,17 +46,7 @@ pub fn read_all(reader: impl Read, what: &str) -> Result<Vec<u8>, String> {
 }
 
 fn read_at_most(reader: impl Read, what: &str, limit: u64) -> Result<Vec<u8>, String> {
-    let mut bytes = Vec::new();
-    reader
-        .take(limit + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read {what}: {e}"))?;
-    if bytes.len() as u64 > limit {
-        return Err(format!(
-            "cannot read {what}: larger than {limit} bytes, the most the tools read"
-        ));
-    }
-    Ok(bytes)
+    walls_config::read_at_most(reader, limit).map_err(|e| format!("cannot read {what}: {e}"))
 }
 
 #[cfg(test)]

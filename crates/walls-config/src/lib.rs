@@ -12,10 +12,21 @@
 //! Every mistake (unknown key, wrong type, unknown code, bad glob, a value out of range)
 //! is a [`SettingsError`] with the file, line and column. Command-line flags win over the
 //! file: the callers apply them.
+//!
+//! Resources: a settings file is read up to [`MAX_FILE_BYTES`], the limit walls files
+//! have (a device, a socket or a folder is refused unread, a pipe only read when named);
+//! every list is read and applied in linear time ([`Lint::filter`] looks each
+//! diagnostic's code up once). What a file costs in memory is about twenty times its
+//! size, plus the matcher the `ignore` crate compiles for each glob (some 10 KB each):
+//! docs/configuration.md, "Limits".
 
 mod read;
 
+pub use read::{ReadError, read_at_most};
+
 use ignore::gitignore::Gitignore;
+use ignore::overrides::OverrideBuilder;
+use std::collections::HashMap;
 use std::fmt;
 use std::path::{Path, PathBuf};
 use walls_diagnostics::{Code, Diagnostic, Severity};
@@ -28,6 +39,41 @@ pub const SETTINGS_FILES: [&str; 3] = ["walls.toml", ".walls.toml", "pyproject.t
 
 /// The older file of formatting options alone.
 pub const FORMAT_FILE: &str = ".walls-fmt.toml";
+
+/// The largest file the tools read, settings files and walls files alike: spans are
+/// stored as 32-bit offsets.
+pub const MAX_FILE_BYTES: u64 = u32::MAX as u64;
+
+/// Checks a glob of a settings file or of a flag (`--include`, `--exclude`) as the folder
+/// walk and `per-file-ignores` use it (gitignore-style): a `[` without its `]` is a
+/// mistake, and so are the globs that gitignore syntax would quietly read as matching
+/// nothing: an empty one, a comment (`#…`) and a negation (`!…`), which has no meaning in
+/// a list of files to take or to skip. `\#` and `\!` start a name with `#` or `!`.
+pub fn check_glob(glob: &str) -> Result<(), String> {
+    let invalid = |why: &str| Err(format!("invalid glob `{glob}`: {why}"));
+    if glob.trim().is_empty() {
+        return invalid("an empty glob matches nothing");
+    }
+    if glob.starts_with('#') {
+        return invalid(
+            "a glob cannot start with `#` (a comment in gitignore syntax); write `\\#` for a name that starts with `#`",
+        );
+    }
+    if glob.starts_with('!') {
+        return invalid(
+            "a glob here cannot be negated; write `\\!` for a name that starts with `!`",
+        );
+    }
+    OverrideBuilder::new("/")
+        .add(glob)
+        .map(|_| ())
+        .map_err(|e| bad_glob(glob, &e))
+}
+
+/// The message for a glob the `ignore` crate refused.
+fn bad_glob(glob: &str, e: &ignore::Error) -> String {
+    format!("invalid glob `{glob}`: {e}")
+}
 
 /// A settings file that could not be used.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -154,23 +200,27 @@ impl Lint {
 
     /// Removes from `diagnostics` the warnings and infos whose code is ignored for
     /// `file`. Errors are never removed: the ignores that met one are returned (each
-    /// once), for the caller to say so.
+    /// once), for the caller to say so. Linear in the ignores and the diagnostics: the
+    /// first ignore of each code (in the order [`Lint::ignores_for`] gives) is found once.
     pub fn filter<'a>(
         &'a self,
         file: Option<&'a Path>,
         diagnostics: &mut Vec<Diagnostic>,
     ) -> Vec<&'a Ignore> {
-        let ignores: Vec<&Ignore> = self.ignores_for(file).collect();
+        let mut ignores: HashMap<&str, &Ignore> = HashMap::new();
+        for i in self.ignores_for(file) {
+            ignores.entry(i.code.id).or_insert(i);
+        }
         if ignores.is_empty() {
             return Vec::new();
         }
         let mut met_errors: Vec<&Ignore> = Vec::new();
         diagnostics.retain(|d| {
-            let Some(ignore) = ignores.iter().find(|i| std::ptr::eq(i.code, d.code)) else {
+            let Some(&ignore) = ignores.get(d.code.id) else {
                 return true;
             };
             if d.severity == Severity::Error {
-                if !met_errors.iter().any(|m| std::ptr::eq(*m, *ignore)) {
+                if !met_errors.iter().any(|m| std::ptr::eq(*m, ignore)) {
                     met_errors.push(ignore);
                 }
                 return true;
@@ -201,7 +251,7 @@ pub fn find_format(dir: &Path) -> Result<(FormatOptions, Option<PathBuf>), Setti
     for d in dir.ancestors() {
         let settings = settings_in(d)?;
         let old = shown(&d.join(FORMAT_FILE));
-        let old = old.is_file().then_some(old);
+        let old = old.exists().then_some(old);
         match (settings, old) {
             (Some(s), Some(old)) if s.format.is_some() => {
                 let path = s.path.unwrap_or_default();
@@ -214,7 +264,7 @@ pub fn find_format(dir: &Path) -> Result<(FormatOptions, Option<PathBuf>), Setti
                     at: None,
                 });
             }
-            (_, Some(old)) => return format_of(load(&old)?),
+            (_, Some(old)) => return format_of(load_as(&old, read::Origin::Found)?),
             (Some(s), None) => return format_of(s),
             (None, None) => {}
         }
@@ -231,7 +281,12 @@ fn format_of(s: Settings) -> Result<(FormatOptions, Option<PathBuf>), SettingsEr
 /// read for its `[tool.walls]` (an error if it has none), a `.walls-fmt.toml` for
 /// formatting options, any other name as a `walls.toml`.
 pub fn load(path: &Path) -> Result<Settings, SettingsError> {
-    read::read(path)?.ok_or_else(|| SettingsError {
+    load_as(path, read::Origin::Named)
+}
+
+/// Reads the settings file at `path`, named or found; an error if it has no settings.
+fn load_as(path: &Path, origin: read::Origin) -> Result<Settings, SettingsError> {
+    read::read(path, origin)?.ok_or_else(|| SettingsError {
         path: path.to_path_buf(),
         at: None,
         message: "has no [tool.walls] table".into(),
@@ -243,10 +298,11 @@ fn settings_in(dir: &Path) -> Result<Option<Settings>, SettingsError> {
     let mut found: Option<Settings> = None;
     for name in SETTINGS_FILES {
         let path = shown(&dir.join(name));
-        if !path.is_file() {
+        // Something by that name that is no regular file is an error, not skipped.
+        if !path.exists() {
             continue;
         }
-        let Some(settings) = read::read(&path)? else {
+        let Some(settings) = read::read(&path, read::Origin::Found)? else {
             continue;
         };
         if let Some(first) = &found {

@@ -216,3 +216,141 @@ fn the_values_the_table_sets_replace_the_base_options() {
         (ContactModel::Ssdem, 30, Some(0.1), Some(2.0))
     );
 }
+
+#[test]
+fn every_glob_is_checked_as_include_is() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    let unclosed = "error parsing glob '[': unclosed character class; missing ']'";
+    for (text, expected) in [
+        (
+            "[lint.per-file-ignores]\n\"[\" = [\"C201\"]\n".to_string(),
+            format!("ROOT/walls.toml:2:1: invalid glob `[`: {unclosed}"),
+        ),
+        (
+            "[lint]\ninclude = [\"[\"]\n".to_string(),
+            format!("ROOT/walls.toml:2:12: invalid glob `[`: {unclosed}"),
+        ),
+        (
+            "[lint.per-file-ignores]\n\"!old/*.walls\" = [\"C201\"]\n".into(),
+            "ROOT/walls.toml:2:1: invalid glob `!old/*.walls`: a glob here cannot be negated; \
+             write `\\!` for a name that starts with `!`"
+                .into(),
+        ),
+        (
+            "[lint]\nexclude = [\"a\", \"#old\"]\n".into(),
+            "ROOT/walls.toml:2:17: invalid glob `#old`: a glob cannot start with `#` (a comment \
+             in gitignore syntax); write `\\#` for a name that starts with `#`"
+                .into(),
+        ),
+        (
+            "[lint]\ninclude = [\" \"]\n".into(),
+            "ROOT/walls.toml:2:12: invalid glob ` `: an empty glob matches nothing".into(),
+        ),
+    ] {
+        write(root, "walls.toml", &text);
+        assert_eq!(error(root, root), expected, "{text}");
+    }
+    // Escaped, they are names.
+    write(
+        root,
+        "walls.toml",
+        "[lint.per-file-ignores]\n\"\\\\!a.walls\" = [\"C201\"]\n\"\\\\#b.walls\" = [\"C201\"]\n",
+    );
+    let s = find(root).unwrap();
+    let root = absolute(root);
+    for name in ["!a.walls", "#b.walls"] {
+        assert_eq!(
+            s.lint.ignores_for(Some(&root.join(name))).count(),
+            1,
+            "{name}"
+        );
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_device_or_a_folder_is_no_settings_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    // Named: refused at once, nothing read.
+    let e = load(Path::new("/dev/zero")).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "/dev/zero: is a character device, not a settings file (a settings file is a regular file or a pipe)"
+    );
+    assert_eq!(
+        load(root).unwrap_err().message,
+        "is a folder, not a settings file"
+    );
+    // Found: a FIFO is refused rather than waited on, a folder named walls.toml too.
+    let fifo = root.join("a/walls.toml");
+    std::fs::create_dir_all(root.join("a")).unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    assert_eq!(
+        error(root, &root.join("a")),
+        "ROOT/a/walls.toml: is a fifo, not a settings file (a settings file found in a folder is a regular file)"
+    );
+    std::fs::create_dir_all(root.join("b/walls.toml")).unwrap();
+    assert_eq!(
+        error(root, &root.join("b")),
+        "ROOT/b/walls.toml: is a folder, not a settings file"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_pipe_named_is_read_up_to_the_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("settings");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let writer = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::write(fifo, "[lint]\nmax-walls = 7\n").unwrap())
+    };
+    assert_eq!(load(&fifo).unwrap().lint.max_walls, Some(7));
+    writer.join().unwrap();
+    // The limit holds while reading: never more than it is kept.
+    let endless = std::io::repeat(b'#');
+    let e = read_at_most(endless, 1000).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "larger than 1000 bytes, the most the tools read"
+    );
+    assert_eq!(read_at_most(&b"abc"[..], 3).unwrap(), b"abc");
+}
+
+#[test]
+fn a_file_over_the_limit_is_refused_before_it_is_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("walls.toml");
+    // Sparse: no disk space, and no time if it is never read.
+    let file = std::fs::File::create(&path).unwrap();
+    file.set_len(MAX_FILE_BYTES + 1).unwrap();
+    let start = std::time::Instant::now();
+    let e = load(&path).unwrap_err();
+    assert_eq!(
+        e.message,
+        "is 4294967296 bytes, larger than 4294967295 bytes, the most the tools read"
+    );
+    assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+}
+
+#[test]
+fn a_settings_file_that_is_not_utf8_is_located() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    std::fs::write(root.join("walls.toml"), b"[lint]\nmode = \"\xff\"\n").unwrap();
+    assert_eq!(
+        error(root, root),
+        "ROOT/walls.toml:2:9: is not UTF-8 text (byte 0xff)"
+    );
+}

@@ -94,6 +94,12 @@ pub fn format(parse: &Parse, options: &FormatOptions) -> Result<Formatted, NotFo
     Ok(layout::format(&parse.tree, options))
 }
 
+/// Whether [`format`] formats `parse` (no syntax error leaves its statements unclear),
+/// without listing the errors: a caller that only needs to know allocates nothing.
+pub fn can_format(parse: &Parse) -> bool {
+    !parse.diagnostics.iter().any(blocks_formatting)
+}
+
 /// Formats a text (convenience for [`format`] on a fresh parse).
 pub fn format_text(text: &str, options: &FormatOptions) -> Result<String, NotFormatted> {
     format(&walls_syntax::parse(text), options).map(|f| f.text)

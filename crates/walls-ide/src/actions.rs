@@ -1,9 +1,9 @@
 //! Code actions: a quick fix for each diagnostic with a fix, and "fix all safe
 //! problems".
 
-use crate::Analysis;
+use crate::{Analysis, Checked, fix_rounds};
 use std::ops::Range;
-use walls_diagnostics::{Applicability, Edit, apply_fixes};
+use walls_diagnostics::{Applicability, Edit};
 
 /// What a code action does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,9 +30,16 @@ pub struct Action {
     pub edits: Vec<Edit>,
 }
 
-/// A quick fix for every diagnostic touching `range` that has one, then "Fix all safe
-/// problems (N)" if any fix is safe.
-pub fn code_actions(analysis: &Analysis, range: Range<usize>) -> Vec<Action> {
+/// A quick fix for each diagnostic touching `range` that has one (the first
+/// `max_quick_fixes` of them), then "Fix all safe problems (N)" if any fix is safe: one
+/// edit of the text, however many fixes, made of the same rounds as `walls-lint --fix`'s
+/// ([`fix_rounds`]), each new text checked by `check`.
+pub fn code_actions(
+    analysis: &Analysis,
+    range: Range<usize>,
+    max_quick_fixes: usize,
+    check: &dyn Fn(String) -> Checked,
+) -> Vec<Action> {
     let text = analysis.text();
     let diagnostics = analysis.diagnostics();
     let mut actions = Vec::new();
@@ -40,6 +47,9 @@ pub fn code_actions(analysis: &Analysis, range: Range<usize>) -> Vec<Action> {
         let Some(fix) = &d.fix else { continue };
         if d.span.end < range.start || range.end < d.span.start {
             continue;
+        }
+        if actions.len() == max_quick_fixes {
+            break;
         }
         actions.push(Action {
             title: format!("{} ({})", fix.message, d.code.id),
@@ -50,22 +60,13 @@ pub fn code_actions(analysis: &Analysis, range: Range<usize>) -> Vec<Action> {
             edits: fix.edits.clone(),
         });
     }
-    let safe = diagnostics
-        .iter()
-        .filter(|d| {
-            d.fix
-                .as_ref()
-                .is_some_and(|f| f.applicability == Applicability::Safe)
-        })
-        .count();
-    if safe > 0 {
-        let fixed = apply_fixes(text, diagnostics, Applicability::Safe);
+    if let Some((fixed, count)) = fix_rounds(&analysis.checked, Applicability::Safe, check) {
         actions.push(Action {
-            title: format!("Fix all safe problems ({safe})"),
+            title: format!("Fix all safe problems ({count})"),
             kind: ActionKind::FixAll,
             edits: vec![Edit {
                 span: 0..text.len(),
-                replacement: fixed,
+                replacement: fixed.text.to_string(),
             }],
         });
     }

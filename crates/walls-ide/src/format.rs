@@ -5,8 +5,13 @@ use std::ops::Range;
 use walls_diagnostics::Edit;
 use walls_format::FormatOptions;
 
-/// The whole text formatted, if formatting changes it (and the file can be formatted).
+/// The whole text formatted, if formatting changes it (and the file can be formatted:
+/// whether it can is asked first, so that a file with a million syntax errors does not
+/// copy them to say no).
 pub fn format(analysis: &Analysis, options: &FormatOptions) -> Option<String> {
+    if !walls_format::can_format(&analysis.checked.parse) {
+        return None;
+    }
     let formatted = walls_format::format(&analysis.checked.parse, options).ok()?;
     (formatted.text != analysis.text()).then_some(formatted.text)
 }
@@ -17,5 +22,8 @@ pub fn format_range(
     range: Range<usize>,
     options: &FormatOptions,
 ) -> Option<Edit> {
+    if !walls_format::can_format(&analysis.checked.parse) {
+        return None;
+    }
     walls_format::format_range(&analysis.checked.parse, range, options).ok()?
 }

@@ -17,14 +17,22 @@ pub struct InlayHint {
     pub label: String,
 }
 
-/// The hints at offsets within `range` (both ends included), in order of the blocks.
-pub fn inlay_hints(analysis: &Analysis, range: Range<usize>) -> Vec<InlayHint> {
+/// The hints at offsets within `range` (both ends included), in order of the blocks; the
+/// first `max` of them.
+pub fn inlay_hints(analysis: &Analysis, range: Range<usize>, max: usize) -> Vec<InlayHint> {
     let tree = analysis.tree();
     let (first, last) = (range.start, range.end);
     let mut hints = Vec::new();
-    let hint = |offset: usize, label: String| InlayHint { offset, label };
+    let hint = |hints: &mut Vec<InlayHint>, offset: usize, label: String| {
+        if (first..=last).contains(&offset) {
+            hints.push(InlayHint { offset, label });
+        }
+    };
     let mut walls = analysis.scene().walls.iter();
     for item in tree.items() {
+        if hints.len() >= max {
+            break;
+        }
         let Item::Block(b) = item else { continue };
         let header = tree.statement_span(&b.head);
         let wall = (b.kind == BlockKind::Wall).then(|| walls.next()).flatten();
@@ -59,7 +67,11 @@ pub fn inlay_hints(analysis: &Analysis, range: Range<usize>) -> Vec<InlayHint> {
                     .first()
                     .filter(|s| tree.keyword(s) == Some(Keyword::Type))
                     .map_or(header.end, |s| tree.statement_span(s).end);
-                hints.push(hint(line_end, format!("inherits {}", inherited.join(", "))));
+                hint(
+                    &mut hints,
+                    line_end,
+                    format!("inherits {}", inherited.join(", ")),
+                );
             }
         }
         for s in body {
@@ -74,25 +86,29 @@ pub fn inlay_hints(analysis: &Analysis, range: Range<usize>) -> Vec<InlayHint> {
             // numbers as written.
             let values = tree.values(s);
             let written = tree.span(values[0]).start..end;
-            let raw: Vec<f64> = values
-                .iter()
-                .filter_map(|&v| tree.token_text(v).parse().ok())
-                .collect();
             let scaled: Vec<f64> = match setting.value {
                 Value::Number(x) => vec![x],
                 Value::Vector(v) => v.iter().copied().collect(),
                 _ => Vec::new(),
             };
+            // One more than the value has is enough to tell the counts apart: a line of
+            // a million numbers is not read into a million.
+            let raw: Vec<f64> = values
+                .iter()
+                .filter_map(|&v| tree.token_text(v).parse().ok())
+                .take(scaled.len() + 1)
+                .collect();
             let orientation = matches!(k, Keyword::Orient | Keyword::OscVec);
             if setting.source.span() == Some(written)
                 && !orientation
                 && scaled.len() == raw.len()
                 && scaled.iter().zip(&raw).any(|(a, b)| a != b)
             {
-                hints.push(hint(
+                hint(
+                    &mut hints,
                     end,
                     format!("= {} in pkdgrav units", show(&setting.value)),
-                ));
+                );
             }
             if matches!(k, Keyword::KN | Keyword::KNOuter | Keyword::KNInner) {
                 let kt = match k {
@@ -101,11 +117,11 @@ pub fn inlay_hints(analysis: &Analysis, range: Range<usize>) -> Vec<InlayHint> {
                     _ => Keyword::KTInner,
                 };
                 if let Some(Value::Number(v)) = wall.and_then(|w| w.value(kt)) {
-                    hints.push(hint(end, format!("{} = {v}", kt.name())));
+                    hint(&mut hints, end, format!("{} = {v}", kt.name()));
                 }
             }
         }
     }
-    hints.retain(|h| (first..=last).contains(&h.offset));
+    hints.truncate(max);
     hints
 }

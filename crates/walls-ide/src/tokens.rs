@@ -30,25 +30,31 @@ pub struct Highlight {
     pub kind: HighlightKind,
 }
 
-/// Every token worth colouring, in order (whitespace, unknown words and punctuation are
-/// not).
-pub fn semantic_tokens(analysis: &Analysis) -> Vec<Highlight> {
+/// Every token worth colouring that starts in `range` (a byte range; `0..usize::MAX` for
+/// the whole file), in order (whitespace, unknown words and punctuation are not), as
+/// they are asked for: the first is found by a binary search, and a caller that wants
+/// the first few reads no more.
+pub fn semantic_tokens(
+    analysis: &Analysis,
+    range: Range<usize>,
+) -> impl Iterator<Item = Highlight> + '_ {
     let tree = analysis.tree();
-    (0..tree.tokens().len())
-        .filter_map(|i| {
-            let id = TokenId(i as u32);
-            let kind = match tree.kind(id) {
-                TokenKind::Keyword(k) if k.role() == Role::Property => HighlightKind::Property,
-                TokenKind::Keyword(_) => HighlightKind::Keyword,
-                TokenKind::TypeName(_) => HighlightKind::WallType,
-                TokenKind::Number => HighlightKind::Number,
-                TokenKind::Comment | TokenKind::GluedComment => HighlightKind::Comment,
-                _ => return None,
-            };
-            Some(Highlight {
-                range: tree.span(id),
-                kind,
-            })
+    let starts = tree.tokens().starts();
+    let first = starts.partition_point(|&s| (s as usize) < range.start);
+    let end = starts.partition_point(|&s| (s as usize) < range.end);
+    (first..end).filter_map(move |i| {
+        let id = TokenId(i as u32);
+        let kind = match tree.kind(id) {
+            TokenKind::Keyword(k) if k.role() == Role::Property => HighlightKind::Property,
+            TokenKind::Keyword(_) => HighlightKind::Keyword,
+            TokenKind::TypeName(_) => HighlightKind::WallType,
+            TokenKind::Number => HighlightKind::Number,
+            TokenKind::Comment | TokenKind::GluedComment => HighlightKind::Comment,
+            _ => return None,
+        };
+        Some(Highlight {
+            range: tree.span(id),
+            kind,
         })
-        .collect()
+    })
 }

@@ -81,7 +81,7 @@ fn inlay_hints() {
     insta::glob!("data/inlay_hints/*.walls", |path| {
         let (a, _) = load(path);
         let mut out = String::new();
-        for h in walls_ide::inlay_hints(&a, 0..a.text().len()) {
+        for h in walls_ide::inlay_hints(&a, 0..a.text().len(), usize::MAX) {
             writeln!(out, "{} {}", at(&a, &(h.offset..h.offset)), h.label).unwrap();
         }
         snapshot_beside(path, &out);
@@ -123,7 +123,7 @@ fn symbols() {
     insta::glob!("data/symbols/*.walls", |path| {
         let (a, _) = load(path);
         let mut out = String::new();
-        for s in walls_ide::symbols(&a) {
+        for s in walls_ide::symbols(&a, usize::MAX) {
             write(&mut out, &a, &s, 0);
         }
         snapshot_beside(path, &out);
@@ -147,7 +147,7 @@ fn semantic_tokens() {
     insta::glob!("data/semantic_tokens/*.walls", |path| {
         let (a, _) = load(path);
         let mut out = String::new();
-        for t in walls_ide::semantic_tokens(&a) {
+        for t in walls_ide::semantic_tokens(&a, 0..usize::MAX) {
             writeln!(out, "{} {:?}", at(&a, &t.range), t.kind).unwrap();
         }
         snapshot_beside(path, &out);
@@ -160,7 +160,8 @@ fn code_actions() {
         let (a, c) = load(path);
         let c = cursor(path, c);
         let mut out = String::new();
-        for action in walls_ide::code_actions(&a, c..c) {
+        let check = |text: String| walls_ide::check_text(text, &Options::default());
+        for action in walls_ide::code_actions(&a, c..c, usize::MAX, &check) {
             writeln!(out, "{} ({:?})", action.title, action.kind).unwrap();
             for e in &action.edits {
                 writeln!(out, "  {} -> {:?}", at(&a, &e.span), e.replacement).unwrap();
@@ -168,6 +169,98 @@ fn code_actions() {
         }
         snapshot_beside(path, &out);
     });
+}
+
+/// `n` disks after a `lengthunit`, each with its radius.
+fn disks(n: usize) -> Analysis {
+    let mut text = String::from("lengthunit 2\n");
+    for _ in 0..n {
+        text.push_str("wall type disk\n  radius 1\n");
+    }
+    Analysis::of_text(text, &Options::default())
+}
+
+/// An outline as `name (kind): children`, one entry a line.
+fn outline(a: &Analysis, max: usize) -> Vec<String> {
+    walls_ide::symbols(a, max)
+        .iter()
+        .map(|s| {
+            format!(
+                "{} ({:?}) {}: {}",
+                s.name,
+                s.kind,
+                at(a, &s.selection_range),
+                s.children.len()
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn an_outline_has_at_most_the_entries_asked_for() {
+    let a = disks(25);
+    // 26 entries at the top, 50 statements in blocks.
+    let full = outline(&a, 76);
+    assert_eq!(full.len(), 26);
+    assert_eq!(full[1], "wall 0: disk (Wall) 2:1-2:5 \"wall\": 2");
+    // The top level alone.
+    let flat = outline(&a, 75);
+    assert_eq!(flat.len(), 26);
+    assert_eq!(flat[1], "wall 0: disk (Wall) 2:1-2:5 \"wall\": 0");
+    // Runs of ten, then of a hundred.
+    assert_eq!(
+        outline(&a, 3),
+        [
+            "walls 0–8 (Group) 1:1-1:11 \"lengthunit\": 0",
+            "walls 9–18 (Group) 20:1-20:5 \"wall\": 0",
+            "walls 19–24 (Group) 40:1-40:5 \"wall\": 0",
+        ]
+    );
+    let one = walls_ide::symbols(&a, 2);
+    assert_eq!(one.len(), 1);
+    assert_eq!(one[0].name, "walls 0–24");
+    assert_eq!(one[0].range, 0..a.text().len() - 1);
+    // A run with no wall is named by its first entry.
+    let units = Analysis::of_text("lengthunit 2\n".repeat(30), &Options::default());
+    assert_eq!(walls_ide::symbols(&units, 5)[0].name, "lengthunit …");
+    // A hundred thousand walls: a thousand groups of a hundred, never more.
+    let many = disks(100_000);
+    let groups = walls_ide::symbols(&many, 2000);
+    assert_eq!(groups.len(), 1001);
+    assert_eq!(groups[999].name, "walls 99899–99998");
+    assert_eq!(groups[1000].name, "wall 99999");
+}
+
+#[test]
+fn a_statement_detail_is_cut() {
+    let numbers = "1.5 ".repeat(1000);
+    let a = Analysis::of_text(
+        format!("wall type plane\n  origin {numbers}\n"),
+        &Options::default(),
+    );
+    let symbols = walls_ide::symbols(&a, 100);
+    let detail = symbols[0].children[1].detail.as_deref().unwrap();
+    assert!(detail.ends_with(" …"), "{detail}");
+    assert!(detail.len() <= walls_ide::MAX_DETAIL + 8, "{detail}");
+}
+
+#[test]
+fn hints_and_tokens_are_bounded() {
+    let text = format!("defaults\n  color 3\n{}", "wall type disk\n".repeat(100));
+    let a = Analysis::of_text(text, &Options::default());
+    let all = walls_ide::inlay_hints(&a, 0..a.text().len(), usize::MAX);
+    assert_eq!(all.len(), 100);
+    assert_eq!(walls_ide::inlay_hints(&a, 0..a.text().len(), 7), all[..7]);
+    // Tokens starting in a byte range: those of the 3rd wall's line.
+    let line = a.lines.line_start(4).unwrap()..a.lines.line_start(5).unwrap();
+    let tokens: Vec<_> = walls_ide::semantic_tokens(&a, line)
+        .map(|t| &a.text()[t.range])
+        .collect();
+    assert_eq!(tokens, ["wall", "type", "disk"]);
+    assert_eq!(
+        walls_ide::semantic_tokens(&a, 0..usize::MAX).count(),
+        3 + 300
+    );
 }
 
 #[test]

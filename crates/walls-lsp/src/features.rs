@@ -1,5 +1,12 @@
 //! The LSP features: each converts LSP positions to byte offsets, asks `walls-ide`, and
 //! maps its plain-data answer into LSP values (UTF-16 positions).
+//!
+//! Every answer has a bound, whatever the document: a list answer has at most the
+//! entries of its `MAX_…` constant below (tower-lsp turns each answer into a
+//! `serde_json::Value` before writing it, some 0.2 to 7 KB an entry, so that an outline
+//! of 100,000 walls with their statements took 2.9 GB), and the answers that carry text
+//! (formatting, "fix all") carry one edit of about the document's size. The bounds and
+//! what each costs are in docs/editors.md ("Limits").
 
 use crate::document::Document;
 use crate::position::{offset, position, range};
@@ -8,6 +15,21 @@ use tower_lsp_server::ls_types::{self as lsp, *};
 use walls_diagnostics::Severity;
 use walls_format::FormatOptions;
 use walls_ide::{ActionKind, Analysis, CompletionKind, HighlightKind, SymbolKind as Kind};
+
+/// The most entries of an outline: `walls-ide` shapes it to fit (the blocks without their
+/// statements, else runs of blocks).
+pub const MAX_SYMBOLS: usize = 2_000;
+/// The most diagnostics published for a document, errors first; one more says how many
+/// are left out.
+pub const MAX_DIAGNOSTICS: usize = 1_000;
+/// The most semantic tokens of one answer: past them, the editor's grammar colours.
+pub const MAX_TOKENS: usize = 50_000;
+/// The most folding ranges of one answer (VS Code's own default limit).
+pub const MAX_FOLDS: usize = 5_000;
+/// The most inlay hints of one answer.
+pub const MAX_HINTS: usize = 1_000;
+/// The most quick fixes of one answer (with "fix all", which is one edit).
+pub const MAX_QUICK_FIXES: usize = 100;
 
 /// The semantic token types, in legend order (`token_type` gives the index).
 pub const TOKEN_TYPES: [SemanticTokenType; 5] = [
@@ -40,13 +62,64 @@ fn byte_range(a: &Analysis, r: Range) -> std::ops::Range<usize> {
 }
 
 /// The document's diagnostics, as the client shows them: first the one naming an
-/// unusable settings file, if any.
+/// unusable settings file, if any; then at most [`MAX_DIAGNOSTICS`] of the check's, and
+/// one saying how many more there are.
 pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
-    let checked = doc.analysis.diagnostics().iter();
-    doc.settings_problem
-        .iter()
-        .cloned()
-        .chain(checked.map(|d| to_lsp(uri, &doc.analysis, d)))
+    let a = &doc.analysis;
+    let all = a.diagnostics();
+    let shown = published(all, MAX_DIAGNOSTICS);
+    let mut out: Vec<lsp::Diagnostic> = doc.settings_problem.iter().cloned().collect();
+    out.extend(shown.iter().map(|&i| to_lsp(uri, a, &all[i])));
+    let left_out = all.len() - shown.len();
+    if left_out > 0 {
+        // At the first one left out, where the editor's list stops being whole.
+        let first = (0..all.len())
+            .find(|i| shown.binary_search(i).is_err())
+            .map_or(0..0, |i| all[i].span.clone());
+        out.push(lsp::Diagnostic {
+            range: lsp_range(a, &first),
+            severity: Some(DiagnosticSeverity::INFORMATION),
+            source: Some("walls".into()),
+            message: format!(
+                "{left_out} more diagnostics are not shown: the editor gets {MAX_DIAGNOSTICS} of \
+                 this file's {}, errors first; `walls-lint` lists them all",
+                all.len()
+            ),
+            ..lsp::Diagnostic::default()
+        });
+    }
+    out
+}
+
+/// The indices of the diagnostics of `all` (in order of position) that are published:
+/// all of them when they are at most `max`, else the first errors up to `max`, then the
+/// first warnings, then the first infos, each kept in order of position.
+fn published(all: &[walls_diagnostics::Diagnostic], max: usize) -> Vec<usize> {
+    if all.len() <= max {
+        return (0..all.len()).collect();
+    }
+    let rank = |s: Severity| match s {
+        Severity::Error => 0,
+        Severity::Warning => 1,
+        Severity::Info => 2,
+    };
+    let mut count = [0usize; 3];
+    for d in all {
+        count[rank(d.severity)] += 1;
+    }
+    let mut room = max;
+    let quota = count.map(|c| {
+        let q = c.min(room);
+        room -= q;
+        q
+    });
+    let mut taken = [0usize; 3];
+    (0..all.len())
+        .filter(|&i| {
+            let r = rank(all[i].severity);
+            taken[r] += 1;
+            taken[r] <= quota[r]
+        })
         .collect()
 }
 
@@ -117,39 +190,42 @@ fn whole(a: &Analysis, new_text: String) -> TextEdit {
     TextEdit::new(lsp_range(a, &(0..a.text().len())), new_text)
 }
 
-/// A quick fix for every diagnostic in `r` that has one, and "fix all safe problems".
+/// A quick fix for each diagnostic in `r` that has one (at most [`MAX_QUICK_FIXES`]),
+/// and "fix all safe problems".
 pub fn code_actions(uri: &Uri, doc: &Document, r: Range) -> Vec<CodeActionOrCommand> {
     let a = &doc.analysis;
-    walls_ide::code_actions(a, byte_range(a, r))
-        .into_iter()
-        .map(|action| {
-            let edits = action
-                .edits
-                .into_iter()
-                .map(|e| TextEdit::new(lsp_range(a, &e.span), e.replacement))
-                .collect();
-            let edit = Some(workspace_edit(uri, edits));
-            CodeActionOrCommand::CodeAction(match action.kind {
-                ActionKind::QuickFix {
-                    diagnostic,
-                    preferred,
-                } => CodeAction {
-                    title: action.title,
-                    kind: Some(CodeActionKind::QUICKFIX),
-                    diagnostics: Some(vec![to_lsp(uri, a, &a.diagnostics()[diagnostic])]),
-                    edit,
-                    is_preferred: Some(preferred),
-                    ..CodeAction::default()
-                },
-                ActionKind::FixAll => CodeAction {
-                    title: action.title,
-                    kind: Some(CodeActionKind::SOURCE_FIX_ALL),
-                    edit,
-                    ..CodeAction::default()
-                },
-            })
+    walls_ide::code_actions(a, byte_range(a, r), MAX_QUICK_FIXES, &|text| {
+        doc.check.checked(text)
+    })
+    .into_iter()
+    .map(|action| {
+        let edits = action
+            .edits
+            .into_iter()
+            .map(|e| TextEdit::new(lsp_range(a, &e.span), e.replacement))
+            .collect();
+        let edit = Some(workspace_edit(uri, edits));
+        CodeActionOrCommand::CodeAction(match action.kind {
+            ActionKind::QuickFix {
+                diagnostic,
+                preferred,
+            } => CodeAction {
+                title: action.title,
+                kind: Some(CodeActionKind::QUICKFIX),
+                diagnostics: Some(vec![to_lsp(uri, a, &a.diagnostics()[diagnostic])]),
+                edit,
+                is_preferred: Some(preferred),
+                ..CodeAction::default()
+            },
+            ActionKind::FixAll => CodeAction {
+                title: action.title,
+                kind: Some(CodeActionKind::SOURCE_FIX_ALL),
+                edit,
+                ..CodeAction::default()
+            },
         })
-        .collect()
+    })
+    .collect()
 }
 
 fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
@@ -160,9 +236,10 @@ fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {
 }
 
 /// The outline: each wall ("wall 3: disk") and defaults block with its statements, and
-/// the statements outside blocks.
+/// the statements outside blocks, in at most [`MAX_SYMBOLS`] entries (walls-ide's
+/// `symbols` says how a longer outline is shaped).
 pub fn symbols(doc: &Document) -> Vec<DocumentSymbol> {
-    walls_ide::symbols(&doc.analysis)
+    walls_ide::symbols(&doc.analysis, MAX_SYMBOLS)
         .into_iter()
         .map(|s| to_symbol(&doc.analysis, s))
         .collect()
@@ -175,6 +252,7 @@ fn to_symbol(a: &Analysis, s: walls_ide::Symbol) -> DocumentSymbol {
         Kind::Defaults => (SymbolKind::NAMESPACE, true),
         Kind::Property => (SymbolKind::PROPERTY, false),
         Kind::Statement => (SymbolKind::CONSTANT, false),
+        Kind::Group => (SymbolKind::ARRAY, false),
     };
     DocumentSymbol {
         name: s.name,
@@ -188,11 +266,11 @@ fn to_symbol(a: &Analysis, s: walls_ide::Symbol) -> DocumentSymbol {
     }
 }
 
-/// A folding range for every block that spans several lines.
+/// A folding range for every block that spans several lines (the first
+/// [`MAX_FOLDS`]).
 pub fn folding(doc: &Document) -> Vec<FoldingRange> {
     let a = &doc.analysis;
     walls_ide::folding(a)
-        .into_iter()
         .filter_map(|span| {
             let start = a.lines.line_of(span.start);
             let end = a.lines.line_of(span.end);
@@ -203,6 +281,7 @@ pub fn folding(doc: &Document) -> Vec<FoldingRange> {
                 ..FoldingRange::default()
             })
         })
+        .take(MAX_FOLDS)
         .collect()
 }
 
@@ -234,14 +313,17 @@ pub fn completion(doc: &Document, at: Position) -> Vec<CompletionItem> {
         .collect()
 }
 
-/// Semantic tokens of the whole document, or of the lines of `only`.
+/// Semantic tokens of the whole document, or of the lines of `only`: the first
+/// [`MAX_TOKENS`] of them.
 pub fn semantic_tokens(doc: &Document, only: Option<Range>) -> Vec<SemanticToken> {
     let a = &doc.analysis;
     let text = a.text();
     let (first, last) = only.map_or((0, u32::MAX), |r| (r.start.line, r.end.line));
+    let line_start = |line: u32| a.lines.line_start(line as usize).unwrap_or(usize::MAX);
+    let bytes = line_start(first)..line_start(last.saturating_add(1));
     let mut out = Vec::new();
     let (mut prev_line, mut prev_start) = (0, 0);
-    for token in walls_ide::semantic_tokens(a) {
+    for token in walls_ide::semantic_tokens(a, bytes).take(MAX_TOKENS) {
         let start = position(&a.lines, text, token.range.start);
         if start.line < first || start.line > last {
             continue;
@@ -265,10 +347,10 @@ pub fn semantic_tokens(doc: &Document, only: Option<Range>) -> Vec<SemanticToken
 }
 
 /// Hints: what a wall inherits from `defaults`, values the unit tokens scale, and the
-/// `k_t` a `k_n` sets; only those inside `r`.
+/// `k_t` a `k_n` sets; only those inside `r`, the first [`MAX_HINTS`].
 pub fn inlay_hints(doc: &Document, r: Range) -> Vec<InlayHint> {
     let a = &doc.analysis;
-    walls_ide::inlay_hints(a, byte_range(a, r))
+    walls_ide::inlay_hints(a, byte_range(a, r), MAX_HINTS)
         .into_iter()
         .map(|h| InlayHint {
             position: position(&a.lines, a.text(), h.offset),

@@ -29,7 +29,12 @@
 //! bad value or an unknown key are named in one message to the user; the rest apply.
 //!
 //! The stream is framed by [`serve`] before tower-lsp's server sees it, so that a bad
-//! message is answered and skipped, never the end of the server.
+//! message is answered and skipped, never the end of the server, and a message too long
+//! or of too many JSON values is refused before it costs memory.
+//!
+//! Every answer has a bound whatever the document (the `MAX_…` constants of the
+//! features: 1,000 diagnostics published, an outline of 2,000 entries shaped to fit,
+//! 50,000 semantic tokens, …; docs/editors.md, "Limits").
 //!
 //! Edits are applied under one lock, and a document's diagnostics are published with
 //! its version, and only if no newer version has arrived meanwhile.
@@ -193,7 +198,7 @@ impl Backend {
     /// Checks `text` as the document at `uri`, with the settings found for it now.
     fn document(state: &State, uri: &Uri, version: i32, text: String) -> Document {
         let check = Check::find(uri, state.folder.as_deref(), &state.options);
-        Document::new(version, text, &check)
+        Document::new(version, text, check)
     }
 
     fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {

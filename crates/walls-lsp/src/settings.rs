@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use tower_lsp_server::ls_types::{self as lsp, *};
 use walls_config::{Lint, SettingsError};
 use walls_format::FormatOptions;
-use walls_ide::Analysis;
+use walls_ide::{Analysis, Checked};
 use walls_model::Options;
 
 /// Where a document's settings are looked for.
@@ -77,11 +77,16 @@ impl Check {
     }
 
     /// Checks `text`, less the warnings and infos the settings ignore (errors stay).
-    pub fn run(&self, text: String) -> Analysis {
+    pub fn checked(&self, text: String) -> Checked {
         let mut checked = walls_ide::check_text(text, &self.options);
         self.lint
             .filter(self.file.as_deref(), &mut checked.diagnostics);
-        Analysis::new(checked)
+        checked
+    }
+
+    /// [`Check::checked`], with the lines indexed for the editor's features.
+    pub fn run(&self, text: String) -> Analysis {
+        Analysis::new(self.checked(text))
     }
 
     /// The diagnostic that names the unusable settings file, if there is one: at the
@@ -108,10 +113,17 @@ impl Check {
 }
 
 /// The LSP position (UTF-16) of 1-based `line` and character `column` of the file at
-/// `path`; characters are counted as UTF-16 units if the file cannot be read again.
+/// `path`; characters are counted as UTF-16 units if the file cannot be read again (or
+/// is no longer a regular file within the limit: a pipe is never waited on).
 fn position_in(path: &Path, line: usize, column: usize) -> Position {
     let characters = column.saturating_sub(1);
-    let text = std::fs::read_to_string(path).unwrap_or_default();
+    let text = std::fs::metadata(path)
+        .ok()
+        .filter(|m| m.is_file())
+        .and_then(|_| std::fs::File::open(path).ok())
+        .and_then(|f| walls_config::read_at_most(f, walls_config::MAX_FILE_BYTES).ok())
+        .and_then(|bytes| String::from_utf8(bytes).ok())
+        .unwrap_or_default();
     let units = text
         .lines()
         .nth(line.saturating_sub(1))

@@ -13,6 +13,13 @@
 //!   whose length was too large swallowed the next frame) is read again from there;
 //! - every other frame is passed on, re-framed with only its `Content-Length`.
 //!
+//! Memory has a bound: a body longer than [`MAX_MESSAGE`] bytes is answered (-32600,
+//! and a message to the user naming its size) and skipped as it arrives, never kept,
+//! and one holding more than [`MAX_VALUES`] JSON values (counted first, allocating
+//! nothing) is answered the same way, before anything turns it into a
+//! `serde_json::Value` (which costs up to some 600 bytes a value: `{"a":0}` is 7 bytes).
+//! A message read costs at most a few copies of itself, and [`MAX_VALUES`] values.
+//!
 //! The answers go out through the same output as the server's messages: the server
 //! writes into a pipe, and one writer copies its frames and these answers whole, one
 //! after the other. The server ends at `exit` or at the end of the input, as before.
@@ -29,6 +36,12 @@ const CONTENT_LENGTH: &[u8] = b"Content-Length";
 const MAX_HEADER: usize = 64 * 1024;
 /// The capacity of the pipes to and from the server.
 const PIPE: usize = 64 * 1024;
+/// The longest message the server reads: 256 MiB (a walls document that large would
+/// take some 3 GB to check; VS Code gives extensions no file over 50 MB).
+pub const MAX_MESSAGE: usize = 256 << 20;
+/// The most JSON values (each object, array, string, number, `true`, `false` and `null`)
+/// a message may hold: an editor's largest, `initialize`, has a few thousand.
+pub const MAX_VALUES: usize = 100_000;
 
 /// Serves LSP on `input` and `output` until `exit` or the end of the input; no bytes
 /// make it panic or stop early.
@@ -60,6 +73,8 @@ enum Frame {
     Body(Vec<u8>),
     /// A header block that does not give the body's length; skipped.
     BadHeader,
+    /// A body longer than the limit, of this length; skipped.
+    TooLarge(usize),
 }
 
 /// Frames read from a byte stream. Cancel-safe: everything read is kept in `buf`
@@ -71,15 +86,22 @@ struct Frames<R> {
     start: usize,
     /// After a bad header: looking for the next `Content-Length`.
     skipping: bool,
+    /// The longest body kept; a longer one is skipped.
+    max: usize,
+    /// The bytes of a body too long still to skip.
+    discard: usize,
 }
 
 impl<R: AsyncRead + Unpin> Frames<R> {
-    fn new(input: R) -> Self {
+    /// The frames of `input`, each body at most `max` bytes.
+    fn new(input: R, max: usize) -> Self {
         Frames {
             input,
             buf: Vec::new(),
             start: 0,
             skipping: false,
+            max,
+            discard: 0,
         }
     }
 
@@ -87,7 +109,12 @@ impl<R: AsyncRead + Unpin> Frames<R> {
     /// dropped).
     async fn next(&mut self) -> Option<Frame> {
         loop {
-            if let Some(frame) = self.parse() {
+            let skipped = self.discard.min(self.buf.len() - self.start);
+            self.start += skipped;
+            self.discard -= skipped;
+            if self.discard == 0
+                && let Some(frame) = self.parse()
+            {
                 return Some(frame);
             }
             if self.start > 0 {
@@ -129,6 +156,12 @@ impl<R: AsyncRead + Unpin> Frames<R> {
             return Some(self.bad_header());
         };
         let body_start = self.start + end + 4;
+        if length > self.max {
+            // Its bytes are dropped as they come.
+            self.start = body_start;
+            self.discard = length;
+            return Some(Frame::TooLarge(length));
+        }
         let body = self.buf.get(body_start..body_start.checked_add(length)?)?;
         if let Some(at) = memmem::find(body, CONTENT_LENGTH)
             && serde_json::from_slice::<serde::de::IgnoredAny>(body).is_err()
@@ -173,24 +206,141 @@ fn content_length(block: &[u8]) -> Option<usize> {
     length
 }
 
+/// Why a frame is not passed on.
+enum Refused {
+    /// Not a message: answered with this error.
+    Malformed(Error),
+    /// Past a limit, which this says: answered with an invalid request (-32600) that says
+    /// so, and told to the user.
+    TooLarge(String),
+}
+
 /// The frame to pass on (a body tower-lsp reads as a request, a notification or a
-/// response), or the error to answer.
-fn check(frame: Frame) -> Result<Vec<u8>, Error> {
-    let Frame::Body(body) = frame else {
-        return Err(Error::parse_error());
+/// response), or why not.
+fn check(frame: Frame) -> Result<Vec<u8>, Refused> {
+    let body = match frame {
+        Frame::Body(body) => body,
+        Frame::BadHeader => return Err(Refused::Malformed(Error::parse_error())),
+        Frame::TooLarge(length) => {
+            return Err(Refused::TooLarge(format!(
+                "a message of {length} bytes, more than the {MAX_MESSAGE} the server reads"
+            )));
+        }
     };
-    if serde_json::from_slice::<Request>(&body).is_ok()
-        || serde_json::from_slice::<Response>(&body).is_ok()
+    let mut values = Count::default();
+    let counted = serde::de::DeserializeSeed::deserialize(
+        &mut values,
+        &mut serde_json::Deserializer::from_slice(&body),
+    );
+    if values.too_many {
+        return Err(Refused::TooLarge(format!(
+            "a message of more than {MAX_VALUES} JSON values, the most the server reads"
+        )));
+    }
+    if counted.is_ok()
+        && (serde_json::from_slice::<Request>(&body).is_ok()
+            || serde_json::from_slice::<Response>(&body).is_ok())
     {
         return Ok(body);
     }
     // Only on the way to an error: is it JSON at all?
-    Err(
+    Err(Refused::Malformed(
         match serde_json::from_slice::<serde::de::IgnoredAny>(&body) {
             Ok(_) => Error::invalid_request(),
             Err(_) => Error::parse_error(),
         },
-    )
+    ))
+}
+
+/// The frames that answer a refused frame: the error (id `null`), and for one past a
+/// limit, a message to the user (`window/showMessage`), since a notification's error
+/// reaches no one.
+fn answers(refused: Refused) -> Vec<Vec<u8>> {
+    let (error, tell) = match refused {
+        Refused::Malformed(error) => (error, None),
+        Refused::TooLarge(what) => {
+            let error = Error {
+                message: format!("{what}: not read").into(),
+                ..Error::invalid_request()
+            };
+            let message = serde_json::json!({
+                "jsonrpc": "2.0",
+                "method": "window/showMessage",
+                "params": {"type": 1, "message": format!("walls: {what}; it was not read")},
+            });
+            (error, Some(message))
+        }
+    };
+    let reply =
+        serde_json::to_vec(&Response::from_error(Id::Null, error)).expect("a response serialises");
+    std::iter::once(reply)
+        .chain(tell.map(|m| m.to_string().into_bytes()))
+        .map(|body| framed(&body))
+        .collect()
+}
+
+/// The JSON values of a body, counted as it is read; allocating nothing (but the text of
+/// an escaped string, one at a time), and stopping past [`MAX_VALUES`].
+#[derive(Default)]
+struct Count {
+    values: usize,
+    too_many: bool,
+}
+
+impl Count {
+    /// One more value; an error past the limit.
+    fn one<E: serde::de::Error>(&mut self) -> Result<(), E> {
+        self.values += 1;
+        if self.values > MAX_VALUES {
+            self.too_many = true;
+            return Err(E::custom("too many values"));
+        }
+        Ok(())
+    }
+}
+
+impl<'de> serde::de::DeserializeSeed<'de> for &mut Count {
+    type Value = ();
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> serde::de::Visitor<'de> for &mut Count {
+    type Value = ();
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("JSON")
+    }
+    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_i64<E: serde::de::Error>(self, _: i64) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_u64<E: serde::de::Error>(self, _: u64) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_f64<E: serde::de::Error>(self, _: f64) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_str<E: serde::de::Error>(self, _: &str) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_unit<E: serde::de::Error>(self) -> Result<(), E> {
+        self.one()
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        self.one()?;
+        while seq.next_element_seed(&mut *self)?.is_some() {}
+        Ok(())
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        self.one()?;
+        while map.next_key_seed(&mut *self)?.is_some() {
+            map.next_value_seed(&mut *self)?;
+        }
+        Ok(())
+    }
 }
 
 /// `body` with its header.
@@ -206,19 +356,22 @@ async fn feed<R: AsyncRead + Unpin>(
     mut to_server: DuplexStream,
     replies: mpsc::UnboundedSender<Vec<u8>>,
 ) {
-    let mut frames = Frames::new(input);
+    let mut frames = Frames::new(input, MAX_MESSAGE);
     while let Some(frame) = frames.next().await {
         match check(frame) {
             Ok(body) => {
-                if to_server.write_all(&framed(&body)).await.is_err() {
+                let header = format!("Content-Length: {}\r\n\r\n", body.len());
+                if to_server.write_all(header.as_bytes()).await.is_err()
+                    || to_server.write_all(&body).await.is_err()
+                {
                     return;
                 }
             }
-            Err(error) => {
-                let reply = serde_json::to_vec(&Response::from_error(Id::Null, error))
-                    .expect("a response serialises");
-                // The writer is gone only when the server is: nothing to answer.
-                let _ = replies.send(framed(&reply));
+            Err(refused) => {
+                for answer in answers(refused) {
+                    // The writer is gone only when the server is: nothing to answer.
+                    let _ = replies.send(answer);
+                }
             }
         }
     }
@@ -231,7 +384,8 @@ async fn write_out<W: AsyncWrite + Unpin>(
     mut replies: mpsc::UnboundedReceiver<Vec<u8>>,
     mut output: W,
 ) {
-    let mut frames = Frames::new(from_server);
+    // The server's own answers are bounded by what it sends (docs/editors.md, "Limits").
+    let mut frames = Frames::new(from_server, usize::MAX);
     loop {
         // The answers first: an answer is queued before the frame after the bad one
         // reaches the server, so the client gets them in the order it sent them.
@@ -263,16 +417,90 @@ async fn write<W: AsyncWrite + Unpin>(output: &mut W, bytes: &[u8]) -> std::io::
 mod tests {
     use super::*;
 
-    async fn frames(input: &[u8]) -> Vec<Result<String, i64>> {
-        let mut frames = Frames::new(input);
+    /// The frames of `input` with bodies of at most `max` bytes: a body, or the length
+    /// of one too long (as a negative number), or -32700 for a bad header.
+    async fn frames_within(input: &[u8], max: usize) -> Vec<Result<String, i64>> {
+        let mut frames = Frames::new(input, max);
         let mut out = Vec::new();
         while let Some(frame) = frames.next().await {
             out.push(match frame {
                 Frame::Body(body) => Ok(String::from_utf8(body).unwrap()),
                 Frame::BadHeader => Err(-32700),
+                Frame::TooLarge(length) => Err(-(length as i64)),
             });
         }
         out
+    }
+
+    async fn frames(input: &[u8]) -> Vec<Result<String, i64>> {
+        frames_within(input, MAX_MESSAGE).await
+    }
+
+    #[tokio::test]
+    async fn a_body_too_long_is_skipped_never_kept() {
+        let long = format!("Content-Length: 30\r\n\r\n{:<30}", "[1, 2, 3]");
+        let input = format!("{long}Content-Length: 2\r\n\r\n{{}}{long}");
+        assert_eq!(
+            frames_within(input.as_bytes(), 10).await,
+            [Err(-30), Ok("{}".into()), Err(-30)]
+        );
+        // Read a byte at a time, the buffer never holds the long body.
+        let (mut client, server) = tokio::io::duplex(1);
+        let writer = tokio::spawn(async move {
+            client.write_all(input.as_bytes()).await.unwrap();
+        });
+        let mut frames = Frames::new(server, 10);
+        let mut longest = 0;
+        let mut got = Vec::new();
+        while got.len() < 3 {
+            let frame = frames.next().await.unwrap();
+            longest = longest.max(frames.buf.len());
+            got.push(matches!(frame, Frame::Body(_)));
+        }
+        // The rest of the last body, skipped to the end.
+        assert!(frames.next().await.is_none());
+        writer.await.unwrap();
+        assert_eq!(got, [false, true, false]);
+        assert!(longest <= PIPE + 30, "{longest}");
+    }
+
+    #[test]
+    fn a_body_of_too_many_values_is_refused_before_it_is_a_value() {
+        let values = |n: usize| format!("[{}0]", "0,".repeat(n - 2));
+        let refused = |body: String| match check(Frame::Body(body.into_bytes())) {
+            Err(Refused::TooLarge(what)) => Some(what),
+            _ => None,
+        };
+        // The array and its numbers: MAX_VALUES values are read.
+        assert_eq!(refused(values(MAX_VALUES)), None);
+        assert_eq!(
+            refused(values(MAX_VALUES + 1)).as_deref(),
+            Some("a message of more than 100000 JSON values, the most the server reads")
+        );
+        // Keys count too.
+        let object = format!("{{{}\"z\":0}}", r#""a":0,"#.repeat(MAX_VALUES / 2));
+        assert!(refused(object).is_some());
+        // The answer says so, and so does a message to the user.
+        let answers = answers(Refused::TooLarge("a message of 9 bytes".into()));
+        let text: Vec<String> = answers
+            .iter()
+            .map(|a| String::from_utf8(a.clone()).unwrap())
+            .collect();
+        assert!(
+            text[0].ends_with(r#""message":"a message of 9 bytes: not read"},"id":null}"#),
+            "{}",
+            text[0]
+        );
+        assert!(
+            text[1].contains(r#""method":"window/showMessage""#),
+            "{}",
+            text[1]
+        );
+        assert!(
+            text[1].contains("walls: a message of 9 bytes; it was not read"),
+            "{}",
+            text[1]
+        );
     }
 
     #[tokio::test]
@@ -310,7 +538,12 @@ mod tests {
 
     #[test]
     fn answers_say_what_was_wrong() {
-        let code = |body: &str| check(Frame::Body(body.into())).map_err(|e| e.code.code());
+        let code = |body: &str| {
+            check(Frame::Body(body.into())).map_err(|e| match e {
+                Refused::Malformed(e) => e.code.code(),
+                Refused::TooLarge(_) => 0,
+            })
+        };
         assert_eq!(code("{"), Err(-32700));
         assert_eq!(code("{}x"), Err(-32700));
         assert_eq!(code(""), Err(-32700));
@@ -318,6 +551,9 @@ mod tests {
         assert_eq!(code("[]"), Err(-32600));
         assert_eq!(code(r#"{"jsonrpc": "1.0", "method": "x"}"#), Err(-32600));
         assert!(code(r#"{"jsonrpc": "2.0", "method": "x"}"#).is_ok());
-        assert_eq!(check(Frame::BadHeader).unwrap_err().code.code(), -32700);
+        assert!(matches!(
+            check(Frame::BadHeader),
+            Err(Refused::Malformed(e)) if e.code.code() == -32700
+        ));
     }
 }

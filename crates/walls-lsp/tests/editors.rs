@@ -2,31 +2,15 @@
 //! Neovim (headless, `tests/nvim/lsp.lua`) as a user's editor, and the Neovim plugin of
 //! `editors/neovim` (`tests/nvim/plugin.lua`).
 
+mod wire;
+
 use serde_json::{Value, json};
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command, Stdio};
-
-fn frame(message: &Value) -> Vec<u8> {
-    let body = message.to_string();
-    format!("Content-Length: {}\r\n\r\n{body}", body.len()).into_bytes()
-}
+use wire::frame;
 
 fn read_message(out: &mut impl BufRead) -> Value {
-    let mut length = 0;
-    loop {
-        let mut line = String::new();
-        out.read_line(&mut line).unwrap();
-        let line = line.trim_end();
-        if line.is_empty() {
-            break;
-        }
-        if let Some(n) = line.strip_prefix("Content-Length: ") {
-            length = n.parse().unwrap();
-        }
-    }
-    let mut body = vec![0; length];
-    out.read_exact(&mut body).unwrap();
-    serde_json::from_slice(&body).unwrap()
+    serde_json::from_slice(&wire::read_body(out)).unwrap()
 }
 
 #[test]

@@ -762,3 +762,141 @@ async fn control_characters_are_warnings_with_a_fix_only_between_words() {
         ["Fix all safe problems (1)"]
     );
 }
+
+/// The whole of a document of `lines` lines, as an LSP range.
+fn everything(lines: usize) -> Value {
+    json!({"start": {"line": 0, "character": 0}, "end": {"line": lines, "character": 0}})
+}
+
+#[tokio::test]
+async fn published_diagnostics_are_bounded_errors_first() {
+    // 1,500 warnings (C202 on each `radius` but the last, C201 on the last), then an
+    // error.
+    let text = format!(
+        "wall type plane\n{}  raduis 1\n",
+        "  radius 1\n".repeat(1500)
+    );
+    let mut c = Client::start(json!({})).await;
+    let published = c.open(&text).await;
+    let d = published["diagnostics"].as_array().unwrap();
+    assert_eq!(d.len(), 1001);
+    // The error at the end is in, in its place.
+    assert_eq!(d[999]["code"], "S101");
+    assert_eq!(d[999]["range"]["start"]["line"], 1501);
+    let note = &d[1000];
+    assert_eq!(
+        note["message"],
+        "501 more diagnostics are not shown: the editor gets 1000 of this file's 1501, \
+         errors first; `walls-lint` lists them all"
+    );
+    assert_eq!(note["severity"], 3);
+    // At the first one left out: the 1,000th warning, on line 1,000.
+    assert_eq!(note["range"]["start"]["line"], 1000);
+}
+
+#[tokio::test]
+async fn the_outline_is_bounded_and_shaped_to_fit() {
+    let mut c = Client::start(json!({})).await;
+    let doc = json!({"uri": URI});
+    let outline = |n: usize| "wall type disk\n  radius 1\n".repeat(n);
+    // 500 walls and their 1,000 statements: all of them.
+    c.open(&outline(500)).await;
+    let symbols = c
+        .request("textDocument/documentSymbol", json!({"textDocument": doc}))
+        .await;
+    assert_eq!(symbols.as_array().unwrap().len(), 500);
+    assert_eq!(symbols[0]["children"].as_array().unwrap().len(), 2);
+    // 1,000 walls: the walls alone.
+    c.change(URI, 2, &outline(1000)).await;
+    let symbols = c
+        .request("textDocument/documentSymbol", json!({"textDocument": doc}))
+        .await;
+    assert_eq!(symbols.as_array().unwrap().len(), 1000);
+    assert_eq!(symbols[999]["name"], "wall 999: disk");
+    assert_eq!(symbols[999]["children"], json!([]));
+    // 30,000 walls: 300 runs of 100.
+    c.change(URI, 3, &outline(30_000)).await;
+    let symbols = c
+        .request("textDocument/documentSymbol", json!({"textDocument": doc}))
+        .await;
+    let symbols = symbols.as_array().unwrap();
+    assert_eq!(symbols.len(), 300);
+    assert_eq!(symbols[1]["name"], "walls 100–199");
+    assert_eq!(symbols[1]["kind"], 18);
+    assert_eq!(symbols[1]["range"]["start"]["line"], 200);
+    assert_eq!(symbols[1]["range"]["end"]["line"], 399);
+}
+
+#[tokio::test]
+async fn tokens_folds_hints_and_fixes_are_bounded() {
+    let mut c = Client::start(json!({})).await;
+    let doc = json!({"uri": URI});
+    // 60,004 tokens on two lines: the first 50,000.
+    c.open(&format!(
+        "wall type plane\n  origin{}\n",
+        " 1".repeat(60_000)
+    ))
+    .await;
+    let tokens = c
+        .request(
+            "textDocument/semanticTokens/full",
+            json!({"textDocument": doc}),
+        )
+        .await;
+    assert_eq!(tokens["data"].as_array().unwrap().len(), 5 * 50_000);
+    // 6,000 blocks of two lines: 5,000 folds.
+    let walls = "wall type disk\n  radius 1\n".repeat(6000);
+    c.change(URI, 2, &walls).await;
+    let folds = c
+        .request("textDocument/foldingRange", json!({"textDocument": doc}))
+        .await;
+    assert_eq!(folds.as_array().unwrap().len(), 5000);
+    // 2,000 walls that inherit a colour: 1,000 hints.
+    let inheriting = format!("defaults\n  color 3\n{walls}");
+    c.change(URI, 3, &inheriting).await;
+    let hints = c
+        .request(
+            "textDocument/inlayHint",
+            json!({"textDocument": doc, "range": everything(12_002)}),
+        )
+        .await;
+    assert_eq!(hints.as_array().unwrap().len(), 1000);
+    // 6,000 safe fixes (`radius` on a plane): 100 quick fixes, and one edit fixing all.
+    let fixable = format!("wall type plane\n{}", "  radius 1\n".repeat(6000));
+    c.change(URI, 4, &fixable).await;
+    let actions = c.actions(URI, (0, 0), (6001, 0)).await;
+    let actions = actions.as_array().unwrap();
+    assert_eq!(actions.len(), 101);
+    let all = &actions[100];
+    assert_eq!(all["kind"], "source.fixAll");
+    assert_eq!(all["edit"]["changes"][URI].as_array().unwrap().len(), 1);
+    assert_eq!(
+        all["edit"]["changes"][URI][0]["newText"],
+        "wall type plane\n"
+    );
+}
+
+#[cfg(unix)]
+#[tokio::test]
+async fn a_fifo_named_walls_toml_is_named_not_waited_on() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("walls.toml");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let uri = format!("file://{}/scene.walls", dir.path().display());
+    let mut c = Client::start(json!({"maxWalls": 1})).await;
+    let published = c.open_at(&uri, TWO_WALLS).await;
+    let settings = std::fs::canonicalize(&fifo).unwrap();
+    assert_eq!(
+        published["diagnostics"][0]["message"],
+        format!(
+            "{}: is a fifo, not a settings file (a settings file found in a folder is a regular file)\n\
+             this file is checked with the editor's settings instead",
+            settings.display()
+        )
+    );
+    assert_eq!(codes(&published), ["-", "C209"]);
+}

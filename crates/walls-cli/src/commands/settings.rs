@@ -21,12 +21,28 @@ pub struct SettingsArgs {
     pub isolated: bool,
 }
 
-/// Where each file's settings come from, with the ones found so far by folder.
+/// Where each file's settings come from, with the ones found so far by folder (so that
+/// a hundred thousand files of one folder look for them once).
 pub(crate) struct Resolver {
     /// The settings of `--config` or `--isolated`, the same for every file.
     fixed: Option<Arc<Settings>>,
     /// The settings found upward from each folder asked about.
-    by_dir: Mutex<HashMap<PathBuf, Result<Arc<Settings>, SettingsError>>>,
+    by_dir: Found<Arc<Settings>>,
+    /// The formatting options found upward from each folder asked about.
+    format_by_dir: Found<FormatOptions>,
+}
+
+/// What was found upward from each folder asked about.
+type Found<T> = Mutex<HashMap<PathBuf, Result<T, SettingsError>>>;
+
+/// What `found` has for `dir`, else what `find` finds from it, kept.
+fn found<T: Clone>(
+    found: &Found<T>,
+    dir: PathBuf,
+    find: impl FnOnce(&Path) -> Result<T, SettingsError>,
+) -> Result<T, SettingsError> {
+    let mut found = found.lock().unwrap_or_else(|e| e.into_inner());
+    found.entry(dir).or_insert_with_key(|dir| find(dir)).clone()
 }
 
 impl Resolver {
@@ -41,7 +57,8 @@ impl Resolver {
         };
         Ok(Resolver {
             fixed,
-            by_dir: Mutex::new(HashMap::new()),
+            by_dir: Mutex::default(),
+            format_by_dir: Mutex::default(),
         })
     }
 
@@ -52,12 +69,9 @@ impl Resolver {
         if let Some(fixed) = &self.fixed {
             return Ok(fixed.clone());
         }
-        let dir = folder_of(path);
-        let mut by_dir = self.by_dir.lock().unwrap_or_else(|e| e.into_inner());
-        by_dir
-            .entry(dir.clone())
-            .or_insert_with(|| walls_config::find(&dir).map(Arc::new))
-            .clone()
+        found(&self.by_dir, folder_of(path), |dir| {
+            walls_config::find(dir).map(Arc::new)
+        })
     }
 
     /// The formatting options for the file at `path` (`-`: standard input), before the
@@ -65,7 +79,9 @@ impl Resolver {
     pub(crate) fn format_options(&self, path: &str) -> Result<FormatOptions, SettingsError> {
         match &self.fixed {
             Some(fixed) => Ok(fixed.format.clone().unwrap_or_default()),
-            None => walls_config::find_format(&folder_of(path)).map(|(options, _)| options),
+            None => found(&self.format_by_dir, folder_of(path), |dir| {
+                walls_config::find_format(dir).map(|(options, _)| options)
+            }),
         }
     }
 }

@@ -1,11 +1,9 @@
 //! `walls-lint --fix`, `--unsafe-fixes` and `--diff`: applying the fixes the diagnostics
 //! carry (docs/diagnostics.md, "Fixing").
 //!
-//! A round applies every fix of the level asked for (safe ones; unsafe ones too with
-//! `--unsafe-fixes`) whose edits do not overlap an edit already taken, then checks the new
-//! text again; rounds go on until one applies nothing, at most [`MAX_ROUNDS`], so that the
-//! fixes an overlap held back, or that a fix made possible, are applied too. The
-//! diagnostics reported are those of the fixed text.
+//! The fixes of the level asked for (safe ones; unsafe ones too with `--unsafe-fixes`) are
+//! applied in rounds, each new text checked again ([`walls_ide::fix_rounds`], the rounds
+//! the editor's "fix all" makes too). The diagnostics reported are those of the fixed text.
 //!
 //! A file is replaced through [`walls_output::replace`], as walls-fmt replaces one (kept
 //! owner, group, mode and links, atomic, never over an edit made meanwhile); a file not
@@ -18,12 +16,9 @@ use crate::{Checked, check_bytes, input};
 use clap::ValueEnum;
 use std::io::Write;
 use std::path::Path;
-use walls_diagnostics::{Applicability, Diagnostic, apply_fixes_counted};
-use walls_ide::check_text;
+use walls_diagnostics::{Applicability, Diagnostic};
+use walls_ide::{check_text, fix_rounds};
 use walls_model::Options;
-
-/// The most rounds of fixes on one file.
-pub const MAX_ROUNDS: usize = 10;
 
 /// What the command line asks of the fixes.
 #[derive(Clone, Copy)]
@@ -131,28 +126,20 @@ pub(super) fn lint(
     (Linted::new(name, outcome), fixes)
 }
 
-/// The text of `first` with the fixes of `level` applied, round after round, checked
-/// again, and how many fixes were applied; `None` if there was nothing to apply.
+/// The text of `first` with the fixes of `level` applied ([`fix_rounds`]), each new text
+/// checked with `options` less what `keep` drops, and how many fixes were applied; `None`
+/// if there was nothing to apply.
 fn fix(
     first: &Checked,
     options: &Options,
     keep: &dyn Fn(&mut Vec<Diagnostic>),
     level: Applicability,
 ) -> Option<(Checked, usize)> {
-    let mut fixed: Option<Checked> = None;
-    let mut count = 0;
-    for _ in 0..MAX_ROUNDS {
-        let current = fixed.as_ref().unwrap_or(first);
-        let (text, applied) = apply_fixes_counted(&current.text, &current.diagnostics, level);
-        if applied == 0 || *text == *current.text {
-            break;
-        }
-        count += applied;
+    fix_rounds(first, level, &|text| {
         let mut checked = check_text(text, options);
         keep(&mut checked.diagnostics);
-        fixed = Some(checked);
-    }
-    fixed.map(|checked| (checked, count))
+        checked
+    })
 }
 
 /// The text `walls-lint --fix` (with `Unsafe`: `--unsafe-fixes`) makes of `text` with no

@@ -12,7 +12,8 @@
 mod fix;
 mod walk;
 
-pub use fix::{MAX_ROUNDS as MAX_FIX_ROUNDS, fix_text};
+pub use fix::fix_text;
+pub use walls_ide::MAX_FIX_ROUNDS;
 
 use super::settings::{Resolver, SettingsArgs, absolute_file};
 use crate::{ContactModel, all_codes, check_bytes, find_code, input};
@@ -38,11 +39,11 @@ pub struct LintArgs {
     pub files: Vec<String>,
     /// In folders, check the files matching this gitignore-style glob (repeatable;
     /// default `*.walls`).
-    #[arg(long, value_name = "GLOB")]
+    #[arg(long, value_name = "GLOB", value_parser = glob)]
     pub include: Vec<String>,
     /// In folders, skip the files and folders matching this gitignore-style glob
     /// (repeatable).
-    #[arg(long, value_name = "GLOB")]
+    #[arg(long, value_name = "GLOB", value_parser = glob)]
     pub exclude: Vec<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Human)]
@@ -310,6 +311,11 @@ fn lint(
     }
     linted.deny_warnings = args.deny_warnings || set.deny_warnings.unwrap_or(false);
     (linted, fixes)
+}
+
+/// A glob for `--include` and `--exclude`, checked as the settings file's are.
+fn glob(s: &str) -> Result<String, String> {
+    walls_config::check_glob(s).map(|()| s.to_string())
 }
 
 /// A strictly positive real, for `--min-radius` and `--dt`, read by the tools' one rule
