@@ -124,7 +124,8 @@ files.
 The fixes are applied in rounds: each round takes every applicable fix whose edits do
 not overlap an edit already taken (the first in the file wins), and the file is checked
 again; the next round applies what an overlap held back or what a fix made possible, up
-to 10 rounds. A round keeps the meaning too, and adds no finding: where fixes together
+to 10 rounds (the editor's \"Fix all safe problems\" makes the same rounds). A round keeps
+the meaning too, and adds no finding: where fixes together
 would take every wall from a `defaults` value (negative frequencies or masses that share
 an inherited amplitude or assembly), the last wall's fix waits for the next round, when it
 edits the value in place. The diagnostics reported are those of the fixed text. A file is
