@@ -5,7 +5,8 @@
 //! long (a quadratic feature takes four). Three documents: 100k diagnostics on as many
 //! lines, one line of 10 MB with 100k tokens and diagnostics, and 100k safe fixes (the
 //! "fix all" action compared each fix with every fix taken before: 20k took 10 s). The shortest of a few runs is taken,
-//! and times under 20 ms count as 20 ms, so that noise on a busy machine is no failure.
+//! and times under 20 ms count as 20 ms, so that noise on a busy machine is no failure;
+//! a comparison that fails is measured again, up to three times.
 //! These are the sizes of `cargo test --release -p walls-lsp --test linear`; a debug
 //! build runs a tenth of them (`WALLS_LINEAR_SCALE` sets the factor). The times are
 //! printed (`--nocapture`).
@@ -147,43 +148,58 @@ fn scale() -> f64 {
         .unwrap_or(if cfg!(debug_assertions) { 0.1 } else { 1.0 })
 }
 
-/// Runs `document(n)` and `document(2n)` a few times and checks every feature.
+/// How many times a comparison that fails is measured again before it counts: a busy
+/// machine can slow one measure several times over, a quadratic feature fails every one.
+const ATTEMPTS: usize = 3;
+
+/// Runs `document(n)` and `document(2n)` a few times and checks every feature, measuring
+/// again (up to [`ATTEMPTS`] times) while a feature looks more than linear.
 async fn grows_linearly(name: &str, n: usize, document: impl Fn(usize) -> String) {
     let n = ((n as f64 * scale()) as usize).max(100);
     let (small, large) = (document(n), document(2 * n));
-    let mut best = [[Duration::MAX; 8]; 2];
-    let mut counts = [(0, 0); 2];
-    for _ in 0..3 {
-        for (k, text) in [&small, &large].into_iter().enumerate() {
-            let (t, diagnostics, tokens) = times(text).await;
-            counts[k] = (diagnostics, tokens);
-            for (b, t) in best[k].iter_mut().zip(t) {
-                *b = (*b).min(t);
+    for attempt in 1..=ATTEMPTS {
+        let mut best = [[Duration::MAX; 8]; 2];
+        let mut counts = [(0, 0); 2];
+        for _ in 0..3 {
+            for (k, text) in [&small, &large].into_iter().enumerate() {
+                let (t, diagnostics, tokens) = times(text).await;
+                counts[k] = (diagnostics, tokens);
+                for (b, t) in best[k].iter_mut().zip(t) {
+                    *b = (*b).min(t);
+                }
             }
         }
-    }
-    let features = FEATURES;
-    for k in 0..2 {
-        println!(
-            "{name} ({} bytes, {} diagnostics, {} tokens): {}",
-            [&small, &large][k].len(),
-            counts[k].0,
-            counts[k].1,
-            features
-                .iter()
-                .zip(best[k])
-                .map(|(f, t)| format!("{f} {t:.2?}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
-    }
-    assert!(counts[1].0 >= 2 * counts[0].0 - 2, "{counts:?}");
-    for (i, feature) in features.iter().enumerate() {
-        let (a, b) = (best[0][i].max(FLOOR), best[1][i].max(FLOOR));
+        for k in 0..2 {
+            println!(
+                "{name} ({} bytes, {} diagnostics, {} tokens): {}",
+                [&small, &large][k].len(),
+                counts[k].0,
+                counts[k].1,
+                FEATURES
+                    .iter()
+                    .zip(best[k])
+                    .map(|(f, t)| format!("{f} {t:.2?}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+        }
+        assert!(counts[1].0 >= 2 * counts[0].0 - 2, "{counts:?}");
+        let slow: Vec<String> = FEATURES
+            .iter()
+            .enumerate()
+            .map(|(i, feature)| (feature, best[0][i].max(FLOOR), best[1][i].max(FLOOR)))
+            .filter(|&(_, a, b)| b >= a * 3)
+            .map(|(feature, a, b)| format!("{feature} takes {b:?} on twice the input of {a:?}"))
+            .collect();
+        if slow.is_empty() {
+            return;
+        }
         assert!(
-            b < a * 3,
-            "{name}: {feature} takes {b:?} on twice the input of {a:?}: not linear"
+            attempt < ATTEMPTS,
+            "{name}: not linear in {ATTEMPTS} measures: {}",
+            slow.join("; ")
         );
+        println!("{name}: measuring again ({})", slow.join("; "));
     }
 }
 
