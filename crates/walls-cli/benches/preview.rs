@@ -3,7 +3,7 @@
 //! of 100 frames of 1,000 particles (100 `.ss` files) as a ParaView collection, an HTML
 //! page and SVG frames. The command runs as the binary runs it, from its arguments,
 //! writing into a temporary folder. Run with `cargo bench -p walls-cli --bench preview`;
-//! the figures are in docs/performance.md ("Previews").
+//! the figures are in docs/performance-history.md ("Issue 16: previews at real scale and movies").
 
 use clap::Parser;
 use criterion::{Criterion, criterion_group, criterion_main};

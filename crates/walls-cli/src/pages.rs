@@ -2,7 +2,7 @@
 //! (transparent huge pages) for its arenas, which makes linting a large walls file a
 //! quarter faster (fewer page faults) but keeps partly used 2 MiB pages resident: a run
 //! of 10⁵ particles peaked at 91–94 MiB with them and 84–86 MiB without, in the same time
-//! (docs/performance.md, "Eighth round"). `walls-sim run` therefore asks for ordinary
+//! (docs/performance-history.md, "Eighth round"). `walls-sim run` therefore asks for ordinary
 //! pages; the other commands keep the large ones.
 
 /// From here on, this process's memory comes in ordinary pages (Linux's

@@ -1,7 +1,7 @@
 //! Where a run steps. A run of many particles with more than one thread steps on one of
 //! rayon's threads, observer and interrupt check included, so that each pass of a step
 //! is split between the threads where it is rather than handed to the pool from outside
-//! (docs/performance.md, "Eighth round"); a run of few particles, or on one thread,
+//! (docs/performance-history.md, "Eighth round"); a run of few particles, or on one thread,
 //! steps on the caller's. A test binary of its own: it sets rayon's global pool.
 
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 /// mimalloc: it maps memory in large chunks, so a large file's tokens and walls cost a
-/// few hundred page faults instead of twenty thousand (measured in docs/performance.md).
+/// few hundred page faults instead of twenty thousand (measured in docs/performance-history.md, "Targets").
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

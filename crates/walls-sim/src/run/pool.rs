@@ -2,7 +2,7 @@
 //!
 //! A run of many particles with more than one thread steps on one of rayon's threads
 //! (its home), so that each pass of a step is split between the threads where it is
-//! rather than handed to the pool from outside (docs/performance.md, "Eighth round";
+//! rather than handed to the pool from outside (docs/performance-history.md, "Eighth round";
 //! `tests/pool.rs`). A soft-sphere step splits five or six passes, each of some tens of
 //! microseconds at 10⁴ particles. Between them rayon puts a thread with nothing to do to
 //! sleep, and waking it for the next pass costs a system call and the kernel's wake-up,
