@@ -32,6 +32,7 @@ use crate::contact::ssdem::Material;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use walls_geometry::Particle;
+use walls_geometry::motion::{Moving, turned};
 use walls_geometry::{OscillationStepping, Shape, Wall};
 pub use walls_keywords::ContactModel;
 
@@ -733,9 +734,18 @@ impl WallNow {
         Self::placed(origin, wall.shape.at(origin), velocity, wall.motion.spin())
     }
 
+    /// How it moves now: its origin, the origin's velocity and its spin.
+    fn motion(&self) -> Moving {
+        Moving {
+            origin: self.origin,
+            velocity: self.velocity,
+            spin: self.spin,
+        }
+    }
+
     /// The velocity of the wall's material at `q`.
     fn point_velocity(&self, q: &Vec3) -> Vec3 {
-        self.velocity + self.spin.cross(&(q - self.origin))
+        self.motion().point_velocity(q)
     }
 }
 
@@ -767,26 +777,10 @@ impl Origins {
     }
 
     /// Moves every origin as pkdgrav's soft-sphere build does over the step from `t`
-    /// to `t + dt` (`msrWallsMove(t + dt/2, dt)`, docs/pkdgrav-physics.md §5): by the
-    /// change of the sinusoid and of the linear travel between the whole steps of `step`
-    /// (dt when it is 0) that hold t + dt/2 and t + 3dt/2.
+    /// to `t + dt` ([`walls_geometry::Motion::soft_sphere_step`]).
     fn advance_pkdgrav(&mut self, walls: &[Wall], t: f64, dt: f64) {
-        let (ta, tb) = (t + 0.5 * dt, t + 1.5 * dt);
         for (o, w) in self.now.iter_mut().zip(walls) {
-            let m = &w.motion;
-            if !m.translates() {
-                continue;
-            }
-            let step = if m.step > 0.0 { m.step } else { dt };
-            let (qa, qb) = ((ta / step).floor() * step, (tb / step).floor() * step);
-            let osc = &m.oscillation;
-            let mut next = *o + m.velocity * (qb - qa);
-            if osc.amplitude != 0.0 {
-                let phase = std::f64::consts::TAU * osc.cycle();
-                let swing = (osc.frequency * qb + phase).sin() - (osc.frequency * qa + phase).sin();
-                next += osc.direction * (osc.amplitude * swing);
-            }
-            if next.iter().all(|x| x.is_finite()) {
+            if let Some(next) = w.motion.soft_sphere_step(o, t, dt) {
                 *o = next;
             }
         }
@@ -802,33 +796,13 @@ impl Origins {
     }
 
     /// The walls where they stand, their origins moving at pkdgrav's velocity for time
-    /// `t` ([`smooth_velocity`]).
+    /// `t` ([`walls_geometry::Motion::smooth_velocity`]).
     fn walls_pkdgrav(&self, walls: &[Wall], t: f64) -> Vec<WallNow> {
         walls
             .iter()
             .zip(&self.now)
-            .map(|(w, o)| WallNow::moving(w, *o, smooth_velocity(&w.motion, t)))
+            .map(|(w, o)| WallNow::moving(w, *o, w.motion.smooth_velocity(t)))
             .collect()
-    }
-}
-
-/// The velocity pkdgrav gives a wall's origin at time `t` (docs/pkdgrav-physics.md §5):
-/// `velocity` plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to `step`.
-fn smooth_velocity(motion: &walls_geometry::Motion, t: f64) -> Vec3 {
-    let o = &motion.oscillation;
-    let mut v = motion.velocity;
-    if o.amplitude != 0.0 {
-        let angle = o.frequency * t + std::f64::consts::TAU * o.cycle();
-        v += o.direction * (o.amplitude * o.frequency * angle.cos());
-    }
-    v
-}
-
-/// `v` turned about the axis of `spin` by its rate times `time`.
-fn turned(spin: &Vec3, time: f64, v: Vec3) -> Vec3 {
-    match nalgebra::Unit::try_new(*spin, 0.0) {
-        Some(axis) => nalgebra::Rotation3::from_axis_angle(&axis, spin.norm() * time) * v,
-        None => v,
     }
 }
 
@@ -839,9 +813,7 @@ fn carry(s: &mut State, now: &WallNow, dt: f64) {
     let Some((_, offset)) = s.stuck_to.as_deref_mut() else {
         return;
     };
-    *offset = turned(&now.spin, dt, *offset);
-    s.particle.pos = now.origin + *offset;
-    s.particle.vel = now.point_velocity(&s.particle.pos);
+    (s.particle.pos, s.particle.vel) = now.motion().carry(offset, dt);
     s.particle.spin = now.spin;
 }
 
