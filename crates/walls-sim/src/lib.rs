@@ -2,6 +2,7 @@
 //! walls-geometry (shapes, motion, material). Its layout is the pipeline:
 //!
 //! * [`build`]: pkdgrav's compile options, which decide its physics;
+//! * [`bodies`]: the particles as a run carries them, one [`bodies::State`] each;
 //! * [`io`]: the particles and parameters of a pkdgrav run (CSV, `.ss`, `.par`), the
 //!   trajectory and pkdgrav's WALLSREACT files, each reader beside its writer; and
 //!   [`config`], the run's settings from flags, then the `.par` file, then defaults;
@@ -15,6 +16,7 @@
 //!   for the real pkdgrav run.
 
 pub mod advise;
+pub mod bodies;
 pub mod broad;
 pub mod build;
 pub mod config;

@@ -1018,3 +1018,94 @@ fn the_scanner_sees_only_code() {
     assert_eq!(code.lines().count(), tests.lines().count());
     assert_eq!(find_word("eprintln!(x)", "println"), Vec::<usize>::new());
 }
+
+// ---------------------------------------------------------------------------------------
+// Wall motion.
+
+/// The code that turns angles into sines and cosines: the sinusoid of an oscillating
+/// wall, a vector turned with a wall's spin.
+const TRIGONOMETRY: &[&str] = &[
+    ".sin(",
+    ".cos(",
+    "sin_cos(",
+    "from_axis_angle(",
+    "from_scaled_axis(",
+];
+
+/// The crates past walls-geometry that place or move walls.
+const MOVE_WALLS: &[&str] = &["crates/walls-sim/src", "crates/walls-preview/src"];
+
+/// The files of `MOVE_WALLS` whose sines and cosines are not a wall's motion, each with
+/// its reason.
+const TRIGONOMETRY_NOT_WALL_MOTION: &[(&str, &str)] = &[
+    (
+        "crates/walls-sim/src/contact/ssdem.rs",
+        "a contact's springs turned with the contact (pkdgrav's law, docs/pkdgrav-physics.md §1.3–§1.5)",
+    ),
+    (
+        "crates/walls-sim/src/contact/lanes.rs",
+        "the same turn of the springs, four contacts at a time",
+    ),
+    (
+        "crates/walls-sim/src/dynamics/rigid.rs",
+        "an aggregate's principal axes turned as it tumbles (a body's integration, §9)",
+    ),
+    (
+        "crates/walls-sim/src/dynamics/reactive.rs",
+        "a reactive assembly turned by the spin its torques give it: integrated, not a wall's given motion",
+    ),
+    (
+        "crates/walls-preview/src/mesh.rs",
+        "half a turn between opposite axes, placing a round wall's mesh where a run put it",
+    ),
+    (
+        "crates/walls-preview/src/pov.rs",
+        "the camera's field of view",
+    ),
+];
+
+/// Wall motion is computed in walls-geometry (`motion`): where a wall is, how fast its
+/// material moves, how it turns. Outside it, the simulator and the previews take no sine
+/// or cosine but in `TRIGONOMETRY_NOT_WALL_MOTION`'s files; an exception that stops
+/// using them must be removed.
+#[test]
+fn wall_motion_is_computed_in_geometry() {
+    let ws = Workspace::load();
+    let mut broken = Vec::new();
+    let mut excused_and_using = BTreeSet::new();
+    for dir in MOVE_WALLS {
+        let files = rust_files(&ws.root.join(dir));
+        assert!(!files.is_empty(), "no sources in {dir}");
+        for file in files {
+            let rel = ws.relative(&file);
+            let code = code_only(&read(&file));
+            let mut hits = Vec::new();
+            for pattern in TRIGONOMETRY {
+                for (at, _) in code.match_indices(pattern) {
+                    hits.push(format!("{rel}:{} uses `{pattern}`", line_of(&code, at)));
+                }
+            }
+            if TRIGONOMETRY_NOT_WALL_MOTION
+                .iter()
+                .any(|(path, _)| *path == rel)
+            {
+                if !hits.is_empty() {
+                    excused_and_using.insert(rel);
+                }
+            } else {
+                broken.extend(hits);
+            }
+        }
+    }
+    for (path, why) in TRIGONOMETRY_NOT_WALL_MOTION {
+        if !excused_and_using.contains(*path) {
+            broken.push(format!(
+                "{path} is excused ({why}) but takes no sine or cosine any more: remove it from TRIGONOMETRY_NOT_WALL_MOTION and from ARCHITECTURE.md"
+            ));
+        }
+    }
+    assert_none(
+        "wall motion is computed in walls-geometry's motion (Motion, Moving, turned); call it instead (ARCHITECTURE.md, \"Invariants\")",
+        &broken,
+    );
+}

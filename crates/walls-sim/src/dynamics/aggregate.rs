@@ -25,9 +25,9 @@
 //!   rolling torque's pseudo-force ([`rolling_push`]) and gravity's moment; it is taken to
 //!   the body frame with Λ as it stands at the force evaluation.
 
+use crate::bodies::State;
 use crate::dynamics::euler_rigid;
 use crate::dynamics::rigid::Rotation;
-use crate::run::State;
 use nalgebra::{Matrix3, Vector3};
 use walls_geometry::Particle;
 

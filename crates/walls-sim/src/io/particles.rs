@@ -13,7 +13,8 @@
 //! Every error says where: the CSV line or the `.ss` byte offset.
 
 use super::{FileError, InputError, error};
-use crate::run::{State, Warning};
+use crate::bodies::State;
+use crate::run::Warning;
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use walls_geometry::Particle;

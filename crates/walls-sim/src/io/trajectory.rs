@@ -13,7 +13,7 @@
 //! A row of each file is one record, [`ParticleRow`] or [`WallRow`]: [`Trajectory`]
 //! writes them and [`read_particles`] and [`read_walls`] read them back.
 
-use crate::run::State;
+use crate::bodies::State;
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use walls_geometry::{Particle, Wall};

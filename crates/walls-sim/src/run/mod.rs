@@ -1,6 +1,6 @@
-//! Running particles against walls: what both contact models share (settings, particle
-//! states, events, the outcome, the walls as they stand during a step) and the choice
-//! between them.
+//! Running particles against walls: what both contact models share (settings, events,
+//! the outcome, the walls as they stand during a step) and the choice between them. The
+//! particles they move are [`crate::bodies`]'s [`State`]s.
 //!
 //! * `soft`: the soft-sphere model (SSDEM), pkdgrav's kick-drift-kick leapfrog with the
 //!   spring–dashpot of [`crate::contact::ssdem`] against every wall and particle a particle
@@ -25,6 +25,7 @@ mod soft;
 mod stability;
 pub mod warning;
 
+pub use crate::bodies::State;
 pub use hard::COLLISION_CAP;
 pub use warning::{Overlapping, Stiffest, Warning};
 
@@ -32,6 +33,7 @@ use crate::contact::ssdem::Material;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
 use walls_geometry::Particle;
+use walls_geometry::motion::{Moving, turned};
 use walls_geometry::{OscillationStepping, Shape, Wall};
 pub use walls_keywords::ContactModel;
 
@@ -293,87 +295,6 @@ pub struct Event {
     pub vn_in: f64,
     /// Normal speed away from the wall when it ended (0 for a stick or removal).
     pub vn_out: f64,
-}
-
-/// A particle's state.
-#[derive(Debug, Clone, PartialEq)]
-pub struct State {
-    /// The particle (position, velocity, spin as they are now).
-    pub particle: Particle,
-    /// Whether it is still in the simulation.
-    pub alive: bool,
-    /// The sticky wall holding it, with the contact point relative to the wall's origin
-    /// (boxed: few particles are ever held, and every pass over the particles carries
-    /// this field, 8 bytes so rather than 40).
-    pub stuck_to: Option<Box<(usize, Vec3)>>,
-    pub(crate) acc: Vec3,
-    pub(crate) alpha: Vec3,
-    /// A member of a rigid aggregate (docs/pkdgrav-physics.md §9): moved with it, never
-    /// kicked or drifted on its own.
-    pub(crate) member: bool,
-}
-
-// The soft-sphere drift reads and writes every state every step, and with 10⁵
-// particles the step's data nears the processor's last cache: a field added here is
-// paid for by every particle in every step (docs/performance.md, "Thirteenth round").
-// What the state can do without is kept beside it (the soft stepper's 1/m and 1/I).
-#[cfg(target_pointer_width = "64")]
-const _: () = assert!(std::mem::size_of::<State>() == 160);
-
-impl State {
-    /// A particle at the start of a run: alive, free, not yet accelerated.
-    pub fn new(particle: &Particle) -> State {
-        State::from(particle.clone())
-    }
-
-    /// Whether it is out of the run, or its position, velocity and spin are all finite.
-    #[inline]
-    pub(crate) fn finite(&self) -> bool {
-        self.finite_with(self.particle.vel.sum() + self.particle.spin.sum())
-    }
-
-    /// [`State::finite`], given the sum of the velocity's and spin's components (which
-    /// the stepper has in hand after a kick).
-    #[inline]
-    pub(crate) fn finite_with(&self, motion: f64) -> bool {
-        let p = &self.particle;
-        // A sum of finite numbers is finite unless it overflows: only then look closer.
-        let sum = p.pos.sum() + motion;
-        !self.alive
-            || sum.is_finite()
-            || (p.pos.iter().chain(p.vel.iter()).chain(p.spin.iter())).all(|x| x.is_finite())
-    }
-
-    /// The particle as pkdgrav writes it in an output: its colour −1 − the wall's number
-    /// once stuck to a wall (unless it was already negative; docs/pkdgrav-physics.md §6).
-    pub fn as_written(&self) -> Particle {
-        let mut p = self.particle.clone();
-        if let Some(&(w, _)) = self.stuck_to.as_deref()
-            && p.color >= 0
-        {
-            p.color = -1 - i32::try_from(w).unwrap_or(i32::MAX - 1);
-        }
-        p
-    }
-
-    /// Whether it moves freely: alive and not held by a sticky wall.
-    fn free(&self) -> bool {
-        self.alive && self.stuck_to.is_none()
-    }
-}
-
-impl From<Particle> for State {
-    /// The particle at the start of a run ([`State::new`]), taken rather than copied.
-    fn from(particle: Particle) -> State {
-        State {
-            particle,
-            alive: true,
-            stuck_to: None,
-            acc: Vec3::zeros(),
-            alpha: Vec3::zeros(),
-            member: false,
-        }
-    }
 }
 
 /// The result of a run.
@@ -733,9 +654,18 @@ impl WallNow {
         Self::placed(origin, wall.shape.at(origin), velocity, wall.motion.spin())
     }
 
+    /// How it moves now: its origin, the origin's velocity and its spin.
+    fn motion(&self) -> Moving {
+        Moving {
+            origin: self.origin,
+            velocity: self.velocity,
+            spin: self.spin,
+        }
+    }
+
     /// The velocity of the wall's material at `q`.
     fn point_velocity(&self, q: &Vec3) -> Vec3 {
-        self.velocity + self.spin.cross(&(q - self.origin))
+        self.motion().point_velocity(q)
     }
 }
 
@@ -767,26 +697,10 @@ impl Origins {
     }
 
     /// Moves every origin as pkdgrav's soft-sphere build does over the step from `t`
-    /// to `t + dt` (`msrWallsMove(t + dt/2, dt)`, docs/pkdgrav-physics.md §5): by the
-    /// change of the sinusoid and of the linear travel between the whole steps of `step`
-    /// (dt when it is 0) that hold t + dt/2 and t + 3dt/2.
+    /// to `t + dt` ([`walls_geometry::Motion::soft_sphere_step`]).
     fn advance_pkdgrav(&mut self, walls: &[Wall], t: f64, dt: f64) {
-        let (ta, tb) = (t + 0.5 * dt, t + 1.5 * dt);
         for (o, w) in self.now.iter_mut().zip(walls) {
-            let m = &w.motion;
-            if !m.translates() {
-                continue;
-            }
-            let step = if m.step > 0.0 { m.step } else { dt };
-            let (qa, qb) = ((ta / step).floor() * step, (tb / step).floor() * step);
-            let osc = &m.oscillation;
-            let mut next = *o + m.velocity * (qb - qa);
-            if osc.amplitude != 0.0 {
-                let phase = std::f64::consts::TAU * osc.cycle();
-                let swing = (osc.frequency * qb + phase).sin() - (osc.frequency * qa + phase).sin();
-                next += osc.direction * (osc.amplitude * swing);
-            }
-            if next.iter().all(|x| x.is_finite()) {
+            if let Some(next) = w.motion.soft_sphere_step(o, t, dt) {
                 *o = next;
             }
         }
@@ -802,33 +716,13 @@ impl Origins {
     }
 
     /// The walls where they stand, their origins moving at pkdgrav's velocity for time
-    /// `t` ([`smooth_velocity`]).
+    /// `t` ([`walls_geometry::Motion::smooth_velocity`]).
     fn walls_pkdgrav(&self, walls: &[Wall], t: f64) -> Vec<WallNow> {
         walls
             .iter()
             .zip(&self.now)
-            .map(|(w, o)| WallNow::moving(w, *o, smooth_velocity(&w.motion, t)))
+            .map(|(w, o)| WallNow::moving(w, *o, w.motion.smooth_velocity(t)))
             .collect()
-    }
-}
-
-/// The velocity pkdgrav gives a wall's origin at time `t` (docs/pkdgrav-physics.md §5):
-/// `velocity` plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to `step`.
-fn smooth_velocity(motion: &walls_geometry::Motion, t: f64) -> Vec3 {
-    let o = &motion.oscillation;
-    let mut v = motion.velocity;
-    if o.amplitude != 0.0 {
-        let angle = o.frequency * t + std::f64::consts::TAU * o.cycle();
-        v += o.direction * (o.amplitude * o.frequency * angle.cos());
-    }
-    v
-}
-
-/// `v` turned about the axis of `spin` by its rate times `time`.
-fn turned(spin: &Vec3, time: f64, v: Vec3) -> Vec3 {
-    match nalgebra::Unit::try_new(*spin, 0.0) {
-        Some(axis) => nalgebra::Rotation3::from_axis_angle(&axis, spin.norm() * time) * v,
-        None => v,
     }
 }
 
@@ -839,9 +733,7 @@ fn carry(s: &mut State, now: &WallNow, dt: f64) {
     let Some((_, offset)) = s.stuck_to.as_deref_mut() else {
         return;
     };
-    *offset = turned(&now.spin, dt, *offset);
-    s.particle.pos = now.origin + *offset;
-    s.particle.vel = now.point_velocity(&s.particle.pos);
+    (s.particle.pos, s.particle.vel) = now.motion().carry(offset, dt);
     s.particle.spin = now.spin;
 }
 
