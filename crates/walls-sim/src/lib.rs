@@ -11,7 +11,8 @@
 //! * [`dynamics`]: reactive walls' assemblies and rigid rotation;
 //! * [`broad`]: which particles and walls could touch (cell grid, wall index);
 //! * [`run`]: the plan, the defaults, the soft- and hard-sphere steppers, stability
-//!   checks, and the outcome with its coded warnings;
+//!   checks, and the outcome; [`warning`]: what a run (and reading its inputs) warns
+//!   about, as coded data;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
 //!   for the real pkdgrav run.
 
@@ -25,6 +26,7 @@ pub mod dynamics;
 pub mod io;
 pub mod report;
 pub mod run;
+pub mod warning;
 
 pub use broad::wall_index::WallIndex;
 pub use walls_geometry::OscillationStepping;

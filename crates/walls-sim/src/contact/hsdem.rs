@@ -8,6 +8,9 @@
 
 use nalgebra::Vector3;
 
+/// Collisions one particle may have in one step before it counts as inelastic collapse.
+pub const COLLISION_CAP: u32 = 1000;
+
 type Vec3 = Vector3<f64>;
 
 /// A particle's velocity and spin after bouncing off a wall.

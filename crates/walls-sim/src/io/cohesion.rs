@@ -6,7 +6,7 @@
 
 use super::{FileError, InputError, error};
 use crate::contact::cohesion::{Colours, Rule};
-use crate::run::Warning;
+use crate::warning::Warning;
 
 /// The whitespace-separated words of `text`, each with its line (1-based).
 fn words(text: &str) -> Vec<(usize, &str)> {

@@ -14,7 +14,7 @@ pub mod particles;
 pub mod trajectory;
 pub mod wallsreact;
 
-use crate::run::Warning;
+use crate::warning::Warning;
 use walls_keywords::number::Problem;
 
 /// A number's text as every reader of a run's inputs takes it, by the tools' one rule

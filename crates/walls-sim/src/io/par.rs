@@ -16,7 +16,7 @@
 //! default the evaluator does not follow. Every error names the `.par` line.
 
 use super::{FileError, InputError, error};
-use crate::run::Warning;
+use crate::warning::Warning;
 use nalgebra::Vector3;
 use std::collections::HashMap;
 

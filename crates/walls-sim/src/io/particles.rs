@@ -14,7 +14,7 @@
 
 use super::{FileError, InputError, error};
 use crate::bodies::State;
-use crate::run::Warning;
+use crate::warning::Warning;
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use walls_geometry::Particle;

@@ -30,7 +30,7 @@ use super::{
 };
 use crate::broad::grid::CellGrid;
 use crate::broad::wall_index::WallIndex;
-use crate::contact::hsdem::{Body, bounce, pair_bounce};
+use crate::contact::hsdem::{Body, COLLISION_CAP, bounce, pair_bounce};
 use crate::contact::ssdem::Material;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
@@ -42,9 +42,6 @@ use walls_geometry::impact::sphere_entry;
 use walls_geometry::{Shape, Wall};
 
 type Vec3 = Vector3<f64>;
-
-/// Collisions one particle may have in one step before it counts as inelastic collapse.
-pub const COLLISION_CAP: u32 = 1000;
 
 /// A wall during one step: as it stands at the start, and its chord velocity.
 struct WallStep {

@@ -23,11 +23,11 @@ pub mod plan;
 mod pool;
 mod soft;
 mod stability;
-pub mod warning;
 
 pub use crate::bodies::State;
-pub use hard::COLLISION_CAP;
-pub use warning::{Overlapping, Stiffest, Warning};
+pub use crate::contact::hsdem::COLLISION_CAP;
+pub use crate::warning;
+pub use crate::warning::{Overlapping, Stiffest, Warning};
 
 use crate::contact::ssdem::Material;
 use crate::run::plan::Plan;

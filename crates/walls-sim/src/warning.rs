@@ -16,7 +16,7 @@
 //! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run;
 //! * `W7xx`, the run's inputs: numbers pkdgrav reads, but not as written.
 
-use super::COLLISION_CAP;
+use crate::contact::hsdem::COLLISION_CAP;
 use std::fmt;
 use walls_keywords::WallType;
 
@@ -566,7 +566,7 @@ mod tests {
 
     #[test]
     fn codes_are_unique_and_documented() {
-        let doc = include_str!("../../../../docs/run-warnings.md");
+        let doc = include_str!("../../../docs/run-warnings.md");
         let mut seen = std::collections::HashSet::new();
         for w in one_of_each() {
             let code = w.code();
