@@ -160,43 +160,27 @@ impl SoftStepper<'_> {
         };
         let chunks = self.states.len().div_ceil(CHUNK);
         self.visited.resize_with(chunks, Vec::new);
+        // The chunks of every slice the drift takes, zipped in one order: rayon's
+        // (`par_*`) or the plain ones, the same chain.
+        macro_rules! chunks {
+            ($chunks:ident, $chunks_mut:ident, $iter_mut:ident) => {
+                (self.states.$chunks_mut(CHUNK))
+                    .zip((self.loads.$chunks_mut(CHUNK)).zip(self.loaded.$chunks_mut(CHUNK)))
+                    .zip(self.owed.$chunks_mut(CHUNK))
+                    .zip(built_at.$chunks(CHUNK).zip(spheres.$chunks_mut(CHUNK)))
+                    .zip(self.walled.$chunks(CHUNK).zip(self.inverses.$chunks(CHUNK)))
+                    .zip(self.visited.$iter_mut())
+                    .enumerate()
+            };
+        }
         let drifted = if self.parallel {
-            self.states
-                .par_chunks_mut(CHUNK)
-                .zip(
-                    self.loads
-                        .par_chunks_mut(CHUNK)
-                        .zip(self.loaded.par_chunks_mut(CHUNK)),
-                )
-                .zip(self.owed.par_chunks_mut(CHUNK))
-                .zip(
-                    built_at
-                        .par_chunks(CHUNK)
-                        .zip(spheres.par_chunks_mut(CHUNK)),
-                )
-                .zip(
-                    self.walled
-                        .par_chunks(CHUNK)
-                        .zip(self.inverses.par_chunks(CHUNK)),
-                )
-                .zip(self.visited.par_iter_mut())
-                .enumerate()
+            chunks!(par_chunks, par_chunks_mut, par_iter_mut)
                 .map(chunk)
                 .reduce(|| false, |a, b| a || b)
         } else {
             // Every chunk, not stopping at the first that drifted far (as `any` would).
             let mut drifted = false;
-            let chunked = (self.states.chunks_mut(CHUNK))
-                .zip(
-                    self.loads
-                        .chunks_mut(CHUNK)
-                        .zip(self.loaded.chunks_mut(CHUNK)),
-                )
-                .zip(self.owed.chunks_mut(CHUNK))
-                .zip(built_at.chunks(CHUNK).zip(spheres.chunks_mut(CHUNK)))
-                .zip(self.walled.chunks(CHUNK).zip(self.inverses.chunks(CHUNK)))
-                .zip(self.visited.iter_mut());
-            for c in chunked.enumerate() {
+            for c in chunks!(chunks, chunks_mut, iter_mut) {
                 drifted |= chunk(c);
             }
             drifted

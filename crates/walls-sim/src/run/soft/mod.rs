@@ -45,6 +45,7 @@ use crate::contact::ssdem::{Material, Restitution};
 use crate::dynamics::aggregate::Aggregates;
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
+use crate::dynamics::sphere_inertia as inertia;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use nalgebra::Vector3;
@@ -61,11 +62,6 @@ use pairs::PairPass;
 use walls::{Closing, Open, ParticleStep};
 
 type Vec3 = Vector3<f64>;
-
-/// The inertia of a solid sphere.
-fn inertia(m: f64, r: f64) -> f64 {
-    0.4 * m * r * r
-}
 
 /// What acts on one particle in a step: the force and torque summed so far. Every pass
 /// over the particles touches it, so it holds nothing else: the open wall contacts are
@@ -142,6 +138,32 @@ impl Kicks {
     }
 }
 
+/// The contact law of a run, against walls and between particles alike, decided once at
+/// set-up ([`Law::of`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Law {
+    /// pkdgrav's spring–dashpot, in its frame ([`crate::contact::ssdem::dashpot_contact_with`],
+    /// docs/pkdgrav-physics.md §1.1–§1.5): pkdgrav's integrator, with friction, rolling,
+    /// twisting or one of its optional builds.
+    Pkdgrav,
+    /// The spring–dashpot of [`crate::contact::ssdem::contact`] (with sliding friction)
+    /// or [`crate::contact::ssdem::normal_contact`], with rolling and twisting
+    /// resistance beside it.
+    Linear,
+}
+
+impl Law {
+    /// The law of a run with these kicks, plan and optional physics.
+    fn of(kicks: &Kicks, plan: &Plan, optional: &OptionalPhysics) -> Law {
+        let dashpot = plan.sliding_friction || plan.rolling || plan.twisting;
+        if kicks.pkdgrav_levers && (dashpot || optional.any()) {
+            Law::Pkdgrav
+        } else {
+            Law::Linear
+        }
+    }
+}
+
 /// The warnings pkdgrav gives once a run, and whether each has been given.
 #[derive(Default)]
 struct WarnedOnce {
@@ -167,6 +189,8 @@ struct SoftStepper<'a> {
     plan: &'a Plan,
     states: Vec<State>,
     kicks: Kicks,
+    /// The contact law, walls and pairs alike.
+    law: Law,
     /// Each wall's material, with the particles' values where it says so.
     materials: Vec<Material>,
     /// Each wall's normal damping over √m, worked out once.

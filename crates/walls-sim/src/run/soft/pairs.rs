@@ -3,7 +3,7 @@
 //! contacts ([`SoftStepper::pair_forces`]), one at a time ([`PairContext::force`]) or four
 //! at a time ([`PairContext::force_lanes`]), on one thread or many.
 
-use super::{Flow, Kicks, Load, Overlapping, Settings, SoftStepper, State, Vec3, inertia};
+use super::{Flow, Kicks, Law, Load, Overlapping, Settings, SoftStepper, State, Vec3, inertia};
 use crate::broad::pairs::{NO_CONTACT, PairList};
 use crate::contact::lanes::{self, LANES};
 use crate::contact::ssdem::{
@@ -94,6 +94,7 @@ impl SoftStepper<'_> {
             settings: self.settings,
             plan: self.plan,
             kicks: self.kicks,
+            law: self.law,
             mat,
             restitution: (eps_n, eps_t),
             damping: states.first().map(|s| {
@@ -511,6 +512,8 @@ pub(super) struct PairContext<'a> {
     settings: &'a Settings,
     plan: &'a Plan,
     kicks: Kicks,
+    /// The contact law.
+    law: Law,
     mat: &'a Material,
     /// The particles' normal and tangential restitutions.
     restitution: (Restitution, Restitution),
@@ -526,12 +529,9 @@ impl PairContext<'_> {
     /// contacts take pkdgrav's levers and law without its optional parts and the
     /// processor has the lanes' vector instructions ([`lanes::Simd`]).
     pub(super) fn lanes(&self) -> Option<lanes::Setting<'_>> {
-        let plan = self.plan;
-        let dashpot = plan.sliding_friction || plan.rolling || plan.twisting;
         let settings = self.settings;
         let simd = lanes::Simd::new()?;
-        (self.kicks.pkdgrav_levers
-            && dashpot
+        (self.law == Law::Pkdgrav
             && !self.optional.any()
             && !settings.contact_radius
             && settings.build.rotation_dashpot)
@@ -658,9 +658,7 @@ impl PairContext<'_> {
             (true, false) => p.mass,
             _ => q.mass,
         };
-        if pkdgrav_levers
-            && (plan.sliding_friction || plan.rolling || plan.twisting || self.optional.any())
-        {
+        if self.law == Law::Pkdgrav {
             // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
             // towards j, velocities and spins are j's relative to i's
             // (docs/pkdgrav-physics.md §1.1–§1.5).
@@ -835,6 +833,7 @@ mod tests {
             settings,
             plan: &plan,
             kicks,
+            law: Law::of(&kicks, &plan, &optional),
             mat: &mat,
             restitution,
             damping: Some((

@@ -6,8 +6,8 @@ use super::near::{self, NearWalls};
 use super::pairs::PairPass;
 use super::walls::Closing;
 use super::{
-    CHUNK, Integrator, Kicks, Load, Materials, OverlapWarnings, PARALLEL_FROM, Settings,
-    SoftStepper, State, WarnedOnce, Warning, assembly_energy, energy, in_parallel,
+    CHUNK, Integrator, Kicks, Law, Load, Materials, OverlapWarnings, PARALLEL_FROM, Settings,
+    SoftStepper, State, WarnedOnce, Warning, assembly_energy, energy, in_parallel, inertia,
 };
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
@@ -134,19 +134,22 @@ impl<'a> SoftStepper<'a> {
         let inverses: Vec<(f64, f64)> = (states.iter())
             .map(|s| {
                 let p = &s.particle;
-                (1.0 / p.mass, 1.0 / (0.4 * p.mass * p.radius * p.radius))
+                (1.0 / p.mass, 1.0 / inertia(p.mass, p.radius))
             })
             .collect();
         let largest_inverse = (inverses.iter())
             .map(|i| largest(i.0, i.1))
             .fold(0.0, largest);
+        let kicks = Kicks::of(settings.integrator);
+        let law = Law::of(&kicks, plan, &optional);
         SoftStepper {
             restitutions,
             scene,
             settings,
             plan,
             states,
-            kicks: Kicks::of(settings.integrator),
+            kicks,
+            law,
             materials,
             damping,
             between,

@@ -5,8 +5,8 @@
 
 use super::near::NearWalls;
 use super::{
-    CHUNK, Event, EventKind, Flow, Load, Overlapping, SoftStepper, State, Vec3, WallNow, Warning,
-    carry, inertia,
+    CHUNK, Event, EventKind, Flow, Law, Load, Overlapping, SoftStepper, State, Vec3, WallNow,
+    Warning, carry, inertia,
 };
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
@@ -59,6 +59,8 @@ pub(super) struct Walls<'a> {
     /// Whether the lever of the contact velocity and of the tangential force is
     /// pkdgrav's r − x (else the radius), with pkdgrav's contact law.
     pkdgrav_levers: bool,
+    /// The contact law.
+    law: Law,
     /// pkdgrav's rolling radius is the contact radius (`bUseContactRadius`).
     contact_radius: bool,
     /// A build without `DEM_ROTATION_DASHPOT`: rolling and twisting are constant
@@ -364,34 +366,23 @@ pub(super) fn touch_walls(
             open.len() - 1
         });
         if mat.eps_n <= 0.0 {
-            if s.member {
-                // An aggregate neither sticks nor dies (pkdgrav asserts, physics.md
-                // §9.5): the event, and `note_wall_contacts` stops the run.
-                out.events.push(Event {
-                    t,
-                    particle: i,
-                    wall: w,
-                    kind: if mat.eps_n < 0.0 {
-                        EventKind::Remove
-                    } else {
-                        EventKind::Stick
-                    },
-                    vn_in: open[k].1.vn_in,
-                    vn_out: 0.0,
-                });
-                open.swap_remove(k);
-                return true;
-            }
-            // A death wall removes the particle; a sticky wall holds it.
+            // A death wall removes the particle; a sticky wall holds it. An aggregate's
+            // member neither sticks nor dies (pkdgrav asserts, physics.md §9.5): the
+            // event alone, and `note_wall_contacts` stops the run.
             let kind = if mat.eps_n < 0.0 {
-                s.alive = false;
                 EventKind::Remove
             } else {
-                s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
-                s.particle.vel = wall_v;
-                s.particle.spin = wall.spin;
                 EventKind::Stick
             };
+            if !s.member {
+                if kind == EventKind::Remove {
+                    s.alive = false;
+                } else {
+                    s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
+                    s.particle.vel = wall_v;
+                    s.particle.spin = wall.spin;
+                }
+            }
             out.events.push(Event {
                 t,
                 particle: i,
@@ -404,9 +395,7 @@ pub(super) fn touch_walls(
             return true;
         }
         let plan = walls.plan;
-        if walls.pkdgrav_levers
-            && (plan.sliding_friction || plan.rolling || plan.twisting || walls.optional.any())
-        {
+        if walls.law == Law::Pkdgrav {
             // pkdgrav's contact law, in its frame: the normal towards the wall, the
             // wall's motion relative to the particle's (docs/pkdgrav-physics.md
             // §1.1–§1.5). A reactive wall turns the springs by its spin about the face
@@ -549,6 +538,7 @@ impl SoftStepper<'_> {
             predict: self.kicks.predict,
             predict_spin: self.kicks.predict_all,
             pkdgrav_levers: self.kicks.pkdgrav_levers,
+            law: self.law,
             contact_radius: self.settings.contact_radius,
             constant_torque: (!self.settings.build.rotation_dashpot)
                 .then_some(self.settings.legacy_roll),
@@ -605,28 +595,27 @@ impl SoftStepper<'_> {
         let chunks = self.states.len().div_ceil(CHUNK);
         self.reports.resize_with(chunks, Vec::new);
         self.visits.resize_with(chunks, Vec::new);
+        // The chunks of every slice the wall pass takes, zipped in one order: rayon's
+        // (`par_*`) or the plain ones, the same chain.
+        macro_rules! chunks {
+            ($chunks:ident, $chunks_mut:ident, $iter:ident, $iter_mut:ident) => {
+                (self.states.$chunks_mut(CHUNK))
+                    .zip(self.loads.$chunks_mut(CHUNK))
+                    .zip(self.visited.$iter().zip(self.inverses.$chunks(CHUNK)))
+                    .zip((self.open_walls.$chunks_mut(CHUNK)).zip(self.walled.$chunks_mut(CHUNK)))
+                    .zip(self.reports.$iter_mut().zip(&mut self.visits))
+                    .enumerate()
+            };
+        }
         if self.parallel {
-            self.states
-                .par_chunks_mut(CHUNK)
-                .zip(self.loads.par_chunks_mut(CHUNK))
-                .zip(self.visited.par_iter().zip(self.inverses.par_chunks(CHUNK)))
-                .zip((self.open_walls.par_chunks_mut(CHUNK)).zip(self.walled.par_chunks_mut(CHUNK)))
-                .zip(self.reports.par_iter_mut().zip(&mut self.visits))
-                .enumerate()
+            chunks!(par_chunks, par_chunks_mut, par_iter, par_iter_mut)
                 // Each chunk a task of its own: the particles near the walls gather in
                 // a few chunks (those at the floor, in a pile), which halving the range
                 // left to one thread (docs/performance.md, "Twelfth round").
                 .with_max_len(1)
                 .for_each(chunk);
         } else {
-            self.states
-                .chunks_mut(CHUNK)
-                .zip(self.loads.chunks_mut(CHUNK))
-                .zip(self.visited.iter().zip(self.inverses.chunks(CHUNK)))
-                .zip((self.open_walls.chunks_mut(CHUNK)).zip(self.walled.chunks_mut(CHUNK)))
-                .zip(self.reports.iter_mut().zip(&mut self.visits))
-                .enumerate()
-                .for_each(chunk);
+            chunks!(chunks, chunks_mut, iter, iter_mut).for_each(chunk);
         }
         // The kicks the drift marked as owed are owed now.
         self.owing = true;
