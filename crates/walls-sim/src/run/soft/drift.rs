@@ -12,7 +12,7 @@ impl SoftStepper<'_> {
     /// The kick before the drift (leapfrog's first half; none in explicit Euler), the
     /// drift, and the kick after it (explicit Euler's), for the free particles; in the
     /// same pass, each free particle first gets the last step's closing kick if the wall
-    /// pass left it owed ([`SoftStepper::owed`]), the loads of an aggregate's members
+    /// pass left it owed ([`super::Deferred::owed`]), the loads of an aggregate's members
     /// start the step with gravity alone (the others' were started by the last wall pass
     /// or here, after the owed kick), the candidate pairs learn whether a drifted
     /// particle has moved far enough to rebuild them ([`PairList::drifted`]), and each
@@ -26,8 +26,8 @@ impl SoftStepper<'_> {
         let limit = self.candidates.limit();
         let half = self.candidates.skin / 2.0;
         // The kicks owed by the last wall pass, if it owed any.
-        let pay = std::mem::take(&mut self.owing).then_some(self.owed_kick);
-        let marks_valid = self.marks_valid;
+        let pay = std::mem::take(&mut self.deferred.owing).then_some(self.deferred.owed_kick);
+        let marks_valid = self.deferred.marks_valid;
         let forces = self.settings.forces;
         let PairList {
             built_at, spheres, ..
@@ -41,8 +41,8 @@ impl SoftStepper<'_> {
         // (the list is found again after this pass). Nothing is owed with a wall index
         // or the walls of reactive assemblies, placed only after this pass.
         let near = self.near.as_ref().filter(|_| forces);
-        let now: &[WallNow] = if forces { &self.now } else { &[] };
-        let owing = self.index.is_none() || !forces;
+        let now: &[WallNow] = if forces { &self.walls.now } else { &[] };
+        let owing = self.walls.index.is_none() || !forces;
         let owing = owing && near.is_none_or(|n| !n.moved(now, half));
         // The settings held by value (`move`): by reference, every particle read each
         // through a pointer to these locals.
@@ -159,17 +159,20 @@ impl SoftStepper<'_> {
             drifted
         };
         let chunks = self.states.len().div_ceil(CHUNK);
-        self.visited.resize_with(chunks, Vec::new);
+        self.deferred.visited.resize_with(chunks, Vec::new);
         // The chunks of every slice the drift takes, zipped in one order: rayon's
         // (`par_*`) or the plain ones, the same chain.
         macro_rules! chunks {
             ($chunks:ident, $chunks_mut:ident, $iter_mut:ident) => {
                 (self.states.$chunks_mut(CHUNK))
-                    .zip((self.loads.$chunks_mut(CHUNK)).zip(self.loaded.$chunks_mut(CHUNK)))
-                    .zip(self.owed.$chunks_mut(CHUNK))
+                    .zip(
+                        (self.loads.$chunks_mut(CHUNK))
+                            .zip(self.deferred.loaded.$chunks_mut(CHUNK)),
+                    )
+                    .zip(self.deferred.owed.$chunks_mut(CHUNK))
                     .zip(built_at.$chunks(CHUNK).zip(spheres.$chunks_mut(CHUNK)))
                     .zip(self.walled.$chunks(CHUNK).zip(self.inverses.$chunks(CHUNK)))
-                    .zip(self.visited.$iter_mut())
+                    .zip(self.deferred.visited.$iter_mut())
                     .enumerate()
             };
         }
@@ -186,8 +189,8 @@ impl SoftStepper<'_> {
             drifted
         };
         self.candidates.drifted = drifted;
-        self.owed_bad = None;
-        self.force_bound = 0.0;
+        self.deferred.owed_bad = None;
+        self.deferred.force_bound = 0.0;
     }
 
     /// Whether the wall pass may owe a free particle of radius `r`, whose squared
@@ -210,15 +213,15 @@ impl SoftStepper<'_> {
     /// particle whose numbers overflowed in its kick is kept for
     /// [`SoftStepper::not_finite`].
     pub(super) fn settle(&mut self) {
-        if !std::mem::take(&mut self.owing) {
+        if !std::mem::take(&mut self.deferred.owing) {
             return;
         }
-        let kick = self.owed_kick;
+        let kick = self.deferred.owed_kick;
         let g = self.settings.gravity;
         let mut bad = None;
         for (i, (((s, load), owed), &inverse)) in (self.states.iter_mut())
             .zip(&mut self.loads)
-            .zip(&mut self.owed)
+            .zip(&mut self.deferred.owed)
             .zip(&self.inverses)
             .enumerate()
         {
@@ -230,7 +233,7 @@ impl SoftStepper<'_> {
                 }
             }
         }
-        self.owed_bad = bad;
+        self.deferred.owed_bad = bad;
     }
 
     /// Whether the kicks owed cannot overflow: each owed particle's position is finite,
@@ -240,9 +243,9 @@ impl SoftStepper<'_> {
     /// plus the sum of every particle contact's forces and torques this step, which
     /// times the largest 1/m or 1/I and the kick's time is below it too.
     pub(super) fn surely_finite(&self) -> bool {
-        let kick = self.owed_kick.dt * self.owed_kick.fraction;
-        let load = self.gravity_bound + self.force_bound;
-        load * self.largest_inverse * kick.max(1.0) < SURELY_FINITE
+        let kick = self.deferred.owed_kick.dt * self.deferred.owed_kick.fraction;
+        let load = self.deferred.gravity_bound + self.deferred.force_bound;
+        load * self.deferred.largest_inverse * kick.max(1.0) < SURELY_FINITE
     }
 }
 
@@ -270,9 +273,9 @@ pub(super) type DriftChunk<'a> = (
 /// What the drift works on for one particle besides its state.
 pub(super) struct DriftWork<'a> {
     load: &'a mut Load,
-    /// Whether its load may hold more than gravity ([`SoftStepper::loaded`]).
+    /// Whether its load may hold more than gravity ([`super::Deferred::loaded`]).
     loaded: &'a mut bool,
-    /// Whether its closing kick is owed ([`SoftStepper::owed`]).
+    /// Whether its closing kick is owed ([`super::Deferred::owed`]).
     owed: &'a mut bool,
     /// Where it was when the candidate pairs were found.
     at: &'a Vec3,

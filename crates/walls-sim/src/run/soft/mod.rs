@@ -33,6 +33,14 @@
 //! first step, as pkdgrav does. pkdgrav's aggregates (`AGGS`,
 //! [`crate::dynamics::aggregate`]) run only with [`Integrator::Pkdgrav`]; their members
 //! are placed by their aggregate, not kicked or drifted, and hand it their loads.
+//!
+//! The stepper's state is kept in named sets: the walls ([`WallSet`]: materials, the
+//! laws' constants, index, motion, assemblies' walls), the closing kicks deferred to the
+//! next drift ([`Deferred`]), what the run has seen ([`Journal`]), the candidate pairs
+//! ([`PairList`]) with the near-wall lists ([`NearWalls`]) and the pair pass's scratch,
+//! and the contact law ([`Law`]), decided once at set-up for walls and pairs alike. Its
+//! stages are in modules: [`setup`], [`drift`], [`pairs`] (the pair pass and law),
+//! [`walls`] (the wall pass) and [`near`]; the step and the bodies' motion are here.
 
 use super::pool::Helpers;
 use super::{
@@ -180,51 +188,21 @@ enum Flow {
     Stop,
 }
 
-/// A soft-sphere run as it goes: the particles and what acts on them, the walls and
-/// assemblies as they stand, the open contacts, and what the run has seen so far. A step
-/// is [`SoftStepper::step`].
-struct SoftStepper<'a> {
-    scene: &'a [Wall],
-    settings: &'a Settings,
-    plan: &'a Plan,
-    states: Vec<State>,
-    kicks: Kicks,
-    /// The contact law, walls and pairs alike.
-    law: Law,
-    /// Each wall's material, with the particles' values where it says so.
-    materials: Vec<Material>,
-    /// Each wall's normal damping over √m, worked out once.
-    damping: Vec<f64>,
-    /// Each wall's normal and tangential restitutions, worked out once.
-    restitutions: Vec<(Restitution, Restitution)>,
-    /// The particles' material, for their contacts with each other.
-    between: Material,
-    /// Cohesion and two-layer contacts (pkdgrav's optional builds).
-    optional: OptionalPhysics,
-    /// Whether each wall oscillates (a bounce off it may gain speed).
-    oscillating: Vec<bool>,
-    /// The wall index, when the plan uses one.
-    index: Option<WallIndex>,
-    origins: Origins,
-    /// The walls as they stand: placed once when no wall moves (the plan), else every
-    /// step; reactive assemblies' walls every step.
-    now: Vec<WallNow>,
-    /// Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
-    assemblies: Vec<Assembly>,
-    /// Each wall's assembly, if any.
-    assembly_of: Vec<Option<usize>>,
-    /// Each assembly's centre of gravity this step (kept to save allocating).
-    cogs: Vec<Vec3>,
-    /// pkdgrav's rigid aggregates of particles (`AGGS`, docs/pkdgrav-physics.md §9), if
-    /// any.
-    aggregates: Option<Aggregates>,
-    /// Set up failed (an aggregate of one member): the run stops before it starts.
-    halted: bool,
-    loads: Vec<Load>,
-    /// Each particle's 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once (a
-    /// division costs as much as the rest of a free particle's step), and kept beside
-    /// the states, which the drift writes back every step: it only reads these.
-    inverses: Vec<(f64, f64)>,
+/// What a run has seen so far: its events, the pair contacts begun, its warnings, and
+/// pkdgrav's overlap warnings and the warnings it gives once.
+#[derive(Default)]
+struct Journal {
+    events: Vec<Event>,
+    pair_contacts: u64,
+    warnings: Vec<Warning>,
+    overlaps: OverlapWarnings,
+    once: WarnedOnce,
+}
+
+/// The closing kicks the wall pass defers to the next drift ([`SoftStepper::kick_drift`]),
+/// which particles are owed one, and the bounds that tell whether they are surely finite
+/// ([`SoftStepper::surely_finite`]).
+struct Deferred {
     /// Whether each particle's closing kick is owed: a free particle clear of the walls
     /// gets it in the next drift ([`SoftStepper::kick_drift`]) rather than in the wall
     /// pass, which saves a pass over the particles; [`SoftStepper::settle`] gives it
@@ -243,7 +221,7 @@ struct SoftStepper<'a> {
     /// set back (by the wall pass, by [`SoftStepper::settle`], or by the drift while
     /// the marks were not valid) only makes the drift read it.
     loaded: Vec<bool>,
-    /// Whether the last pair pass marked the loads it added to ([`SoftStepper::loaded`]):
+    /// Whether the last pair pass marked the loads it added to ([`Deferred::loaded`]):
     /// when at most one pair in eight particles touched. With more, as in a pile, the
     /// drift reads every owed load, which costs less than testing each mark.
     marks_valid: bool,
@@ -264,6 +242,63 @@ struct SoftStepper<'a> {
     force_bound: f64,
     gravity_bound: f64,
     largest_inverse: f64,
+}
+
+/// The walls of a run: their materials and the laws' constants worked out once, the wall
+/// index, their motion and where they stand, and the reactive assemblies they belong
+/// to.
+struct WallSet {
+    /// Each wall's material, with the particles' values where it says so.
+    materials: Vec<Material>,
+    /// Each wall's normal damping over √m, worked out once.
+    damping: Vec<f64>,
+    /// Each wall's normal and tangential restitutions, worked out once.
+    restitutions: Vec<(Restitution, Restitution)>,
+    /// Whether each wall oscillates (a bounce off it may gain speed).
+    oscillating: Vec<bool>,
+    /// The wall index, when the plan uses one.
+    index: Option<WallIndex>,
+    origins: Origins,
+    /// The walls as they stand: placed once when no wall moves (the plan), else every
+    /// step; reactive assemblies' walls every step.
+    now: Vec<WallNow>,
+    /// Each wall's assembly, if any.
+    assembly_of: Vec<Option<usize>>,
+    /// Each assembly's centre of gravity this step (kept to save allocating).
+    cogs: Vec<Vec3>,
+}
+
+/// A soft-sphere run as it goes: the particles and what acts on them, the walls and
+/// assemblies as they stand, the open contacts, and what the run has seen so far. A step
+/// is [`SoftStepper::step`].
+struct SoftStepper<'a> {
+    scene: &'a [Wall],
+    settings: &'a Settings,
+    plan: &'a Plan,
+    states: Vec<State>,
+    kicks: Kicks,
+    /// The contact law, walls and pairs alike.
+    law: Law,
+    /// The walls, their materials and motion.
+    walls: WallSet,
+    /// The particles' material, for their contacts with each other.
+    between: Material,
+    /// Cohesion and two-layer contacts (pkdgrav's optional builds).
+    optional: OptionalPhysics,
+    /// Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
+    assemblies: Vec<Assembly>,
+    /// pkdgrav's rigid aggregates of particles (`AGGS`, docs/pkdgrav-physics.md §9), if
+    /// any.
+    aggregates: Option<Aggregates>,
+    /// Set up failed (an aggregate of one member): the run stops before it starts.
+    halted: bool,
+    loads: Vec<Load>,
+    /// Each particle's 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once (a
+    /// division costs as much as the rest of a free particle's step), and kept beside
+    /// the states, which the drift writes back every step: it only reads these.
+    inverses: Vec<(f64, f64)>,
+    /// The closing kicks deferred to the next drift.
+    deferred: Deferred,
     /// Each particle's open wall contacts: (wall, contact), kept apart from its load so
     /// that the passes that do not need them do not carry them.
     open_walls: Vec<Vec<(usize, Open)>>,
@@ -289,11 +324,8 @@ struct SoftStepper<'a> {
     parallel: bool,
     /// The energy at the start.
     initial: f64,
-    events: Vec<Event>,
-    pair_contacts: u64,
-    warnings: Vec<Warning>,
-    overlaps: OverlapWarnings,
-    once: WarnedOnce,
+    /// What the run has seen so far.
+    journal: Journal,
     t: f64,
     steps: u64,
 }
@@ -343,7 +375,7 @@ impl<'a> SoftStepper<'a> {
         // The drift compiled without pkdgrav's `dAccCrit` and with it: its test and its
         // call in the loop cost the common case about 3 % of the run
         // (docs/performance.md, "Twelfth round").
-        if self.owed_kick.acc_crit > 0.0 {
+        if self.deferred.owed_kick.acc_crit > 0.0 {
             self.kick_drift::<true>();
         } else {
             self.kick_drift::<false>();
@@ -357,7 +389,7 @@ impl<'a> SoftStepper<'a> {
             &mut self.candidates,
             &mut self.near,
             &self.states,
-            &self.now,
+            &self.walls.now,
         );
         if self.plan.particle_contacts
             && self.settings.forces
@@ -410,19 +442,21 @@ impl<'a> SoftStepper<'a> {
         let pkdgrav = self.settings.integrator == Integrator::Pkdgrav;
         if self.plan.moving_walls {
             if pkdgrav {
-                self.origins.advance_pkdgrav(self.scene, self.t, dt);
+                self.walls.origins.advance_pkdgrav(self.scene, self.t, dt);
             } else {
-                self.origins.advance(self.scene, self.t, dt);
+                self.walls.origins.advance(self.scene, self.t, dt);
             }
         }
         self.steps += 1;
         self.t = self.settings.next_time(self.t, self.steps);
         if self.plan.moving_walls {
-            self.now = if pkdgrav {
+            self.walls.now = if pkdgrav {
                 // pkdgrav's walls move at the velocity of half a step later (§5).
-                self.origins.walls_pkdgrav(self.scene, self.t + 0.5 * dt)
+                self.walls
+                    .origins
+                    .walls_pkdgrav(self.scene, self.t + 0.5 * dt)
             } else {
-                self.origins.walls(self.scene, self.t)
+                self.walls.origins.walls(self.scene, self.t)
             };
         }
     }
@@ -439,7 +473,7 @@ impl<'a> SoftStepper<'a> {
         let dt = self.settings.dt;
         for s in &mut self.states {
             if let (true, Some(&(w, _))) = (s.alive, s.stuck_to.as_deref()) {
-                carry(s, &self.now[w], dt);
+                carry(s, &self.walls.now[w], dt);
             }
         }
     }
@@ -477,7 +511,7 @@ impl<'a> SoftStepper<'a> {
     fn place_assemblies(&mut self) {
         for a in &self.assemblies {
             for (k, &w) in a.walls.iter().enumerate() {
-                self.now[w] = WallNow::placed(
+                self.walls.now[w] = WallNow::placed(
                     a.cog,
                     a.shape(&self.scene[w].shape, k),
                     a.velocity,
@@ -485,8 +519,10 @@ impl<'a> SoftStepper<'a> {
                 );
             }
         }
-        self.cogs.clear();
-        self.cogs.extend(self.assemblies.iter().map(|a| a.cog));
+        self.walls.cogs.clear();
+        self.walls
+            .cogs
+            .extend(self.assemblies.iter().map(|a| a.cog));
     }
 
     /// The particles' reactions on the assemblies, summed in particle order, and the
@@ -529,11 +565,11 @@ impl<'a> SoftStepper<'a> {
             t: self.t,
             steps: self.steps - self.settings.start_step,
             particles: self.states,
-            events: self.events,
+            events: self.journal.events,
             assemblies: self.assemblies,
-            pair_contacts: self.pair_contacts,
+            pair_contacts: self.journal.pair_contacts,
             energy: (self.initial, last),
-            warnings: self.warnings,
+            warnings: self.journal.warnings,
             stopped,
         }
     }

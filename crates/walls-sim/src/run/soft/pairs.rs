@@ -59,7 +59,7 @@ impl SoftStepper<'_> {
                     contacts.close(&mut slots[k as usize]);
                 }
                 for &(k, _) in &scan.touching {
-                    contacts.open(&mut slots[k as usize], &mut self.pair_contacts);
+                    contacts.open(&mut slots[k as usize], &mut self.journal.pair_contacts);
                     touching.push(k);
                 }
                 continue;
@@ -71,19 +71,19 @@ impl SoftStepper<'_> {
             }
             for &(k, _) in &scan.touching {
                 let slot = &mut slots[k as usize];
-                self.pair_contacts += u64::from(*slot == NO_CONTACT);
+                self.journal.pair_contacts += u64::from(*slot == NO_CONTACT);
                 from.push(*slot);
                 *slot = touching.len() as u32;
                 touching.push(k);
             }
         }
-        // The loads these forces go to, marked when few (`SoftStepper::loaded`).
-        self.marks_valid = 8 * touching.len() <= self.states.len();
-        if self.marks_valid {
+        // The loads these forces go to, marked when few (`Deferred::loaded`).
+        self.deferred.marks_valid = 8 * touching.len() <= self.states.len();
+        if self.deferred.marks_valid {
             for &k in touching.iter() {
                 let (i, j) = pairs[k as usize];
-                self.loaded[i as usize] = true;
-                self.loaded[j as usize] = true;
+                self.deferred.loaded[i as usize] = true;
+                self.deferred.loaded[j as usize] = true;
             }
         }
         let states = &self.states;
@@ -124,7 +124,7 @@ impl SoftStepper<'_> {
                 );
                 bound += pair_block(&context, lanes.as_ref(), list, on);
             }
-            self.force_bound += bound;
+            self.deferred.force_bound += bound;
             return Flow::Continue;
         }
         // In parallel: the new records, in the order of the pairs that touch, each from
@@ -163,7 +163,7 @@ impl SoftStepper<'_> {
         for sum in bounds.iter() {
             bound += sum;
         }
-        self.force_bound += bound;
+        self.deferred.force_bound += bound;
         // …and each range of particles takes the forces on its own in the list's
         // order, so that each load adds them as on one thread.
         let range = loads.len().div_ceil(rayon::current_num_threads()).max(1);
@@ -199,7 +199,7 @@ impl SoftStepper<'_> {
         let some_unfree = *held || *gone;
         // An overlap above this is one the ordered check must see (a NaN it would not
         // act on).
-        let quiet = self.overlaps.quiet_up_to();
+        let quiet = self.journal.overlaps.quiet_up_to();
         // (In chunks on one thread too: the overlaps' check looks again only at those
         // with a deep one.)
         let size = pairs.len().div_ceil(SCAN_CHUNKS).max(1);
@@ -306,14 +306,15 @@ impl SoftStepper<'_> {
                 let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
                 let what = Overlapping::Particles(i, j);
                 if self
+                    .journal
                     .overlaps
-                    .check(fraction, what, self.t, &mut self.warnings)
+                    .check(fraction, what, self.t, &mut self.journal.warnings)
                 {
                     // The contacts the pairs before it opened.
                     let before = scans[..c].iter().flat_map(|s| &s.touching);
                     let opened = before.chain(&scan.touching[..n]);
                     let opened = opened.filter(|(k, _)| slots[*k as usize] == NO_CONTACT);
-                    self.pair_contacts += opened.count() as u64;
+                    self.journal.pair_contacts += opened.count() as u64;
                     return true;
                 }
             }
@@ -334,7 +335,7 @@ pub(super) struct Scan {
     touching: Vec<(u32, f64)>,
     apart: Vec<u32>,
     /// Whether an overlap is deep enough for pkdgrav's warnings or abort to act on
-    /// ([`OverlapWarnings::quiet_up_to`]).
+    /// ([`crate::run::OverlapWarnings::quiet_up_to`]).
     deep: bool,
 }
 

@@ -6,8 +6,9 @@ use super::near::{self, NearWalls};
 use super::pairs::PairPass;
 use super::walls::Closing;
 use super::{
-    CHUNK, Integrator, Kicks, Law, Load, Materials, OverlapWarnings, PARALLEL_FROM, Settings,
-    SoftStepper, State, WarnedOnce, Warning, assembly_energy, energy, in_parallel, inertia,
+    CHUNK, Deferred, Integrator, Journal, Kicks, Law, Load, Materials, OverlapWarnings,
+    PARALLEL_FROM, Settings, SoftStepper, State, WallSet, WarnedOnce, Warning, assembly_energy,
+    energy, in_parallel, inertia,
 };
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
@@ -143,44 +144,48 @@ impl<'a> SoftStepper<'a> {
         let kicks = Kicks::of(settings.integrator);
         let law = Law::of(&kicks, plan, &optional);
         SoftStepper {
-            restitutions,
+            walls: WallSet {
+                materials,
+                damping,
+                restitutions,
+                oscillating,
+                index,
+                origins,
+                now,
+                assembly_of,
+                cogs: Vec::with_capacity(assemblies.len()),
+            },
             scene,
             settings,
             plan,
             states,
             kicks,
             law,
-            materials,
-            damping,
             between,
             optional,
-            oscillating,
-            index,
-            origins,
-            now,
-            cogs: Vec::with_capacity(assemblies.len()),
             aggregates,
             halted,
             assemblies,
-            assembly_of,
-            gravity_bound,
-            largest_inverse,
+            deferred: Deferred {
+                owed: vec![false; n],
+                loaded: vec![false; n],
+                marks_valid: false,
+                owing: false,
+                visited: (0..n.div_ceil(CHUNK))
+                    .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
+                    .collect(),
+                owed_kick: Closing {
+                    dt: settings.dt,
+                    fraction: 0.0,
+                    acc_crit: settings.acc_crit,
+                },
+                owed_bad: None,
+                force_bound: 0.0,
+                gravity_bound,
+                largest_inverse,
+            },
             inverses,
             loads,
-            owed: vec![false; n],
-            loaded: vec![false; n],
-            marks_valid: false,
-            owing: false,
-            visited: (0..n.div_ceil(CHUNK))
-                .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
-                .collect(),
-            owed_kick: Closing {
-                dt: settings.dt,
-                fraction: 0.0,
-                acc_crit: settings.acc_crit,
-            },
-            owed_bad: None,
-            force_bound: 0.0,
             open_walls: (0..n).map(|_| Vec::new()).collect(),
             walled: vec![false; n],
             visits: Vec::new(),
@@ -190,11 +195,13 @@ impl<'a> SoftStepper<'a> {
             reports: Vec::new(),
             parallel: in_parallel(n),
             initial,
-            events: Vec::new(),
-            pair_contacts: 0,
-            warnings,
-            overlaps: OverlapWarnings::default(),
-            once: WarnedOnce::default(),
+            journal: Journal {
+                events: Vec::new(),
+                pair_contacts: 0,
+                warnings,
+                overlaps: OverlapWarnings::default(),
+                once: WarnedOnce::default(),
+            },
             t: settings.t_start(),
             steps: settings.start_step,
         }

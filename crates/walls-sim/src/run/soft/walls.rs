@@ -20,7 +20,7 @@ use crate::run::plan::Plan;
 use rayon::prelude::*;
 
 /// An open wall contact: its springs (the tangential spring alone, but with
-/// [`Integrator::Pkdgrav`] every spring pkdgrav keeps) and the normal speed it began
+/// [`crate::run::Integrator::Pkdgrav`] every spring pkdgrav keeps) and the normal speed it began
 /// with.
 pub(super) struct Open {
     record: Record,
@@ -524,16 +524,16 @@ impl SoftStepper<'_> {
         let forces = self.settings.forces;
         let gravity = self.settings.gravity;
         let walls = Walls {
-            now: if forces { &self.now } else { &[] },
-            assembly_of: &self.assembly_of,
-            cogs: &self.cogs,
-            origins: &self.origins.now,
-            index: self.index.as_ref().filter(|_| forces),
+            now: if forces { &self.walls.now } else { &[] },
+            assembly_of: &self.walls.assembly_of,
+            cogs: &self.walls.cogs,
+            origins: &self.walls.origins.now,
+            index: self.walls.index.as_ref().filter(|_| forces),
             near: self.near.as_ref().filter(|_| forces),
             plan: self.plan,
-            damping: &self.damping,
-            restitutions: &self.restitutions,
-            materials: &self.materials,
+            damping: &self.walls.damping,
+            restitutions: &self.walls.restitutions,
+            materials: &self.walls.materials,
             closing_kick: self.kicks.closing,
             predict: self.kicks.predict,
             predict_spin: self.kicks.predict_all,
@@ -601,7 +601,12 @@ impl SoftStepper<'_> {
             ($chunks:ident, $chunks_mut:ident, $iter:ident, $iter_mut:ident) => {
                 (self.states.$chunks_mut(CHUNK))
                     .zip(self.loads.$chunks_mut(CHUNK))
-                    .zip(self.visited.$iter().zip(self.inverses.$chunks(CHUNK)))
+                    .zip(
+                        self.deferred
+                            .visited
+                            .$iter()
+                            .zip(self.inverses.$chunks(CHUNK)),
+                    )
                     .zip((self.open_walls.$chunks_mut(CHUNK)).zip(self.walled.$chunks_mut(CHUNK)))
                     .zip(self.reports.$iter_mut().zip(&mut self.visits))
                     .enumerate()
@@ -618,8 +623,8 @@ impl SoftStepper<'_> {
             chunks!(chunks, chunks_mut, iter, iter_mut).for_each(chunk);
         }
         // The kicks the drift marked as owed are owed now.
-        self.owing = true;
-        self.owed_kick = walls.closing();
+        self.deferred.owing = true;
+        self.deferred.owed_kick = walls.closing();
     }
 
     /// The first particle whose numbers overflowed in the last step, if any: in the
@@ -631,7 +636,7 @@ impl SoftStepper<'_> {
         let reported = (self.reports.iter().flatten())
             .find(|(_, r)| r.not_finite)
             .map(|(i, _)| *i);
-        match (reported, self.owed_bad) {
+        match (reported, self.deferred.owed_bad) {
             (Some(i), Some(j)) => Some(i.min(j)),
             (i, j) => i.or(j),
         }
@@ -646,22 +651,22 @@ impl SoftStepper<'_> {
         for (i, report) in self.reports.iter_mut().flatten() {
             let i = *i;
             if let Some((fraction, w)) = report.deepest {
-                stop |= self.overlaps.check(
+                stop |= self.journal.overlaps.check(
                     fraction,
                     Overlapping::Wall {
                         particle: i,
                         wall: w,
                     },
                     t,
-                    &mut self.warnings,
+                    &mut self.journal.warnings,
                 );
             }
             // A travel that overflowed is the not-finite stop's, not a warning's.
             if let Some(travel) = report.too_fast.filter(|x| x.is_finite())
-                && !self.once.fast
+                && !self.journal.once.fast
             {
-                self.once.fast = true;
-                self.warnings.push(Warning::TooFast {
+                self.journal.once.fast = true;
+                self.journal.warnings.push(Warning::TooFast {
                     particle: i,
                     radii: travel,
                     t,
@@ -673,15 +678,15 @@ impl SoftStepper<'_> {
                         > e.vn_in
                             * (1.0
                                 + gain_tolerance(
-                                    self.materials[e.wall].k_n,
+                                    self.walls.materials[e.wall].k_n,
                                     self.states[i].particle.mass,
                                     self.settings.dt,
                                 ))
-                    && !self.oscillating[e.wall]
-                    && !self.once.gain
+                    && !self.walls.oscillating[e.wall]
+                    && !self.journal.once.gain
                 {
-                    self.once.gain = true;
-                    self.warnings.push(Warning::EnergyGain {
+                    self.journal.once.gain = true;
+                    self.journal.warnings.push(Warning::EnergyGain {
                         particle: i,
                         wall: e.wall,
                         vn_in: e.vn_in,
@@ -696,10 +701,10 @@ impl SoftStepper<'_> {
             if report.events.iter().any(|e| e.kind == EventKind::Remove) {
                 self.candidates.gone = true;
             }
-            self.events.append(&mut report.events);
-            if report.touching > 3 && !self.once.crowd {
-                self.once.crowd = true;
-                self.warnings.push(Warning::Crowded {
+            self.journal.events.append(&mut report.events);
+            if report.touching > 3 && !self.journal.once.crowd {
+                self.journal.once.crowd = true;
+                self.journal.warnings.push(Warning::Crowded {
                     particle: i,
                     walls: report.touching,
                     t,
@@ -720,7 +725,7 @@ impl SoftStepper<'_> {
             }
             for e in &report.events {
                 if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
-                    self.warnings.push(Warning::AggregateHeld {
+                    self.journal.warnings.push(Warning::AggregateHeld {
                         particle: i,
                         wall: e.wall,
                         t: self.t,
