@@ -76,7 +76,7 @@ pub fn pair_bounce(a: &Body, b: &Body, n: &Vec3, eps_n: f64, eps_t: f64) -> (Bou
     let tangential = -ut * (reduced * 2.0 / 7.0 * (1.0 - eps_t));
     let impulse = normal + tangential;
     let turn = |arm: &Vec3, j: &Vec3, body: &Body| {
-        body.spin + arm.cross(j) / (0.4 * body.mass * body.radius * body.radius)
+        body.spin + arm.cross(j) / crate::dynamics::sphere_inertia(body.mass, body.radius)
     };
     (
         Bounce {

@@ -123,7 +123,7 @@ pub fn check(p: &Particle) -> Result<(), String> {
     {
         return Err("its values must be finite numbers".into());
     }
-    let inertia = 0.4 * p.mass * p.radius * p.radius;
+    let inertia = crate::dynamics::sphere_inertia(p.mass, p.radius);
     if !(inertia > 0.0 && inertia.is_finite()) {
         return Err(format!(
             "its moment of inertia 0.4·m·r² (m = {:e}, r = {:e}) is {inertia:e}, outside what a double holds: check the values' scale (pkdgrav units)",

@@ -1,0 +1,244 @@
+//! The candidate particle pairs of the soft-sphere run, kept from step to step (a Verlet
+//! list, [`PairList`]), with the records of their open contacts ([`PairContacts`]),
+//! found on the cell grid ([`super::grid`]).
+
+use super::grid::{CellGrid, GridScratch};
+use crate::contact::ssdem::Record;
+use crate::run::State;
+use nalgebra::Vector3;
+use rayon::prelude::*;
+
+type Vec3 = Vector3<f64>;
+
+/// The candidate particle pairs, kept from step to step (a Verlet list): the pairs whose
+/// spheres, swollen by half the skin each, overlapped when the list was built. It is
+/// rebuilt on the cell grid once some particle has moved more than half the skin since,
+/// so every pair that overlaps now is in it. The skin is 0.4 of the largest radius: in
+/// a settled pile the list lasts many steps (docs/performance.md).
+pub(crate) struct PairList {
+    pub(crate) pairs: Vec<(u32, u32)>,
+    /// Each particle's centre and radius (x, y, z, r) as it is now: the pairs' first
+    /// test reads these, compact, rather than the states.
+    pub(crate) spheres: Vec<[f64; 4]>,
+    /// Each pair's open contact in `contacts`, or [`NO_CONTACT`].
+    pub(crate) slots: Vec<u32>,
+    /// The open contacts' records.
+    pub(crate) contacts: PairContacts,
+    /// The cell grid the list was found with, and what building it works in: kept for
+    /// the next build, which fills the same memory.
+    pub(crate) grid: CellGrid,
+    pub(crate) scratch: GridScratch,
+    pub(crate) built_at: Vec<Vec3>,
+    pub(crate) skin: f64,
+    /// Whether a particle drifted this step has moved more than half the skin (worked
+    /// out in the drift of the soft-sphere run).
+    pub(crate) drifted: bool,
+    /// Whether some particle may be moved other than by the drift (stuck to a wall, or
+    /// a member of an aggregate): then every particle is looked at.
+    pub(crate) held: bool,
+    /// Whether some particle has left the run (at a death wall): until then, with none
+    /// held, every particle is alive and free, and the pairs' test need not look.
+    pub(crate) gone: bool,
+    /// Whether the pairs are wanted (particles meet each other).
+    pub(crate) wanted: bool,
+    /// The sum of two radii when every particle has the same radius (radii never
+    /// change in a run): the pairs' test then takes it as it is rather than adding
+    /// the two for each pair.
+    pub(crate) uniform: Option<f64>,
+    /// Whether the list is found on rayon's threads (many particles, and more than one
+    /// thread), and whether there are many particles (then the held ones are looked at
+    /// in parallel).
+    pub(crate) parallel: bool,
+    pub(crate) many: bool,
+}
+
+impl PairList {
+    pub(crate) fn new(states: &[State], wanted: bool, parallel: bool, many: bool) -> PairList {
+        let largest = states.iter().map(|s| s.particle.radius).fold(0.0, f64::max);
+        PairList {
+            pairs: Vec::new(),
+            slots: Vec::new(),
+            spheres: Vec::new(),
+            contacts: PairContacts::default(),
+            grid: CellGrid::default(),
+            scratch: GridScratch::default(),
+            built_at: Vec::new(),
+            skin: 0.4 * largest,
+            drifted: false,
+            held: states.iter().any(|s| s.stuck_to.is_some() || s.member),
+            gone: states.iter().any(|s| !s.alive),
+            wanted,
+            uniform: match states.split_first() {
+                Some((first, rest)) => {
+                    let r = first.particle.radius;
+                    let same = |s: &State| s.particle.radius.to_bits() == r.to_bits();
+                    rest.iter().all(same).then_some(r + r)
+                }
+                None => None,
+            },
+            parallel,
+            many,
+        }
+    }
+
+    /// The candidate pairs (when wanted) where the particles are now.
+    pub(crate) fn build(&mut self, states: &[State]) {
+        let half = self.skin / 2.0;
+        self.built_at.clear();
+        self.built_at.extend(states.iter().map(|s| s.particle.pos));
+        self.spheres.clear();
+        self.spheres.extend(states.iter().map(Self::sphere));
+        if !self.wanted {
+            return;
+        }
+        // The grid, the pairs and their slots in the memory they held at the last build:
+        // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
+        self.grid.refill(
+            states.len(),
+            |i| {
+                let s = &states[i];
+                s.alive
+                    .then_some((s.particle.pos, s.particle.radius + half))
+            },
+            &mut self.scratch,
+        );
+        // The open contacts go with their pairs into the new list (every pair that
+        // touches is in it); any other ends. They are found by their first particle:
+        // its open contacts, (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
+        let open_pairs = || {
+            (self.pairs.iter())
+                .zip(&self.slots)
+                .filter(|(_, slot)| **slot != NO_CONTACT)
+        };
+        let mut starts = vec![0u32; states.len() + 1];
+        for (&(i, _), _) in open_pairs() {
+            starts[i as usize + 1] += 1;
+        }
+        for i in 0..states.len() {
+            starts[i + 1] += starts[i];
+        }
+        let mut open = vec![(0, 0); starts[states.len()] as usize];
+        let mut next = starts.clone();
+        for (&(i, j), &slot) in open_pairs() {
+            open[next[i as usize] as usize] = (j, slot);
+            next[i as usize] += 1;
+        }
+        if self.parallel {
+            self.grid.par_pairs_into(&mut self.pairs);
+        } else {
+            self.grid.pairs_into(&mut self.pairs);
+        }
+        // Their records are laid out again in the new list's order, which the force
+        // pass follows: one after the other in memory rather than where each happened
+        // to open. The others are dropped.
+        let mut records = Vec::with_capacity(open.len());
+        let last = &self.contacts.records;
+        self.slots.clear();
+        self.slots.extend(self.pairs.iter().map(|&(i, j)| {
+            let of_i = &open[starts[i as usize] as usize..starts[i as usize + 1] as usize];
+            match of_i.iter().find(|(second, _)| *second == j) {
+                Some(&(_, slot)) => {
+                    records.push(last[slot as usize]);
+                    (records.len() - 1) as u32
+                }
+                None => NO_CONTACT,
+            }
+        }));
+        self.contacts = PairContacts {
+            records,
+            free: Vec::new(),
+            next: std::mem::take(&mut self.contacts.next),
+        };
+    }
+
+    /// A particle's centre and radius, as the pairs' first test reads them.
+    #[inline]
+    pub(crate) fn sphere(s: &State) -> [f64; 4] {
+        let p = &s.particle;
+        [p.pos.x, p.pos.y, p.pos.z, p.radius]
+    }
+
+    /// The square of half the skin: how far a particle may move before a rebuild.
+    pub(crate) fn limit(&self) -> f64 {
+        (self.skin / 2.0).powi(2)
+    }
+
+    /// Whether `s`, in the run, has moved more than √`limit` from `at` (or its position
+    /// is not a number).
+    #[inline]
+    pub(crate) fn moved_far(s: &State, at: &Vec3, limit: f64) -> bool {
+        let d2 = (s.particle.pos - at).norm_squared();
+        s.alive && (d2 > limit || d2.is_nan())
+    }
+
+    /// Whether the list is stale: some particle (free, or carried by its wall) has moved
+    /// more than half the skin (the drift has said so of the free ones; the others are
+    /// looked at only once some particle is held, stuck or in an aggregate, and then
+    /// all), or `walls_moved`. The spheres of held particles are set anew.
+    pub(crate) fn stale(&mut self, states: &[State], walls_moved: bool) -> bool {
+        let limit = self.limit();
+        let moved = |(s, at): (&State, &Vec3)| Self::moved_far(s, at, limit);
+        if self.held {
+            // Particles the drift did not move may have been carried.
+            for (sphere, s) in self.spheres.iter_mut().zip(states) {
+                *sphere = Self::sphere(s);
+            }
+        }
+        let stale = self.drifted
+            || walls_moved
+            || (self.held
+                && if self.many {
+                    states.par_iter().zip(&self.built_at).any(moved)
+                } else {
+                    states.iter().zip(&self.built_at).any(moved)
+                });
+        self.drifted = false;
+        stale
+    }
+}
+
+/// A pair without an open contact.
+pub(crate) const NO_CONTACT: u32 = u32::MAX;
+
+/// The records of the open contacts between particles, in slots that the candidate
+/// pairs point to ([`PairList::slots`]): on one thread, a closed contact's slot is
+/// reused; in parallel, the records are laid out anew each step.
+#[derive(Default)]
+pub(crate) struct PairContacts {
+    pub(crate) records: Vec<Record>,
+    pub(crate) free: Vec<u32>,
+    /// In parallel, where the next step's records are laid out (kept to save
+    /// allocating).
+    pub(crate) next: Vec<Record>,
+}
+
+impl PairContacts {
+    /// The record of the contact in `slot`, opened (and counted in `began`) if it is
+    /// not.
+    #[inline]
+    pub(crate) fn open(&mut self, slot: &mut u32, began: &mut u64) -> &mut Record {
+        if *slot == NO_CONTACT {
+            *began += 1;
+            *slot = match self.free.pop() {
+                Some(k) => {
+                    self.records[k as usize] = Record::default();
+                    k
+                }
+                None => {
+                    self.records.push(Record::default());
+                    (self.records.len() - 1) as u32
+                }
+            };
+        }
+        &mut self.records[*slot as usize]
+    }
+
+    /// Ends the contact in `slot`, if one is open.
+    #[inline]
+    pub(crate) fn close(&mut self, slot: &mut u32) {
+        if *slot != NO_CONTACT {
+            self.free.push(*slot);
+            *slot = NO_CONTACT;
+        }
+    }
+}

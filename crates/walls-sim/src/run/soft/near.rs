@@ -1,0 +1,123 @@
+//! The walls near each particle of the soft-sphere run (a Verlet list of walls,
+//! [`NearWalls`]), found with the candidate pairs ([`PairList`]) and found again with
+//! them.
+
+use super::{State, WallNow};
+use crate::broad::pairs::PairList;
+use nalgebra::Vector3;
+
+type Vec3 = Vector3<f64>;
+
+/// The walls within reach of each particle, found when the candidate pairs are (a
+/// Verlet list of walls): a particle moves at most half the skin before they are found
+/// again, and so does a wall that translates (the lists are found again when one has),
+/// so a fixed wall farther than the particle's radius and half the skin when they were,
+/// or a translating one farther than its radius and the skin, cannot touch it. The
+/// walls of reactive assemblies, which turn as well, are visited by every particle.
+pub(super) struct NearWalls {
+    /// Whether each wall is kept in the lists: every wall but those of reactive
+    /// assemblies.
+    pub(super) listed: Vec<bool>,
+    /// Whether each wall translates.
+    pub(super) translating: Vec<bool>,
+    /// The walls of reactive assemblies.
+    pub(super) moving: Vec<usize>,
+    /// Each wall's origin when the lists were found.
+    pub(super) built_origins: Vec<Vec3>,
+    /// Where each particle's walls start in `walls` (one more entry than particles).
+    pub(super) starts: Vec<u32>,
+    pub(super) walls: Vec<usize>,
+}
+
+impl NearWalls {
+    pub(super) fn new(listed: Vec<bool>, translating: Vec<bool>) -> NearWalls {
+        let moving = (0..listed.len()).filter(|&w| !listed[w]).collect();
+        NearWalls {
+            listed,
+            translating,
+            moving,
+            built_origins: Vec::new(),
+            starts: Vec::new(),
+            walls: Vec::new(),
+        }
+    }
+
+    /// The listed walls within reach of each particle in the run, `half` (half the
+    /// skin) beyond its radius for a fixed wall and twice that for a translating one,
+    /// in ascending order.
+    pub(super) fn build(&mut self, states: &[State], walls: &[WallNow], half: f64) {
+        self.built_origins.clear();
+        self.built_origins.extend(walls.iter().map(|w| w.origin));
+        self.starts.clear();
+        self.walls.clear();
+        self.starts.push(0);
+        for s in states {
+            if s.alive {
+                let r = s.particle.radius;
+                for (w, wall) in walls.iter().enumerate() {
+                    let reach = if self.translating[w] {
+                        r + 2.0 * half
+                    } else {
+                        r + half
+                    };
+                    if self.listed[w] && !wall.cull.clear_of(&s.particle.pos, reach) {
+                        self.walls.push(w);
+                    }
+                }
+            }
+            self.starts.push(self.walls.len() as u32);
+        }
+    }
+
+    /// Whether a listed wall has translated more than `half` since the lists were
+    /// found.
+    pub(super) fn moved(&self, walls: &[WallNow], half: f64) -> bool {
+        (0..walls.len()).any(|w| {
+            let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
+            self.listed[w] && self.translating[w] && (d2 > half * half || d2.is_nan())
+        })
+    }
+
+    /// The listed walls near particle `i`.
+    pub(super) fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
+        self.listed_of(i).iter().copied()
+    }
+
+    /// [`NearWalls::of`] as a slice.
+    #[inline]
+    pub(super) fn listed_of(&self, i: usize) -> &[usize] {
+        &self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
+    }
+}
+
+/// The candidate pairs (when wanted) and the walls near each particle (when kept) found
+/// where the particles are now, against the walls as they stand.
+pub(super) fn build_lists(
+    candidates: &mut PairList,
+    near: &mut Option<NearWalls>,
+    states: &[State],
+    walls: &[WallNow],
+) {
+    if let Some(near) = near {
+        near.build(states, walls, candidates.skin / 2.0);
+    }
+    candidates.build(states);
+}
+
+/// Finds the lists again ([`build_lists`]) if some particle (free, or carried by its
+/// wall) has moved more than half the skin, or a listed wall has translated that far
+/// ([`PairList::stale`]).
+pub(super) fn update_lists(
+    candidates: &mut PairList,
+    near: &mut Option<NearWalls>,
+    states: &[State],
+    walls: &[WallNow],
+) {
+    if !candidates.wanted && near.is_none() {
+        return;
+    }
+    let walls_moved = (near.as_ref()).is_some_and(|n| n.moved(walls, candidates.skin / 2.0));
+    if candidates.stale(states, walls_moved) {
+        build_lists(candidates, near, states, walls);
+    }
+}
