@@ -12,11 +12,14 @@
 //! * [`run`]: the plan, the defaults, the soft- and hard-sphere steppers, stability
 //!   checks, and the outcome with its coded warnings;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
-//!   for the real pkdgrav run.
+//!   for the real pkdgrav run;
+//! * with the `clap` feature, the settings' types are command-line values (`cli`).
 
 pub mod advise;
 pub mod broad;
 pub mod build;
+#[cfg(feature = "clap")]
+mod cli;
 pub mod config;
 pub mod contact;
 pub mod dynamics;

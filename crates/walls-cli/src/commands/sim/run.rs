@@ -4,15 +4,18 @@
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
 use super::outputs::{Failure, RunOutputs, SsNames, ss_base};
-use super::{UnitsArg, error, exit_status, read_walls, ruled};
+use super::{error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
 use walls_geometry::Particle;
+use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
+use walls_sim::OscillationStepping;
+use walls_sim::contact::ssdem::Sliding;
 use walls_sim::io::par::Rule;
 use walls_sim::report::OutputError;
-use walls_sim::run::Settings;
+use walls_sim::run::{Integrator, Settings};
 
 /// `walls-sim run`: the docs/spec.md §2 command line.
 #[derive(clap::Args)]
@@ -101,18 +104,18 @@ pub struct RunArgs {
     /// How oscillating walls move: step by step as pkdgrav does (the default), or on
     /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
     /// walls as pkdgrav does).
-    #[arg(long, value_enum, default_value_t = Oscillation::Pkdgrav)]
-    pub oscillation: Oscillation,
+    #[arg(long, value_enum, default_value_t = OscillationStepping::Pkdgrav)]
+    pub oscillation: OscillationStepping,
     /// SSDEM: the integrator: pkdgrav's own step and contact law (the default); or,
     /// for comparison, kick-drift-kick leapfrog with the summary's contact law, the same
     /// with the dashpot velocity predicted to the step's end, or explicit Euler.
-    #[arg(long, value_enum, default_value_t = IntegratorArg::Pkdgrav)]
-    pub integrator: IntegratorArg,
+    #[arg(long, value_enum, default_value_t = Integrator::Pkdgrav)]
+    pub integrator: Integrator,
     /// SSDEM with --integrator pkdgrav: what the shear spring of a sliding contact does:
     /// pkdgrav's reset (the default), or the Coulomb clamp of LAMMPS and LIGGGHTS (a
     /// sliding contact's friction is exactly μ_s·N). Not a .par key: pkdgrav has none.
-    #[arg(long, value_enum, default_value_t = SlidingArg::Reset)]
-    pub sliding: SlidingArg,
+    #[arg(long, value_enum, default_value_t = Sliding::Reset)]
+    pub sliding: Sliding,
     /// Run every part of the model, whatever the scene needs (for comparison; see
     /// `walls-sim plan`).
     #[arg(long)]
@@ -138,45 +141,13 @@ pub struct RunArgs {
     pub json: bool,
     /// The units of the summary's times: pkdgrav's, with the walls file's own beside
     /// them when it sets some (auto); pkdgrav's alone; centimetres-grams-seconds; or SI.
-    #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
-    pub units: UnitsArg,
+    #[arg(long, value_enum, default_value_t = System::Auto)]
+    pub units: System,
 }
 
 /// `--pkdgrav-build`'s value.
 fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
     walls_sim::build::Build::parse(text).map_err(|e| e.to_string())
-}
-
-/// The SSDEM integrator.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum IntegratorArg {
-    /// pkdgrav's step order and contact law (docs/pkdgrav-physics.md §1–§2, §5).
-    Pkdgrav,
-    /// Kick-drift-kick leapfrog.
-    Leapfrog,
-    /// Kick-drift-kick with the dashpot at the velocity predicted to the step's end.
-    LeapfrogPredicted,
-    /// Explicit Euler.
-    Euler,
-}
-
-/// What the shear spring of a sliding SSDEM contact does.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum SlidingArg {
-    /// pkdgrav's rule: the spring is reset to zero, the force is the dashpot's capped at
-    /// μ_s·N (docs/pkdgrav-physics.md §1.3).
-    Reset,
-    /// The Coulomb clamp: the spring is rescaled so that the force is exactly μ_s·N.
-    Clamp,
-}
-
-/// How oscillating walls advance in a run.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Oscillation {
-    /// The exact sinusoid of docs/spec.md §1 at every step.
-    Exact,
-    /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
-    Pkdgrav,
 }
 
 /// Runs particles as `args` say; the exit status.
@@ -238,7 +209,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         .map_or(args.method, walls_sim::build::Build::contact_model);
     let (checked, errors) = read_walls(&file, model, "running")?;
     let walls = decode(&checked.scene);
-    let readout = walls_geometry::units::Readout::new(args.units.into(), &checked.scene.units);
+    let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &args.par {
         for w in &run.warnings {
@@ -281,8 +252,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
 
 /// The options of `args` that settle the run's settings.
 fn flags(args: &RunArgs) -> walls_sim::config::Flags {
-    use walls_sim::contact::ssdem::Sliding;
-    use walls_sim::run::{Integrator, Planning};
+    use walls_sim::run::Planning;
     walls_sim::config::Flags {
         particles: args.particles.clone(),
         no_particles: args.no_particles,
@@ -304,20 +274,9 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
         mu_t: args.mu_t,
         no_particle_contacts: args.no_particle_contacts,
         no_edges: args.no_edges,
-        stepping: match args.oscillation {
-            Oscillation::Exact => walls_sim::OscillationStepping::Exact,
-            Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
-        },
-        integrator: match args.integrator {
-            IntegratorArg::Pkdgrav => Integrator::Pkdgrav,
-            IntegratorArg::Leapfrog => Integrator::Leapfrog,
-            IntegratorArg::LeapfrogPredicted => Integrator::LeapfrogPredicted,
-            IntegratorArg::Euler => Integrator::ExplicitEuler,
-        },
-        sliding: match args.sliding {
-            SlidingArg::Reset => Sliding::Reset,
-            SlidingArg::Clamp => Sliding::Clamp,
-        },
+        stepping: args.oscillation,
+        integrator: args.integrator,
+        sliding: args.sliding,
         planning: if args.all_parts {
             Planning::Everything
         } else {
