@@ -3,7 +3,7 @@
 //! the trajectory and pkdgrav's reactive-wall files. The settings come from
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
-use super::outputs::{Failure, RunOutputs, SsNames, ss_base};
+use super::outputs::{Failure, RunOutputs};
 use super::{error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
@@ -12,6 +12,7 @@ use walls_geometry::Particle;
 use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
 use walls_sim::OscillationStepping;
+use walls_sim::config::Outputs;
 use walls_sim::contact::ssdem::Sliding;
 use walls_sim::io::par::Rule;
 use walls_sim::report::OutputError;
@@ -165,11 +166,8 @@ pub struct Prepared {
     pub settings: Settings,
     /// How many errors the walls file has.
     pub errors: usize,
-    /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
-    /// 100; 0 (`iOutInterval = 0`) for none but the last step's.
-    pub every: u64,
-    /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
-    pub ss_name: SsNames,
+    /// How often the outputs are written, and the `.ss` outputs' names.
+    pub outputs: Outputs,
     /// The files the run reads: the walls file, the `.par` file, the particles and the
     /// cohesion file, which no output may replace.
     pub inputs: Vec<String>,
@@ -178,9 +176,6 @@ pub struct Prepared {
     /// The subnormal numbers of the inputs (W701), which come before the run's warnings.
     pub numbers: Vec<walls_sim::run::Warning>,
 }
-
-/// Steps between outputs when neither `--every` nor the `.par` file says.
-const EVERY: u64 = 100;
 
 /// Reads and checks everything a run needs: the `.par` file (its warnings go to
 /// standard error), the walls file (the argument, else the `.par` file's; checked in the
@@ -203,11 +198,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
                 None => "no walls file: give FILE, or --par with an achWallsFile line".to_string(),
             },
         )?;
-    let model = args
-        .pkdgrav_build
-        .as_ref()
-        .map_or(args.method, walls_sim::build::Build::contact_model);
-    let (checked, errors) = read_walls(&file, model, "running")?;
+    let (checked, errors) = read_walls(&file, flags.build().contact_model(), "running")?;
     let walls = decode(&checked.scene);
     let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
@@ -216,18 +207,10 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
             crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
-    let every = args
-        .every
-        .or_else(|| par.as_ref()?.out_interval)
-        .unwrap_or(EVERY);
-    let (base, warning) = ss_base(par.as_ref().and_then(|p| p.out_name.as_deref()));
-    if let (Some(w), Some(path), true) = (warning, &args.par, args.ss_output) {
+    let outputs = config::outputs(&flags, par.as_ref());
+    if let (Some(w), Some(path), true) = (&outputs.ss_warning, &args.par, args.ss_output) {
         crate::errln!("walls-sim: warning: {path}: {w}");
     }
-    let ss_name = SsNames {
-        base,
-        digits: par.as_ref().and_then(|p| p.digits).unwrap_or(5),
-    };
     let inputs = [
         Some(file.clone()),
         args.par.clone(),
@@ -242,8 +225,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         particles: run.particles,
         settings: run.settings,
         errors,
-        every,
-        ss_name,
+        outputs,
         inputs,
         readout,
         numbers: run.numbers,
@@ -283,6 +265,7 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
             Planning::Needed
         },
         max_steps: Some(args.max_steps),
+        every: args.every,
     }
 }
 
@@ -295,8 +278,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         particles,
         settings,
         errors,
-        every,
-        ss_name,
+        outputs: Outputs { every, ss, .. },
         inputs,
         readout,
         numbers,
@@ -308,9 +290,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
     // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
     // to as pkdgrav does, unless --fresh.
-    let reactive = settings.method() == walls_sim::run::ContactModel::Ssdem
-        && settings.build.walls_react
-        && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
+    let reactive = walls_sim::run::plan::reactive(scene, &settings);
     // Every output is planned, and refused if it must be, before the run starts.
     let mut files = match &args.out {
         Some(dir) => Some(RunOutputs::open(
@@ -318,7 +298,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             args.force,
             args.fresh,
             reactive,
-            args.ss_output.then(|| ss_name.clone()),
+            args.ss_output.then(|| ss.clone()),
             &inputs,
         )?),
         None => None,
