@@ -91,6 +91,17 @@ impl Flags {
             .clone()
             .unwrap_or_else(|| Build::default_for(self.method))
     }
+
+    /// Where [`Flags::build`] came from, as `walls-sim plan` says it.
+    pub fn build_origin(&self) -> &'static str {
+        match (&self.build, self.method) {
+            (Some(_), _) => "as --pkdgrav-build gives it",
+            (None, ContactModel::Ssdem) => "pkdgrav's default build; --pkdgrav-build names another",
+            (None, ContactModel::Hsdem) => {
+                "pkdgrav's default build without DEM, as --method hsdem; --pkdgrav-build names another"
+            }
+        }
+    }
 }
 
 /// Steps between outputs when neither `--every` nor the `.par` file says.

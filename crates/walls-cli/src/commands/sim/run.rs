@@ -168,6 +168,8 @@ pub struct Prepared {
     pub errors: usize,
     /// How often the outputs are written, and the `.ss` outputs' names.
     pub outputs: Outputs,
+    /// The options that settle the settings.
+    pub flags: walls_sim::config::Flags,
     /// The files the run reads: the walls file, the `.par` file, the particles and the
     /// cohesion file, which no output may replace.
     pub inputs: Vec<String>,
@@ -229,6 +231,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         inputs,
         readout,
         numbers: run.numbers,
+        flags,
     })
 }
 
@@ -282,6 +285,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         inputs,
         readout,
         numbers,
+        ..
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
