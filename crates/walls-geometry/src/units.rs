@@ -24,13 +24,15 @@ pub const M_SUN_G: f64 = GM_SUN_CGS / G_CGS;
 /// pkdgrav's time unit in seconds: 1/k days, k = 0.01720209895 the Gaussian constant.
 pub const TIME_UNIT_S: f64 = 86_400.0 / 0.017_202_098_95;
 
-/// The systems of units a reader can ask for.
+/// The systems of units a reader can ask for (`--units` of `walls-sim run` and
+/// `preview`: each variant's first paragraph is its help, docs/units.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum System {
-    /// pkdgrav's numbers, and beside them the file's units when it sets some.
+    /// pkdgrav's units, and the walls file's own beside them when it sets some.
     #[default]
     Auto,
-    /// pkdgrav's own units (AU, M☉, the time unit) alone.
+    /// pkdgrav's units alone (AU, solar masses, 1/k days).
     Pkdgrav,
     /// Centimetres, grams, seconds.
     Cgs,

@@ -194,13 +194,17 @@ impl Quantity {
     }
 }
 
-/// The units the inputs are in.
+/// The units the inputs are in (`--units` of `walls-sim advise`: each variant's first
+/// paragraph is its help).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum UnitSystem {
-    /// kg, m, s (the default).
+    /// kg, m, s.
+    ///
+    /// The default.
     #[default]
     Si,
-    /// pkdgrav's: M_sun, AU, yr/2π.
+    /// pkdgrav's: M_sun, AU, yr/2pi (G = 1).
     Pkdgrav,
 }
 
@@ -223,13 +227,19 @@ pub enum Amount {
     Density(f64),
 }
 
-/// The shortest contact the timestep must resolve.
+/// The shortest contact the timestep must resolve (`--contact` of `walls-sim advise`:
+/// each variant's first paragraph is its help).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Contact {
-    /// Particles touch each other (reduced mass m/2): the shorter contact (the default).
+    /// Particles touch each other (and walls).
+    ///
+    /// Reduced mass m/2: the shorter contact (the default).
     #[default]
     Pair,
-    /// Particles touch only walls (reduced mass m).
+    /// Particles touch only walls.
+    ///
+    /// Reduced mass m.
     Wall,
 }
 

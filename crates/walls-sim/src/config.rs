@@ -78,6 +78,97 @@ pub struct Flags {
     pub planning: Planning,
     /// `--max-steps` (default [`MAX_STEPS`]).
     pub max_steps: Option<u64>,
+    /// `--every` (else the `.par` file's `iOutInterval`, else [`EVERY`]).
+    pub every: Option<u64>,
+}
+
+impl Flags {
+    /// The pkdgrav build the run follows: `--pkdgrav-build`, else pkdgrav's default build
+    /// with `DEM` as `--method` says. Its [`Build::contact_model`] is the run's contact
+    /// model, the mode its walls file is checked in.
+    pub fn build(&self) -> Build {
+        self.build
+            .clone()
+            .unwrap_or_else(|| Build::default_for(self.method))
+    }
+
+    /// Where [`Flags::build`] came from, as `walls-sim plan` says it.
+    pub fn build_origin(&self) -> &'static str {
+        match (&self.build, self.method) {
+            (Some(_), _) => "as --pkdgrav-build gives it",
+            (None, ContactModel::Ssdem) => "pkdgrav's default build; --pkdgrav-build names another",
+            (None, ContactModel::Hsdem) => {
+                "pkdgrav's default build without DEM, as --method hsdem; --pkdgrav-build names another"
+            }
+        }
+    }
+}
+
+/// Steps between outputs when neither `--every` nor the `.par` file says.
+pub const EVERY: u64 = 100;
+
+/// How a run's outputs are named and spaced, from the options and the `.par` file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Outputs {
+    /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
+    /// [`EVERY`]; 0 (`iOutInterval = 0`) for none but the last step's.
+    pub every: u64,
+    /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
+    pub ss: SsNames,
+    /// Why `achOutName`'s folder part is not followed, when it has one.
+    pub ss_warning: Option<String>,
+}
+
+/// The base name and digits of the `.ss` outputs (pkdgrav's `achOutName`, `nDigits`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SsNames {
+    /// The base name, without a folder.
+    pub base: String,
+    /// The least number of digits of the step.
+    pub digits: usize,
+}
+
+/// How the run that `flags` and `par` (read by [`read_par`]) describe names and spaces its
+/// outputs.
+pub fn outputs(flags: &Flags, par: Option<&Params>) -> Outputs {
+    let (base, ss_warning) = ss_base(par.and_then(|p| p.out_name.as_deref()));
+    Outputs {
+        every: flags.every.or_else(|| par?.out_interval).unwrap_or(EVERY),
+        ss: SsNames {
+            base,
+            digits: par.and_then(|p| p.digits).unwrap_or(5),
+        },
+        ss_warning,
+    }
+}
+
+/// The `.ss` outputs' base name from `achOutName` (`None`: pkdgrav's `ss`), and a warning
+/// when its folder part is not followed: the outputs go to `--out`, named by the last part
+/// of the path (`../../e` and `/scratch/run/e` give `e`; `..` alone gives `ss`).
+pub fn ss_base(out_name: Option<&str>) -> (String, Option<String>) {
+    let Some(name) = out_name else {
+        return ("ss".into(), None);
+    };
+    let last = std::path::Path::new(name)
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .filter(|n| n != "." && n != "..");
+    match last {
+        Some(base) if base == name => (base, None),
+        Some(base) => {
+            let warning = format!(
+                "achOutName = {name}: its folder is not followed: the .ss outputs are \
+                 written in --out as {base}.NNNNN"
+            );
+            (base, Some(warning))
+        }
+        None => (
+            "ss".into(),
+            Some(format!(
+                "achOutName = {name} names no file: the .ss outputs are written in --out as ss.NNNNN"
+            )),
+        ),
+    }
 }
 
 /// The most steps a run takes unless `--max-steps` says more: a hundred million, a few
@@ -221,10 +312,7 @@ pub fn resolve(
         (None, None) => Vec3::zeros(),
     };
     let from_par = |f: fn(&Params) -> Option<f64>| par.and_then(f);
-    let build = flags
-        .build
-        .clone()
-        .unwrap_or_else(|| Build::default_for(flags.method));
+    let build = flags.build();
     let method = build.contact_model();
     let derived_k_n = || defaults::default_k_n(scene, &particles, &gravity);
     let k_n = flags

@@ -14,12 +14,15 @@
 //!   checks, and the outcome; [`warning`]: what a run (and reading its inputs) warns
 //!   about, as coded data;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
-//!   for the real pkdgrav run.
+//!   for the real pkdgrav run;
+//! * with the `clap` feature, the settings' types are command-line values (`cli`).
 
 pub mod advise;
 pub mod bodies;
 pub mod broad;
 pub mod build;
+#[cfg(feature = "clap")]
+mod cli;
 pub mod config;
 pub mod contact;
 pub mod dynamics;

@@ -6,7 +6,7 @@
 
 use nalgebra::Vector3;
 use walls_sim::config::{
-    ConfigError, Flags, Run, load, particle_file, read_par, resolve, walls_file,
+    ConfigError, Flags, Run, load, particle_file, read_par, resolve, ss_base, walls_file,
 };
 use walls_sim::io::par::KT_PER_KN;
 use walls_sim::io::par::Params;
@@ -333,4 +333,21 @@ fn the_sliding_rule_is_pkdgrav_s_reset_unless_given_and_the_clamp_needs_its_cont
         }),
         "--sliding clamp is a rule of the soft-sphere shear spring; hard spheres have none: leave it out, or run --method ssdem"
     );
+}
+
+#[test]
+fn the_ss_outputs_never_take_a_folder_from_achoutname() {
+    assert_eq!(ss_base(None), ("ss".into(), None));
+    assert_eq!(ss_base(Some("run")), ("run".into(), None));
+    for (name, base) in [
+        ("../../e", "e"),
+        ("/scratch/run/e", "e"),
+        ("out/ss", "ss"),
+        ("..", "ss"),
+        ("/", "ss"),
+    ] {
+        let (got, warning) = ss_base(Some(name));
+        assert_eq!(got, base, "{name}");
+        assert!(warning.unwrap().contains(name), "{name}");
+    }
 }

@@ -28,13 +28,16 @@ use std::f64::consts::TAU;
 
 type Vec3 = Vector3<f64>;
 
-/// How an oscillating wall's position advances.
+/// How an oscillating wall's position advances (`--oscillation` of `walls-sim run`:
+/// each variant's first paragraph is its help).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum OscillationStepping {
-    /// The exact sinusoid of docs/spec.md §1 at every time.
+    /// The exact sinusoid of docs/spec.md §1 at every step.
     Exact,
-    /// pkdgrav's way (the default, as runs follow pkdgrav): each step adds the
-    /// oscillation velocity at its start times dt.
+    /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
+    ///
+    /// The default, as runs follow pkdgrav.
     #[default]
     Pkdgrav,
 }

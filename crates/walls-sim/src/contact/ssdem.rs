@@ -315,17 +315,21 @@ pub struct Dashpot {
 }
 
 /// What the shear spring of a sliding contact does, when |k_t S + C_t u_t| > μ_s N
-/// (docs/accuracy.md, "Sliding friction").
+/// (docs/accuracy.md, "Sliding friction"); `--sliding` of `walls-sim run`: each
+/// variant's first paragraph is its help.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Sliding {
-    /// pkdgrav's rule (docs/pkdgrav-physics.md §1.3 step 5): the spring is reset to zero
-    /// and the force is the dashpot's, capped at μ_s N. The spring rebuilds over the next
-    /// steps, during which the force is below the cap: a slow slip decelerates less than
-    /// μ_s g.
+    /// pkdgrav's rule: the spring is reset to zero, the force is the dashpot's capped at
+    /// μ_s·N (docs/pkdgrav-physics.md §1.3).
+    ///
+    /// §1.3 step 5. The spring rebuilds over the next steps, during which the force is
+    /// below the cap: a slow slip decelerates less than μ_s g.
     #[default]
     Reset,
-    /// The Coulomb clamp (LAMMPS's `gran/hooke/history`, LIGGGHTS): the spring is
-    /// rescaled so that the force is exactly μ_s N along the force it had,
+    /// The Coulomb clamp: the spring is rescaled so that the force is exactly μ_s·N.
+    ///
+    /// As LAMMPS's `gran/hooke/history` and LIGGGHTS do, along the force it had:
     /// S ← (μ_s N/|F_t|)(S + C_t u_t/k_t) − C_t u_t/k_t.
     Clamp,
 }

@@ -89,104 +89,184 @@ impl Plan {
 
 /// The plan for a run, with every part's reason, in a fixed order.
 pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Plan, Vec<Part>) {
-    let which = |test: &dyn Fn(&Wall) -> bool| -> Vec<usize> {
-        walls
+    let scene = Scene {
+        walls,
+        hard: settings.method() == ContactModel::Hsdem,
+    };
+    let m = &settings.material;
+    let moving_walls = moving_walls(&scene);
+    let spin = wall_spin(&scene);
+    let sliding_friction = sliding_friction(&scene, m);
+    let rolling = rolling(&scene, m);
+    let twisting = twisting(&scene, m);
+    let edges = edges(&scene, settings);
+    let particle_contacts = particle_contacts(walls, particles, settings, !sliding_friction.used);
+    let wall_index = wall_index(&scene);
+    let reactive = reactive_walls(&scene, settings);
+    let sticky = sticky_walls(&scene);
+    let death = death_walls(&scene);
+    let build = pkdgrav_build(walls, particles, settings);
+    let model = rolling_model(&scene, settings, rolling.used || twisting.used);
+    let gravity = uniform_gravity(settings);
+    let plan = Plan {
+        moving_walls: moving_walls.used,
+        spin: spin.used,
+        sliding_friction: sliding_friction.used,
+        rolling: rolling.used,
+        twisting: twisting.used,
+        edges: edges.used,
+        particle_contacts: particle_contacts.used,
+        wall_index: wall_index.used,
+        reactive: reactive.used,
+    };
+    let out = vec![
+        moving_walls,
+        spin,
+        sliding_friction,
+        rolling,
+        twisting,
+        edges,
+        particle_contacts,
+        wall_index,
+        reactive,
+        sticky,
+        death,
+        build,
+        model,
+        gravity,
+    ];
+    (plan, out)
+}
+
+impl Part {
+    /// A part named `name`, used or not, with the reason `yes` when used, else `no`.
+    fn new(name: &'static str, used: bool, yes: String, no: &str) -> Part {
+        Part {
+            name,
+            used,
+            reason: if used { yes } else { no.to_string() },
+        }
+    }
+}
+
+/// The walls a plan looks at, and whether the run is HSDEM.
+struct Scene<'a> {
+    walls: &'a [Wall],
+    hard: bool,
+}
+
+impl Scene<'_> {
+    /// The indices of the walls that pass `test`.
+    fn which(&self, test: impl Fn(&Wall) -> bool) -> Vec<usize> {
+        self.walls
             .iter()
             .enumerate()
             .filter(|(_, w)| test(w))
             .map(|(i, _)| i)
             .collect()
+    }
+}
+
+/// `walls`, as a reason names them: the first five, and how many more.
+fn list(walls: &[usize]) -> String {
+    let shown: Vec<String> = walls.iter().take(5).map(|w| w.to_string()).collect();
+    let more = if walls.len() > 5 {
+        format!(" and {} more", walls.len() - 5)
+    } else {
+        String::new()
     };
-    let list = |ws: &[usize]| {
-        let shown: Vec<String> = ws.iter().take(5).map(|w| w.to_string()).collect();
-        let more = if ws.len() > 5 {
-            format!(" and {} more", ws.len() - 5)
-        } else {
-            String::new()
-        };
-        format!("{}{more}", shown.join(", "))
-    };
-    let mut out = Vec::new();
-    let mut part = |name: &'static str, used: bool, yes: String, no: &str| {
-        out.push(Part {
-            name,
-            used,
-            reason: if used { yes } else { no.to_string() },
-        });
-        used
-    };
-    let hard = settings.method() == ContactModel::Hsdem;
-    let m: &ParticleMaterial = &settings.material;
-    let moving = which(&|w| w.motion.translates());
-    let moving_walls = part(
+    format!("{}{more}", shown.join(", "))
+}
+
+/// Walls placed every step: some wall moves.
+fn moving_walls(scene: &Scene) -> Part {
+    let moving = scene.which(|w| w.motion.translates());
+    Part::new(
         "moving walls",
         !moving.is_empty(),
         format!("walls {} move", list(&moving)),
         "no wall moves: the walls are placed once",
-    );
-    let spinning = which(&|w| w.motion.ang_speed != 0.0);
-    let spin = part(
+    )
+}
+
+/// The walls' spin in contact velocities: some wall spins.
+fn wall_spin(scene: &Scene) -> Part {
+    let spinning = scene.which(|w| w.motion.ang_speed != 0.0);
+    Part::new(
         "wall spin",
         !spinning.is_empty(),
         format!("walls {} spin", list(&spinning)),
         "no wall spins",
-    );
-    let rubbing = which(&|w| w.material.mu_s > 0.0 || (hard && w.material.eps_t < 1.0));
+    )
+}
+
+/// Tangential springs and Coulomb friction (HSDEM: the tangential restitution).
+fn sliding_friction(scene: &Scene, m: &ParticleMaterial) -> Part {
+    let hard = scene.hard;
+    let rubbing = scene.which(|w| w.material.mu_s > 0.0 || (hard && w.material.eps_t < 1.0));
     let sliding = if hard {
         m.eps_t < 1.0 || !rubbing.is_empty()
     } else {
         m.mu_s > 0.0 || !rubbing.is_empty()
     };
-    let sliding_friction = part(
-        if hard {
-            "tangential restitution"
-        } else {
-            "sliding friction (tangential spring)"
-        },
-        sliding,
-        if hard {
+    if hard {
+        Part::new(
+            "tangential restitution",
+            sliding,
             format!(
                 "ε_t = {} for the particles, or below 1 on walls {}",
                 m.eps_t,
                 list(&rubbing)
-            )
-        } else {
+            ),
+            "ε_t = 1 everywhere: tangential velocities are kept",
+        )
+    } else {
+        Part::new(
+            "sliding friction (tangential spring)",
+            sliding,
             format!(
                 "μ_s = {} for the particles, or above 0 on walls {}",
                 m.mu_s,
                 list(&rubbing)
-            )
-        },
-        if hard {
-            "ε_t = 1 everywhere: tangential velocities are kept"
-        } else {
-            "μ_s = 0 everywhere: no tangential force"
-        },
-    );
-    let soft = !hard;
-    let rolling_walls = which(&|w| w.material.mu_r > 0.0);
-    let rolling = part(
+            ),
+            "μ_s = 0 everywhere: no tangential force",
+        )
+    }
+}
+
+/// Rolling resistance (SSDEM).
+fn rolling(scene: &Scene, m: &ParticleMaterial) -> Part {
+    let rolling_walls = scene.which(|w| w.material.mu_r > 0.0);
+    Part::new(
         "rolling resistance",
-        soft && (m.mu_r > 0.0 || !rolling_walls.is_empty()),
+        !scene.hard && (m.mu_r > 0.0 || !rolling_walls.is_empty()),
         format!(
             "μ_r = {} for the particles, or above 0 on walls {}",
             m.mu_r,
             list(&rolling_walls)
         ),
         "μ_r = 0 everywhere (or HSDEM)",
-    );
-    let twisting_walls = which(&|w| w.material.mu_t > 0.0);
-    let twisting = part(
+    )
+}
+
+/// Twisting resistance (SSDEM).
+fn twisting(scene: &Scene, m: &ParticleMaterial) -> Part {
+    let twisting_walls = scene.which(|w| w.material.mu_t > 0.0);
+    Part::new(
         "twisting resistance",
-        soft && (m.mu_t > 0.0 || !twisting_walls.is_empty()),
+        !scene.hard && (m.mu_t > 0.0 || !twisting_walls.is_empty()),
         format!(
             "μ_t = {} for the particles, or above 0 on walls {}",
             m.mu_t,
             list(&twisting_walls)
         ),
         "μ_t = 0 everywhere (or HSDEM)",
-    );
-    let edged = which(&|w| {
+    )
+}
+
+/// HSDEM edges, corners and rims, with edge detection on.
+fn edges(scene: &Scene, settings: &Settings) -> Part {
+    let edged = scene.which(|w| {
         matches!(
             w.shape,
             Shape::Rectangle { .. }
@@ -195,21 +275,31 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
                 | Shape::Triangle { .. }
         )
     });
-    let edges = part(
+    let detect = scene.hard && settings.edges;
+    Part::new(
         "edge, corner and rim collisions",
-        hard && settings.edges && !edged.is_empty(),
+        detect && !edged.is_empty(),
         format!("walls {} have edges, corners or rims", list(&edged)),
-        if hard && settings.edges {
+        if detect {
             "no wall has edges, corners or rims"
         } else {
             "SSDEM finds edges through the nearest point, or edge detection is off"
         },
-    );
-    let apart = settings.particle_contacts && particles.len() > 1 && {
-        let frictionless = !sliding;
-        never_meet(walls, particles, frictionless)
-    };
-    let particle_contacts = part(
+    )
+}
+
+/// Particle–particle contacts: switched on, more than one particle, and not proved
+/// never to meet (which needs `frictionless` contacts).
+fn particle_contacts(
+    walls: &[Wall],
+    particles: &[Particle],
+    settings: &Settings,
+    frictionless: bool,
+) -> Part {
+    let apart = settings.particle_contacts
+        && particles.len() > 1
+        && never_meet(walls, particles, frictionless);
+    Part::new(
         "particle-particle contacts (cell grid)",
         settings.particle_contacts && particles.len() > 1 && !apart,
         format!("{} particles can meet", particles.len()),
@@ -220,9 +310,14 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         } else {
             "a single particle"
         },
-    );
-    let heavy = which(&|w| w.reactive.is_heavy());
-    let bounded = walls
+    )
+}
+
+/// The wall index: more than [`WALL_INDEX_FROM`] bounded walls, none of them reactive.
+fn wall_index(scene: &Scene) -> Part {
+    let heavy = scene.walls.iter().any(|w| w.reactive.is_heavy());
+    let bounded = scene
+        .walls
         .iter()
         .filter(|w| {
             !matches!(
@@ -231,41 +326,58 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
             )
         })
         .count();
-    let wall_index = part(
+    Part::new(
         "wall index (bounding-volume hierarchy)",
-        bounded > WALL_INDEX_FROM && heavy.is_empty(),
+        bounded > WALL_INDEX_FROM && !heavy,
         format!("{bounded} bounded walls: a hierarchy finds each particle's few"),
         &format!("{bounded} bounded walls: looking at each is as cheap"),
-    );
-    let reactive = part(
+    )
+}
+
+/// Reactive walls ([`reactive`]), or why the walls with a mass stay where they are.
+fn reactive_walls(scene: &Scene, settings: &Settings) -> Part {
+    let heavy = scene.which(|w| w.reactive.is_heavy());
+    Part::new(
         "reactive walls",
-        soft && !heavy.is_empty() && settings.build.walls_react,
+        reactive(scene.walls, settings),
         format!("walls {} have a mass and an assembly", list(&heavy)),
         if heavy.is_empty() {
             "no wall has both a mass and an assembly"
-        } else if soft {
+        } else if !scene.hard {
             "the pkdgrav build lacks DEM_WALLS_REACT: the masses are ignored (W402)"
         } else {
             "HSDEM: pkdgrav's reactive walls are SSDEM only; they stay where they are"
         },
-    );
-    let sticky = which(&|w| w.material.eps_n == 0.0);
-    part(
+    )
+}
+
+/// Sticky walls: `epsn` 0.
+fn sticky_walls(scene: &Scene) -> Part {
+    let sticky = scene.which(|w| w.material.eps_n == 0.0);
+    Part::new(
         "sticky walls",
         !sticky.is_empty(),
         format!("walls {} have epsn 0", list(&sticky)),
         "no wall has epsn 0",
-    );
-    let death = which(&|w| w.material.eps_n < 0.0);
-    part(
+    )
+}
+
+/// Death walls: a negative `epsn`.
+fn death_walls(scene: &Scene) -> Part {
+    let death = scene.which(|w| w.material.eps_n < 0.0);
+    Part::new(
         "death walls",
         !death.is_empty(),
         format!("walls {} have a negative epsn", list(&death)),
         "no wall has a negative epsn",
-    );
+    )
+}
+
+/// The pkdgrav build the run follows, with the options the inputs need and it lacks.
+fn pkdgrav_build(walls: &[Wall], particles: &[Particle], settings: &Settings) -> Part {
     let build = &settings.build;
     let missing = crate::build::missing(build, walls, particles);
-    part(
+    Part::new(
         "pkdgrav build",
         true,
         format!(
@@ -277,12 +389,17 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
                 .collect::<String>()
         ),
         "",
-    );
-    let pkdgrav_law = soft && settings.integrator == crate::run::Integrator::Pkdgrav;
-    part(
+    )
+}
+
+/// Which rolling and twisting model pkdgrav's contact law uses, when the run has
+/// `rolling_or_twisting` resistance.
+fn rolling_model(scene: &Scene, settings: &Settings, rolling_or_twisting: bool) -> Part {
+    let pkdgrav_law = !scene.hard && settings.integrator == crate::run::Integrator::Pkdgrav;
+    Part::new(
         "rolling and twisting model",
-        pkdgrav_law && (rolling || twisting),
-        if build.rotation_dashpot {
+        pkdgrav_law && rolling_or_twisting,
+        if settings.build.rotation_dashpot {
             "spring-dashpot-sliders scaled by beta_s (DEM_ROTATION_DASHPOT, docs/pkdgrav-physics.md §1.4)"
                 .to_string()
         } else if settings.contact_radius {
@@ -295,26 +412,27 @@ pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Pl
         } else {
             "HSDEM, or an integrator other than pkdgrav's (the summary's capped torques)"
         },
-    );
+    )
+}
+
+/// Uniform gravity.
+fn uniform_gravity(settings: &Settings) -> Part {
     let g = settings.gravity.norm();
-    part(
+    Part::new(
         "uniform gravity",
         g > 0.0,
         format!("|g| = {g}"),
         "no gravity",
-    );
-    let plan = Plan {
-        moving_walls,
-        spin,
-        sliding_friction,
-        rolling,
-        twisting,
-        edges,
-        particle_contacts,
-        wall_index,
-        reactive,
-    };
-    (plan, out)
+    )
+}
+
+/// Whether the run has reactive walls: assemblies that move in response to particles,
+/// in an SSDEM run of a build with `DEM_WALLS_REACT` (without it the masses are ignored,
+/// W402). Such a run writes pkdgrav's WALLSREACT files.
+pub fn reactive(walls: &[Wall], settings: &Settings) -> bool {
+    settings.method() == ContactModel::Ssdem
+        && settings.build.walls_react
+        && walls.iter().any(|w| w.reactive.is_heavy())
 }
 
 /// Whether the particles can be proved never to meet: every wall is a plane with the

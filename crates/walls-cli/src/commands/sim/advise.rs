@@ -3,6 +3,7 @@
 //! lines. The advice, its text and its JSON are [`walls_sim::advise`]'s.
 
 use super::ruled;
+use walls_sim::advise::{Contact, UnitSystem};
 use walls_sim::io::par::Rule;
 
 /// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,
@@ -44,35 +45,17 @@ pub struct AdviseArgs {
     pub steps_per_contact: f64,
     /// The shortest contact the timestep must resolve: between particles (reduced mass
     /// m/2), or only against walls (m, √2 longer).
-    #[arg(long, value_enum, default_value_t = ContactArg::Pair)]
-    pub contact: ContactArg,
+    #[arg(long, value_enum, default_value_t = Contact::Pair)]
+    pub contact: Contact,
     /// The walls file, for an achWallsFile line.
     #[arg(long, value_name = "FILE", value_parser = par_name)]
     pub walls: Option<String>,
     /// The units of the inputs.
-    #[arg(long, value_enum, default_value_t = UnitsArg::Si)]
-    pub units: UnitsArg,
+    #[arg(long, value_enum, default_value_t = UnitSystem::Si)]
+    pub units: UnitSystem,
     /// Print the advice as JSON on standard output.
     #[arg(long)]
     pub json: bool,
-}
-
-/// The shortest contact of a run.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum ContactArg {
-    /// Particles touch each other (and walls).
-    Pair,
-    /// Particles touch only walls.
-    Wall,
-}
-
-/// The units of `advise`'s inputs.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum UnitsArg {
-    /// kg, m, s.
-    Si,
-    /// pkdgrav's: M_sun, AU, yr/2pi (G = 1).
-    Pkdgrav,
 }
 
 /// A file name pkdgrav's parameter reader reads back as written.
@@ -84,12 +67,9 @@ fn par_name(s: &str) -> Result<String, String> {
 
 /// Prints the advice `args` ask for; the exit status.
 pub fn run(args: &AdviseArgs) -> i32 {
-    use walls_sim::advise::{self, Amount, Column, Contact, Inputs, UnitSystem};
+    use walls_sim::advise::{self, Amount, Column, Inputs};
     let inputs = Inputs {
-        units: match args.units {
-            UnitsArg::Si => UnitSystem::Si,
-            UnitsArg::Pkdgrav => UnitSystem::Pkdgrav,
-        },
+        units: args.units,
         amount: match (args.mass, args.density) {
             (Some(m), _) => Amount::Mass(m),
             (None, Some(rho)) => Amount::Density(rho),
@@ -107,10 +87,7 @@ pub fn run(args: &AdviseArgs) -> i32 {
             _ => None,
         },
         steps_per_contact: args.steps_per_contact,
-        contact: match args.contact {
-            ContactArg::Pair => Contact::Pair,
-            ContactArg::Wall => Contact::Wall,
-        },
+        contact: args.contact,
     };
     let advice = match advise::advise(&inputs) {
         Ok(a) => a,

@@ -20,7 +20,6 @@ use clap::{Parser, Subcommand};
 use preview::PreviewArgs;
 use run::RunArgs;
 use walls_diagnostics::Severity;
-use walls_geometry::units::System;
 use walls_model::Options;
 use walls_sim::io::par::Rule;
 
@@ -108,30 +107,6 @@ fn warn_subnormal<'a>(options: impl IntoIterator<Item = (&'a str, f64)>) {
             let at = option.to_string();
             let w = walls_sim::run::Warning::SubnormalInput { at, value };
             crate::errln!("walls-sim: warning: {w}");
-        }
-    }
-}
-
-/// `--units` of `run` and `preview` (docs/units.md).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum UnitsArg {
-    /// pkdgrav's units, and the walls file's own beside them when it sets some.
-    Auto,
-    /// pkdgrav's units alone (AU, solar masses, 1/k days).
-    Pkdgrav,
-    /// Centimetres, grams, seconds.
-    Cgs,
-    /// Metres, kilograms, seconds.
-    Si,
-}
-
-impl From<UnitsArg> for System {
-    fn from(u: UnitsArg) -> System {
-        match u {
-            UnitsArg::Auto => System::Auto,
-            UnitsArg::Pkdgrav => System::Pkdgrav,
-            UnitsArg::Cgs => System::Cgs,
-            UnitsArg::Si => System::Si,
         }
     }
 }

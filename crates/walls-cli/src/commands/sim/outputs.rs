@@ -5,7 +5,7 @@
 //!
 //! Everything is planned before the run starts ([`RunOutputs::open`]), in DIR opened once
 //! (a folder renamed or swapped for a link meanwhile does not move the outputs): every
-//! file stays in DIR (`achOutName`'s folder part is not followed: [`ss_base`]), none is a
+//! file stays in DIR (`achOutName`'s folder part is not followed: [`walls_sim::config::ss_base`]), none is a
 //! link, a file the run reads, a device, a FIFO, a hard link or a read-only file, and an
 //! existing one is replaced only with `--force` (the WALLSREACT files are appended to, as
 //! pkdgrav does, unless `--fresh` empties them). The trajectory's files take their names
@@ -18,49 +18,12 @@
 use std::path::{Path, PathBuf};
 use walls_geometry::{Particle, Wall};
 use walls_output::{Folder, Outputs, Stream, Tool, WriteError, path_in};
+use walls_sim::config::SsNames;
 use walls_sim::dynamics::reactive::Assembly;
 use walls_sim::io::particles::{ss_file_name, write_ss_output};
 use walls_sim::io::trajectory::{PARTICLES_FILE, Trajectory, WALLS_FILE};
 use walls_sim::io::wallsreact::{DATA_FILE, ReactiveOutput, VIZ_FILE};
 use walls_sim::run::State;
-
-/// The base name and digits of the `.ss` outputs (pkdgrav's `achOutName`, `nDigits`).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct SsNames {
-    /// The base name, without a folder.
-    pub base: String,
-    /// The least number of digits of the step.
-    pub digits: usize,
-}
-
-/// The `.ss` outputs' base name from `achOutName` (`None`: pkdgrav's `ss`), and a warning
-/// when its folder part is not followed: the outputs go to `--out`, named by the last part
-/// of the path (`../../e` and `/scratch/run/e` give `e`; `..` alone gives `ss`).
-pub fn ss_base(out_name: Option<&str>) -> (String, Option<String>) {
-    let Some(name) = out_name else {
-        return ("ss".into(), None);
-    };
-    let last = Path::new(name)
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .filter(|n| n != "." && n != "..");
-    match last {
-        Some(base) if base == name => (base, None),
-        Some(base) => {
-            let warning = format!(
-                "achOutName = {name}: its folder is not followed: the .ss outputs are \
-                 written in --out as {base}.NNNNN"
-            );
-            (base, Some(warning))
-        }
-        None => (
-            "ss".into(),
-            Some(format!(
-                "achOutName = {name} names no file: the .ss outputs are written in --out as ss.NNNNN"
-            )),
-        ),
-    }
-}
 
 /// Why the outputs could not be written at an output step.
 #[derive(Debug)]
@@ -391,26 +354,4 @@ fn ss_files_in(folder: &Folder, base: &str) -> Result<Vec<String>, String> {
     }
     names.sort();
     Ok(names)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::ss_base;
-
-    #[test]
-    fn the_ss_outputs_never_take_a_folder_from_achoutname() {
-        assert_eq!(ss_base(None), ("ss".into(), None));
-        assert_eq!(ss_base(Some("run")), ("run".into(), None));
-        for (name, base) in [
-            ("../../e", "e"),
-            ("/scratch/run/e", "e"),
-            ("out/ss", "ss"),
-            ("..", "ss"),
-            ("/", "ss"),
-        ] {
-            let (got, warning) = ss_base(Some(name));
-            assert_eq!(got, base, "{name}");
-            assert!(warning.unwrap().contains(name), "{name}");
-        }
-    }
 }

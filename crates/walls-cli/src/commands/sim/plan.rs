@@ -16,16 +16,7 @@ pub fn run(args: &RunArgs) -> i32 {
     }
     let (_, mut parts) =
         walls_sim::run::plan::parts(&prepared.walls, &prepared.particles, &prepared.settings);
-    // Where the build came from.
-    let origin = match (&args.pkdgrav_build, args.method) {
-        (Some(_), _) => "as --pkdgrav-build gives it",
-        (None, crate::ContactModel::Ssdem) => {
-            "pkdgrav's default build; --pkdgrav-build names another"
-        }
-        (None, crate::ContactModel::Hsdem) => {
-            "pkdgrav's default build without DEM, as --method hsdem; --pkdgrav-build names another"
-        }
-    };
+    let origin = prepared.flags.build_origin();
     for p in parts.iter_mut().filter(|p| p.name == "pkdgrav build") {
         p.reason = match p.reason.split_once(';') {
             Some((names, rest)) => format!("{names} ({origin});{rest}"),

@@ -3,16 +3,20 @@
 //! the trajectory and pkdgrav's reactive-wall files. The settings come from
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
-use super::outputs::{Failure, RunOutputs, SsNames, ss_base};
-use super::{UnitsArg, error, exit_status, read_walls, ruled};
+use super::outputs::{Failure, RunOutputs};
+use super::{error, exit_status, read_walls, ruled};
 use crate::ContactModel;
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
 use walls_geometry::Particle;
+use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
+use walls_sim::OscillationStepping;
+use walls_sim::config::Outputs;
+use walls_sim::contact::ssdem::Sliding;
 use walls_sim::io::par::Rule;
 use walls_sim::report::OutputError;
-use walls_sim::run::Settings;
+use walls_sim::run::{Integrator, Settings};
 
 /// `walls-sim run`: the docs/spec.md §2 command line.
 #[derive(clap::Args)]
@@ -101,18 +105,18 @@ pub struct RunArgs {
     /// How oscillating walls move: step by step as pkdgrav does (the default), or on
     /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
     /// walls as pkdgrav does).
-    #[arg(long, value_enum, default_value_t = Oscillation::Pkdgrav)]
-    pub oscillation: Oscillation,
+    #[arg(long, value_enum, default_value_t = OscillationStepping::Pkdgrav)]
+    pub oscillation: OscillationStepping,
     /// SSDEM: the integrator: pkdgrav's own step and contact law (the default); or,
     /// for comparison, kick-drift-kick leapfrog with the summary's contact law, the same
     /// with the dashpot velocity predicted to the step's end, or explicit Euler.
-    #[arg(long, value_enum, default_value_t = IntegratorArg::Pkdgrav)]
-    pub integrator: IntegratorArg,
+    #[arg(long, value_enum, default_value_t = Integrator::Pkdgrav)]
+    pub integrator: Integrator,
     /// SSDEM with --integrator pkdgrav: what the shear spring of a sliding contact does:
     /// pkdgrav's reset (the default), or the Coulomb clamp of LAMMPS and LIGGGHTS (a
     /// sliding contact's friction is exactly μ_s·N). Not a .par key: pkdgrav has none.
-    #[arg(long, value_enum, default_value_t = SlidingArg::Reset)]
-    pub sliding: SlidingArg,
+    #[arg(long, value_enum, default_value_t = Sliding::Reset)]
+    pub sliding: Sliding,
     /// Run every part of the model, whatever the scene needs (for comparison; see
     /// `walls-sim plan`).
     #[arg(long)]
@@ -138,45 +142,13 @@ pub struct RunArgs {
     pub json: bool,
     /// The units of the summary's times: pkdgrav's, with the walls file's own beside
     /// them when it sets some (auto); pkdgrav's alone; centimetres-grams-seconds; or SI.
-    #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
-    pub units: UnitsArg,
+    #[arg(long, value_enum, default_value_t = System::Auto)]
+    pub units: System,
 }
 
 /// `--pkdgrav-build`'s value.
 fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
     walls_sim::build::Build::parse(text).map_err(|e| e.to_string())
-}
-
-/// The SSDEM integrator.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum IntegratorArg {
-    /// pkdgrav's step order and contact law (docs/pkdgrav-physics.md §1–§2, §5).
-    Pkdgrav,
-    /// Kick-drift-kick leapfrog.
-    Leapfrog,
-    /// Kick-drift-kick with the dashpot at the velocity predicted to the step's end.
-    LeapfrogPredicted,
-    /// Explicit Euler.
-    Euler,
-}
-
-/// What the shear spring of a sliding SSDEM contact does.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum SlidingArg {
-    /// pkdgrav's rule: the spring is reset to zero, the force is the dashpot's capped at
-    /// μ_s·N (docs/pkdgrav-physics.md §1.3).
-    Reset,
-    /// The Coulomb clamp: the spring is rescaled so that the force is exactly μ_s·N.
-    Clamp,
-}
-
-/// How oscillating walls advance in a run.
-#[derive(Clone, Copy, clap::ValueEnum)]
-pub enum Oscillation {
-    /// The exact sinusoid of docs/spec.md §1 at every step.
-    Exact,
-    /// pkdgrav's steps: each moves by the oscillation velocity at its start times dt.
-    Pkdgrav,
 }
 
 /// Runs particles as `args` say; the exit status.
@@ -194,11 +166,10 @@ pub struct Prepared {
     pub settings: Settings,
     /// How many errors the walls file has.
     pub errors: usize,
-    /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
-    /// 100; 0 (`iOutInterval = 0`) for none but the last step's.
-    pub every: u64,
-    /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
-    pub ss_name: SsNames,
+    /// How often the outputs are written, and the `.ss` outputs' names.
+    pub outputs: Outputs,
+    /// The options that settle the settings.
+    pub flags: walls_sim::config::Flags,
     /// The files the run reads: the walls file, the `.par` file, the particles and the
     /// cohesion file, which no output may replace.
     pub inputs: Vec<String>,
@@ -207,9 +178,6 @@ pub struct Prepared {
     /// The subnormal numbers of the inputs (W701), which come before the run's warnings.
     pub numbers: Vec<walls_sim::run::Warning>,
 }
-
-/// Steps between outputs when neither `--every` nor the `.par` file says.
-const EVERY: u64 = 100;
 
 /// Reads and checks everything a run needs: the `.par` file (its warnings go to
 /// standard error), the walls file (the argument, else the `.par` file's; checked in the
@@ -232,31 +200,19 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
                 None => "no walls file: give FILE, or --par with an achWallsFile line".to_string(),
             },
         )?;
-    let model = args
-        .pkdgrav_build
-        .as_ref()
-        .map_or(args.method, walls_sim::build::Build::contact_model);
-    let (checked, errors) = read_walls(&file, model, "running")?;
+    let (checked, errors) = read_walls(&file, flags.build().contact_model(), "running")?;
     let walls = decode(&checked.scene);
-    let readout = walls_geometry::units::Readout::new(args.units.into(), &checked.scene.units);
+    let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &args.par {
         for w in &run.warnings {
             crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
-    let every = args
-        .every
-        .or_else(|| par.as_ref()?.out_interval)
-        .unwrap_or(EVERY);
-    let (base, warning) = ss_base(par.as_ref().and_then(|p| p.out_name.as_deref()));
-    if let (Some(w), Some(path), true) = (warning, &args.par, args.ss_output) {
+    let outputs = config::outputs(&flags, par.as_ref());
+    if let (Some(w), Some(path), true) = (&outputs.ss_warning, &args.par, args.ss_output) {
         crate::errln!("walls-sim: warning: {path}: {w}");
     }
-    let ss_name = SsNames {
-        base,
-        digits: par.as_ref().and_then(|p| p.digits).unwrap_or(5),
-    };
     let inputs = [
         Some(file.clone()),
         args.par.clone(),
@@ -271,18 +227,17 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         particles: run.particles,
         settings: run.settings,
         errors,
-        every,
-        ss_name,
+        outputs,
         inputs,
         readout,
         numbers: run.numbers,
+        flags,
     })
 }
 
 /// The options of `args` that settle the run's settings.
 fn flags(args: &RunArgs) -> walls_sim::config::Flags {
-    use walls_sim::contact::ssdem::Sliding;
-    use walls_sim::run::{Integrator, Planning};
+    use walls_sim::run::Planning;
     walls_sim::config::Flags {
         particles: args.particles.clone(),
         no_particles: args.no_particles,
@@ -304,26 +259,16 @@ fn flags(args: &RunArgs) -> walls_sim::config::Flags {
         mu_t: args.mu_t,
         no_particle_contacts: args.no_particle_contacts,
         no_edges: args.no_edges,
-        stepping: match args.oscillation {
-            Oscillation::Exact => walls_sim::OscillationStepping::Exact,
-            Oscillation::Pkdgrav => walls_sim::OscillationStepping::Pkdgrav,
-        },
-        integrator: match args.integrator {
-            IntegratorArg::Pkdgrav => Integrator::Pkdgrav,
-            IntegratorArg::Leapfrog => Integrator::Leapfrog,
-            IntegratorArg::LeapfrogPredicted => Integrator::LeapfrogPredicted,
-            IntegratorArg::Euler => Integrator::ExplicitEuler,
-        },
-        sliding: match args.sliding {
-            SlidingArg::Reset => Sliding::Reset,
-            SlidingArg::Clamp => Sliding::Clamp,
-        },
+        stepping: args.oscillation,
+        integrator: args.integrator,
+        sliding: args.sliding,
         planning: if args.all_parts {
             Planning::Everything
         } else {
             Planning::Needed
         },
         max_steps: Some(args.max_steps),
+        every: args.every,
     }
 }
 
@@ -336,11 +281,11 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         particles,
         settings,
         errors,
-        every,
-        ss_name,
+        outputs: Outputs { every, ss, .. },
         inputs,
         readout,
         numbers,
+        ..
     } = prepare(args)?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
@@ -349,9 +294,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
     // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
     // to as pkdgrav does, unless --fresh.
-    let reactive = settings.method() == walls_sim::run::ContactModel::Ssdem
-        && settings.build.walls_react
-        && !walls_sim::dynamics::reactive::assemblies(scene).is_empty();
+    let reactive = walls_sim::run::plan::reactive(scene, &settings);
     // Every output is planned, and refused if it must be, before the run starts.
     let mut files = match &args.out {
         Some(dir) => Some(RunOutputs::open(
@@ -359,7 +302,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             args.force,
             args.fresh,
             reactive,
-            args.ss_output.then(|| ss_name.clone()),
+            args.ss_output.then(|| ss.clone()),
             &inputs,
         )?),
         None => None,

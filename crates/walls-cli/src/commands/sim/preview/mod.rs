@@ -5,10 +5,11 @@
 
 mod output;
 
-use super::{UnitsArg, error, exit_status, read_walls, ruled};
+use super::{error, exit_status, read_walls, ruled};
 use crate::input::display_name;
 use crate::movie::{self, Snapshot, VizSteps};
 use crate::{Checked, ContactModel};
+use walls_geometry::units::System;
 
 use std::path::{Path, PathBuf};
 use walls_preview::ssdraw::SsdrawView;
@@ -54,8 +55,8 @@ pub struct PreviewArgs {
     pub reactive: Option<PathBuf>,
     /// The units shown (SVG's time and scale bar) and written (VTK): auto shows
     /// pkdgrav's and the file's own; VTK in cgs or si is converted.
-    #[arg(long, value_enum, default_value_t = UnitsArg::Auto)]
-    pub units: UnitsArg,
+    #[arg(long, value_enum, default_value_t = System::Auto)]
+    pub units: System,
     /// The particles.csv that `walls-sim run --out` writes, as a movie: the same as
     /// giving it to --particles (kept for earlier scripts).
     #[arg(long, value_name = "FILE")]

@@ -4,12 +4,11 @@
 //! long series.
 
 use super::PreviewArgs;
-use crate::commands::sim::UnitsArg;
 use crate::movie::Movie;
 use indicatif::ProgressBar;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use walls_geometry::units::{Readout, Scale};
+use walls_geometry::units::{Readout, Scale, System};
 use walls_model::Scene;
 use walls_output::{Outputs, Target, Tool, WriteError};
 use walls_preview::MovieFrame;
@@ -94,7 +93,7 @@ pub(super) fn write(
     outputs: &Outputs,
 ) -> Result<(), String> {
     let frames = &movie.frames[..];
-    let readout = Readout::new(args.units.into(), &scene.units);
+    let readout = Readout::new(args.units, &scene.units);
     let view = svg_view(args, ssdraw, movie);
     let (Some(kind), Some(path)) = (kind, args.out.as_deref()) else {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -407,10 +406,10 @@ fn svg(
 }
 
 /// The units VTK files are written in: SI or cgs converted, else pkdgrav's own.
-fn vtk_scale(units: UnitsArg, readout: &Readout) -> Scale {
+fn vtk_scale(units: System, readout: &Readout) -> Scale {
     match units {
-        UnitsArg::Si | UnitsArg::Cgs => readout.scale.clone(),
-        UnitsArg::Auto | UnitsArg::Pkdgrav => Scale::PKDGRAV,
+        System::Si | System::Cgs => readout.scale.clone(),
+        System::Auto | System::Pkdgrav => Scale::PKDGRAV,
     }
 }
 
