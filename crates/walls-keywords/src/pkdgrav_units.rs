@@ -78,7 +78,7 @@ pub const SS_H: UnitSet = UnitSet {
 /// 1.989e30 kg, the time unit 5.0225e6 s.
 pub const DEMPARAMS: UnitSet = UnitSet {
     source: "demparams.c",
-    used_by: "demparams",
+    used_by: "demparams, the dKn / dDelta helper",
     au_m: 1.496e11,
     solar_mass_kg: 1.989e30,
     time: Time::Unit(5.0225e6),
@@ -88,7 +88,7 @@ pub const DEMPARAMS: UnitSet = UnitSet {
 /// time unit 3.15581497632e7 / 2π s.
 pub const AGGS: UnitSet = UnitSet {
     source: "aggs.c",
-    used_by: "pkdgrav's aggregates",
+    used_by: "pkdgrav's aggregates (AGGS)",
     au_m: 1.495_978_70e11,
     solar_mass_kg: 1.9891e30,
     time: Time::Year(3.155_814_976_32e7),
@@ -98,7 +98,7 @@ pub const AGGS: UnitSet = UnitSet {
 /// no time unit.
 pub const RUBBLE: UnitSet = UnitSet {
     source: "rubble.h, collmod.h",
-    used_by: "pkdgrav's rubble-pile and collision models",
+    used_by: "the parts of pkdgrav that include them",
     au_m: 1.495_978_70e11,
     solar_mass_kg: 1.9891e30,
     time: Time::Unstated,
@@ -108,7 +108,7 @@ pub const RUBBLE: UnitSet = UnitSet {
 /// 1.98892e33 g, a year of 31558207.07 s (here in metres and kilograms, the same digits).
 pub const GRDRAG: UnitSet = UnitSet {
     source: "grdrag.c",
-    used_by: "pkdgrav's gas drag",
+    used_by: "grdrag.c",
     au_m: 1.49598e11,
     solar_mass_kg: 1.98892e30,
     time: Time::Year(31_558_207.07),
