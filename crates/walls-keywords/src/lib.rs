@@ -10,9 +10,12 @@
 //!
 //! Beside the words, [`number`] is the one rule for numbers that every reader of the
 //! tools follows: what a number's text or value means to pkdgrav, and which are refused
-//! (not finite, overflow, underflow) or warned about (subnormal).
+//! (not finite, overflow, underflow) or warned about (subnormal), and [`pkdgrav_units`]
+//! holds pkdgrav's units in SI (what `lengthunit 1`, `massunit 1` and `timeunit 1` are),
+//! the one place every tool takes them from.
 
 pub mod number;
+pub mod pkdgrav_units;
 
 /// pkdgrav's two contact models: what a file is checked for, and how a run treats
 /// contacts. The keyword table records which keywords only the soft-sphere model reads.

@@ -36,7 +36,7 @@
 //! - `TIME` (Float64): the time of the picture, as ParaView reads it.
 //! - `length_unit`, `mass_unit`, `time_unit` (String): the units of every number in the
 //!   file: `m`, `kg`, `s` (SI), `cm`, `g`, `s` (cgs), or pkdgrav's own `AU`, `Msun` and
-//!   `yr/2pi` (its time unit, 1/k days). Velocities are in length/time units and spin
+//!   `yr/2pi` (its time unit, a year over 2π). Velocities are in length/time units and spin
 //!   in 1/time units.
 //!
 //! Numbers are written in Rust's shortest exponent form (`1.5e-3`; +0 as `0`), which
@@ -50,7 +50,7 @@ use walls_geometry::Particle;
 use walls_geometry::units::Scale;
 
 /// The names written for `scale`'s length, mass and time units: its own, or pkdgrav's
-/// (AU, solar masses and 1/k days, a year over 2π) where it has none.
+/// (AU, solar masses and a year over 2π) where it has none.
 pub fn unit_names(scale: &Scale) -> [&'static str; 3] {
     let or = |name: &'static str, pkdgrav| if name.is_empty() { pkdgrav } else { name };
     [

@@ -27,24 +27,14 @@
 //! closed forms to 1 %; a production run does not need that.
 //!
 //! Inputs are SI or pkdgrav units ([`UnitSystem`]); every result is given in both
-//! ([`Quantity`]). pkdgrav's units are the AU, the solar mass and the time that makes
-//! G = 1, √(AU³/(G·M☉)) ≈ 5.0226 × 10⁶ s, a year over 2π ([`Units::pkdgrav`]).
+//! ([`Quantity`]). pkdgrav's units are the AU, the solar mass and a year over 2π, in SI
+//! as the toolkit's set gives them ([`Units::pkdgrav`]: pkdgrav's `ss.h`, the set
+//! `--units si` shows too; `demparams` itself rounds them, docs/pkdgrav-physics.md §13).
 //!
 //! [`text`] and [`json`] render the advice as `walls-sim advise` prints it.
 
 use std::fmt;
-
-/// Metres in an astronomical unit (IAU 2012 Resolution B2: exact).
-pub const AU_M: f64 = 1.495_978_707e11;
-
-/// Kilograms in a solar mass: the IAU 2015 nominal GM☉ = 1.327 124 4 × 10²⁰ m³/s²
-/// (Resolution B3) divided by [`G_SI`].
-pub const M_SUN_KG: f64 = 1.988_47e30;
-
-/// Newton's constant in m³/(kg·s²), CODATA 2014: the value that gives [`M_SUN_KG`] from
-/// the nominal GM☉, so that their product is GM☉ to 3 × 10⁻⁶ and pkdgrav's G = 1 holds
-/// for the real Sun.
-pub const G_SI: f64 = 6.674_08e-11;
+use walls_keywords::pkdgrav_units::{self, UnitSet};
 
 /// The default allowed overlap: 1 % of the radius (Schwartz et al. 2012; `demparams`).
 pub const DEFAULT_OVERLAP: f64 = 0.01;
@@ -75,15 +65,23 @@ pub struct Units {
 }
 
 impl Units {
-    /// pkdgrav's units: the AU ([`AU_M`]), the solar mass ([`M_SUN_KG`]) and the time in
-    /// which G = 1, √(AU³/(G·M☉)) = 5.022 650 × 10⁶ s with [`G_SI`] (a year of
-    /// 365.258 days over 2π; pkdgrav's own tools round it to 5.0225 × 10⁶ s).
+    /// pkdgrav's units as the toolkit converts them ([`pkdgrav_units::TOOLKIT`], pkdgrav's
+    /// `ss.h`): the AU, the solar mass and a sidereal year over 2π.
     pub fn pkdgrav() -> Self {
         Units {
-            mass: M_SUN_KG,
-            length: AU_M,
-            time: (AU_M.powi(3) / (G_SI * M_SUN_KG)).sqrt(),
+            mass: pkdgrav_units::SOLAR_MASS_KG,
+            length: pkdgrav_units::AU_M,
+            time: pkdgrav_units::TIME_UNIT_S,
         }
+    }
+
+    /// pkdgrav's units as `set` gives them, if it gives a time unit.
+    pub fn of(set: &UnitSet) -> Option<Self> {
+        Some(Units {
+            mass: set.solar_mass_kg,
+            length: set.au_m,
+            time: set.time_unit_s()?,
+        })
     }
 
     /// SI units: every factor is 1.
@@ -757,13 +755,16 @@ pub fn text(a: &Advice, inputs: &Inputs, walls_file: Option<&str>) -> String {
         );
     }
     let u = &a.units;
+    let set = &pkdgrav_units::TOOLKIT;
     let _ = writeln!(
         o,
-        "\nUnits: pkdgrav's are the AU, the solar mass and the time in which G = 1\n  1 AU = {} m (IAU 2012); 1 M_sun = {} kg (IAU 2015 GM_sun / G)\n  1 yr/2pi = √(AU³/(G·M_sun)) = {} s, with G = {} m^3/(kg s^2) (CODATA 2014)\n  k_n: 1 M_sun/(yr/2pi)^2 = {} kg/s^2; dt: 1 yr/2pi = {} s\n  a walls file in SI units: lengthunit {}  massunit {}  timeunit {}",
+        "\nUnits: pkdgrav's AU, solar mass and year over 2pi, as pkdgrav's {} gives them ({})\n  1 AU = {} m; 1 M_sun = {} kg; 1 yr/2pi = {} s (as --units si)\n  G = 1 in these units: G = {} m^3/(kg s^2)\n  k_n: 1 M_sun/(yr/2pi)^2 = {} kg/s^2; dt: 1 yr/2pi = {} s\n  a walls file in SI units: lengthunit {}  massunit {}  timeunit {}",
+        set.source,
+        set.used_by,
         g(u.length, 10),
         g(u.mass, 6),
-        g(u.time, 6),
-        g(G_SI, 6),
+        g(u.time, 9),
+        g(pkdgrav_units::TOOLKIT_G_SI, 6),
         g(u.factor(Dimension::Stiffness), 6),
         g(u.time, 6),
         g(1.0 / u.length, 6),
@@ -829,10 +830,11 @@ pub fn json(a: &Advice, inputs: &Inputs, walls_file: Option<&str>) -> String {
         },
         "free_fall_speed": column.map(|c| q(&c.free_fall_speed)),
         "units": {
+            "set": pkdgrav_units::TOOLKIT.source,
             "length_m": u.length,
             "mass_kg": u.mass,
             "time_s": u.time,
-            "g_si": G_SI,
+            "g_si": pkdgrav_units::TOOLKIT_G_SI,
             "walls_file_in_si": {
                 "lengthunit": 1.0 / u.length,
                 "massunit": 1.0 / u.mass,
@@ -908,25 +910,35 @@ mod tests {
     }
 
     #[test]
-    fn pkdgrav_units_match_demparams_to_its_rounded_constants() {
-        // demparams converts with AU = 1.496e11 m, M☉ = 1.989e30 kg and
-        // yr/2π = 5.0225e6 s: "2.562490e-11 M_Sun/(yr/2pi)^2", "4.932949e-09 yr/2pi",
-        // "9.986537e-16". Ours differ by their rounding, under 4e-4.
+    fn demparams_own_units_give_its_pkdgrav_figures() {
+        // demparams converts with its own set (§13): "2.562490e-11 M_Sun/(yr/2pi)^2",
+        // "4.932949e-09 yr/2pi", "9.986537e-16". With that set the advice's SI values
+        // give them to the log's inputs' 2e-5; the toolkit's set differs by its
+        // rounding, under 4e-4.
         let a = advise(&demparams()).unwrap();
-        assert!(near(a.k_n.pkdgrav, 2.562490e-11, 4e-4), "{}", a.k_n.pkdgrav);
-        assert!(near(a.dt.pkdgrav, 4.932949e-9, 4e-4), "{}", a.dt.pkdgrav);
-        assert!(near(a.column.unwrap().k_n.pkdgrav, 9.986537e-16, 4e-4));
+        let theirs = Units::of(&pkdgrav_units::DEMPARAMS).unwrap();
+        let k_static = a.column.unwrap().k_n;
+        for (q, log) in [
+            (a.k_n, 2.562490e-11),
+            (a.dt, 4.932949e-9),
+            (k_static, 9.986537e-16),
+        ] {
+            assert!(near(theirs.from_si(q.si, q.dimension), log, 2e-5), "{q:?}");
+            assert!(near(q.pkdgrav, log, 4e-4), "{q:?}");
+        }
     }
 
     #[test]
-    fn pkdgrav_units_make_g_one_and_convert_both_ways() {
+    fn pkdgrav_units_are_the_toolkits_and_convert_both_ways() {
         let u = Units::pkdgrav();
-        // G in pkdgrav units: m³/(kg·s²) → AU³/(M☉·(yr/2π)²).
-        let g = G_SI * u.mass * u.time.powi(2) / u.length.powi(3);
-        assert!((g - 1.0).abs() < 1e-12, "{g}");
-        assert!((u.time - 5.02265e6).abs() < 10.0, "{}", u.time);
+        assert_eq!(Units::of(&pkdgrav_units::TOOLKIT), Some(u));
+        // G in pkdgrav units: m³/(kg·s²) → AU³/(M☉·(yr/2π)²), 1 to 10⁻¹⁵ for the G the
+        // units make 1, 0.99999 for CODATA's (§13).
+        let g = |g_si: f64| g_si * u.mass * u.time.powi(2) / u.length.powi(3);
+        assert!((g(pkdgrav_units::TOOLKIT_G_SI) - 1.0).abs() < 1e-15);
+        assert_eq!(format!("{:.5}", g(pkdgrav_units::G_SI)), "0.99999");
         // A year of 2π time units is within a day of the Julian year.
-        assert!((2.0 * std::f64::consts::PI * u.time - 3.15576e7).abs() < 86400.0);
+        assert!((2.0 * std::f64::consts::PI * u.time / 86_400.0 - 365.25).abs() < 1.0);
         use Dimension::*;
         for d in [Mass, Length, Time, Speed, Acceleration, Density, Stiffness] {
             for x in [1e-30, 0.024776, 1.0, 2.0205e6, 1e30] {
@@ -940,8 +952,8 @@ mod tests {
         }
         // Known values: 1 km/s = 0.0336 AU/(yr/2π) (Earth's 29.8 km/s is about 1).
         assert!((u.from_si(29_784.7, Speed) - 1.0).abs() < 1e-3);
-        assert_eq!(u.from_si(AU_M, Length), 1.0);
-        assert_eq!(u.to_si(1.0, Mass), M_SUN_KG);
+        assert_eq!(u.from_si(pkdgrav_units::AU_M, Length), 1.0);
+        assert_eq!(u.to_si(1.0, Mass), pkdgrav_units::SOLAR_MASS_KG);
     }
 
     #[test]

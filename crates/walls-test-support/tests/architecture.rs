@@ -807,26 +807,7 @@ fn read(path: &Path) -> String {
 
 /// Every `.rs` file under `dir`, skipping build output, version control and npm's.
 fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut todo = vec![dir.to_path_buf()];
-    while let Some(dir) = todo.pop() {
-        let Ok(entries) = fs::read_dir(&dir) else {
-            continue;
-        };
-        for entry in entries {
-            let path = entry.expect("a directory entry").path();
-            let name = path.file_name().unwrap_or_default().to_string_lossy();
-            if path.is_dir() {
-                if !["target", ".git", "node_modules"].contains(&name.as_ref()) {
-                    todo.push(path);
-                }
-            } else if name.ends_with(".rs") {
-                out.push(path.canonicalize().unwrap_or(path));
-            }
-        }
-    }
-    out.sort();
-    out
+    files_ending(dir, &[".rs"])
 }
 
 /// The code of a Rust file with every comment, string literal and character literal
@@ -1020,6 +1001,156 @@ fn the_scanner_sees_only_code() {
 }
 
 // ---------------------------------------------------------------------------------------
+// pkdgrav's units, written once.
+
+/// The one file that writes pkdgrav's unit constants.
+const UNIT_CONSTANTS: &str = "crates/walls-keywords/src/pkdgrav_units.rs";
+
+/// pkdgrav's unit constants are written in one file, `walls_keywords::pkdgrav_units`
+/// ([`UNIT_CONSTANTS`]); every other place takes them from it. Every number written in
+/// every other file of a crate's `src/` (Rust) and of `python/` (`.py`, `.pyi`) — in
+/// code, strings and comments alike, `_` separators allowed — is compared with each
+/// set's AU (m and cm), solar mass (kg and g), time unit and year (s) and the G its units
+/// make 1 (SI and cgs), and with `G_SI`: one within 10⁻³ of any is a copy. So a
+/// rounded copy (`1.496e11`, `1.989e30`, `5.023e6`, `6.674e-11`) is caught as well as an
+/// exact one, and a doc that states a value (it would go stale) too. Not caught, by
+/// design: tests and benchmarks (`crates/*/tests`, `benches`), which state the figures
+/// they expect; the reciprocals a walls file writes (`lengthunit 6.68445e-14`, a
+/// centimetre in AU), which are the user's statement of their units; and prose with
+/// thousands separators or spaces between digits.
+#[test]
+fn unit_constants_are_written_once() {
+    use walls_keywords::pkdgrav_units::{G_SI, SETS, Time};
+    let mut constants = vec![("G", G_SI), ("G (cgs)", G_SI * 1e3)];
+    for set in SETS {
+        constants.extend([
+            ("AU (m)", set.au_m),
+            ("AU (cm)", set.au_m * 1e2),
+            ("M_sun (kg)", set.solar_mass_kg),
+            ("M_sun (g)", set.solar_mass_kg * 1e3),
+        ]);
+        constants.extend(set.time_unit_s().map(|t| ("time unit (s)", t)));
+        if let Time::Year(year) = set.time {
+            constants.push(("year (s)", year));
+        }
+        if let Some(g) = set.g_si() {
+            constants.extend([("G", g), ("G (cgs)", g * 1e3)]);
+        }
+    }
+    let copies = |text: &str| -> Vec<(usize, String, &'static str)> {
+        number_literals(text)
+            .into_iter()
+            .filter_map(|(at, literal, value)| {
+                let (name, _) = constants
+                    .iter()
+                    .find(|(_, c)| (value / c - 1.0).abs() < 1e-3)?;
+                Some((at, literal.to_string(), *name))
+            })
+            .collect()
+    };
+
+    let caught =
+        copies("const AU: f64 = 1.496e11; m = 1.988_47e30 // 6.674e-11\nt = \"5.023e6 s\"");
+    assert_eq!(caught.len(), 4, "{caught:?}");
+    let legitimate = "lengthunit 6.68445e-14\nmassunit 5.02739933e-34 # 2e33 g, 1.47 s, v1.496";
+    assert_eq!(copies(legitimate), Vec::new());
+
+    let ws = Workspace::load();
+    let mut files: Vec<PathBuf> = ws
+        .members
+        .iter()
+        .flat_map(|m| rust_files(&m.dir.join("src")))
+        .collect();
+    files.extend(files_ending(&ws.root.join("python"), &[".py", ".pyi"]));
+    let mut broken = Vec::new();
+    for file in files {
+        let path = ws.relative(&file);
+        if path == UNIT_CONSTANTS {
+            continue;
+        }
+        let text = read(&file);
+        for (at, literal, name) in copies(&text) {
+            broken.push(format!(
+                "{path}:{}: `{literal}` is pkdgrav's {name}: take it from walls_keywords::pkdgrav_units",
+                line_of(&text, at)
+            ));
+        }
+    }
+    assert_none(
+        "pkdgrav's unit constants are written in one file (ARCHITECTURE.md, \"Invariants\")",
+        &broken,
+    );
+}
+
+/// Every number written in `text`: its byte offset, its text and its value (`_`
+/// separators dropped). A number starts with a digit that no letter, digit, `_` or `.`
+/// precedes.
+fn number_literals(text: &str) -> Vec<(usize, &str, f64)> {
+    let b = text.as_bytes();
+    let digits = |mut j: usize| {
+        while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'_') {
+            j += 1;
+        }
+        j
+    };
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let starts = b[i].is_ascii_digit()
+            && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || matches!(b[i - 1], b'_' | b'.')));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let mut j = digits(i);
+        if j + 1 < b.len() && b[j] == b'.' && b[j + 1].is_ascii_digit() {
+            j = digits(j + 1);
+        }
+        if j < b.len() && matches!(b[j], b'e' | b'E') {
+            let mut k = j + 1;
+            if k < b.len() && matches!(b[k], b'+' | b'-') {
+                k += 1;
+            }
+            if k < b.len() && b[k].is_ascii_digit() {
+                j = digits(k);
+            }
+        }
+        let literal = &text[i..j];
+        if let Ok(value) = literal.replace('_', "").parse::<f64>() {
+            out.push((i, literal, value));
+        }
+        i = j;
+    }
+    out
+}
+
+/// Every file under `dir` whose name ends with one of `endings`, skipping build output,
+/// version control, npm's and Python's caches and virtual environments.
+fn files_ending(dir: &Path, endings: &[&str]) -> Vec<PathBuf> {
+    const SKIPPED: &[&str] = &["target", ".git", "node_modules", "__pycache__", ".venv"];
+    let mut out = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(dir) = todo.pop() {
+        let Ok(entries) = fs::read_dir(&dir) else {
+            continue;
+        };
+        for entry in entries {
+            let path = entry.expect("a directory entry").path();
+            let name = path.file_name().unwrap_or_default().to_string_lossy();
+            if path.is_dir() {
+                if !SKIPPED.contains(&name.as_ref()) {
+                    todo.push(path);
+                }
+            } else if endings.iter().any(|e| name.ends_with(e)) {
+                out.push(path.canonicalize().unwrap_or(path));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+// ---------------------------------------------------------------------------------------
 // Wall motion.
 
 /// The code that turns angles into sines and cosines: the sinusoid of an oscillating
@@ -1108,4 +1239,104 @@ fn wall_motion_is_computed_in_geometry() {
         "wall motion is computed in walls-geometry's motion (Motion, Moving, turned); call it instead (ARCHITECTURE.md, \"Invariants\")",
         &broken,
     );
+}
+
+/// The crate whose files and structs are held small: the evaluator, where a step's stages
+/// are functions of the sets they touch.
+const SMALL_FILES_AND_STRUCTS: &str = "walls-sim";
+/// The most lines of code (not blank, not comments, not tests) a file of
+/// [`SMALL_FILES_AND_STRUCTS`] may have.
+const MAX_CODE_LINES: usize = 900;
+/// The most fields a struct of [`SMALL_FILES_AND_STRUCTS`] may have: more is a set of sets
+/// not yet named.
+const MAX_FIELDS: usize = 30;
+
+/// The evaluator stays a house to live in: no file of walls-sim over [`MAX_CODE_LINES`]
+/// lines of non-test code, and no struct over [`MAX_FIELDS`] fields.
+#[test]
+fn the_evaluators_files_and_structs_stay_small() {
+    let ws = Workspace::load();
+    let mut broken = Vec::new();
+    for m in ws
+        .members
+        .iter()
+        .filter(|m| m.name == SMALL_FILES_AND_STRUCTS)
+    {
+        for file in rust_files(&m.lib_dir()) {
+            let rel = ws.relative(&file);
+            let code = without_test_items(&code_only(&read(&file)));
+            let lines = code.lines().filter(|l| !l.trim().is_empty()).count();
+            if lines > MAX_CODE_LINES {
+                broken.push(format!(
+                    "{rel} has {lines} lines of code (at most {MAX_CODE_LINES})"
+                ));
+            }
+            for (at, name, fields) in structs(&code) {
+                if fields > MAX_FIELDS {
+                    broken.push(format!(
+                        "{rel}:{} struct {name} has {fields} fields (at most {MAX_FIELDS})",
+                        line_of(&code, at)
+                    ));
+                }
+            }
+        }
+    }
+    assert_none(
+        "split what grew: a module per stage or set, a struct per named set (ARCHITECTURE.md, \"Invariants\")",
+        &broken,
+    );
+}
+
+/// Each struct with named fields in `code` (comments and strings blanked): where it
+/// starts, its name and how many fields it has.
+fn structs(code: &str) -> Vec<(usize, String, usize)> {
+    let mut out = Vec::new();
+    for at in find_word(code, "struct") {
+        let rest = &code[at + "struct".len()..];
+        let name: String = rest
+            .trim_start()
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        // The body opens at the first `{` unless a `;` or `(` (a unit or tuple struct)
+        // comes first.
+        let Some(open) = rest.find(['{', ';', '(']) else {
+            continue;
+        };
+        if !rest[open..].starts_with('{') {
+            continue;
+        }
+        let (mut depth, mut fields, mut any) = (0usize, 0, false);
+        let mut prev = ' ';
+        for c in rest[open..].chars() {
+            match c {
+                '{' | '(' | '[' | '<' => depth += 1,
+                '>' if prev == '-' => {}
+                '}' | ')' | ']' | '>' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                ',' if depth == 1 => {
+                    fields += 1;
+                    any = false;
+                }
+                c if depth == 1 && !c.is_whitespace() => any = true,
+                _ => {}
+            }
+            prev = c;
+        }
+        out.push((at, name, fields + usize::from(any)));
+    }
+    out
+}
+
+/// [`structs`] counts named fields, whatever their types hold, and skips unit and tuple
+/// structs.
+#[test]
+fn fields_are_counted_at_the_top_of_a_struct() {
+    let code = "struct Unit;\nstruct Pair(u8, u8);\nstruct S<'a, T> {\n    a: Vec<(u8, u8)>,\n    b: &'a dyn Fn(T) -> [u8; 2],\n    c: HashMap<u8, Vec<u8>>\n}\n";
+    let found: Vec<(String, usize)> = structs(code).into_iter().map(|(_, n, f)| (n, f)).collect();
+    assert_eq!(found, [("S".to_string(), 3)]);
 }
