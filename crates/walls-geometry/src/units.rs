@@ -30,7 +30,7 @@ pub enum System {
     /// pkdgrav's units, and the walls file's own beside them when it sets some.
     #[default]
     Auto,
-    /// pkdgrav's units alone (AU, solar masses, 1/k days).
+    /// pkdgrav's units alone (AU, solar masses, a year over 2π).
     Pkdgrav,
     /// Centimetres, grams, seconds.
     Cgs,

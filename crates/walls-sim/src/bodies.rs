@@ -29,7 +29,7 @@ pub struct State {
 
 // The soft-sphere drift reads and writes every state every step, and with 10⁵
 // particles the step's data nears the processor's last cache: a field added here is
-// paid for by every particle in every step (docs/performance.md, "Thirteenth round").
+// paid for by every particle in every step (docs/performance-history.md, "Thirteenth round").
 // What the state can do without is kept beside it (the soft stepper's 1/m and 1/I).
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(std::mem::size_of::<State>() == 160);

@@ -217,7 +217,7 @@ struct Deferred {
     /// drift works it out from the particle's mass rather than reading it and writing
     /// it back: most particles touch nothing in most steps, and at 10⁵ particles those
     /// 96 bytes a particle were about a tenth of the time of the drop's first 2,000
-    /// steps (docs/performance.md, "Fourteenth round"). A mark left on a load already
+    /// steps (docs/performance-history.md, "Fourteenth round"). A mark left on a load already
     /// set back (by the wall pass, by [`SoftStepper::settle`], or by the drift while
     /// the marks were not valid) only makes the drift read it.
     loaded: Vec<bool>,
@@ -306,7 +306,7 @@ struct SoftStepper<'a> {
     /// is not empty): set by the wall pass after each particle's contacts, the only place
     /// they change (a particle the pass skips had none, nor has it now), and read by the
     /// drift as this byte, not the 24-byte vector, which at 10⁵ particles is memory the
-    /// drift's stream need not carry (docs/performance.md, "Eighth round").
+    /// drift's stream need not carry (docs/performance-history.md, "Eighth round").
     walled: Vec<bool>,
     /// Each chunk's scratch list of the walls to visit (kept to save allocating).
     visits: Vec<Vec<usize>>,
@@ -374,7 +374,7 @@ impl<'a> SoftStepper<'a> {
         self.move_walls();
         // The drift compiled without pkdgrav's `dAccCrit` and with it: its test and its
         // call in the loop cost the common case about 3 % of the run
-        // (docs/performance.md, "Twelfth round").
+        // (docs/performance-history.md, "Twelfth round").
         if self.deferred.owed_kick.acc_crit > 0.0 {
             self.kick_drift::<true>();
         } else {

@@ -411,7 +411,7 @@ pub(super) fn separation(a: &[f64; 4], b: &[f64; 4]) -> (Vec3, f64, f64) {
 /// free, else one (the last few, or the first of four with a particle held). Returns the
 /// sum of the forces' sizes. Compiled as well for processors with AVX-512 and with AVX2,
 /// the version chosen at run time for the processor it runs on: the lanes' vector
-/// operations inline only into code compiled for them (docs/performance.md, "Tenth
+/// operations inline only into code compiled for them (docs/performance-history.md, "Tenth
 /// round" and "Eleventh round"), and the numbers are the same in each, since Rust never
 /// fuses a multiplication with an addition unless asked to.
 #[multiversion::multiversion(targets(

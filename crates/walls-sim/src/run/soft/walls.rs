@@ -616,7 +616,7 @@ impl SoftStepper<'_> {
             chunks!(par_chunks, par_chunks_mut, par_iter, par_iter_mut)
                 // Each chunk a task of its own: the particles near the walls gather in
                 // a few chunks (those at the floor, in a pile), which halving the range
-                // left to one thread (docs/performance.md, "Twelfth round").
+                // left to one thread (docs/performance-history.md, "Twelfth round").
                 .with_max_len(1)
                 .for_each(chunk);
         } else {
