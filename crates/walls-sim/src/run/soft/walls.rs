@@ -367,8 +367,8 @@ pub(super) fn touch_walls(
         });
         if mat.eps_n <= 0.0 {
             // A death wall removes the particle; a sticky wall holds it. An aggregate's
-            // member neither sticks nor dies (pkdgrav asserts, physics.md §9.5): the
-            // event alone, and `note_wall_contacts` stops the run.
+            // member neither sticks nor dies (pkdgrav asserts, docs/pkdgrav-physics.md
+            // §9.5): the event alone, and `note_wall_contacts` stops the run.
             let kind = if mat.eps_n < 0.0 {
                 EventKind::Remove
             } else {
