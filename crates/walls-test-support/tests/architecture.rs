@@ -1298,14 +1298,31 @@ fn structs(code: &str) -> Vec<(usize, String, usize)> {
             .chars()
             .take_while(|c| c.is_alphanumeric() || *c == '_')
             .collect();
-        // The body opens at the first `{` unless a `;` or `(` (a unit or tuple struct)
-        // comes first.
-        let Some(open) = rest.find(['{', ';', '(']) else {
-            continue;
-        };
-        if !rest[open..].starts_with('{') {
+        // Past the name and its generics, a `;` or `(` is a unit or tuple struct; else
+        // the body opens at the first `{` (after any `where` clause).
+        let mut after = rest.trim_start()[name.len()..].trim_start();
+        if after.starts_with('<') {
+            let mut depth = 0usize;
+            let end = after.char_indices().find_map(|(i, c)| {
+                match c {
+                    '<' => depth += 1,
+                    '>' => depth -= 1,
+                    _ => {}
+                }
+                (depth == 0).then_some(i + 1)
+            });
+            after = after[end.unwrap_or(after.len())..].trim_start();
+        }
+        if after.starts_with([';', '(']) {
             continue;
         }
+        let Some(open) = rest
+            .len()
+            .checked_sub(after.len())
+            .and_then(|skip| rest[skip..].find('{').map(|i| skip + i))
+        else {
+            continue;
+        };
         let (mut depth, mut fields, mut any) = (0usize, 0, false);
         let mut prev = ' ';
         for c in rest[open..].chars() {
@@ -1336,7 +1353,7 @@ fn structs(code: &str) -> Vec<(usize, String, usize)> {
 /// structs.
 #[test]
 fn fields_are_counted_at_the_top_of_a_struct() {
-    let code = "struct Unit;\nstruct Pair(u8, u8);\nstruct S<'a, T> {\n    a: Vec<(u8, u8)>,\n    b: &'a dyn Fn(T) -> [u8; 2],\n    c: HashMap<u8, Vec<u8>>\n}\n";
+    let code = "struct Unit;\nstruct Pair(u8, u8);\nstruct W<T> where T: Fn(u8) {\n    f: T,\n}\nstruct S<'a, T> {\n    a: Vec<(u8, u8)>,\n    b: &'a dyn Fn(T) -> [u8; 2],\n    c: HashMap<u8, Vec<u8>>\n}\n";
     let found: Vec<(String, usize)> = structs(code).into_iter().map(|(_, n, f)| (n, f)).collect();
-    assert_eq!(found, [("S".to_string(), 3)]);
+    assert_eq!(found, [("W".to_string(), 1), ("S".to_string(), 3)]);
 }
