@@ -39,6 +39,7 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 use walls_geometry::Feature;
 use walls_geometry::impact::sphere_entry;
+use walls_geometry::motion::Moving;
 use walls_geometry::{Shape, Wall};
 
 type Vec3 = Vector3<f64>;
@@ -55,9 +56,15 @@ impl WallStep {
         self.start.origin + self.chord * tau
     }
 
-    /// The velocity of the wall's material at `q`, at `tau` into the step.
+    /// The velocity of the wall's material at `q`, at `tau` into the step: the wall
+    /// moving along its chord, spinning as it stood at the start.
     fn point_velocity(&self, q: &Vec3, tau: f64) -> Vec3 {
-        self.chord + self.start.spin.cross(&(q - self.origin(tau)))
+        let moving = Moving {
+            origin: self.origin(tau),
+            velocity: self.chord,
+            spin: self.start.spin,
+        };
+        moving.point_velocity(q)
     }
 }
 

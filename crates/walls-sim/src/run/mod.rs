@@ -484,11 +484,14 @@ pub fn run_watched(
             stopped: Some(Stop::Timestep),
         };
     }
-    let plan = match settings.planning {
+    let mut plan = match settings.planning {
         Planning::Needed => Plan::for_run(walls, &particles, settings),
         Planning::Everything => Plan::everything(),
         Planning::Exactly(plan) => plan,
     };
+    // Walls react only where the run can have them ([`plan::reactive`]: a build with
+    // `DEM_WALLS_REACT`), whatever plan was asked for.
+    plan.reactive &= plan::reactive(walls, settings);
     // The particles become the states: the run does not keep them twice.
     let states: Vec<State> = particles
         .into_iter()

@@ -26,7 +26,7 @@
 //! a byte marking a load that a pair touched),
 //! and a free particle clear of the walls gets its closing kick in the next drift
 //! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks
-//! still owed are given ([`SoftStepper::settle`]) when the particles are looked at
+//! still owed are given ([`drift::settle`]) when the particles are looked at
 //! ([`super::Snapshot`]), at the run's end, and when one might overflow, so a run is bit
 //! for bit what it would be with the kick in the wall pass. With
 //! [`Integrator::Pkdgrav`], [`SoftStepper::start`] evaluates the forces once before the
@@ -34,13 +34,18 @@
 //! [`crate::dynamics::aggregate`]) run only with [`Integrator::Pkdgrav`]; their members
 //! are placed by their aggregate, not kicked or drifted, and hand it their loads.
 //!
-//! The stepper's state is kept in named sets: the walls ([`WallSet`]: materials, the
-//! laws' constants, index, motion, assemblies' walls), the closing kicks deferred to the
-//! next drift ([`Deferred`]), what the run has seen ([`Journal`]), the candidate pairs
-//! ([`PairList`]) with the near-wall lists ([`NearWalls`]) and the pair pass's scratch,
-//! and the contact law ([`Law`]), decided once at set-up for walls and pairs alike. Its
-//! stages are in modules: [`setup`], [`drift`], [`pairs`] (the pair pass and law),
-//! [`walls`] (the wall pass) and [`near`]; the step and the bodies' motion are here.
+//! The stepper's state is kept in named sets, as rapier keeps its bodies and colliders:
+//! what set-up decided ([`Rules`]: the kicks, the [`ContactLaw`] for walls and pairs
+//! alike, the particles' material, the optional physics), the particles ([`Bodies`]),
+//! the walls ([`WallSet`]: materials and the laws' constants, index, motion, assemblies'
+//! walls), what may touch ([`Broad`]: the candidate pairs, [`PairList`], and the
+//! near-wall lists, [`NearWalls`]), the assemblies and aggregates ([`Rigid`]), the closing
+//! kicks deferred to the next drift ([`Deferred`]), the passes' scratch and reports
+//! ([`PairPass`], [`WallPass`]) and what the run has seen ([`Journal`]). Each stage of a
+//! step is a function of the sets it touches, in its module: [`setup`] (the sets
+//! compiled once), [`drift`], [`pairs`] (the pair pass and law), [`walls`] (the wall
+//! pass), [`near`], [`rigid`] (assemblies and aggregates) and [`law`] (the kicks and the
+//! contact law); the step is here.
 
 use super::pool::Helpers;
 use super::{
@@ -52,7 +57,6 @@ use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{Material, Restitution};
 use crate::dynamics::aggregate::Aggregates;
 use crate::dynamics::reactive::Assembly;
-use crate::dynamics::rigid::RotationIntegrator;
 use crate::dynamics::sphere_inertia as inertia;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
@@ -60,20 +64,23 @@ use nalgebra::Vector3;
 use walls_geometry::Wall;
 
 mod drift;
+mod law;
 mod near;
 mod pairs;
+mod rigid;
 mod setup;
 mod walls;
 
+use law::{ContactLaw, Kicks, Law};
 use near::NearWalls;
-use pairs::PairPass;
-use walls::{Closing, Open, ParticleStep};
+use pairs::{PairMaterial, PairPass};
+use walls::{Closing, Open, WallPass};
 
 type Vec3 = Vector3<f64>;
 
 /// What acts on one particle in a step: the force and torque summed so far. Every pass
 /// over the particles touches it, so it holds nothing else: the open wall contacts are
-/// kept beside it ([`SoftStepper::open_walls`]).
+/// kept beside it ([`Bodies::open_walls`]).
 #[derive(Default, Clone, Copy)]
 struct Load {
     force: Vec3,
@@ -94,81 +101,6 @@ impl Load {
     fn same_as(&self, other: &Load) -> bool {
         let bits = |l: &Load| [l.force, l.torque].map(|v| v.map(f64::to_bits));
         bits(self) == bits(other)
-    }
-}
-
-/// The fractions of a step each kick of the integrator covers, and how far ahead the
-/// dashpot's velocities are predicted.
-#[derive(Clone, Copy)]
-struct Kicks {
-    /// The kick before the drift.
-    opening: f64,
-    /// The kick after the drift, with the last acceleration.
-    late: f64,
-    /// The kick after the forces.
-    closing: f64,
-    /// The contact-velocity prediction with the last acceleration, against walls.
-    predict: f64,
-    /// The prediction of spins (against walls and particles) and of the velocities of
-    /// particles meeting each other.
-    predict_all: f64,
-    /// pkdgrav's levers (docs/pkdgrav-physics.md §1.1) instead of the radii.
-    pkdgrav_levers: bool,
-}
-
-impl Kicks {
-    fn of(integrator: Integrator) -> Kicks {
-        let (opening, late, closing, predict, predict_all) = match integrator {
-            Integrator::Leapfrog => (0.5, 0.0, 0.5, 0.0, 0.0),
-            Integrator::LeapfrogPredicted => (0.5, 0.0, 0.5, 0.5, 0.0),
-            Integrator::ExplicitEuler => (0.0, 1.0, 0.0, 0.0, 0.0),
-            Integrator::Pkdgrav => (0.5, 0.0, 0.5, 0.5, 0.5),
-        };
-        Kicks {
-            opening,
-            late,
-            closing,
-            predict,
-            predict_all,
-            pkdgrav_levers: integrator == Integrator::Pkdgrav,
-        }
-    }
-
-    /// pkdgrav's force evaluation at the start (docs/pkdgrav-physics.md §2): the
-    /// velocities and spins as they are (v^pred = v, w^pred = w), and no kick after it.
-    fn at_start(self) -> Kicks {
-        Kicks {
-            closing: 0.0,
-            predict: 0.0,
-            predict_all: 0.0,
-            ..self
-        }
-    }
-}
-
-/// The contact law of a run, against walls and between particles alike, decided once at
-/// set-up ([`Law::of`]).
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Law {
-    /// pkdgrav's spring–dashpot, in its frame ([`crate::contact::ssdem::dashpot_contact_with`],
-    /// docs/pkdgrav-physics.md §1.1–§1.5): pkdgrav's integrator, with friction, rolling,
-    /// twisting or one of its optional builds.
-    Pkdgrav,
-    /// The spring–dashpot of [`crate::contact::ssdem::contact`] (with sliding friction)
-    /// or [`crate::contact::ssdem::normal_contact`], with rolling and twisting
-    /// resistance beside it.
-    Linear,
-}
-
-impl Law {
-    /// The law of a run with these kicks, plan and optional physics.
-    fn of(kicks: &Kicks, plan: &Plan, optional: &OptionalPhysics) -> Law {
-        let dashpot = plan.sliding_friction || plan.rolling || plan.twisting;
-        if kicks.pkdgrav_levers && (dashpot || optional.any()) {
-            Law::Pkdgrav
-        } else {
-            Law::Linear
-        }
     }
 }
 
@@ -199,13 +131,13 @@ struct Journal {
     once: WarnedOnce,
 }
 
-/// The closing kicks the wall pass defers to the next drift ([`SoftStepper::kick_drift`]),
+/// The closing kicks the wall pass defers to the next drift ([`drift::kick_drift`]),
 /// which particles are owed one, and the bounds that tell whether they are surely finite
-/// ([`SoftStepper::surely_finite`]).
+/// ([`drift::surely_finite`]).
 struct Deferred {
     /// Whether each particle's closing kick is owed: a free particle clear of the walls
-    /// gets it in the next drift ([`SoftStepper::kick_drift`]) rather than in the wall
-    /// pass, which saves a pass over the particles; [`SoftStepper::settle`] gives it
+    /// gets it in the next drift ([`drift::kick_drift`]) rather than in the wall
+    /// pass, which saves a pass over the particles; [`drift::settle`] gives it
     /// when the particles are looked at. Marked in the drift; owed once the wall pass
     /// has run (`owing`).
     owed: Vec<bool>,
@@ -218,7 +150,7 @@ struct Deferred {
     /// it back: most particles touch nothing in most steps, and at 10⁵ particles those
     /// 96 bytes a particle were about a tenth of the time of the drop's first 2,000
     /// steps (docs/performance-history.md, "Fourteenth round"). A mark left on a load already
-    /// set back (by the wall pass, by [`SoftStepper::settle`], or by the drift while
+    /// set back (by the wall pass, by [`drift::settle`], or by the drift while
     /// the marks were not valid) only makes the drift read it.
     loaded: Vec<bool>,
     /// Whether the last pair pass marked the loads it added to ([`Deferred::loaded`]):
@@ -234,11 +166,11 @@ struct Deferred {
     /// The closing kick owed.
     owed_kick: Closing,
     /// The first particle whose numbers overflowed in an owed kick given by
-    /// [`SoftStepper::settle`] this step.
+    /// [`drift::settle`] this step.
     owed_bad: Option<usize>,
     /// The sum of the sizes (|x| + |y| + |z|) of every particle contact's force and
     /// torques this step, and the largest size of gravity on a particle, and 1/m or 1/I
-    /// of a particle: bounds on what an owed kick can add ([`SoftStepper::surely_finite`]).
+    /// of a particle: bounds on what an owed kick can add ([`drift::surely_finite`]).
     force_bound: f64,
     gravity_bound: f64,
     largest_inverse: f64,
@@ -268,66 +200,88 @@ struct WallSet {
     cogs: Vec<Vec3>,
 }
 
-/// A soft-sphere run as it goes: the particles and what acts on them, the walls and
-/// assemblies as they stand, the open contacts, and what the run has seen so far. A step
-/// is [`SoftStepper::step`].
-struct SoftStepper<'a> {
+/// What set-up decided for the whole run, which the stages read and none changes (but
+/// [`SoftStepper::start`], for pkdgrav's evaluation before the first step, the kicks):
+/// the scene, settings and plan the run was compiled from, the kicks, the contact law,
+/// the particles' material between them with its constants, the optional physics, and
+/// whether the passes over the particles run on rayon's threads.
+struct Rules<'a> {
     scene: &'a [Wall],
     settings: &'a Settings,
     plan: &'a Plan,
-    states: Vec<State>,
     kicks: Kicks,
     /// The contact law, walls and pairs alike.
-    law: Law,
-    /// The walls, their materials and motion.
-    walls: WallSet,
-    /// The particles' material, for their contacts with each other.
-    between: Material,
+    contact: ContactLaw,
+    /// The particles' material, for their contacts with each other, and its constants.
+    between: PairMaterial,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
     optional: OptionalPhysics,
-    /// Reactive assemblies (SSDEM only, as in pkdgrav), when the plan has them.
-    assemblies: Vec<Assembly>,
-    /// pkdgrav's rigid aggregates of particles (`AGGS`, docs/pkdgrav-physics.md §9), if
-    /// any.
-    aggregates: Option<Aggregates>,
-    /// Set up failed (an aggregate of one member): the run stops before it starts.
-    halted: bool,
-    loads: Vec<Load>,
-    /// Each particle's 1/m and 1/I (a solid sphere's I = 0.4·m·r²), worked out once (a
-    /// division costs as much as the rest of a free particle's step), and kept beside
-    /// the states, which the drift writes back every step: it only reads these.
-    inverses: Vec<(f64, f64)>,
-    /// The closing kicks deferred to the next drift.
-    deferred: Deferred,
-    /// Each particle's open wall contacts: (wall, contact), kept apart from its load so
-    /// that the passes that do not need them do not carry them.
-    open_walls: Vec<Vec<(usize, Open)>>,
-    /// Whether each particle has a wall contact open (its [`SoftStepper::open_walls`]
-    /// is not empty): set by the wall pass after each particle's contacts, the only place
-    /// they change (a particle the pass skips had none, nor has it now), and read by the
-    /// drift as this byte, not the 24-byte vector, which at 10⁵ particles is memory the
-    /// drift's stream need not carry (docs/performance-history.md, "Eighth round").
-    walled: Vec<bool>,
-    /// Each chunk's scratch list of the walls to visit (kept to save allocating).
-    visits: Vec<Vec<usize>>,
-    candidates: PairList,
-    /// Without a wall index, the walls near each particle, found with the candidate
-    /// pairs.
-    near: Option<NearWalls>,
-    /// What the pair pass works in (kept to save allocating).
-    pair_pass: PairPass,
-    /// What the wall contacts of each particle with something to note did this step,
-    /// in particle order (kept to save allocating).
-    reports: Vec<Vec<(usize, ParticleStep)>>,
     /// Whether a step runs on rayon's threads (many particles, and more than one
     /// thread).
     parallel: bool,
-    /// The energy at the start.
-    initial: f64,
-    /// What the run has seen so far.
-    journal: Journal,
+}
+
+/// The particles, one entry each in particle order, laid out as the passes read them:
+/// each [`State`], its [`Load`], its 1/m and 1/I (a solid sphere's I = 0.4·m·r², worked
+/// out once: a division costs as much as the rest of a free particle's step, and kept
+/// beside the states, which the drift writes back every step: it only reads these), its
+/// open wall contacts (wall, contact), kept apart from its load so that the passes that
+/// do not need them do not carry them, and whether it has one open.
+struct Bodies {
+    states: Vec<State>,
+    loads: Vec<Load>,
+    inverses: Vec<(f64, f64)>,
+    open_walls: Vec<Vec<(usize, Open)>>,
+    /// Whether each particle has a wall contact open (its `open_walls` entry is not
+    /// empty): set by the wall pass after each particle's contacts, the only place they
+    /// change (a particle the pass skips had none, nor has it now), and read by the
+    /// drift as this byte, not the 24-byte vector, which at 10⁵ particles is memory the
+    /// drift's stream need not carry (docs/performance-history.md, "Eighth round").
+    walled: Vec<bool>,
+}
+
+/// What may touch: the candidate pairs, with their open contacts, and, without a wall
+/// index, the walls near each particle, found with them.
+struct Broad {
+    candidates: PairList,
+    near: Option<NearWalls>,
+}
+
+/// The bodies that move as wholes: reactive assemblies (SSDEM only, as in pkdgrav),
+/// when the plan has them, and pkdgrav's rigid aggregates of particles (`AGGS`,
+/// docs/pkdgrav-physics.md §9), if any.
+struct Rigid {
+    assemblies: Vec<Assembly>,
+    aggregates: Option<Aggregates>,
+}
+
+/// Where the run is: its time and the steps taken.
+#[derive(Clone, Copy)]
+struct Clock {
     t: f64,
     steps: u64,
+}
+
+/// A soft-sphere run as it goes, in named sets: what set-up decided ([`Rules`]), the
+/// particles ([`Bodies`]), the walls ([`WallSet`]), what may touch ([`Broad`]), the
+/// assemblies and aggregates ([`Rigid`]), the kicks deferred ([`Deferred`]), the passes'
+/// scratch ([`PairPass`], [`WallPass`]) and what the run has seen ([`Journal`]). A step
+/// is [`SoftStepper::step`]: each of its stages a function of the sets it touches.
+struct SoftStepper<'a> {
+    rules: Rules<'a>,
+    bodies: Bodies,
+    walls: WallSet,
+    broad: Broad,
+    rigid: Rigid,
+    deferred: Deferred,
+    pair_pass: PairPass,
+    wall_pass: WallPass,
+    journal: Journal,
+    clock: Clock,
+    /// The energy at the start.
+    initial: f64,
+    /// Set up failed (an aggregate of one member): the run stops before it starts.
+    halted: bool,
 }
 
 impl<'a> SoftStepper<'a> {
@@ -338,235 +292,124 @@ impl<'a> SoftStepper<'a> {
     /// first kick uses and steps the springs of those contacts once; it moves and kicks
     /// nothing.
     fn start(&mut self) -> Flow {
-        let kicks = self.kicks;
-        self.kicks = kicks.at_start();
-        self.place_assemblies();
-        let mut flow = Flow::Continue;
-        if self.plan.particle_contacts
-            && self.settings.forces
-            && self.states.len() > 1
-            && self.pair_contacts() == Flow::Stop
-        {
-            flow = Flow::Stop;
+        let kicks = self.rules.kicks;
+        self.rules.kicks = kicks.at_start();
+        rigid::place_assemblies(&self.rigid.assemblies, &mut self.walls, self.rules.scene);
+        let flow = self.contacts();
+        if flow.is_some() {
+            rigid::sum_reactions(&mut self.rigid.assemblies, &self.wall_pass);
+            rigid::gather_aggregates(&mut self.rigid, &self.bodies, &self.rules, false);
         }
-        if flow == Flow::Continue {
-            self.wall_contacts();
-            flow = self.note_wall_contacts();
-            self.sum_reactions();
-            self.gather_aggregates(false);
-        }
-        self.kicks = kicks;
-        flow
+        self.rules.kicks = kicks;
+        flow.unwrap_or(Flow::Stop)
     }
 
     /// Whether another step is due before the end.
     fn running(&self) -> bool {
-        self.settings.due(self.steps)
+        self.rules.settings.due(self.clock.steps)
     }
 
-    /// One step: the walls moved on, kick and drift (with the last step's owed kicks),
-    /// the assemblies moved on, the forces of the
-    /// particle contacts and then of the wall contacts (with the closing kick), what
-    /// they did, and the assemblies' closing kick.
+    /// One step, each stage a function of the sets it touches: the walls moved on, kick
+    /// and drift (with the last step's owed kicks), the aggregates and assemblies moved
+    /// on, the lists found again if stale, the contacts ([`SoftStepper::contacts`]), and
+    /// the assemblies' and aggregates' closing kick.
     fn step(&mut self) -> Flow {
+        let SoftStepper {
+            rules,
+            bodies,
+            walls,
+            broad,
+            rigid,
+            deferred,
+            clock,
+            ..
+        } = self;
         // The walls first (they do not depend on the particles): the drift finds which
         // particles are out of their reach where they stand this step.
-        self.move_walls();
+        move_walls(walls, clock, rules);
         // The drift compiled without pkdgrav's `dAccCrit` and with it: its test and its
         // call in the loop cost the common case about 3 % of the run
         // (docs/performance-history.md, "Twelfth round").
-        if self.deferred.owed_kick.acc_crit > 0.0 {
-            self.kick_drift::<true>();
+        if deferred.owed_kick.acc_crit > 0.0 {
+            drift::kick_drift::<true>(bodies, deferred, broad, walls, rules);
         } else {
-            self.kick_drift::<false>();
+            drift::kick_drift::<false>(bodies, deferred, broad, walls, rules);
         }
-        self.move_aggregates();
-        if self.kicks.pkdgrav_levers {
-            self.carry_stuck();
+        rigid::move_aggregates(rigid, &mut bodies.states, rules);
+        if rules.kicks.pkdgrav_levers {
+            carry_stuck(&mut bodies.states, broad, walls, rules);
         }
-        self.move_assemblies();
-        near::update_lists(
-            &mut self.candidates,
-            &mut self.near,
-            &self.states,
-            &self.walls.now,
-        );
-        if self.plan.particle_contacts
-            && self.settings.forces
-            && self.states.len() > 1
-            && self.pair_contacts() == Flow::Stop
-        {
+        rigid::move_assemblies(rigid, walls, rules);
+        let (states, now) = (&bodies.states, &walls.now);
+        near::update_lists(&mut broad.candidates, &mut broad.near, states, now);
+        let Some(flow) = self.contacts() else {
             return Flow::Stop;
-        }
-        self.wall_contacts();
-        let flow = self.note_wall_contacts();
-        self.kick_assemblies();
-        self.gather_aggregates(true);
+        };
+        rigid::kick_assemblies(&mut self.rigid, &self.wall_pass, &self.rules);
+        rigid::gather_aggregates(&mut self.rigid, &self.bodies, &self.rules, true);
         flow
     }
 
-    /// pkdgrav's aggregates (docs/pkdgrav-physics.md §9.3): the opening half kick of each
-    /// centre, the drift (the rotation by Euler's equations, the centre with its
-    /// half-step velocity), and the members placed where it has taken them.
-    fn move_aggregates(&mut self) {
-        let Some(aggs) = self.aggregates.as_mut() else {
-            return;
-        };
-        let dt = self.settings.dt;
-        for a in &mut aggs.list {
-            a.kick(0.5 * dt);
-            a.advance(dt);
-            a.place(&mut self.states, dt);
-        }
-    }
-
-    /// Each aggregate's acceleration and torque from its members' loads
-    /// (docs/pkdgrav-physics.md §9.4), and, after a step's forces, its closing half kick.
-    fn gather_aggregates(&mut self, kick: bool) {
-        let Some(aggs) = self.aggregates.as_mut() else {
-            return;
-        };
-        let (g, dt) = (self.settings.gravity, self.settings.dt);
-        let loads = &self.loads;
-        for a in &mut aggs.list {
-            a.gather(&self.states, |i| (loads[i].force, loads[i].torque), &g);
-            if kick {
-                a.kick(0.5 * dt);
+    /// The forces of the particle contacts and then of the wall contacts (with the
+    /// closing kick), and what they did: whether the run goes on after the wall
+    /// contacts, or `None` when a pair's overlap is past pkdgrav's abort (the wall
+    /// contacts are not taken then).
+    fn contacts(&mut self) -> Option<Flow> {
+        let SoftStepper {
+            rules,
+            bodies,
+            walls,
+            broad,
+            rigid,
+            deferred,
+            pair_pass,
+            wall_pass,
+            journal,
+            clock,
+            ..
+        } = self;
+        let t = clock.t;
+        if pairs_meet(rules, bodies) {
+            let sets = (&mut broad.candidates, pair_pass, &mut *journal);
+            if pairs::pair_contacts(bodies, deferred, sets, rigid, rules, t) == Flow::Stop {
+                return None;
             }
         }
+        let near = broad.near.as_ref();
+        walls::wall_contacts(bodies, deferred, wall_pass, (walls, near), rigid, rules, t);
+        let flow =
+            walls::note_wall_contacts(wall_pass, journal, broad, bodies, walls, rigid, rules, t);
+        Some(flow)
     }
 
-    /// The clock moves on a step, and the moving walls with it.
-    fn move_walls(&mut self) {
-        let dt = self.settings.dt;
-        let pkdgrav = self.settings.integrator == Integrator::Pkdgrav;
-        if self.plan.moving_walls {
-            if pkdgrav {
-                self.walls.origins.advance_pkdgrav(self.scene, self.t, dt);
-            } else {
-                self.walls.origins.advance(self.scene, self.t, dt);
-            }
+    /// The first particle whose numbers overflowed in the last step, if any: in the
+    /// wall pass, or in a kick owed (given now unless surely finite).
+    fn not_finite(&mut self) -> Option<usize> {
+        if !drift::surely_finite(&self.deferred) {
+            drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
         }
-        self.steps += 1;
-        self.t = self.settings.next_time(self.t, self.steps);
-        if self.plan.moving_walls {
-            self.walls.now = if pkdgrav {
-                // pkdgrav's walls move at the velocity of half a step later (§5).
-                self.walls
-                    .origins
-                    .walls_pkdgrav(self.scene, self.t + 0.5 * dt)
-            } else {
-                self.walls.origins.walls(self.scene, self.t)
-            };
-        }
-    }
-
-    /// The particles stuck to walls carried with their walls' move, as pkdgrav moves
-    /// them in the wall move, before the forces (docs/pkdgrav-physics.md §6): with
-    /// [`Integrator::Pkdgrav`], which a particle meeting a stuck one then sees where the
-    /// wall has taken it.
-    fn carry_stuck(&mut self) {
-        // None is stuck until some particle is held ([`PairList::held`]): no pass then.
-        if !self.candidates.held {
-            return;
-        }
-        let dt = self.settings.dt;
-        for s in &mut self.states {
-            if let (true, Some(&(w, _))) = (s.alive, s.stuck_to.as_deref()) {
-                carry(s, &self.walls.now[w], dt);
-            }
-        }
-    }
-
-    /// Each assembly's half kick of momentum and angular momentum with the last step's
-    /// force and torque, its drift, and its free rotation over the step (kick-drift-kick
-    /// as for the particles); its walls are placed where it has taken them.
-    /// With [`Integrator::Pkdgrav`], pkdgrav's: the opening half kick of the velocity
-    /// alone, then [`Assembly::move_pkdgrav`] (docs/pkdgrav-physics.md §10).
-    fn move_assemblies(&mut self) {
-        let (g, dt) = (self.settings.gravity, self.settings.dt);
-        for a in self.assemblies.iter_mut() {
-            if a.is_pkdgrav() {
-                a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-                a.move_pkdgrav(dt);
-                continue;
-            }
-            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-            a.cog += a.velocity * dt;
-            a.kick(dt / 2.0);
-            let inertia = a.inertia;
-            crate::dynamics::rigid::step(
-                &mut a.rotation,
-                &inertia,
-                &Vec3::zeros(),
-                dt,
-                RotationIntegrator::AdaptiveRk,
-            );
-        }
-        self.place_assemblies();
-    }
-
-    /// Each assembly's walls placed where it has taken them, and its centre of gravity
-    /// noted.
-    fn place_assemblies(&mut self) {
-        for a in &self.assemblies {
-            for (k, &w) in a.walls.iter().enumerate() {
-                self.walls.now[w] = WallNow::placed(
-                    a.cog,
-                    a.shape(&self.scene[w].shape, k),
-                    a.velocity,
-                    a.spin(),
-                );
-            }
-        }
-        self.walls.cogs.clear();
-        self.walls
-            .cogs
-            .extend(self.assemblies.iter().map(|a| a.cog));
-    }
-
-    /// The particles' reactions on the assemblies, summed in particle order, and the
-    /// assemblies' closing half kick.
-    fn kick_assemblies(&mut self) {
-        let (g, dt) = (self.settings.gravity, self.settings.dt);
-        self.sum_reactions();
-        for a in self.assemblies.iter_mut() {
-            a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-            if !a.is_pkdgrav() {
-                a.kick(dt / 2.0);
-            }
-        }
-    }
-
-    /// The particles' reactions on the assemblies, summed in particle order.
-    fn sum_reactions(&mut self) {
-        for a in self.assemblies.iter_mut() {
-            a.force = Vec3::zeros();
-            a.torque = Vec3::zeros();
-        }
-        for (_, report) in self.reports.iter().flatten() {
-            for (a, f, tq) in &report.reactions {
-                self.assemblies[*a].force += f;
-                self.assemblies[*a].torque += tq;
-            }
-        }
-        for a in self.assemblies.iter_mut() {
-            a.note_torque_body();
+        let reported = (self.wall_pass.reports.iter().flatten())
+            .find(|(_, r)| r.not_finite)
+            .map(|(i, _)| *i);
+        match (reported, self.deferred.owed_bad) {
+            (Some(i), Some(j)) => Some(i.min(j)),
+            (i, j) => i.or(j),
         }
     }
 
     /// What the run came to, and why it `stopped` early (besides pkdgrav's aborts,
     /// which the warnings say).
     fn outcome(mut self, stopped: Option<super::Stop>) -> Outcome {
-        self.settle();
-        let g = self.settings.gravity;
-        let last = energy(&self.states, &g) + assembly_energy(&self.assemblies, &g);
+        drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
+        let g = self.rules.settings.gravity;
+        let assemblies = self.rigid.assemblies;
+        let last = energy(&self.bodies.states, &g) + assembly_energy(&assemblies, &g);
         Outcome {
-            t: self.t,
-            steps: self.steps - self.settings.start_step,
-            particles: self.states,
+            t: self.clock.t,
+            steps: self.clock.steps - self.rules.settings.start_step,
+            particles: self.bodies.states,
             events: self.journal.events,
-            assemblies: self.assemblies,
+            assemblies,
             pair_contacts: self.journal.pair_contacts,
             energy: (self.initial, last),
             warnings: self.journal.warnings,
@@ -575,11 +418,58 @@ impl<'a> SoftStepper<'a> {
     }
 }
 
+/// Whether the particles meet each other in this run: the plan has particle contacts,
+/// forces are on (`bDoGravity`) and there are two particles or more.
+fn pairs_meet(rules: &Rules, bodies: &Bodies) -> bool {
+    rules.plan.particle_contacts && rules.settings.forces && bodies.states.len() > 1
+}
+
+/// The clock moves on a step, and the moving walls with it.
+fn move_walls(walls: &mut WallSet, clock: &mut Clock, rules: &Rules) {
+    let (scene, settings) = (rules.scene, rules.settings);
+    let dt = settings.dt;
+    let pkdgrav = settings.integrator == Integrator::Pkdgrav;
+    if rules.plan.moving_walls {
+        if pkdgrav {
+            walls.origins.advance_pkdgrav(scene, clock.t, dt);
+        } else {
+            walls.origins.advance(scene, clock.t, dt);
+        }
+    }
+    clock.steps += 1;
+    clock.t = settings.next_time(clock.t, clock.steps);
+    if rules.plan.moving_walls {
+        walls.now = if pkdgrav {
+            // pkdgrav's walls move at the velocity of half a step later (§5).
+            walls.origins.walls_pkdgrav(scene, clock.t + 0.5 * dt)
+        } else {
+            walls.origins.walls(scene, clock.t)
+        };
+    }
+}
+
+/// The particles stuck to walls carried with their walls' move, as pkdgrav moves them
+/// in the wall move, before the forces (docs/pkdgrav-physics.md §6): with
+/// [`Integrator::Pkdgrav`], which a particle meeting a stuck one then sees where the
+/// wall has taken it.
+fn carry_stuck(states: &mut [State], broad: &Broad, walls: &WallSet, rules: &Rules) {
+    // None is stuck until some particle is held ([`PairList::held`]): no pass then.
+    if !broad.candidates.held {
+        return;
+    }
+    let dt = rules.settings.dt;
+    for s in states {
+        if let (true, Some(&(w, _))) = (s.alive, s.stuck_to.as_deref()) {
+            carry(s, &walls.now[w], dt);
+        }
+    }
+}
+
 impl super::Snapshot for SoftStepper<'_> {
-    /// The particles after the kicks owed ([`SoftStepper::settle`]).
+    /// The particles after the kicks owed ([`drift::settle`]).
     fn look(&mut self) -> (&[State], &[Assembly]) {
-        self.settle();
-        (&self.states, &self.assemblies)
+        drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
+        (&self.bodies.states, &self.rigid.assemblies)
     }
 }
 
@@ -609,12 +499,12 @@ pub(super) fn run(
         // A step whose numbers overflowed is not shown to the observer: what it writes
         // ends at the last step whose numbers are all finite.
         let not_finite = run.not_finite();
-        let assembly = run.assemblies.iter().find(|a| !a.finite());
+        let assembly = run.rigid.assemblies.iter().find(|a| !a.finite());
         if let Some(number) = assembly.map(|a| a.number) {
             return run.outcome(Some(super::Stop::AssemblyNotFinite(number)));
         }
         if not_finite.is_none() {
-            observe(run.steps, run.t, &mut run);
+            observe(run.clock.steps, run.clock.t, &mut run);
         }
         if let Some(stop) = super::halt_at(not_finite, interrupted) {
             return run.outcome(Some(stop));

@@ -1,326 +1,364 @@
-//! The pair pass of the soft-sphere run: which candidate pairs touch
-//! ([`SoftStepper::scan_pairs`]), pkdgrav's overlap checks, and the forces of the
-//! contacts ([`SoftStepper::pair_forces`]), one at a time ([`PairContext::force`]) or four
-//! at a time ([`PairContext::force_lanes`]), on one thread or many.
+//! The pair pass of the soft-sphere run ([`pair_contacts`]): which candidate pairs touch
+//! ([`scan_pairs`]), pkdgrav's overlap checks, and the forces of the contacts, one at a
+//! time ([`PairContext::force`]) or four at a time ([`PairContext::force_lanes`]), on one
+//! thread or many; and the particles' material as the pass uses it ([`PairMaterial`]).
 
-use super::{Flow, Kicks, Law, Load, Overlapping, Settings, SoftStepper, State, Vec3, inertia};
+use super::law::Side;
+use super::{
+    Bodies, ContactLaw, Deferred, Flow, Journal, Kicks, Law, Load, Overlapping, Rigid, Rules,
+    Settings, State, Vec3, inertia,
+};
 use crate::broad::pairs::{NO_CONTACT, PairList};
 use crate::contact::lanes::{self, LANES};
 use crate::contact::ssdem::{
-    ConstantTorque, Dashpot, Material, Optional, Record, Restitution, Rolling, Touch, contact,
-    damping_per_root_mass, dashpot_contact_with, lever_contact_radius, normal_contact, resistance,
+    Dashpot, Material, Optional, Record, Restitution, Rolling, Touch, contact,
+    damping_per_root_mass, dashpot_contact_with, normal_contact, resistance,
 };
+use crate::dynamics::aggregate::Aggregates;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use rayon::prelude::*;
 
-impl SoftStepper<'_> {
-    /// Adds the forces and torques of every overlapping pair of particles (free ones,
-    /// or a free one and one held by a wall) to their loads, and closes the contacts
-    /// not seen; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
-    pub(super) fn pair_contacts(&mut self) -> Flow {
-        self.pair_forces()
-    }
+/// The particles' material for their contacts with each other, with its constants
+/// worked out once at set-up.
+pub(super) struct PairMaterial {
+    pub(super) mat: Material,
+    /// The normal and tangential restitutions.
+    restitution: (Restitution, Restitution),
+    /// A reduced mass and the damping coefficients (C_n, C_t) of a contact of that
+    /// reduced mass: a contact of that mass (two free particles of the first one's mass;
+    /// in a run of one size, every contact) takes them rather than two square roots.
+    damping: Option<(f64, (f64, f64))>,
+}
 
-    /// The forces of the candidate pairs that overlap: which overlap, in the list's
-    /// order (their overlaps checked, their contacts opened and the others' closed);
-    /// then their forces, added to each load in the list's order. On one thread each
-    /// record is changed in place and each force added at once; in parallel, the
-    /// records are laid out anew in the order of the pairs that touch, and each range
-    /// of particles takes its forces in the list's order. The outcome does not depend
-    /// on the threads.
-    pub(super) fn pair_forces(&mut self) -> Flow {
-        self.scan_pairs();
-        // …then, in the list's order, the overlaps checked (a deep one may stop the run,
-        // before any contact is opened or closed)…
-        if self.check_overlaps() {
-            return Flow::Stop;
-        }
-        let PairList {
-            pairs,
-            slots,
-            contacts,
-            spheres,
-            ..
-        } = &mut self.candidates;
-        let PairPass {
-            touching,
-            forces,
-            scans,
-            from,
-            bounds,
-        } = &mut self.pair_pass;
-        // …and the contacts closed and opened.
-        touching.clear();
-        from.clear();
-        for scan in scans.iter() {
-            if !self.parallel {
-                for &k in &scan.apart {
-                    contacts.close(&mut slots[k as usize]);
-                }
-                for &(k, _) in &scan.touching {
-                    contacts.open(&mut slots[k as usize], &mut self.journal.pair_contacts);
-                    touching.push(k);
-                }
-                continue;
-            }
-            // In parallel, this step's records are laid out anew in the order of the
-            // pairs that touch: each comes from its slot in the last step's (`from`).
-            for &k in &scan.apart {
-                slots[k as usize] = NO_CONTACT;
-            }
-            for &(k, _) in &scan.touching {
-                let slot = &mut slots[k as usize];
-                self.journal.pair_contacts += u64::from(*slot == NO_CONTACT);
-                from.push(*slot);
-                *slot = touching.len() as u32;
-                touching.push(k);
-            }
-        }
-        // The loads these forces go to, marked when few (`Deferred::loaded`).
-        self.deferred.marks_valid = 8 * touching.len() <= self.states.len();
-        if self.deferred.marks_valid {
-            for &k in touching.iter() {
-                let (i, j) = pairs[k as usize];
-                self.deferred.loaded[i as usize] = true;
-                self.deferred.loaded[j as usize] = true;
-            }
-        }
-        let states = &self.states;
-        let mat = &self.between;
+impl PairMaterial {
+    /// The material `mat` between the particles `states`.
+    pub(super) fn new(mat: Material, states: &[State]) -> PairMaterial {
         let (eps_n, eps_t) = (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t));
-        let context = PairContext {
-            states,
-            settings: self.settings,
-            plan: self.plan,
-            kicks: self.kicks,
-            law: self.law,
+        let damping = states.first().map(|s| {
+            let m = s.particle.mass;
+            let reduced = m * m / (m + m);
+            let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
+            (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
+        });
+        PairMaterial {
             mat,
             restitution: (eps_n, eps_t),
-            damping: states.first().map(|s| {
-                // Two free particles of the first one's mass (in a run of one size, every
-                // contact).
-                let m = s.particle.mass;
-                let reduced = m * m / (m + m);
-                let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
-                (reduced, (damping(eps_n, mat.k_n), damping(eps_t, mat.k_t)))
-            }),
-            optional: &self.optional,
-        };
-        let loads = &mut self.loads;
-        // What the forces could add to an owed kick (`SoftStepper::surely_finite`): the
-        // sum of their sizes, block by block, the same on any number of threads.
-        let mut bound = 0.0;
-        if !self.parallel {
-            // One thread: each contact's record changed where it lies, and its force
-            // added at once, in the list's order.
-            let lanes = context.lanes();
-            for block in touching.chunks(BOUND_BLOCK) {
-                let list = (block, pairs.as_slice(), slots.as_slice());
-                let on = (
-                    spheres.as_slice(),
-                    &mut contacts.records[..],
-                    &mut loads[..],
-                );
-                bound += pair_block(&context, lanes.as_ref(), list, on);
-            }
-            self.deferred.force_bound += bound;
-            return Flow::Continue;
+            damping,
         }
-        // In parallel: the new records, in the order of the pairs that touch, each from
-        // its last slot (a new contact's from nothing), and the forces beside them…
+    }
+}
+
+/// The forces of the candidate pairs that overlap: which overlap, in the list's
+/// order (their overlaps checked, their contacts opened and the others' closed);
+/// then their forces, added to each load in the list's order. On one thread each
+/// record is changed in place and each force added at once; in parallel, the
+/// records are laid out anew in the order of the pairs that touch, and each range
+/// of particles takes its forces in the list's order. The outcome does not depend
+/// on the threads.
+pub(super) fn pair_contacts(
+    bodies: &mut Bodies,
+    deferred: &mut Deferred,
+    (candidates, pair_pass, journal): (&mut PairList, &mut PairPass, &mut Journal),
+    rigid: &Rigid,
+    rules: &Rules,
+    t: f64,
+) -> Flow {
+    let aggregates = rigid.aggregates.as_ref();
+    scan_pairs(
+        &bodies.states,
+        candidates,
+        pair_pass,
+        journal,
+        aggregates,
+        rules.parallel,
+    );
+    // …then, in the list's order, the overlaps checked (a deep one may stop the run,
+    // before any contact is opened or closed)…
+    if check_overlaps(candidates, pair_pass, journal, t) {
+        return Flow::Stop;
+    }
+    let PairList {
+        pairs,
+        slots,
+        contacts,
+        spheres,
+        ..
+    } = candidates;
+    let PairPass {
+        touching,
+        forces,
+        scans,
+        from,
+        bounds,
+    } = pair_pass;
+    // …and the contacts closed and opened.
+    touching.clear();
+    from.clear();
+    for scan in scans.iter() {
+        if !rules.parallel {
+            for &k in &scan.apart {
+                contacts.close(&mut slots[k as usize]);
+            }
+            for &(k, _) in &scan.touching {
+                contacts.open(&mut slots[k as usize], &mut journal.pair_contacts);
+                touching.push(k);
+            }
+            continue;
+        }
+        // In parallel, this step's records are laid out anew in the order of the
+        // pairs that touch: each comes from its slot in the last step's (`from`).
+        for &k in &scan.apart {
+            slots[k as usize] = NO_CONTACT;
+        }
+        for &(k, _) in &scan.touching {
+            let slot = &mut slots[k as usize];
+            journal.pair_contacts += u64::from(*slot == NO_CONTACT);
+            from.push(*slot);
+            *slot = touching.len() as u32;
+            touching.push(k);
+        }
+    }
+    // The loads these forces go to, marked when few (`Deferred::loaded`).
+    deferred.marks_valid = 8 * touching.len() <= bodies.states.len();
+    if deferred.marks_valid {
+        for &k in touching.iter() {
+            let (i, j) = pairs[k as usize];
+            deferred.loaded[i as usize] = true;
+            deferred.loaded[j as usize] = true;
+        }
+    }
+    let context = PairContext {
+        states: &bodies.states,
+        settings: rules.settings,
+        plan: rules.plan,
+        kicks: rules.kicks,
+        contact: rules.contact,
+        between: &rules.between,
+        optional: &rules.optional,
+    };
+    let loads = &mut bodies.loads;
+    // What the forces could add to an owed kick (`super::drift::surely_finite`): the
+    // sum of their sizes, block by block, the same on any number of threads.
+    let mut bound = 0.0;
+    if !rules.parallel {
+        // One thread: each contact's record changed where it lies, and its force
+        // added at once, in the list's order.
         let lanes = context.lanes();
-        let n = touching.len();
-        // (Every place is written below: only the places past the last step's length
-        // are filled first.)
-        contacts.next.resize(n, Record::default());
-        forces.resize(n, PairForce::default());
-        let last = contacts.records.as_slice();
-        (contacts.next.par_chunks_mut(PAIR_CHUNK))
-            .zip(forces.par_chunks_mut(PAIR_CHUNK))
-            .zip(
-                touching
-                    .par_chunks(PAIR_CHUNK)
-                    .zip(from.par_chunks(PAIR_CHUNK)),
-            )
-            .for_each(|((records, forces), (ks, from))| {
-                let list = (pairs.as_slice(), last);
-                pair_chunk(
-                    &context,
-                    lanes.as_ref(),
-                    (ks, from),
-                    list,
-                    spheres,
-                    (records, forces),
-                );
-            });
-        std::mem::swap(&mut contacts.records, &mut contacts.next);
-        contacts.free.clear();
-        // …the bound, block by block as on one thread…
-        (forces.par_chunks(BOUND_BLOCK))
-            .map(|block| block.iter().fold(0.0, |sum, f| sum + f.size()))
-            .collect_into_vec(bounds);
-        for sum in bounds.iter() {
-            bound += sum;
+        for block in touching.chunks(BOUND_BLOCK) {
+            let list = (block, pairs.as_slice(), slots.as_slice());
+            let on = (
+                spheres.as_slice(),
+                &mut contacts.records[..],
+                &mut loads[..],
+            );
+            bound += pair_block(&context, lanes.as_ref(), list, on);
         }
-        self.deferred.force_bound += bound;
-        // …and each range of particles takes the forces on its own in the list's
-        // order, so that each load adds them as on one thread.
-        let range = loads.len().div_ceil(rayon::current_num_threads()).max(1);
-        let pairs = pairs.as_slice();
-        loads
-            .par_chunks_mut(range)
-            .enumerate()
-            .for_each(|(c, part)| {
-                for (&k, f) in touching.iter().zip(forces.iter()) {
-                    let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-                    f.add_to(part, c * range, i, j);
-                }
-            });
-        Flow::Continue
+        deferred.force_bound += bound;
+        return Flow::Continue;
     }
-
-    /// Which candidate pairs touch (with their overlaps as fractions of the smaller
-    /// radius) and which open contacts ended, in chunks of the list (in parallel for
-    /// many particles), in [`PairPass::scans`].
-    pub(super) fn scan_pairs(&mut self) {
-        let states = &self.states;
-        let aggregates = self.aggregates.as_ref();
-        let PairList {
-            pairs,
-            slots,
-            spheres,
-            held,
-            gone,
-            uniform,
-            ..
-        } = &mut self.candidates;
-        let scans = &mut self.pair_pass.scans;
-        let some_unfree = *held || *gone;
-        // An overlap above this is one the ordered check must see (a NaN it would not
-        // act on).
-        let quiet = self.journal.overlaps.quiet_up_to();
-        // (In chunks on one thread too: the overlaps' check looks again only at those
-        // with a deep one.)
-        let size = pairs.len().div_ceil(SCAN_CHUNKS).max(1);
-        scans.resize_with(pairs.len().div_ceil(size), Scan::default);
-        // Plain slices in the loop (not the list's vectors behind references, which the
-        // compiler would read again at every pair).
-        let (list, open, centres) = (pairs.as_slice(), slots.as_slice(), spheres.as_slice());
-        let uniform = *uniform;
-        // Whether a pair is out of the test's reach besides its distance: members of one
-        // aggregate never meet (docs/pkdgrav-physics.md §9.1); a particle stuck to a wall
-        // is an obstacle of infinite mass (pkdgrav's rule), and two stuck ones, or a
-        // removed one, meet nothing. (The states are read only once some particle is
-        // held or gone.)
-        let unmet = |i: usize, j: usize| {
-            aggregates.is_some_and(|a| a.same(i, j))
-                || (some_unfree
-                    && (!states[i].alive
-                        || !states[j].alive
-                        || !(states[i].free() || states[j].free())))
-        };
-        // One pair (spheres `a` and `b`, the sum of their radii `reach`, and `beyond`,
-        // the square of the distance past which they are surely apart: the sum with a
-        // margin for round-off): apart, and its contact if open ends; or touching, with
-        // its overlap as a fraction of the smaller radius, which pkdgrav's warnings and
-        // abort judge. Whether that overlap is one the ordered check must see.
-        #[inline(always)]
-        fn test(
-            scan: &mut Scan,
-            k: usize,
-            (a, b): (&[f64; 4], &[f64; 4]),
-            (reach, beyond): (f64, f64),
-            (open, quiet): (bool, f64),
-            unmet: impl Fn() -> bool,
-        ) -> bool {
-            // Most candidates do not touch: the square of the distance tells (as
-            // [`separation`] has it, without its square root for the many apart); the
-            // contact, if open, ends.
-            let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
-            let overlap = if d2 > beyond || unmet() {
-                0.0
-            } else {
-                reach - d2.sqrt()
-            };
-            if overlap <= 0.0 {
-                if open {
-                    scan.apart.push(k as u32);
-                }
-                false
-            } else {
-                let fraction = overlap / a[3].min(b[3]);
-                scan.touching.push((k as u32, fraction));
-                fraction > quiet
-            }
-        }
-        let scan = |(c, scan): (usize, &mut Scan)| {
-            scan.touching.clear();
-            scan.apart.clear();
-            let mut deep = false;
-            let first = c * size;
-            let end = (first + size).min(list.len());
-            let pairs = (first..end).zip(list[first..end].iter().zip(&open[first..end]));
-            match uniform {
-                // Every particle of one radius: the reach and its square worked out once,
-                // the same numbers as for each pair (10 % of the test's instructions).
-                Some(reach) => {
-                    let beyond = reach * reach * (1.0 + 1e-9);
-                    for (k, (&(i, j), &slot)) in pairs {
-                        let (i, j) = (i as usize, j as usize);
-                        let spheres = (&centres[i], &centres[j]);
-                        let open = (slot != NO_CONTACT, quiet);
-                        deep |= test(scan, k, spheres, (reach, beyond), open, || unmet(i, j));
-                    }
-                }
-                None => {
-                    for (k, (&(i, j), &slot)) in pairs {
-                        let (i, j) = (i as usize, j as usize);
-                        let (a, b) = (&centres[i], &centres[j]);
-                        let reach = a[3] + b[3];
-                        let beyond = reach * reach * (1.0 + 1e-9);
-                        let open = (slot != NO_CONTACT, quiet);
-                        deep |= test(scan, k, (a, b), (reach, beyond), open, || unmet(i, j));
-                    }
-                }
-            }
-            scan.deep = deep;
-        };
-        if self.parallel {
-            scans.par_iter_mut().enumerate().for_each(scan);
-        } else {
-            scans.iter_mut().enumerate().for_each(scan);
-        }
+    // In parallel: the new records, in the order of the pairs that touch, each from
+    // its last slot (a new contact's from nothing), and the forces beside them…
+    let lanes = context.lanes();
+    let n = touching.len();
+    // (Every place is written below: only the places past the last step's length
+    // are filled first.)
+    contacts.next.resize(n, Record::default());
+    forces.resize(n, PairForce::default());
+    let last = contacts.records.as_slice();
+    (contacts.next.par_chunks_mut(PAIR_CHUNK))
+        .zip(forces.par_chunks_mut(PAIR_CHUNK))
+        .zip(
+            touching
+                .par_chunks(PAIR_CHUNK)
+                .zip(from.par_chunks(PAIR_CHUNK)),
+        )
+        .for_each(|((records, forces), (ks, from))| {
+            let list = (pairs.as_slice(), last);
+            pair_chunk(
+                &context,
+                lanes.as_ref(),
+                (ks, from),
+                list,
+                spheres,
+                (records, forces),
+            );
+        });
+    std::mem::swap(&mut contacts.records, &mut contacts.next);
+    contacts.free.clear();
+    // …the bound, block by block as on one thread…
+    (forces.par_chunks(BOUND_BLOCK))
+        .map(|block| block.iter().fold(0.0, |sum, f| sum + f.size()))
+        .collect_into_vec(bounds);
+    for sum in bounds.iter() {
+        bound += sum;
     }
-
-    /// pkdgrav's overlap warnings and abort for the pairs that touch, in the list's
-    /// order (only the chunks with an overlap they may act on are looked at); true when
-    /// one stops the run. The contacts the pairs before that one would have opened this
-    /// step are counted, as pkdgrav counts them before it aborts, though none is opened:
-    /// the run ends there (the stepper is not stepped again).
-    pub(super) fn check_overlaps(&mut self) -> bool {
-        let PairList { pairs, slots, .. } = &self.candidates;
-        let scans = &self.pair_pass.scans;
-        for (c, scan) in scans.iter().enumerate().filter(|(_, scan)| scan.deep) {
-            for (n, &(k, fraction)) in scan.touching.iter().enumerate() {
+    deferred.force_bound += bound;
+    // …and each range of particles takes the forces on its own in the list's
+    // order, so that each load adds them as on one thread.
+    let range = loads.len().div_ceil(rayon::current_num_threads()).max(1);
+    let pairs = pairs.as_slice();
+    loads
+        .par_chunks_mut(range)
+        .enumerate()
+        .for_each(|(c, part)| {
+            for (&k, f) in touching.iter().zip(forces.iter()) {
                 let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-                let what = Overlapping::Particles(i, j);
-                if self
-                    .journal
-                    .overlaps
-                    .check(fraction, what, self.t, &mut self.journal.warnings)
-                {
-                    // The contacts the pairs before it opened.
-                    let before = scans[..c].iter().flat_map(|s| &s.touching);
-                    let opened = before.chain(&scan.touching[..n]);
-                    let opened = opened.filter(|(k, _)| slots[*k as usize] == NO_CONTACT);
-                    self.journal.pair_contacts += opened.count() as u64;
-                    return true;
+                f.add_to(part, c * range, i, j);
+            }
+        });
+    Flow::Continue
+}
+
+/// Which candidate pairs touch (with their overlaps as fractions of the smaller
+/// radius) and which open contacts ended, in chunks of the list (in parallel for
+/// many particles), in [`PairPass::scans`].
+pub(super) fn scan_pairs(
+    states: &[State],
+    candidates: &mut PairList,
+    pair_pass: &mut PairPass,
+    journal: &Journal,
+    aggregates: Option<&Aggregates>,
+    parallel: bool,
+) {
+    let PairList {
+        pairs,
+        slots,
+        spheres,
+        held,
+        gone,
+        uniform,
+        ..
+    } = candidates;
+    let scans = &mut pair_pass.scans;
+    let some_unfree = *held || *gone;
+    // An overlap above this is one the ordered check must see (a NaN it would not
+    // act on).
+    let quiet = journal.overlaps.quiet_up_to();
+    // (In chunks on one thread too: the overlaps' check looks again only at those
+    // with a deep one.)
+    let size = pairs.len().div_ceil(SCAN_CHUNKS).max(1);
+    scans.resize_with(pairs.len().div_ceil(size), Scan::default);
+    // Plain slices in the loop (not the list's vectors behind references, which the
+    // compiler would read again at every pair).
+    let (list, open, centres) = (pairs.as_slice(), slots.as_slice(), spheres.as_slice());
+    let uniform = *uniform;
+    // Whether a pair is out of the test's reach besides its distance: members of one
+    // aggregate never meet (docs/pkdgrav-physics.md §9.1); a particle stuck to a wall
+    // is an obstacle of infinite mass (pkdgrav's rule), and two stuck ones, or a
+    // removed one, meet nothing. (The states are read only once some particle is
+    // held or gone.)
+    let unmet = |i: usize, j: usize| {
+        aggregates.is_some_and(|a| a.same(i, j))
+            || (some_unfree
+                && (!states[i].alive
+                    || !states[j].alive
+                    || !(states[i].free() || states[j].free())))
+    };
+    // One pair (spheres `a` and `b`, the sum of their radii `reach`, and `beyond`,
+    // the square of the distance past which they are surely apart: the sum with a
+    // margin for round-off): apart, and its contact if open ends; or touching, with
+    // its overlap as a fraction of the smaller radius, which pkdgrav's warnings and
+    // abort judge. Whether that overlap is one the ordered check must see.
+    #[inline(always)]
+    fn test(
+        scan: &mut Scan,
+        k: usize,
+        (a, b): (&[f64; 4], &[f64; 4]),
+        (reach, beyond): (f64, f64),
+        (open, quiet): (bool, f64),
+        unmet: impl Fn() -> bool,
+    ) -> bool {
+        // Most candidates do not touch: the square of the distance tells (as
+        // [`separation`] has it, without its square root for the many apart); the
+        // contact, if open, ends.
+        let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
+        let overlap = if d2 > beyond || unmet() {
+            0.0
+        } else {
+            reach - d2.sqrt()
+        };
+        if overlap <= 0.0 {
+            if open {
+                scan.apart.push(k as u32);
+            }
+            false
+        } else {
+            let fraction = overlap / a[3].min(b[3]);
+            scan.touching.push((k as u32, fraction));
+            fraction > quiet
+        }
+    }
+    let scan = |(c, scan): (usize, &mut Scan)| {
+        scan.touching.clear();
+        scan.apart.clear();
+        let mut deep = false;
+        let first = c * size;
+        let end = (first + size).min(list.len());
+        let pairs = (first..end).zip(list[first..end].iter().zip(&open[first..end]));
+        match uniform {
+            // Every particle of one radius: the reach and its square worked out once,
+            // the same numbers as for each pair (10 % of the test's instructions).
+            Some(reach) => {
+                let beyond = reach * reach * (1.0 + 1e-9);
+                for (k, (&(i, j), &slot)) in pairs {
+                    let (i, j) = (i as usize, j as usize);
+                    let spheres = (&centres[i], &centres[j]);
+                    let open = (slot != NO_CONTACT, quiet);
+                    deep |= test(scan, k, spheres, (reach, beyond), open, || unmet(i, j));
+                }
+            }
+            None => {
+                for (k, (&(i, j), &slot)) in pairs {
+                    let (i, j) = (i as usize, j as usize);
+                    let (a, b) = (&centres[i], &centres[j]);
+                    let reach = a[3] + b[3];
+                    let beyond = reach * reach * (1.0 + 1e-9);
+                    let open = (slot != NO_CONTACT, quiet);
+                    deep |= test(scan, k, (a, b), (reach, beyond), open, || unmet(i, j));
                 }
             }
         }
-        false
+        scan.deep = deep;
+    };
+    if parallel {
+        scans.par_iter_mut().enumerate().for_each(scan);
+    } else {
+        scans.iter_mut().enumerate().for_each(scan);
     }
+}
+
+/// pkdgrav's overlap warnings and abort for the pairs that touch, in the list's
+/// order (only the chunks with an overlap they may act on are looked at); true when
+/// one stops the run. The contacts the pairs before that one would have opened this
+/// step are counted, as pkdgrav counts them before it aborts, though none is opened:
+/// the run ends there (the stepper is not stepped again).
+pub(super) fn check_overlaps(
+    candidates: &PairList,
+    pair_pass: &PairPass,
+    journal: &mut Journal,
+    t: f64,
+) -> bool {
+    let PairList { pairs, slots, .. } = candidates;
+    let scans = &pair_pass.scans;
+    for (c, scan) in scans.iter().enumerate().filter(|(_, scan)| scan.deep) {
+        for (n, &(k, fraction)) in scan.touching.iter().enumerate() {
+            let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
+            let what = Overlapping::Particles(i, j);
+            if journal
+                .overlaps
+                .check(fraction, what, t, &mut journal.warnings)
+            {
+                // The contacts the pairs before it opened.
+                let before = scans[..c].iter().flat_map(|s| &s.touching);
+                let opened = before.chain(&scan.touching[..n]);
+                let opened = opened.filter(|(k, _)| slots[*k as usize] == NO_CONTACT);
+                journal.pair_contacts += opened.count() as u64;
+                return true;
+            }
+        }
+    }
+    false
 }
 
 /// Into how many chunks the candidate pairs are cut to find (in parallel, with many
@@ -356,7 +394,7 @@ pub(super) struct PairPass {
 }
 
 /// How many touching pairs' force sizes are summed in order before the sum is added to
-/// the bound ([`SoftStepper::surely_finite`]): the blocks in parallel, the same sums.
+/// the bound ([`super::drift::surely_finite`]): the blocks in parallel, the same sums.
 pub(super) const BOUND_BLOCK: usize = 4096;
 
 /// The force of one particle contact and its torques on particles i and j, and
@@ -513,15 +551,8 @@ pub(super) struct PairContext<'a> {
     settings: &'a Settings,
     plan: &'a Plan,
     kicks: Kicks,
-    /// The contact law.
-    law: Law,
-    mat: &'a Material,
-    /// The particles' normal and tangential restitutions.
-    restitution: (Restitution, Restitution),
-    /// A reduced mass and the damping coefficients (C_n, C_t) of a contact of that
-    /// reduced mass, worked out once a step: a contact of that mass (two free particles
-    /// of the first one's mass) takes them rather than two square roots.
-    damping: Option<(f64, (f64, f64))>,
+    contact: ContactLaw,
+    between: &'a PairMaterial,
     optional: &'a OptionalPhysics,
 }
 
@@ -532,7 +563,8 @@ impl PairContext<'_> {
     pub(super) fn lanes(&self) -> Option<lanes::Setting<'_>> {
         let settings = self.settings;
         let simd = lanes::Simd::new()?;
-        (self.law == Law::Pkdgrav
+        let between = self.between;
+        (self.contact.law == Law::Pkdgrav
             && !self.optional.any()
             && !settings.contact_radius
             && settings.build.rotation_dashpot)
@@ -540,10 +572,10 @@ impl PairContext<'_> {
                 simd,
                 dt: settings.dt,
                 predict: self.kicks.predict_all,
-                mat: self.mat,
+                mat: &between.mat,
                 sliding: settings.sliding,
-                restitution: self.restitution,
-                damping: self.damping,
+                restitution: between.restitution,
+                damping: between.damping,
             })
     }
 
@@ -621,7 +653,7 @@ impl PairContext<'_> {
         let states = self.states;
         let (p, q) = (&states[i].particle, &states[j].particle);
         let (free_i, free_j) = (states[i].free(), states[j].free());
-        let (dt, plan, mat) = (self.settings.dt, self.plan, self.mat);
+        let (dt, plan, mat) = (self.settings.dt, self.plan, &self.between.mat);
         let Kicks {
             predict_all,
             pkdgrav_levers,
@@ -659,13 +691,24 @@ impl PairContext<'_> {
             (true, false) => p.mass,
             _ => q.mass,
         };
-        if self.law == Law::Pkdgrav {
+        if self.contact.law == Law::Pkdgrav {
             // pkdgrav's contact law, in its frame: particle 1 is i, the normal points
             // towards j, velocities and spins are j's relative to i's
             // (docs/pkdgrav-physics.md §1.1–§1.5).
-            let a = (self.settings.contact_radius).then(|| lever_contact_radius(p.radius, li));
-            let reduced_radius = p.radius * q.radius / (p.radius + q.radius);
-            let legacy = self.settings.legacy_roll;
+            let a = self.contact.contact_radius(p.radius, li);
+            let side = |s: &State, free: bool, lever: f64, spin: Vec3| Side {
+                radius: s.particle.radius,
+                lever,
+                spin,
+                inertia: if free {
+                    inertia(s.particle.mass, s.particle.radius)
+                } else {
+                    f64::INFINITY
+                },
+            };
+            let one = side(&states[i], free_i, li, wi);
+            let (radius, constant_torque) =
+                (self.contact).rolling(a, one, Some(side(&states[j], free_j, lj, wj)));
             let dashpot = Dashpot {
                 overlap,
                 normal: -n,
@@ -674,39 +717,16 @@ impl PairContext<'_> {
                 turn: p.spin + q.spin,
                 levers: (li, lj),
                 mass: reduced,
-                radius: match a {
-                    // The contact radius is never worked out then
-                    // (docs/pkdgrav-physics.md §1.6).
-                    Some(_) if legacy => 0.0,
-                    Some(a) => a,
-                    None => reduced_radius,
-                },
+                radius,
                 wall: false,
-                constant_torque: (!self.settings.build.rotation_dashpot).then(|| {
-                    let inertia_of = |free: bool, m: f64, r: f64| {
-                        if free { inertia(m, r) } else { f64::INFINITY }
-                    };
-                    ConstantTorque {
-                        spins: (wi, wj),
-                        roll_levers: match (a, legacy) {
-                            (Some(a), _) => (a, a),
-                            (None, true) => (li, lj),
-                            (None, false) => (reduced_radius, reduced_radius),
-                        },
-                        twist_radius: a.unwrap_or(0.0),
-                        inertias: (
-                            inertia_of(free_i, p.mass, p.radius),
-                            inertia_of(free_j, q.mass, q.radius),
-                        ),
-                    }
-                }),
-                sliding: self.settings.sliding,
+                constant_torque,
+                sliding: self.contact.sliding,
             };
             let mut extra = Optional {
-                restitution: Some(self.restitution),
+                restitution: Some(self.between.restitution),
                 ..self.optional.pair(i, j, p.radius, q.radius, a, mat)
             };
-            if let (None, Some((mass, damping))) = (extra.layers, self.damping)
+            if let (None, Some((mass, damping))) = (extra.layers, self.between.damping)
                 && mass == reduced
             {
                 // Two layers change the springs, and with them the damping.
@@ -822,28 +842,16 @@ mod tests {
         kicks: Kicks,
         test: impl FnOnce(&PairContext, &lanes::Setting) -> Result<(), TestCaseError>,
     ) -> Result<(), TestCaseError> {
-        let mat = settings.material;
         let plan = Plan::everything();
         let optional = OptionalPhysics::new(&[], states, settings);
-        let restitution = (Restitution::new(mat.eps_n), Restitution::new(mat.eps_t));
-        let m = states[0].particle.mass;
-        let reduced = m * m / (m + m);
-        let damping = |eps: Restitution, k: f64| eps.damping(k, reduced);
+        let between = PairMaterial::new(settings.material, states);
         let context = PairContext {
             states,
             settings,
             plan: &plan,
             kicks,
-            law: Law::of(&kicks, &plan, &optional),
-            mat: &mat,
-            restitution,
-            damping: Some((
-                reduced,
-                (
-                    damping(restitution.0, mat.k_n),
-                    damping(restitution.1, mat.k_t),
-                ),
-            )),
+            contact: ContactLaw::of(settings, &kicks, &plan, &optional),
+            between: &between,
             optional: &optional,
         };
         match context.lanes() {

@@ -3,12 +3,12 @@
 //! candidate pairs.
 
 use super::near::{self, NearWalls};
-use super::pairs::PairPass;
-use super::walls::Closing;
+use super::pairs::{PairMaterial, PairPass};
+use super::walls::{Closing, WallPass};
 use super::{
-    CHUNK, Deferred, Integrator, Journal, Kicks, Law, Load, Materials, OverlapWarnings,
-    PARALLEL_FROM, Settings, SoftStepper, State, WallSet, WarnedOnce, Warning, assembly_energy,
-    energy, in_parallel, inertia,
+    Bodies, Broad, CHUNK, Clock, ContactLaw, Deferred, Integrator, Journal, Kicks, Load, Materials,
+    OverlapWarnings, PARALLEL_FROM, Rigid, Rules, Settings, SoftStepper, State, WallSet,
+    WarnedOnce, Warning, assembly_energy, energy, in_parallel, inertia,
 };
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
@@ -33,8 +33,7 @@ impl<'a> SoftStepper<'a> {
             walls: materials,
             mut between,
         } = Materials::new(scene, &settings.material);
-        // pkdgrav without DEM_WALLS_REACT reads the walls' masses and ignores them.
-        let reactive = plan.reactive && settings.build.walls_react;
+        let reactive = plan.reactive;
         if settings.build.aggs {
             // An AGGS build has no rolling or twisting between particles (§9.6).
             between.mu_r = 0.0;
@@ -50,7 +49,7 @@ impl<'a> SoftStepper<'a> {
         // Each load starts the run with gravity alone, whichever the integrator (pkdgrav's
         // evaluation before the first step, `SoftStepper::start`, adds to it; the others
         // kick with it at once). In a step, the wall pass starts the next step's, or the
-        // drift or `SoftStepper::settle` after an owed kick, and for an aggregate's
+        // drift or `super::drift::settle` after an owed kick, and for an aggregate's
         // members.
         let loads = states.iter().map(|s| Load::gravity(s, &g)).collect();
         let candidates = PairList::new(
@@ -142,8 +141,18 @@ impl<'a> SoftStepper<'a> {
             .map(|i| largest(i.0, i.1))
             .fold(0.0, largest);
         let kicks = Kicks::of(settings.integrator);
-        let law = Law::of(&kicks, plan, &optional);
+        let contact = ContactLaw::of(settings, &kicks, plan, &optional);
         SoftStepper {
+            rules: Rules {
+                scene,
+                settings,
+                plan,
+                kicks,
+                contact,
+                between: PairMaterial::new(between, &states),
+                optional,
+                parallel: in_parallel(n),
+            },
             walls: WallSet {
                 materials,
                 damping,
@@ -155,17 +164,11 @@ impl<'a> SoftStepper<'a> {
                 assembly_of,
                 cogs: Vec::with_capacity(assemblies.len()),
             },
-            scene,
-            settings,
-            plan,
-            states,
-            kicks,
-            law,
-            between,
-            optional,
-            aggregates,
+            rigid: Rigid {
+                assemblies,
+                aggregates,
+            },
             halted,
-            assemblies,
             deferred: Deferred {
                 owed: vec![false; n],
                 loaded: vec![false; n],
@@ -184,16 +187,16 @@ impl<'a> SoftStepper<'a> {
                 gravity_bound,
                 largest_inverse,
             },
-            inverses,
-            loads,
-            open_walls: (0..n).map(|_| Vec::new()).collect(),
-            walled: vec![false; n],
-            visits: Vec::new(),
-            candidates,
-            near,
+            bodies: Bodies {
+                states,
+                loads,
+                inverses,
+                open_walls: (0..n).map(|_| Vec::new()).collect(),
+                walled: vec![false; n],
+            },
+            broad: Broad { candidates, near },
             pair_pass: PairPass::default(),
-            reports: Vec::new(),
-            parallel: in_parallel(n),
+            wall_pass: WallPass::default(),
             initial,
             journal: Journal {
                 events: Vec::new(),
@@ -202,8 +205,10 @@ impl<'a> SoftStepper<'a> {
                 overlaps: OverlapWarnings::default(),
                 once: WarnedOnce::default(),
             },
-            t: settings.t_start(),
-            steps: settings.start_step,
+            clock: Clock {
+                t: settings.t_start(),
+                steps: settings.start_step,
+            },
         }
     }
 }

@@ -1,18 +1,17 @@
-//! The wall pass of the soft-sphere run ([`SoftStepper::wall_contacts`]): each
-//! particle's contacts with the walls it may touch, added to its load, then its closing
-//! kick; and what they did, noted in particle order
-//! ([`SoftStepper::note_wall_contacts`]).
+//! The wall pass of the soft-sphere run ([`wall_contacts`]): each particle's contacts
+//! with the walls it may touch, added to its load, then its closing kick; and what they
+//! did, noted in particle order ([`note_wall_contacts`]).
 
+use super::law::Side;
 use super::near::NearWalls;
 use super::{
-    CHUNK, Event, EventKind, Flow, Law, Load, Overlapping, SoftStepper, State, Vec3, WallNow,
-    Warning, carry, inertia,
+    Bodies, Broad, CHUNK, ContactLaw, Deferred, Event, EventKind, Flow, Journal, Kicks, Law, Load,
+    Overlapping, Rigid, Rules, State, Vec3, WallNow, WallSet, Warning, carry, inertia,
 };
 use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
-    ConstantTorque, Dashpot, Material, Optional, Record, Restitution, Rolling, Sliding, Touch,
-    contact, contact_radius, dashpot_contact_with, lever_contact_radius, normal_contact,
-    resistance,
+    Dashpot, Optional, Record, Rolling, Touch, contact, contact_radius, dashpot_contact_with,
+    normal_contact, resistance,
 };
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::run::optional::OptionalPhysics;
@@ -27,57 +26,38 @@ pub(super) struct Open {
     vn_in: f64,
 }
 
-/// The walls as they stand in a step, with their materials, and the step: what every
-/// particle's wall contacts share.
+/// The wall pass's reports and scratch, kept from step to step to save allocating: what
+/// the wall contacts of each particle with something to note did this step, each chunk's
+/// in particle order, and each chunk's list of the walls to visit.
+#[derive(Default)]
+pub(super) struct WallPass {
+    pub(super) reports: Vec<Vec<(usize, ParticleStep)>>,
+    visits: Vec<Vec<usize>>,
+}
+
+/// What every particle's wall contacts share in a step: the walls as they stand, with
+/// their materials and constants ([`WallSet`], compiled at set-up), the walls near each
+/// particle, the contact law, the kicks and the closing kick, and the time.
 pub(super) struct Walls<'a> {
+    set: &'a WallSet,
+    /// The walls as they stand (none without forces: `bDoGravity = 0`).
     now: &'a [WallNow],
-    /// Each wall's reactive assembly, if any.
-    assembly_of: &'a [Option<usize>],
-    /// Each assembly's centre of gravity now.
-    cogs: &'a [Vec3],
-    /// Each wall's origin now, for the wall index.
-    origins: &'a [Vec3],
-    /// The wall index, when the plan uses one.
+    /// The wall index, when the plan uses one (and forces are on).
     index: Option<&'a WallIndex>,
     /// Without a wall index, the fixed walls near each particle and the walls that
     /// move ([`NearWalls`]).
     near: Option<&'a NearWalls>,
     plan: &'a Plan,
-    /// Each wall's normal damping over √m, worked out once.
-    damping: &'a [f64],
-    /// Each wall's normal and tangential restitutions, worked out once.
-    restitutions: &'a [(Restitution, Restitution)],
-    materials: &'a [Material],
-    /// The fraction of a step the kick after the forces covers.
-    closing_kick: f64,
-    /// The fraction of a step by which contact velocities are predicted ahead with the
-    /// last acceleration (pkdgrav's dashpot velocity: ½).
-    predict: f64,
-    /// The fraction of a step by which spins are predicted ahead with the last angular
-    /// acceleration.
-    predict_spin: f64,
-    /// Whether the lever of the contact velocity and of the tangential force is
-    /// pkdgrav's r − x (else the radius), with pkdgrav's contact law.
-    pkdgrav_levers: bool,
-    /// The contact law.
-    law: Law,
-    /// pkdgrav's rolling radius is the contact radius (`bUseContactRadius`).
-    contact_radius: bool,
-    /// A build without `DEM_ROTATION_DASHPOT`: rolling and twisting are constant
-    /// torques (docs/pkdgrav-physics.md §1.6), the rolling lever d with `bUseLegacyRoll`
-    /// (the value).
-    constant_torque: Option<bool>,
-    /// pkdgrav's `dAccCrit` (0: off).
-    acc_crit: f64,
-    /// What the shear spring of a sliding contact does.
-    sliding: Sliding,
+    kicks: Kicks,
+    contact: ContactLaw,
+    /// The closing kick (its timestep is the step's).
+    closing: Closing,
     /// Cohesion and two-layer contacts (pkdgrav's optional builds).
     optional: &'a OptionalPhysics,
-    /// The time at the step's end, and the timestep.
-    t: f64,
-    dt: f64,
     /// pkdgrav's aggregates, if any (for their members' rolling pseudo-forces).
     aggregates: Option<&'a Aggregates>,
+    /// The time at the step's end.
+    t: f64,
 }
 
 /// What one particle's wall contacts did in a step.
@@ -127,15 +107,15 @@ pub(super) fn wall_step(
     mut work: WallWork,
     walls: &Walls,
 ) -> ParticleStep {
-    let dt = walls.dt;
+    let dt = walls.closing.dt;
     let mut out = ParticleStep::default();
     if !s.alive {
         return out;
     }
     if let Some(&(w, _)) = s.stuck_to.as_deref() {
         // pkdgrav carries a stuck particle with its wall's move, before the forces
-        // (docs/pkdgrav-physics.md §6; `SoftStepper::carry_stuck`).
-        if !walls.pkdgrav_levers {
+        // (docs/pkdgrav-physics.md §6; `super::carry_stuck`).
+        if !walls.kicks.pkdgrav_levers {
             carry(s, &walls.now[w], dt);
         }
         return out;
@@ -149,10 +129,10 @@ pub(super) fn wall_step(
         return out;
     }
     if s.member {
-        // Its aggregate takes the load (`SoftStepper::gather_aggregates`).
+        // Its aggregate takes the load (`super::rigid::gather_aggregates`).
         return out;
     }
-    close_step(s, work.load, work.inverse, walls.closing());
+    close_step(s, work.load, work.inverse, walls.closing);
     out
 }
 
@@ -163,17 +143,6 @@ pub(super) struct Closing {
     pub(super) dt: f64,
     pub(super) fraction: f64,
     pub(super) acc_crit: f64,
-}
-
-impl Walls<'_> {
-    /// This step's closing kick.
-    pub(super) fn closing(&self) -> Closing {
-        Closing {
-            dt: self.dt,
-            fraction: self.closing_kick,
-            acc_crit: self.acc_crit,
-        }
-    }
 }
 
 /// Whether particle `i` (state `s`) touches no wall and cannot: no contact open, and
@@ -224,8 +193,9 @@ pub(super) fn clear_step(
     walls: &Walls,
 ) -> Option<ParticleStep> {
     let r = s.particle.radius;
-    let moved = s.particle.vel.norm_squared() * walls.dt * walls.dt;
-    let motion = close_step(s, load, inverse, walls.closing());
+    let dt = walls.closing.dt;
+    let moved = s.particle.vel.norm_squared() * dt * dt;
+    let motion = close_step(s, load, inverse, walls.closing);
     let too_fast = (moved > r * r).then(|| moved.sqrt() / r);
     let not_finite = !s.finite_with(motion);
     (too_fast.is_some() || not_finite).then(|| ParticleStep {
@@ -239,7 +209,7 @@ pub(super) fn clear_step(
 /// kick after the forces; the sum of the new velocity's and spin's components, for
 /// [`State::finite_with`] (from registers: reading back what was just stored, in wider
 /// loads than it was stored with, stalls the processor). The drift gives an owed kick
-/// with the same arithmetic ([`SoftStepper::kick_drift`]): a change here is a change
+/// with the same arithmetic ([`super::drift::kick_drift`]): a change here is a change
 /// there, or a run would differ with whether its kicks are owed.
 #[inline(always)]
 pub(super) fn close_step(s: &mut State, load: &Load, inverse: (f64, f64), kick: Closing) -> f64 {
@@ -273,7 +243,7 @@ pub(super) fn touch_walls(
     let WallWork {
         load, open, visit, ..
     } = work;
-    let (t, dt) = (walls.t, walls.dt);
+    let (t, dt) = (walls.t, walls.closing.dt);
     let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
     // The walls within reach (from the wall index, when the plan uses one), and those
@@ -282,7 +252,9 @@ pub(super) fn touch_walls(
     let indexed = walls.index.is_some();
     match walls.index {
         Some(index) => {
-            index.for_each_candidate(&s.particle.pos, r, walls.origins, |w| visit.push(w));
+            index.for_each_candidate(&s.particle.pos, r, &walls.set.origins.now, |w| {
+                visit.push(w)
+            });
             // The candidates come ascending; search only them (the walls pushed after
             // them are not in order), so no wall is visited twice.
             let candidates = visit.len();
@@ -346,15 +318,19 @@ pub(super) fn touch_walls(
         if out.deepest.is_none_or(|(f, _)| overlap / r > f) {
             out.deepest = Some((overlap / r, w));
         }
-        let vel = s.particle.vel + s.acc * (dt * walls.predict);
-        let spin = if walls.predict_spin != 0.0 {
-            s.particle.spin + s.alpha * (dt * walls.predict_spin)
+        let vel = s.particle.vel + s.acc * (dt * walls.kicks.predict);
+        let spin = if walls.kicks.predict_all != 0.0 {
+            s.particle.spin + s.alpha * (dt * walls.kicks.predict_all)
         } else {
             s.particle.spin
         };
-        let lever = if walls.pkdgrav_levers { r - overlap } else { r };
+        let lever = if walls.kicks.pkdgrav_levers {
+            r - overlap
+        } else {
+            r
+        };
         let u = vel + spin.cross(&(-n * lever)) - wall_v;
-        let mat = &walls.materials[w];
+        let mat = &walls.set.materials[w];
         let k = k.unwrap_or_else(|| {
             open.push((
                 w,
@@ -395,16 +371,23 @@ pub(super) fn touch_walls(
             return true;
         }
         let plan = walls.plan;
-        if walls.law == Law::Pkdgrav {
+        if walls.contact.law == Law::Pkdgrav {
             // pkdgrav's contact law, in its frame: the normal towards the wall, the
             // wall's motion relative to the particle's (docs/pkdgrav-physics.md
             // §1.1–§1.5). A reactive wall turns the springs by its spin about the face
             // normal or axis alone (docs/pkdgrav-physics.md §10).
-            let wall_spin = match walls.assembly_of[w] {
+            let wall_spin = match walls.set.assembly_of[w] {
                 Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
                 None => wall.spin,
             };
-            let a = walls.contact_radius.then(|| lever_contact_radius(r, lever));
+            let a = walls.contact.contact_radius(r, lever);
+            let one = Side {
+                radius: r,
+                lever,
+                spin,
+                inertia: inertia(m, r),
+            };
+            let (radius, constant_torque) = walls.contact.rolling(a, one, None);
             let dashpot = Dashpot {
                 overlap,
                 normal: -n,
@@ -413,22 +396,13 @@ pub(super) fn touch_walls(
                 turn: s.particle.spin + wall_spin,
                 levers: (lever, 0.0),
                 mass: m,
-                radius: a.unwrap_or(r),
+                radius,
                 wall: true,
-                constant_torque: walls.constant_torque.map(|legacy| ConstantTorque {
-                    spins: (spin, Vec3::zeros()),
-                    roll_levers: match (a, legacy) {
-                        (Some(a), _) => (a, 0.0),
-                        (None, true) => (lever, 0.0),
-                        (None, false) => (r, 0.0),
-                    },
-                    twist_radius: a.unwrap_or(0.0),
-                    inertias: (inertia(m, r), f64::INFINITY),
-                }),
-                sliding: walls.sliding,
+                constant_torque,
+                sliding: walls.contact.sliding,
             };
             let extra = Optional {
-                restitution: Some(walls.restitutions[w]),
+                restitution: Some(walls.set.restitutions[w]),
                 ..walls.optional.wall(w, i, r, a, mat)
             };
             let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
@@ -445,14 +419,14 @@ pub(super) fn touch_walls(
                 let arm = aggs.offset(i, &s.particle.pos) - n * lever;
                 load.torque += arm.cross(&push) - c.rolling;
             }
-            if let Some(a) = walls.assembly_of[w] {
+            if let Some(a) = walls.set.assembly_of[w] {
                 // The reaction (docs/pkdgrav-physics.md §10), with the rolling and
                 // twisting torques.
                 let at = s.particle.pos - n * lever;
                 out.reactions.push((
                     a,
                     -c.force,
-                    (at - walls.cogs[a]).cross(&-c.force) - c.resistance,
+                    (at - walls.set.cogs[a]).cross(&-c.force) - c.resistance,
                 ));
             }
             continue;
@@ -465,14 +439,14 @@ pub(super) fn touch_walls(
         let c = if plan.sliding_friction {
             contact(m, lever, &touch, &mut open[k].1.record.spring, dt, mat)
         } else {
-            normal_contact(&touch, mat.k_n, walls.damping[w] * m.sqrt())
+            normal_contact(&touch, mat.k_n, walls.set.damping[w] * m.sqrt())
         };
         load.force += c.force;
         load.torque += c.torque;
-        if let Some(a) = walls.assembly_of[w] {
+        if let Some(a) = walls.set.assembly_of[w] {
             // The reaction, at the contact point on the particle's surface (where its
             // own torque acts, so that angular momentum is kept exactly).
-            let cog = walls.cogs[a];
+            let cog = walls.set.cogs[a];
             let at = s.particle.pos - n * lever;
             out.reactions
                 .push((a, -c.force, (at - cog).cross(&-c.force)));
@@ -515,230 +489,222 @@ pub(super) fn zero_small_motions(s: &mut State, a_c: f64, dt: f64) {
     }
 }
 
-impl SoftStepper<'_> {
-    /// The contacts with the walls of each particle not owed its kick, added to its
-    /// load, then its closing kick (in parallel for many particles); what each did is in
-    /// `reports`.
-    pub(super) fn wall_contacts(&mut self) {
-        // Without forces (`bDoGravity = 0`) the walls are not looked at.
-        let forces = self.settings.forces;
-        let gravity = self.settings.gravity;
-        let walls = Walls {
-            now: if forces { &self.walls.now } else { &[] },
-            assembly_of: &self.walls.assembly_of,
-            cogs: &self.walls.cogs,
-            origins: &self.walls.origins.now,
-            index: self.walls.index.as_ref().filter(|_| forces),
-            near: self.near.as_ref().filter(|_| forces),
-            plan: self.plan,
-            damping: &self.walls.damping,
-            restitutions: &self.walls.restitutions,
-            materials: &self.walls.materials,
-            closing_kick: self.kicks.closing,
-            predict: self.kicks.predict,
-            predict_spin: self.kicks.predict_all,
-            pkdgrav_levers: self.kicks.pkdgrav_levers,
-            law: self.law,
-            contact_radius: self.settings.contact_radius,
-            constant_torque: (!self.settings.build.rotation_dashpot)
-                .then_some(self.settings.legacy_roll),
-            acc_crit: self.settings.acc_crit,
-            sliding: self.settings.sliding,
-            optional: &self.optional,
-            t: self.t,
-            dt: self.settings.dt,
-            aggregates: self.aggregates.as_ref(),
-        };
-        // A plain loop over the particles of each chunk not owed their kick, its reports
-        // kept with it (in particle order within the chunk), chunks in parallel for many
-        // particles. Each load, once used, starts the next step with gravity alone
-        // (while it is at hand; the drift does it for the owed); an aggregate's members'
-        // loads are kept for it ([`SoftStepper::gather_aggregates`]).
-        let chunk = |(
-            c,
-            ((((states, loads), (visited, inverses)), (opens, walled)), (reports, visit)),
-        ): WallChunk| {
-            reports.clear();
-            let first = c * CHUNK;
-            // The others are clear of the walls: their closing kicks are owed, not given
-            // here.
-            for &k in visited.iter() {
-                let k = k as usize;
-                let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
-                let i = first + k;
-                if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                    // Clear of the walls, not owed: the closing kick alone. (None is
-                    // open, as `walled[k]` already says: only this pass opens them.)
-                    if let Some(report) = clear_step(s, load, inverses[k], &walls) {
-                        reports.push((i, report));
-                    }
-                    *load = Load::gravity(s, &gravity);
-                    continue;
-                }
-                let work = WallWork {
-                    load,
-                    inverse: inverses[k],
-                    open,
-                    visit,
-                };
-                let mut report = wall_step(i, s, work, &walls);
-                walled[k] = !open.is_empty();
-                report.not_finite = !s.finite();
-                if !s.member {
-                    *load = Load::gravity(s, &gravity);
-                }
-                if !report.is_empty() {
+/// The contacts with the walls of each particle not owed its kick, added to its load,
+/// then its closing kick (in parallel for many particles); what each did is in the
+/// pass's reports.
+pub(super) fn wall_contacts(
+    bodies: &mut Bodies,
+    deferred: &mut Deferred,
+    wall_pass: &mut WallPass,
+    (set, near): (&WallSet, Option<&NearWalls>),
+    rigid: &Rigid,
+    rules: &Rules,
+    t: f64,
+) {
+    let settings = rules.settings;
+    // Without forces (`bDoGravity = 0`) the walls are not looked at.
+    let forces = settings.forces;
+    let gravity = settings.gravity;
+    let walls = Walls {
+        set,
+        now: if forces { &set.now } else { &[] },
+        index: set.index.as_ref().filter(|_| forces),
+        near: near.filter(|_| forces),
+        plan: rules.plan,
+        kicks: rules.kicks,
+        contact: rules.contact,
+        closing: Closing {
+            dt: settings.dt,
+            fraction: rules.kicks.closing,
+            acc_crit: settings.acc_crit,
+        },
+        optional: &rules.optional,
+        aggregates: rigid.aggregates.as_ref(),
+        t,
+    };
+    // A plain loop over the particles of each chunk not owed their kick, its reports
+    // kept with it (in particle order within the chunk), chunks in parallel for many
+    // particles. Each load, once used, starts the next step with gravity alone
+    // (while it is at hand; the drift does it for the owed); an aggregate's members'
+    // loads are kept for it ([`super::rigid::gather_aggregates`]).
+    let chunk = |(
+        c,
+        ((((states, loads), (visited, inverses)), (opens, walled)), (reports, visit)),
+    ): WallChunk| {
+        reports.clear();
+        let first = c * CHUNK;
+        // The others are clear of the walls: their closing kicks are owed, not given
+        // here.
+        for &k in visited.iter() {
+            let k = k as usize;
+            let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
+            let i = first + k;
+            if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
+                // Clear of the walls, not owed: the closing kick alone. (None is
+                // open, as `walled[k]` already says: only this pass opens them.)
+                if let Some(report) = clear_step(s, load, inverses[k], &walls) {
                     reports.push((i, report));
                 }
-            }
-        };
-        let chunks = self.states.len().div_ceil(CHUNK);
-        self.reports.resize_with(chunks, Vec::new);
-        self.visits.resize_with(chunks, Vec::new);
-        // The chunks of every slice the wall pass takes, zipped in one order: rayon's
-        // (`par_*`) or the plain ones, the same chain.
-        macro_rules! chunks {
-            ($chunks:ident, $chunks_mut:ident, $iter:ident, $iter_mut:ident) => {
-                (self.states.$chunks_mut(CHUNK))
-                    .zip(self.loads.$chunks_mut(CHUNK))
-                    .zip(
-                        self.deferred
-                            .visited
-                            .$iter()
-                            .zip(self.inverses.$chunks(CHUNK)),
-                    )
-                    .zip((self.open_walls.$chunks_mut(CHUNK)).zip(self.walled.$chunks_mut(CHUNK)))
-                    .zip(self.reports.$iter_mut().zip(&mut self.visits))
-                    .enumerate()
-            };
-        }
-        if self.parallel {
-            chunks!(par_chunks, par_chunks_mut, par_iter, par_iter_mut)
-                // Each chunk a task of its own: the particles near the walls gather in
-                // a few chunks (those at the floor, in a pile), which halving the range
-                // left to one thread (docs/performance-history.md, "Twelfth round").
-                .with_max_len(1)
-                .for_each(chunk);
-        } else {
-            chunks!(chunks, chunks_mut, iter, iter_mut).for_each(chunk);
-        }
-        // The kicks the drift marked as owed are owed now.
-        self.deferred.owing = true;
-        self.deferred.owed_kick = walls.closing();
-    }
-
-    /// The first particle whose numbers overflowed in the last step, if any: in the
-    /// wall pass, or in a kick owed (given now unless surely finite).
-    pub(super) fn not_finite(&mut self) -> Option<usize> {
-        if !self.surely_finite() {
-            self.settle();
-        }
-        let reported = (self.reports.iter().flatten())
-            .find(|(_, r)| r.not_finite)
-            .map(|(i, _)| *i);
-        match (reported, self.deferred.owed_bad) {
-            (Some(i), Some(j)) => Some(i.min(j)),
-            (i, j) => i.or(j),
-        }
-    }
-
-    /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
-    /// many walls at once), in particle order so that the outcome does not depend on the
-    /// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
-    pub(super) fn note_wall_contacts(&mut self) -> Flow {
-        let t = self.t;
-        let mut stop = self.aggregates.is_some() && self.aggregates_held();
-        for (i, report) in self.reports.iter_mut().flatten() {
-            let i = *i;
-            if let Some((fraction, w)) = report.deepest {
-                stop |= self.journal.overlaps.check(
-                    fraction,
-                    Overlapping::Wall {
-                        particle: i,
-                        wall: w,
-                    },
-                    t,
-                    &mut self.journal.warnings,
-                );
-            }
-            // A travel that overflowed is the not-finite stop's, not a warning's.
-            if let Some(travel) = report.too_fast.filter(|x| x.is_finite())
-                && !self.journal.once.fast
-            {
-                self.journal.once.fast = true;
-                self.journal.warnings.push(Warning::TooFast {
-                    particle: i,
-                    radii: travel,
-                    t,
-                });
-            }
-            for e in &report.events {
-                if e.kind == EventKind::Bounce
-                    && e.vn_out
-                        > e.vn_in
-                            * (1.0
-                                + gain_tolerance(
-                                    self.walls.materials[e.wall].k_n,
-                                    self.states[i].particle.mass,
-                                    self.settings.dt,
-                                ))
-                    && !self.walls.oscillating[e.wall]
-                    && !self.journal.once.gain
-                {
-                    self.journal.once.gain = true;
-                    self.journal.warnings.push(Warning::EnergyGain {
-                        particle: i,
-                        wall: e.wall,
-                        vn_in: e.vn_in,
-                        vn_out: e.vn_out,
-                        t,
-                    });
-                }
-            }
-            if report.events.iter().any(|e| e.kind == EventKind::Stick) {
-                self.candidates.held = true;
-            }
-            if report.events.iter().any(|e| e.kind == EventKind::Remove) {
-                self.candidates.gone = true;
-            }
-            self.journal.events.append(&mut report.events);
-            if report.touching > 3 && !self.journal.once.crowd {
-                self.journal.once.crowd = true;
-                self.journal.warnings.push(Warning::Crowded {
-                    particle: i,
-                    walls: report.touching,
-                    t,
-                });
-            }
-        }
-        if stop { Flow::Stop } else { Flow::Continue }
-    }
-
-    /// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
-    /// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
-    pub(super) fn aggregates_held(&mut self) -> bool {
-        let mut held = false;
-        for (i, report) in self.reports.iter_mut().flatten() {
-            let i = *i;
-            if !self.states[i].member {
+                *load = Load::gravity(s, &gravity);
                 continue;
             }
-            for e in &report.events {
-                if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
-                    self.journal.warnings.push(Warning::AggregateHeld {
-                        particle: i,
-                        wall: e.wall,
-                        t: self.t,
-                    });
-                    held = true;
-                }
+            let work = WallWork {
+                load,
+                inverse: inverses[k],
+                open,
+                visit,
+            };
+            let mut report = wall_step(i, s, work, &walls);
+            walled[k] = !open.is_empty();
+            report.not_finite = !s.finite();
+            if !s.member {
+                *load = Load::gravity(s, &gravity);
             }
-            report
-                .events
-                .retain(|e| !matches!(e.kind, EventKind::Stick | EventKind::Remove));
+            if !report.is_empty() {
+                reports.push((i, report));
+            }
         }
-        held
+    };
+    let chunks = bodies.states.len().div_ceil(CHUNK);
+    wall_pass.reports.resize_with(chunks, Vec::new);
+    wall_pass.visits.resize_with(chunks, Vec::new);
+    // The chunks of every slice the wall pass takes, zipped in one order: rayon's
+    // (`par_*`) or the plain ones, the same chain.
+    macro_rules! chunks {
+        ($chunks:ident, $chunks_mut:ident, $iter:ident, $iter_mut:ident) => {
+            (bodies.states.$chunks_mut(CHUNK))
+                .zip(bodies.loads.$chunks_mut(CHUNK))
+                .zip(deferred.visited.$iter().zip(bodies.inverses.$chunks(CHUNK)))
+                .zip((bodies.open_walls.$chunks_mut(CHUNK)).zip(bodies.walled.$chunks_mut(CHUNK)))
+                .zip(wall_pass.reports.$iter_mut().zip(&mut wall_pass.visits))
+                .enumerate()
+        };
     }
+    if rules.parallel {
+        chunks!(par_chunks, par_chunks_mut, par_iter, par_iter_mut)
+            // Each chunk a task of its own: the particles near the walls gather in
+            // a few chunks (those at the floor, in a pile), which halving the range
+            // left to one thread (docs/performance-history.md, "Twelfth round").
+            .with_max_len(1)
+            .for_each(chunk);
+    } else {
+        chunks!(chunks, chunks_mut, iter, iter_mut).for_each(chunk);
+    }
+    // The kicks the drift marked as owed are owed now.
+    deferred.owing = true;
+    deferred.owed_kick = walls.closing;
+}
+
+/// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
+/// many walls at once), in particle order so that the outcome does not depend on the
+/// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn note_wall_contacts(
+    wall_pass: &mut WallPass,
+    journal: &mut Journal,
+    broad: &mut Broad,
+    bodies: &Bodies,
+    walls: &WallSet,
+    rigid: &Rigid,
+    rules: &Rules,
+    t: f64,
+) -> Flow {
+    let mut stop = rigid.aggregates.is_some() && aggregates_held(wall_pass, journal, bodies, t);
+    for (i, report) in wall_pass.reports.iter_mut().flatten() {
+        let i = *i;
+        if let Some((fraction, w)) = report.deepest {
+            stop |= journal.overlaps.check(
+                fraction,
+                Overlapping::Wall {
+                    particle: i,
+                    wall: w,
+                },
+                t,
+                &mut journal.warnings,
+            );
+        }
+        // A travel that overflowed is the not-finite stop's, not a warning's.
+        if let Some(travel) = report.too_fast.filter(|x| x.is_finite())
+            && !journal.once.fast
+        {
+            journal.once.fast = true;
+            journal.warnings.push(Warning::TooFast {
+                particle: i,
+                radii: travel,
+                t,
+            });
+        }
+        for e in &report.events {
+            if e.kind == EventKind::Bounce
+                && e.vn_out
+                    > e.vn_in
+                        * (1.0
+                            + gain_tolerance(
+                                walls.materials[e.wall].k_n,
+                                bodies.states[i].particle.mass,
+                                rules.settings.dt,
+                            ))
+                && !walls.oscillating[e.wall]
+                && !journal.once.gain
+            {
+                journal.once.gain = true;
+                journal.warnings.push(Warning::EnergyGain {
+                    particle: i,
+                    wall: e.wall,
+                    vn_in: e.vn_in,
+                    vn_out: e.vn_out,
+                    t,
+                });
+            }
+        }
+        if report.events.iter().any(|e| e.kind == EventKind::Stick) {
+            broad.candidates.held = true;
+        }
+        if report.events.iter().any(|e| e.kind == EventKind::Remove) {
+            broad.candidates.gone = true;
+        }
+        journal.events.append(&mut report.events);
+        if report.touching > 3 && !journal.once.crowd {
+            journal.once.crowd = true;
+            journal.warnings.push(Warning::Crowded {
+                particle: i,
+                walls: report.touching,
+                t,
+            });
+        }
+    }
+    if stop { Flow::Stop } else { Flow::Continue }
+}
+
+/// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
+/// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
+pub(super) fn aggregates_held(
+    wall_pass: &mut WallPass,
+    journal: &mut Journal,
+    bodies: &Bodies,
+    t: f64,
+) -> bool {
+    let mut held = false;
+    for (i, report) in wall_pass.reports.iter_mut().flatten() {
+        let i = *i;
+        if !bodies.states[i].member {
+            continue;
+        }
+        for e in &report.events {
+            if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
+                journal.warnings.push(Warning::AggregateHeld {
+                    particle: i,
+                    wall: e.wall,
+                    t,
+                });
+                held = true;
+            }
+        }
+        report
+            .events
+            .retain(|e| !matches!(e.kind, EventKind::Stick | EventKind::Remove));
+    }
+    held
 }
 
 /// How much faster than it came a particle may leave a wall before W106 calls it a
