@@ -23,6 +23,8 @@ use crate::io::par::Params;
 use crate::io::{FileError, par, particles};
 use crate::run::defaults;
 use crate::run::{ContactModel, Integrator, ParticleMaterial, Planning, Settings, Warning};
+#[cfg(feature = "clap")]
+use crate::{cli, io::par::Rule};
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -30,56 +32,152 @@ use walls_keywords::number::EXACT_COUNT;
 
 type Vec3 = Vector3<f64>;
 
-/// What the command line gives: `None` (or `false`) where a flag is absent.
+/// What the command line gives: `None` (or `false`) where an option is absent. The
+/// options of `walls-sim run` and `plan`, in three groups that derive `clap::Args` (the
+/// `clap` feature), each flattened by the command where its options come in `--help`,
+/// between the command's own (`--out`, `--fresh`, ...).
 #[derive(Debug, Clone, Default)]
 pub struct Flags {
-    /// `--particles`: a CSV or `.ss` file.
+    /// The inputs: the files, the contact model, the timestep and end time, gravity, the
+    /// particles' material and which contacts count.
+    pub inputs: Inputs,
+    /// How the run steps: the walls' oscillation, the integrator, the sliding rule and
+    /// the parts of the model it runs.
+    pub stepping: Stepping,
+    /// How many steps the run may take, and between outputs.
+    pub counts: Counts,
+}
+
+/// The run's inputs (`--particles` to `--no-edges`); the doc comments are their help.
+#[derive(Debug, Clone, Default)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+pub struct Inputs {
+    /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
+    /// .ss file (by the extension .csv or .ss, else by the content); `-` reads standard
+    /// input. Without it, nine particles are dropped inside the scene's container
+    /// (or onto the scene when it has none).
+    #[allow(
+        rustdoc::broken_intra_doc_links,
+        reason = "the brackets are --help's optional columns"
+    )]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "FILE"))]
     pub particles: Option<String>,
-    /// `--no-particles`: the walls alone, instead of the embedded particles.
+    /// Run the walls alone, with no particles (instead of the nine dropped onto the
+    /// scene, or the --par file's achInFile): oscillating walls move, reactive walls
+    /// fall.
+    #[cfg_attr(feature = "clap", arg(long, conflicts_with = "particles"))]
     pub no_particles: bool,
-    /// `--par`: a pkdgrav parameter file.
+    /// A pkdgrav parameter file: timestep, steps, output interval, material, gravity,
+    /// and the walls file (achWallsFile) and particle file (achInFile) when not given
+    /// here. Keys the evaluator does not follow are warned about.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "FILE"))]
     pub par: Option<String>,
-    /// `--method`.
+    /// The contact model (with --pkdgrav-build, the build's: DEM or not).
+    #[cfg_attr(feature = "clap", arg(long, value_enum, default_value_t = ContactModel::Ssdem))]
     pub method: ContactModel,
-    /// `--pkdgrav-build` (default pkdgrav's default build, with `DEM` as `--method`
-    /// says); when given, it decides the contact model.
+    /// The pkdgrav build to follow: its compile options, space or comma separated
+    /// (default pkdgrav's own, "DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT"; no DEM:
+    /// hard-sphere walls). DEM_COHESION, DEM_TWOLAYERS, DEM_WALLS_REACT and AGGS turn
+    /// on their physics.
+    #[cfg_attr(feature = "clap", arg(long = "pkdgrav-build", value_name = "OPTIONS", value_parser = cli::build, conflicts_with = "method"))]
     pub build: Option<Build>,
-    /// `--dt`.
+    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle, no more than
+    /// lets anything move 2 % of the smallest radius, and shortened so that whole steps
+    /// end on --t-end).
+    #[cfg_attr(feature = "clap", arg(long, value_parser = cli::ruled(Rule::Positive)))]
     pub dt: Option<f64>,
-    /// `--t-end`.
+    /// When to stop (default: three free falls over the scene; without particles, two
+    /// oscillation periods).
+    #[cfg_attr(feature = "clap", arg(long, value_parser = cli::ruled(Rule::Positive)))]
     pub t_end: Option<f64>,
-    /// `--gravity`.
-    pub gravity: Option<Vec3>,
-    /// `--epsn`.
+    /// Uniform gravity.
+    #[cfg_attr(feature = "clap", arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = cli::ruled(Rule::Any)))]
+    pub gravity: Option<Vec<f64>>,
+    /// The particles' normal restitution (what walls' 99 means).
+    #[cfg_attr(feature = "clap", arg(long = "epsn", value_name = "EPSN", value_parser = cli::ruled(Rule::Restitution)))]
     pub eps_n: Option<f64>,
-    /// `--epst`.
+    /// The particles' tangential restitution.
+    #[cfg_attr(feature = "clap", arg(long = "epst", value_name = "EPST", value_parser = cli::ruled(Rule::Tangential)))]
     pub eps_t: Option<f64>,
-    /// `--k-n`.
+    /// The particles' normal spring constant.
+    #[cfg_attr(feature = "clap", arg(long = "k-n", value_parser = cli::ruled(Rule::Positive)))]
     pub k_n: Option<f64>,
-    /// `--k-t`.
+    /// The particles' tangential spring constant (default 2/7 of k_n).
+    #[cfg_attr(feature = "clap", arg(long = "k-t", value_parser = cli::ruled(Rule::NonNegative)))]
     pub k_t: Option<f64>,
-    /// `--mu-s`.
+    /// The particles' static friction.
+    #[cfg_attr(feature = "clap", arg(long = "mu-s", value_parser = cli::ruled(Rule::NonNegative)))]
     pub mu_s: Option<f64>,
-    /// `--mu-r`.
+    /// The particles' rolling friction (SSDEM).
+    #[cfg_attr(feature = "clap", arg(long = "mu-r", value_parser = cli::ruled(Rule::NonNegative)))]
     pub mu_r: Option<f64>,
-    /// `--mu-t`.
+    /// The particles' twisting friction (SSDEM).
+    #[cfg_attr(feature = "clap", arg(long = "mu-t", value_parser = cli::ruled(Rule::NonNegative)))]
     pub mu_t: Option<f64>,
-    /// `--no-particle-contacts`.
+    /// Particles pass through each other (they still meet walls).
+    #[cfg_attr(feature = "clap", arg(long))]
     pub no_particle_contacts: bool,
-    /// `--no-edges` (else the `.par` file's `bWallsEdgeDetect`, else on).
+    /// HSDEM: only faces and cylinder sides count, not edges, corners and rims
+    /// (pkdgrav's bWallsEdgeDetect = 0).
+    // Absent, the `.par` file's bWallsEdgeDetect decides, else edges count.
+    #[cfg_attr(feature = "clap", arg(long))]
     pub no_edges: bool,
-    /// `--oscillation`.
-    pub stepping: OscillationStepping,
-    /// `--integrator`.
+}
+
+impl Inputs {
+    /// `--gravity` as a vector (its three numbers, x, y and z, as clap takes them).
+    pub fn gravity(&self) -> Option<Vec3> {
+        self.gravity.as_deref().map(Vec3::from_column_slice)
+    }
+}
+
+/// How the run steps (`--oscillation` to `--all-parts`); the doc comments are their help.
+#[derive(Debug, Clone, Copy, Default)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+pub struct Stepping {
+    /// How oscillating walls move: step by step as pkdgrav does (the default), or on
+    /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
+    /// walls as pkdgrav does).
+    #[cfg_attr(feature = "clap", arg(long, value_enum, default_value_t = OscillationStepping::Pkdgrav))]
+    pub oscillation: OscillationStepping,
+    /// SSDEM: the integrator: pkdgrav's own step and contact law (the default); or,
+    /// for comparison, kick-drift-kick leapfrog with the summary's contact law, the same
+    /// with the dashpot velocity predicted to the step's end, or explicit Euler.
+    #[cfg_attr(feature = "clap", arg(long, value_enum, default_value_t = Integrator::Pkdgrav))]
     pub integrator: Integrator,
-    /// `--sliding` (pkdgrav's reset unless given; the `.par` file has no such key).
+    /// SSDEM with --integrator pkdgrav: what the shear spring of a sliding contact does:
+    /// pkdgrav's reset (the default), or the Coulomb clamp of LAMMPS and LIGGGHTS (a
+    /// sliding contact's friction is exactly μ_s·N). Not a .par key: pkdgrav has none.
+    #[cfg_attr(feature = "clap", arg(long, value_enum, default_value_t = Sliding::Reset))]
     pub sliding: Sliding,
-    /// `--all-parts`.
+    /// Run every part of the model, whatever the scene needs (for comparison; see
+    /// `walls-sim plan`).
+    #[cfg_attr(feature = "clap", arg(long = "all-parts", action = clap::ArgAction::SetTrue, value_parser = cli::all_parts()))]
     pub planning: Planning,
-    /// `--max-steps` (default [`MAX_STEPS`]).
-    pub max_steps: Option<u64>,
-    /// `--every` (else the `.par` file's `iOutInterval`, else [`EVERY`]).
+}
+
+/// How many steps the run may take, and between outputs (`--max-steps`, `--every`); the
+/// doc comments are their help.
+#[derive(Debug, Clone, Copy)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+pub struct Counts {
+    /// The most steps the run may take: a run that would take more is refused before it
+    /// starts (a mistyped --dt or --t-end), saying how many it needs.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = MAX_STEPS))]
+    pub max_steps: u64,
+    /// Steps between trajectory rows (default: the --par file's iOutInterval, else 100).
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..)))]
     pub every: Option<u64>,
+}
+
+impl Default for Counts {
+    /// At most [`MAX_STEPS`]; outputs as the `.par` file says, else every [`EVERY`].
+    fn default() -> Self {
+        Counts {
+            max_steps: MAX_STEPS,
+            every: None,
+        }
+    }
 }
 
 impl Flags {
@@ -87,14 +185,16 @@ impl Flags {
     /// with `DEM` as `--method` says. Its [`Build::contact_model`] is the run's contact
     /// model, the mode its walls file is checked in.
     pub fn build(&self) -> Build {
-        self.build
+        let given = &self.inputs;
+        given
+            .build
             .clone()
-            .unwrap_or_else(|| Build::default_for(self.method))
+            .unwrap_or_else(|| Build::default_for(given.method))
     }
 
     /// Where [`Flags::build`] came from, as `walls-sim plan` says it.
     pub fn build_origin(&self) -> &'static str {
-        match (&self.build, self.method) {
+        match (&self.inputs.build, self.inputs.method) {
             (Some(_), _) => "as --pkdgrav-build gives it",
             (None, ContactModel::Ssdem) => "pkdgrav's default build; --pkdgrav-build names another",
             (None, ContactModel::Hsdem) => {
@@ -133,7 +233,11 @@ pub struct SsNames {
 pub fn outputs(flags: &Flags, par: Option<&Params>) -> Outputs {
     let (base, ss_warning) = ss_base(par.and_then(|p| p.out_name.as_deref()));
     Outputs {
-        every: flags.every.or_else(|| par?.out_interval).unwrap_or(EVERY),
+        every: flags
+            .counts
+            .every
+            .or_else(|| par?.out_interval)
+            .unwrap_or(EVERY),
         ss: SsNames {
             base,
             digits: par.and_then(|p| p.digits).unwrap_or(5),
@@ -224,7 +328,12 @@ impl std::error::Error for ConfigError {}
 
 /// Reads the `.par` file that `flags` name, if any.
 pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
-    Ok(flags.par.as_deref().map(par::read_file).transpose()?)
+    Ok(flags
+        .inputs
+        .par
+        .as_deref()
+        .map(par::read_file)
+        .transpose()?)
 }
 
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and
@@ -259,7 +368,7 @@ pub fn cohesion_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
 /// `name`, a path written in the `.par` file, as a path from here: relative to the
 /// `.par` file's folder.
 fn beside_par(flags: &Flags, name: &str) -> Option<String> {
-    let par_dir = std::path::Path::new(flags.par.as_deref()?).parent()?;
+    let par_dir = std::path::Path::new(flags.inputs.par.as_deref()?).parent()?;
     Some(par_dir.join(name).to_string_lossy().into_owned())
 }
 
@@ -267,10 +376,11 @@ fn beside_par(flags: &Flags, name: &str) -> Option<String> {
 /// file's `achInFile`, taken relative to the `.par` file's folder; `None` for the
 /// default particles or none.
 pub fn particle_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
-    if flags.no_particles {
-        return flags.particles.clone();
+    if flags.inputs.no_particles {
+        return flags.inputs.particles.clone();
     }
     flags
+        .inputs
         .particles
         .clone()
         .or_else(|| beside_par(flags, par?.in_file.as_deref()?))
@@ -297,14 +407,15 @@ pub fn resolve(
     scene: &[Wall],
     particles: Option<Vec<Particle>>,
 ) -> Result<Run, ConfigError> {
+    let given = &flags.inputs;
     let (particles, embedded) = match particles {
-        _ if flags.no_particles && flags.particles.is_none() => (Vec::new(), true),
+        _ if given.no_particles && given.particles.is_none() => (Vec::new(), true),
         Some(ps) => (ps, false),
         None => (defaults::default_particles(scene), true),
     };
     // pkdgrav's `bDoGravity = 0`: no forces at all, uniform gravity included.
     let forces = par.and_then(|p| p.do_gravity).unwrap_or(true);
-    let gravity = match (flags.gravity, par.and_then(|p| p.gravity)) {
+    let gravity = match (given.gravity(), par.and_then(|p| p.gravity)) {
         (None, _) if !forces => Vec3::zeros(),
         (Some(g), _) => g,
         (None, Some(g)) => g,
@@ -315,7 +426,7 @@ pub fn resolve(
     let build = flags.build();
     let method = build.contact_model();
     let derived_k_n = || defaults::default_k_n(scene, &particles, &gravity);
-    let k_n = flags
+    let k_n = given
         .k_n
         .or(from_par(|p| p.k_n))
         .unwrap_or_else(derived_k_n);
@@ -325,29 +436,29 @@ pub fn resolve(
         None => defaults::default_material(k_n),
     };
     let material = ParticleMaterial {
-        eps_n: flags
+        eps_n: given
             .eps_n
             .or(from_par(|p| p.eps_n))
             .unwrap_or(default.eps_n),
-        eps_t: flags
+        eps_t: given
             .eps_t
             .or(from_par(|p| p.eps_t))
             .unwrap_or(default.eps_t),
         k_n,
-        k_t: flags.k_t.or(from_par(|p| p.k_t)).unwrap_or(default.k_t),
-        mu_s: flags.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(default.mu_s),
-        mu_r: flags.mu_r.or(from_par(|p| p.mu_r)).unwrap_or(default.mu_r),
-        mu_t: flags.mu_t.or(from_par(|p| p.mu_t)).unwrap_or(default.mu_t),
+        k_t: given.k_t.or(from_par(|p| p.k_t)).unwrap_or(default.k_t),
+        mu_s: given.mu_s.or(from_par(|p| p.mu_s)).unwrap_or(default.mu_s),
+        mu_r: given.mu_r.or(from_par(|p| p.mu_r)).unwrap_or(default.mu_r),
+        mu_t: given.mu_t.or(from_par(|p| p.mu_t)).unwrap_or(default.mu_t),
         beta_s: from_par(|p| p.beta_s).unwrap_or(default.beta_s),
     };
     let start_step = par.and_then(|p| p.start_step).unwrap_or(0);
-    let last_step = match flags.t_end {
+    let last_step = match given.t_end {
         Some(_) => None,
         None => par.and_then(|p| p.steps),
     };
     // The timestep's default needs a spring: with dKn = 0, the scene's.
     let dt_k_n = if k_n > 0.0 { k_n } else { derived_k_n() };
-    let given_dt = flags.dt.or(from_par(|p| p.dt));
+    let given_dt = given.dt.or(from_par(|p| p.dt));
     let default_dt = |t_end: f64| match method {
         ContactModel::Ssdem => {
             defaults::default_soft_dt(scene, &particles, &gravity, dt_k_n, t_end)
@@ -357,7 +468,7 @@ pub fn resolve(
     // A timestep of the run's own ends on the end time after a whole number of steps.
     let dt_for =
         |t_end: f64| given_dt.unwrap_or_else(|| defaults::whole_steps(default_dt(t_end), t_end));
-    let (dt, t_end) = match (flags.t_end, last_step) {
+    let (dt, t_end) = match (given.t_end, last_step) {
         (Some(t_end), _) => (dt_for(t_end), t_end),
         (None, Some(last)) => {
             // pkdgrav's steps are counted; the time span follows from the timestep.
@@ -380,28 +491,28 @@ pub fn resolve(
         colours: None,
     };
     let two_layer = par.and_then(|p| p.two_layer);
-    let warnings = optional_key_warnings(par, &build, flags.integrator);
+    let warnings = optional_key_warnings(par, &build, flags.stepping.integrator);
     let settings = Settings {
         build,
         cohesion,
         two_layer,
         gravity,
-        particle_contacts: !flags.no_particle_contacts,
-        edges: !flags.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),
+        particle_contacts: !given.no_particle_contacts,
+        edges: !given.no_edges && par.and_then(|p| p.edge_detect).unwrap_or(true),
         contact_radius: par.and_then(|p| p.contact_radius).unwrap_or(false),
         legacy_roll: par.and_then(|p| p.legacy_roll).unwrap_or(false),
         forces,
         acc_crit: par.and_then(|p| p.acc_crit).unwrap_or(0.0),
-        stepping: flags.stepping,
-        integrator: flags.integrator,
-        sliding: flags.sliding,
-        planning: flags.planning,
+        stepping: flags.stepping.oscillation,
+        integrator: flags.stepping.integrator,
+        sliding: flags.stepping.sliding,
+        planning: flags.stepping.planning,
         start_step,
         last_step,
         dt_given: given_dt.is_some(),
         ..Settings::new(dt, t_end, material)
     };
-    let mut numbers = option_subnormals(flags);
+    let mut numbers = option_subnormals(given);
     numbers.extend(par.iter().flat_map(|p| p.subnormals.iter().cloned()));
     let run = Run {
         particles,
@@ -414,22 +525,24 @@ pub fn resolve(
 }
 
 /// The options given with a subnormal value (W701), in the order of `--help`.
-fn option_subnormals(flags: &Flags) -> Vec<Warning> {
-    let gravity = flags.gravity.map(|g| [g.x, g.y, g.z]).unwrap_or_default();
-    let options = [
-        ("--dt", flags.dt),
-        ("--t-end", flags.t_end),
-        ("--gravity", flags.gravity.map(|_| gravity[0])),
-        ("--gravity", flags.gravity.map(|_| gravity[1])),
-        ("--gravity", flags.gravity.map(|_| gravity[2])),
-        ("--epsn", flags.eps_n),
-        ("--epst", flags.eps_t),
-        ("--k-n", flags.k_n),
-        ("--k-t", flags.k_t),
-        ("--mu-s", flags.mu_s),
-        ("--mu-r", flags.mu_r),
-        ("--mu-t", flags.mu_t),
-    ];
+fn option_subnormals(given: &Inputs) -> Vec<Warning> {
+    let gravity = given
+        .gravity
+        .iter()
+        .flatten()
+        .map(|&g| ("--gravity", Some(g)));
+    let options = [("--dt", given.dt), ("--t-end", given.t_end)]
+        .into_iter()
+        .chain(gravity)
+        .chain([
+            ("--epsn", given.eps_n),
+            ("--epst", given.eps_t),
+            ("--k-n", given.k_n),
+            ("--k-t", given.k_t),
+            ("--mu-s", given.mu_s),
+            ("--mu-r", given.mu_r),
+            ("--mu-t", given.mu_t),
+        ]);
     let mut warnings = Vec::new();
     for (option, value) in options {
         if let Some(x) = value {
@@ -465,7 +578,7 @@ fn check(
             );
         }
     }
-    let k_from = if flags.k_n.is_some() {
+    let k_from = if flags.inputs.k_n.is_some() {
         "--k-n"
     } else if par.is_some_and(|p| p.k_n.is_some()) {
         "the .par file's dKn"
@@ -478,7 +591,7 @@ fn check(
             m.k_n
         ));
     }
-    let dt_from = if flags.dt.is_some() {
+    let dt_from = if flags.inputs.dt.is_some() {
         "--dt"
     } else if par.is_some_and(|p| p.dt.is_some()) {
         "the .par file's dDelta"
@@ -491,7 +604,7 @@ fn check(
             s.dt, m.k_n
         ));
     }
-    let t_end_from = if flags.t_end.is_some() {
+    let t_end_from = if flags.inputs.t_end.is_some() {
         "--t-end"
     } else if s.last_step.is_some() {
         "the .par file's nSteps times the timestep"
@@ -505,7 +618,7 @@ fn check(
         ));
     }
     steps_fit(s, dt_from, t_end_from)?;
-    let limit = flags.max_steps.unwrap_or(MAX_STEPS);
+    let limit = flags.counts.max_steps;
     let steps = s.end_step().saturating_sub(s.start_step);
     if steps > limit {
         return fail(format!(

@@ -15,14 +15,15 @@
 //!   about, as coded data;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
 //!   for the real pkdgrav run;
-//! * with the `clap` feature, the settings' types are command-line values (`cli`).
+//! * with the `clap` feature, the settings' types are command-line values, and `cli`
+//!   holds the value parsers their options share.
 
 pub mod advise;
 pub mod bodies;
 pub mod broad;
 pub mod build;
 #[cfg(feature = "clap")]
-mod cli;
+pub mod cli;
 pub mod config;
 pub mod contact;
 pub mod dynamics;

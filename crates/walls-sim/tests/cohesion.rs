@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 use std::f64::consts::PI;
 use walls_geometry::Particle;
 use walls_sim::build::Build;
-use walls_sim::config::{Flags, load, read_par, resolve};
+use walls_sim::config::{Flags, Inputs, Stepping, load, read_par, resolve};
 use walls_sim::contact::cohesion::{
     Cohesion, Colours, Model, Rule, against_wall, between_particles,
 };
@@ -345,8 +345,14 @@ fn settings_of(par: &str, build: &str) -> (Settings, Vec<String>) {
 fn settings_with(par: &str, build: &str, integrator: Integrator) -> (Settings, Vec<String>) {
     let params = parse_par(par).unwrap();
     let flags = Flags {
-        build: Some(Build::parse(build).unwrap()),
-        integrator,
+        inputs: Inputs {
+            build: Some(Build::parse(build).unwrap()),
+            ..Inputs::default()
+        },
+        stepping: Stepping {
+            integrator,
+            ..Stepping::default()
+        },
         ..Flags::default()
     };
     let run = resolve(
@@ -422,9 +428,15 @@ fn the_cohesion_file_is_read_beside_the_par_file() {
     )
     .unwrap();
     let flags = Flags {
-        par: Some(par.to_str().unwrap().to_string()),
-        build: Some(Build::parse("DEM DEM_ROTATION_DASHPOT DEM_COHESION").unwrap()),
-        integrator: Integrator::Pkdgrav,
+        inputs: Inputs {
+            par: Some(par.to_str().unwrap().to_string()),
+            build: Some(Build::parse("DEM DEM_ROTATION_DASHPOT DEM_COHESION").unwrap()),
+            ..Inputs::default()
+        },
+        stepping: Stepping {
+            integrator: Integrator::Pkdgrav,
+            ..Stepping::default()
+        },
         ..Flags::default()
     };
     let params = read_par(&flags).unwrap();

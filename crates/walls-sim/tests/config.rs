@@ -6,7 +6,8 @@
 
 use nalgebra::Vector3;
 use walls_sim::config::{
-    ConfigError, Flags, Run, load, particle_file, read_par, resolve, ss_base, walls_file,
+    ConfigError, Flags, Inputs, Run, Stepping, load, particle_file, read_par, resolve, ss_base,
+    walls_file,
 };
 use walls_sim::io::par::KT_PER_KN;
 use walls_sim::io::par::Params;
@@ -39,9 +40,12 @@ fn par() -> Params {
 #[test]
 fn a_flag_beats_the_par_file() {
     let flags = Flags {
-        dt: Some(1e-5),
-        k_n: Some(1e5),
-        gravity: Some(Vector3::new(1.0, 0.0, 0.0)),
+        inputs: Inputs {
+            dt: Some(1e-5),
+            k_n: Some(1e5),
+            gravity: Some(vec![1.0, 0.0, 0.0]),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let run = resolve(&flags, Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
@@ -99,7 +103,10 @@ fn the_par_file_gives_the_duration_and_edge_detection() {
     assert_eq!(run.settings.t_end, 150.0);
     assert!(!run.settings.edges);
     let flags = Flags {
-        t_end: Some(2.0),
+        inputs: Inputs {
+            t_end: Some(2.0),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let run = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball())).unwrap();
@@ -113,7 +120,10 @@ fn the_particle_file_from_the_flag_else_the_par_file() {
         ..Params::default()
     };
     let mut flags = Flags {
-        par: Some("runs/a/run.par".into()),
+        inputs: Inputs {
+            par: Some("runs/a/run.par".into()),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     // achInFile is beside the .par file.
@@ -122,7 +132,7 @@ fn the_particle_file_from_the_flag_else_the_par_file() {
         particle_file(&flags, Some(&par)).as_deref(),
         beside.to_str()
     );
-    flags.particles = Some("balls.csv".into());
+    flags.inputs.particles = Some("balls.csv".into());
     assert_eq!(
         particle_file(&flags, Some(&par)).as_deref(),
         Some("balls.csv")
@@ -149,18 +159,21 @@ fn load_reads_the_par_file_and_its_particles() {
     );
     let path = |name: &str| dir.path().join(name).to_string_lossy().into_owned();
     let mut flags = Flags {
-        par: Some(path("run.par")),
+        inputs: Inputs {
+            par: Some(path("run.par")),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let run = load_all(&flags, &scene(FLOOR)).unwrap();
     assert_eq!(run.particles.len(), 1);
     assert_eq!((run.settings.dt, run.settings.material.k_n), (1e-5, 3e5));
-    flags.particles = Some(path("two.csv"));
+    flags.inputs.particles = Some(path("two.csv"));
     assert_eq!(load_all(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
 
     // Errors name the file and the line.
     write("bad.par", "dDelta = 0\n");
-    flags.par = Some(path("bad.par"));
+    flags.inputs.par = Some(path("bad.par"));
     let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(matches!(e, ConfigError::File(_)));
     assert_eq!(
@@ -172,14 +185,20 @@ fn load_reads_the_par_file_and_its_particles() {
     );
     write("none.csv", "mass,radius,x,y,z,vx,vy,vz\n");
     let flags = Flags {
-        particles: Some(path("none.csv")),
+        inputs: Inputs {
+            particles: Some(path("none.csv")),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     // A file with no particles runs the walls alone.
     let run = load_all(&flags, &scene(FLOOR)).unwrap();
     assert!(run.particles.is_empty());
     let flags = Flags {
-        particles: Some(path("missing.csv")),
+        inputs: Inputs {
+            particles: Some(path("missing.csv")),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
@@ -237,7 +256,10 @@ fn istartstep_sets_the_first_step_number_and_the_start_time() {
     assert_eq!(out.steps, 20);
     // A --t-end flag runs by time instead.
     let flags = Flags {
-        t_end: Some(0.1),
+        inputs: Inputs {
+            t_end: Some(0.1),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let run = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball())).unwrap();
@@ -260,7 +282,10 @@ fn a_par_run_takes_pkdgravs_defaults_and_sentinels() {
     assert_eq!((m.mu_s, m.mu_r, m.mu_t), (0.0, 0.0, 0.0));
     // dKt = -1 follows a k_n given on the command line.
     let flags = Flags {
-        k_n: Some(1e5),
+        inputs: Inputs {
+            k_n: Some(1e5),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let m = resolve(&flags, Some(&par), &scene(FLOOR), Some(ball()))
@@ -285,7 +310,10 @@ fn the_walls_file_from_the_argument_else_beside_the_par_file() {
         ..Params::default()
     };
     let flags = Flags {
-        par: Some("runs/a/ss.par".into()),
+        inputs: Inputs {
+            par: Some("runs/a/ss.par".into()),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let beside = std::path::Path::new("runs/a").join("walls.dat");
@@ -309,7 +337,10 @@ fn the_sliding_rule_is_pkdgrav_s_reset_unless_given_and_the_clamp_needs_its_cont
     let run = resolve(&Flags::default(), Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
     assert_eq!(run.settings.sliding, Sliding::Reset);
     let clamp = Flags {
-        sliding: Sliding::Clamp,
+        stepping: Stepping {
+            sliding: Sliding::Clamp,
+            ..Stepping::default()
+        },
         ..Flags::default()
     };
     let run = resolve(&clamp, None, &scene(FLOOR), Some(ball())).unwrap();
@@ -321,14 +352,20 @@ fn the_sliding_rule_is_pkdgrav_s_reset_unless_given_and_the_clamp_needs_its_cont
     };
     assert_eq!(
         refused(Flags {
-            integrator: Integrator::Leapfrog,
+            stepping: Stepping {
+                integrator: Integrator::Leapfrog,
+                ..clamp.stepping
+            },
             ..clamp.clone()
         }),
         "--sliding clamp changes pkdgrav's contact law, which only --integrator pkdgrav runs (the comparison integrators' law resets the spring): leave one of them out"
     );
     assert_eq!(
         refused(Flags {
-            method: ContactModel::Hsdem,
+            inputs: Inputs {
+                method: ContactModel::Hsdem,
+                ..clamp.inputs
+            },
             ..clamp
         }),
         "--sliding clamp is a rule of the soft-sphere shear spring; hard spheres have none: leave it out, or run --method ssdem"

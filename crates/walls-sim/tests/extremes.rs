@@ -5,7 +5,7 @@
 
 use nalgebra::Vector3;
 use walls_keywords::number::EXACT_COUNT;
-use walls_sim::config::{ConfigError, Flags, MAX_STEPS, resolve};
+use walls_sim::config::{ConfigError, Counts, Flags, Inputs, MAX_STEPS, resolve};
 use walls_sim::io::par::{Params, read_par};
 use walls_sim::io::particles::{Format, format_of, read_bytes, read_csv, read_ss, write_ss};
 use walls_sim::run::{ContactModel, Settings, Stop, run, run_watched};
@@ -134,8 +134,11 @@ fn subnormal_inputs_are_read_and_warned_about_where_they_are() {
     // Options: a run's settings carry them, the options' first.
     let walls = scene(FLOOR);
     let flags = Flags {
-        gravity: Some(Vector3::new(0.0, 0.0, -1e-309)),
-        mu_s: Some(2e-310),
+        inputs: Inputs {
+            gravity: Some(vec![0.0, 0.0, -1e-309]),
+            mu_s: Some(2e-310),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let run = resolve(&flags, Some(&par), &walls, None).unwrap();
@@ -205,7 +208,10 @@ fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
     let balls = || vec![ball([0.0, 0.0, 1.0], [0.0; 3])];
     let k = refusal(
         &Flags {
-            k_n: Some(1e308),
+            inputs: Inputs {
+                k_n: Some(1e308),
+                ..Inputs::default()
+            },
             ..Flags::default()
         },
         balls(),
@@ -216,7 +222,10 @@ fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
     );
     let g = refusal(
         &Flags {
-            gravity: Some(Vector3::new(1e308, 0.0, 0.0)),
+            inputs: Inputs {
+                gravity: Some(vec![1e308, 0.0, 0.0]),
+                ..Inputs::default()
+            },
             ..Flags::default()
         },
         balls(),
@@ -230,8 +239,11 @@ fn runs_whose_numbers_overflow_are_refused_naming_the_source() {
 #[test]
 fn runs_beyond_the_step_limit_are_refused_with_the_count() {
     let flags = Flags {
-        dt: Some(1e-300),
-        t_end: Some(1.0),
+        inputs: Inputs {
+            dt: Some(1e-300),
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
@@ -240,17 +252,26 @@ fn runs_beyond_the_step_limit_are_refused_with_the_count() {
         "the run would take 9.999999999999999e299 steps of 1e-300 (--dt) to t = 1e0 (--t-end), more than the 9007199254740992 steps a run can count exactly (2^53: its step numbers are whole numbers and a step's time is step·dt in doubles): give a longer --dt or a shorter --t-end"
     );
     let flags = Flags {
-        dt: Some(0.01),
-        t_end: Some(1.0),
-        max_steps: Some(99),
+        inputs: Inputs {
+            dt: Some(0.01),
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
+        counts: Counts {
+            max_steps: 99,
+            ..Counts::default()
+        },
         ..Flags::default()
     };
     let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
     assert!(why.starts_with("the run would take 100 steps"), "{why}");
     assert!(why.contains("the limit of 99") && why.contains("--max-steps"));
     let flags = Flags {
-        dt: Some(1e-9),
-        t_end: Some(1.0),
+        inputs: Inputs {
+            dt: Some(1e-9),
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let why = refusal(&flags, vec![ball([0.0, 0.0, 1.0], [0.0; 3])]);
@@ -264,9 +285,15 @@ fn step_counts_that_do_not_fit_are_refused_whatever_the_limit() {
     let ball = || vec![ball([0.0, 0.0, 1.0], [0.0; 3])];
     for (dt, t_end) in [(Some(1e-320), None), (Some(1e-10), Some(1e299))] {
         let flags = Flags {
-            dt,
-            t_end,
-            max_steps: Some(u64::MAX),
+            inputs: Inputs {
+                dt,
+                t_end,
+                ..Inputs::default()
+            },
+            counts: Counts {
+                max_steps: u64::MAX,
+                ..Counts::default()
+            },
             ..Flags::default()
         };
         let why = refusal(&flags, ball());
@@ -279,16 +306,25 @@ fn step_counts_that_do_not_fit_are_refused_whatever_the_limit() {
     }
     // Beyond 2^53 but within a u64: the times would not be exact.
     let flags = Flags {
-        dt: Some(1e-16),
-        t_end: Some(1.0),
-        max_steps: Some(u64::MAX),
+        inputs: Inputs {
+            dt: Some(1e-16),
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
+        counts: Counts {
+            max_steps: u64::MAX,
+            ..Counts::default()
+        },
         ..Flags::default()
     };
     assert!(refusal(&flags, ball()).starts_with("the run would take 1e16 steps of 1e-16"));
     // Exactly 2^53 fits (and then meets the limit).
     let flags = Flags {
-        dt: Some(1.0),
-        t_end: Some(2f64.powi(53)),
+        inputs: Inputs {
+            dt: Some(1.0),
+            t_end: Some(2f64.powi(53)),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     assert!(refusal(&flags, ball()).contains("more than the limit of 100000000"));
@@ -441,11 +477,14 @@ fn an_interrupted_run_stops_after_the_step_it_is_in() {
 /// outcome.
 fn elastic_drop(dt: Option<f64>, z: f64) -> walls_sim::run::Outcome {
     let flags = Flags {
-        eps_n: Some(1.0),
-        gravity: Some(Vector3::new(0.0, 0.0, -1.0)),
-        k_n: dt.map(|_| 1e4),
-        dt,
-        t_end: Some(1.0),
+        inputs: Inputs {
+            eps_n: Some(1.0),
+            gravity: Some(vec![0.0, 0.0, -1.0]),
+            k_n: dt.map(|_| 1e4),
+            dt,
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let walls = scene(FLOOR);

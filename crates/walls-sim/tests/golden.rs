@@ -34,7 +34,7 @@ use std::time::Instant;
 use walls_geometry::{Particle, Wall};
 use walls_sim::OscillationStepping;
 use walls_sim::build::Build;
-use walls_sim::config::{self, Flags, Run};
+use walls_sim::config::{self, Flags, Inputs, Run, Stepping};
 use walls_sim::io::par::read_file as read_par_file;
 use walls_sim::run::{Integrator, Outcome, Settings, State, run_observed};
 
@@ -175,10 +175,16 @@ fn load(scene: &str) -> Scene {
     let build = build_of(&read(scene, "params.par"));
     let walls = walls_test_support::scene_in(&read(scene, "walls.dat"), build.contact_model());
     let flags = Flags {
-        par: Some(par_path),
-        build: Some(build),
-        stepping: OscillationStepping::Pkdgrav,
-        integrator: Integrator::Pkdgrav,
+        inputs: Inputs {
+            par: Some(par_path),
+            build: Some(build),
+            ..Inputs::default()
+        },
+        stepping: Stepping {
+            oscillation: OscillationStepping::Pkdgrav,
+            integrator: Integrator::Pkdgrav,
+            ..Stepping::default()
+        },
         ..Flags::default()
     };
     let Run {

@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 use walls_geometry::{Particle, Wall};
-use walls_sim::config::{Flags, resolve};
+use walls_sim::config::{Flags, Inputs, resolve};
 use walls_sim::run::{ContactModel, EventKind, Warning, defaults, run};
 use walls_test_support::scene;
 
@@ -87,7 +87,10 @@ fn struck() -> (Vec<Wall>, Vec<Particle>) {
 fn a_moving_plane_meets_a_particle_at_rest_soft() {
     let (walls, particles) = struck();
     let flags = Flags {
-        t_end: Some(1.0),
+        inputs: Inputs {
+            t_end: Some(1.0),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let r = resolve(&flags, None, &walls, Some(particles.clone())).unwrap();
@@ -120,8 +123,11 @@ fn a_moving_plane_meets_a_particle_at_rest_soft() {
 fn a_moving_plane_meets_a_particle_at_rest_hard() {
     let (walls, particles) = struck();
     let flags = Flags {
-        t_end: Some(1.0),
-        method: ContactModel::Hsdem,
+        inputs: Inputs {
+            t_end: Some(1.0),
+            method: ContactModel::Hsdem,
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let r = resolve(&flags, None, &walls, Some(particles)).unwrap();
@@ -139,8 +145,11 @@ fn a_default_timestep_ends_on_t_end() {
     let walls = scene("wall type plane\n");
     let ball = Particle::at_rest(0.1, Vec3::new(0.0, 0.0, 0.5), 0);
     let flags = Flags {
-        t_end: Some(3.0),
-        gravity: Some(Vec3::new(0.0, 0.0, -1.0)),
+        inputs: Inputs {
+            t_end: Some(3.0),
+            gravity: Some(vec![0.0, 0.0, -1.0]),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let r = resolve(&flags, None, &walls, Some(vec![ball])).unwrap();
@@ -155,8 +164,11 @@ fn a_given_timestep_that_does_not_divide_t_end_runs_past_it_and_says_so() {
     let walls = scene("wall type plane\n");
     let ball = Particle::at_rest(0.1, Vec3::new(0.0, 0.0, 5.0), 0);
     let flags = Flags {
-        t_end: Some(1.0),
-        dt: Some(0.3),
+        inputs: Inputs {
+            t_end: Some(1.0),
+            dt: Some(0.3),
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let r = resolve(&flags, None, &walls, Some(vec![ball])).unwrap();
@@ -175,7 +187,10 @@ fn a_given_timestep_that_does_not_divide_t_end_runs_past_it_and_says_so() {
     ));
     // A timestep that divides it, up to round-off, does not warn and ends on it.
     let flags = Flags {
-        dt: Some(0.1),
+        inputs: Inputs {
+            dt: Some(0.1),
+            ..flags.inputs
+        },
         ..flags
     };
     let ball = Particle::at_rest(0.1, Vec3::new(0.0, 0.0, 5.0), 0);
@@ -190,7 +205,10 @@ fn the_walls_run_alone_for_two_oscillation_periods() {
     let walls =
         scene("wall type disk radius 1 osc-ampl 0.1 osc-freq 6.283185307179586 osc-vec 0 0 1\n");
     let flags = Flags {
-        no_particles: true,
+        inputs: Inputs {
+            no_particles: true,
+            ..Inputs::default()
+        },
         ..Flags::default()
     };
     let r = resolve(&flags, None, &walls, None).unwrap();

@@ -43,19 +43,12 @@ type Vec3 = Vector3<f64>;
 /// particles meet each other with.
 pub type ParticleMaterial = Material;
 
-/// How the soft-sphere run integrates the equations of motion.
+/// How the soft-sphere run integrates the equations of motion. As a command-line value
+/// (the `clap` feature), the variants are listed in this order, pkdgrav's (the default)
+/// first, with the short help of `--integrator`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Integrator {
-    /// Kick-drift-kick leapfrog: half a kick, a drift, the forces, half a kick. Second
-    /// order; the dashpot sees the velocity of the first half kick.
-    Leapfrog,
-    /// The same leapfrog, with the dashpot fed velocities predicted to the end of the
-    /// step with the last acceleration, as pkdgrav does.
-    LeapfrogPredicted,
-    /// Explicit Euler: a drift with the last velocity, a whole kick with the last
-    /// acceleration, then the forces. First order and not symplectic; for comparison
-    /// (docs/accuracy.md).
-    ExplicitEuler,
     /// pkdgrav's own step, in its order (docs/pkdgrav-physics.md §2): the forces
     /// evaluated once at the start (stepping the springs of contacts open then); every
     /// contact, with a wall or a particle, fed the velocities and spins predicted to the
@@ -71,7 +64,29 @@ pub enum Integrator {
     /// `DEM_ROTATION_DASHPOT`, the constant torques of §1.6). The default: runs show
     /// what pkdgrav will do.
     #[default]
+    #[cfg_attr(
+        feature = "clap",
+        value(help = "pkdgrav's step order and contact law (docs/pkdgrav-physics.md §1–§2, §5)")
+    )]
     Pkdgrav,
+    /// Kick-drift-kick leapfrog: half a kick, a drift, the forces, half a kick. Second
+    /// order; the dashpot sees the velocity of the first half kick.
+    #[cfg_attr(feature = "clap", value(help = "Kick-drift-kick leapfrog"))]
+    Leapfrog,
+    /// The same leapfrog, with the dashpot fed velocities predicted to the end of the
+    /// step with the last acceleration, as pkdgrav does.
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "Kick-drift-kick with the dashpot at the velocity predicted to the step's end"
+        )
+    )]
+    LeapfrogPredicted,
+    /// Explicit Euler: a drift with the last velocity, a whole kick with the last
+    /// acceleration, then the forces. First order and not symplectic; for comparison
+    /// (docs/accuracy.md).
+    #[cfg_attr(feature = "clap", value(name = "euler", help = "Explicit Euler"))]
+    ExplicitEuler,
 }
 
 /// What to run.

@@ -2,8 +2,8 @@
 //! the real pkdgrav run from the particles' size, mass and speed, and prints the .par
 //! lines. The advice, its text and its JSON are [`walls_sim::advise`]'s.
 
-use super::ruled;
 use walls_sim::advise::{Contact, UnitSystem};
+use walls_sim::cli::ruled;
 use walls_sim::io::par::Rule;
 
 /// `walls-sim advise`: physical inputs in, pkdgrav parameters out (docs/evaluator.md,

@@ -1,7 +1,8 @@
 //! `walls-sim`'s command line ([`SimArgs`], run by [`dispatch`]) and its commands, one
 //! module each: [`scene`], [`run`], [`plan`], [`advise`] and [`preview`]; and what they
-//! share: the value parser of numbers with a range, reading the walls file, and the exit
-//! statuses.
+//! share: reading the walls file, and the exit statuses. The value parsers of numbers
+//! with a range are walls-sim's ([`walls_sim::cli`]), as are `run`'s and `plan`'s
+//! options ([`walls_sim::config::Flags`]).
 //!
 //! Diagnostics go to standard error. A file with errors still gives the scene resolved
 //! from what parsed, with exit status 1, as does a run that stopped early; exit status
@@ -21,6 +22,7 @@ use preview::PreviewArgs;
 use run::RunArgs;
 use walls_diagnostics::Severity;
 use walls_model::Options;
+use walls_sim::cli::ruled;
 use walls_sim::io::par::Rule;
 
 /// The command line of `walls-sim`.
@@ -86,16 +88,6 @@ pub fn dispatch(args: &SimArgs) -> i32 {
         Some(SimCommand::Advise(args)) => advise::run(args),
         // Only for arguments built in code: clap shows the help when no command is given.
         None => error("no command given: scene, run, plan, advise or preview"),
-    }
-}
-
-/// A value parser for a number that must obey `rule`, as the `.par` file's values must,
-/// read by the tools' one rule for numbers ([`walls_keywords::number`]): overflow and
-/// underflow are refused; a subnormal is warned about by the command that takes it.
-pub fn ruled(rule: Rule) -> impl Fn(&str) -> Result<f64, String> + Clone {
-    move |s| {
-        let x = walls_keywords::number::read(s).map_err(|why| format!("`{s}` is {why}"))?;
-        rule.check(x).map_err(|says| format!("it must be {says}"))
     }
 }
 

@@ -4,19 +4,15 @@
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
 use super::outputs::{Failure, RunOutputs};
-use super::{error, exit_status, read_walls, ruled};
-use crate::ContactModel;
+use super::{error, exit_status, read_walls};
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
 use walls_geometry::Particle;
 use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
-use walls_sim::OscillationStepping;
-use walls_sim::config::Outputs;
-use walls_sim::contact::ssdem::Sliding;
-use walls_sim::io::par::Rule;
+use walls_sim::config::{Counts, Flags, Inputs, Outputs, Stepping};
 use walls_sim::report::OutputError;
-use walls_sim::run::{Integrator, Settings};
+use walls_sim::run::Settings;
 
 /// `walls-sim run`: the docs/spec.md §2 command line.
 #[derive(clap::Args)]
@@ -24,75 +20,9 @@ pub struct RunArgs {
     /// The walls file (default: the --par file's achWallsFile, beside the .par file).
     #[arg(value_name = "FILE")]
     pub file: Option<String>,
-    /// Particles: a CSV file (mass,radius,x,y,z,vx,vy,vz[,wx,wy,wz,color]) or a pkdgrav
-    /// .ss file (by the extension .csv or .ss, else by the content); `-` reads standard
-    /// input. Without it, nine particles are dropped inside the scene's container
-    /// (or onto the scene when it has none).
-    #[allow(
-        rustdoc::broken_intra_doc_links,
-        reason = "the brackets are --help's optional columns"
-    )]
-    #[arg(long, value_name = "FILE")]
-    pub particles: Option<String>,
-    /// Run the walls alone, with no particles (instead of the nine dropped onto the
-    /// scene, or the --par file's achInFile): oscillating walls move, reactive walls
-    /// fall.
-    #[arg(long, conflicts_with = "particles")]
-    pub no_particles: bool,
-    /// A pkdgrav parameter file: timestep, steps, output interval, material, gravity,
-    /// and the walls file (achWallsFile) and particle file (achInFile) when not given
-    /// here. Keys the evaluator does not follow are warned about.
-    #[arg(long, value_name = "FILE")]
-    pub par: Option<String>,
-    /// The contact model (with --pkdgrav-build, the build's: DEM or not).
-    #[arg(long, value_enum, default_value_t = ContactModel::Ssdem)]
-    pub method: ContactModel,
-    /// The pkdgrav build to follow: its compile options, space or comma separated
-    /// (default pkdgrav's own, "DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT"; no DEM:
-    /// hard-sphere walls). DEM_COHESION, DEM_TWOLAYERS, DEM_WALLS_REACT and AGGS turn
-    /// on their physics.
-    #[arg(long, value_name = "OPTIONS", value_parser = build_option, conflicts_with = "method")]
-    pub pkdgrav_build: Option<walls_sim::build::Build>,
-    /// The timestep (default: π·√(m/(2k_n))/100 for the lightest particle, no more than
-    /// lets anything move 2 % of the smallest radius, and shortened so that whole steps
-    /// end on --t-end).
-    #[arg(long, value_parser = ruled(Rule::Positive))]
-    pub dt: Option<f64>,
-    /// When to stop (default: three free falls over the scene; without particles, two
-    /// oscillation periods).
-    #[arg(long, value_parser = ruled(Rule::Positive))]
-    pub t_end: Option<f64>,
-    /// Uniform gravity.
-    #[arg(long, num_args = 3, value_names = ["GX", "GY", "GZ"], allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
-    pub gravity: Option<Vec<f64>>,
-    /// The particles' normal restitution (what walls' 99 means).
-    #[arg(long, value_parser = ruled(Rule::Restitution))]
-    pub epsn: Option<f64>,
-    /// The particles' tangential restitution.
-    #[arg(long, value_parser = ruled(Rule::Tangential))]
-    pub epst: Option<f64>,
-    /// The particles' normal spring constant.
-    #[arg(long = "k-n", value_parser = ruled(Rule::Positive))]
-    pub k_n: Option<f64>,
-    /// The particles' tangential spring constant (default 2/7 of k_n).
-    #[arg(long = "k-t", value_parser = ruled(Rule::NonNegative))]
-    pub k_t: Option<f64>,
-    /// The particles' static friction.
-    #[arg(long = "mu-s", value_parser = ruled(Rule::NonNegative))]
-    pub mu_s: Option<f64>,
-    /// The particles' rolling friction (SSDEM).
-    #[arg(long = "mu-r", value_parser = ruled(Rule::NonNegative))]
-    pub mu_r: Option<f64>,
-    /// The particles' twisting friction (SSDEM).
-    #[arg(long = "mu-t", value_parser = ruled(Rule::NonNegative))]
-    pub mu_t: Option<f64>,
-    /// Particles pass through each other (they still meet walls).
-    #[arg(long)]
-    pub no_particle_contacts: bool,
-    /// HSDEM: only faces and cylinder sides count, not edges, corners and rims
-    /// (pkdgrav's bWallsEdgeDetect = 0).
-    #[arg(long)]
-    pub no_edges: bool,
+    /// `--particles` to `--no-edges`.
+    #[command(flatten)]
+    pub inputs: Inputs,
     /// Write the trajectory to DIR: particles.csv and walls.csv, at the start and every
     /// --every steps (and at a --par run's last step).
     #[arg(long, value_name = "DIR")]
@@ -102,25 +32,9 @@ pub struct RunArgs {
     /// which pkdgrav's tools read.
     #[arg(long, requires = "out")]
     pub ss_output: bool,
-    /// How oscillating walls move: step by step as pkdgrav does (the default), or on
-    /// the exact sinusoid (for comparison; --integrator pkdgrav always steps SSDEM
-    /// walls as pkdgrav does).
-    #[arg(long, value_enum, default_value_t = OscillationStepping::Pkdgrav)]
-    pub oscillation: OscillationStepping,
-    /// SSDEM: the integrator: pkdgrav's own step and contact law (the default); or,
-    /// for comparison, kick-drift-kick leapfrog with the summary's contact law, the same
-    /// with the dashpot velocity predicted to the step's end, or explicit Euler.
-    #[arg(long, value_enum, default_value_t = Integrator::Pkdgrav)]
-    pub integrator: Integrator,
-    /// SSDEM with --integrator pkdgrav: what the shear spring of a sliding contact does:
-    /// pkdgrav's reset (the default), or the Coulomb clamp of LAMMPS and LIGGGHTS (a
-    /// sliding contact's friction is exactly μ_s·N). Not a .par key: pkdgrav has none.
-    #[arg(long, value_enum, default_value_t = Sliding::Reset)]
-    pub sliding: Sliding,
-    /// Run every part of the model, whatever the scene needs (for comparison; see
-    /// `walls-sim plan`).
-    #[arg(long)]
-    pub all_parts: bool,
+    /// `--oscillation` to `--all-parts`.
+    #[command(flatten)]
+    pub stepping: Stepping,
     /// Empty pkdgrav's WALLSREACTdata.out and WALLSREACTviz.out in --out first, rather
     /// than appending to them as pkdgrav does.
     #[arg(long)]
@@ -130,13 +44,9 @@ pub struct RunArgs {
     /// name.
     #[arg(long, requires = "out")]
     pub force: bool,
-    /// The most steps the run may take: a run that would take more is refused before it
-    /// starts (a mistyped --dt or --t-end), saying how many it needs.
-    #[arg(long, value_name = "N", default_value_t = walls_sim::config::MAX_STEPS)]
-    pub max_steps: u64,
-    /// Steps between trajectory rows (default: the --par file's iOutInterval, else 100).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
-    pub every: Option<u64>,
+    /// `--max-steps` and `--every`.
+    #[command(flatten)]
+    pub counts: Counts,
     /// Print the result as JSON on standard output (always in pkdgrav units).
     #[arg(long)]
     pub json: bool,
@@ -144,11 +54,6 @@ pub struct RunArgs {
     /// them when it sets some (auto); pkdgrav's alone; centimetres-grams-seconds; or SI.
     #[arg(long, value_enum, default_value_t = System::Auto)]
     pub units: System,
-}
-
-/// `--pkdgrav-build`'s value.
-fn build_option(text: &str) -> Result<walls_sim::build::Build, String> {
-    walls_sim::build::Build::parse(text).map_err(|e| e.to_string())
 }
 
 /// Runs particles as `args` say; the exit status.
@@ -169,7 +74,7 @@ pub struct Prepared {
     /// How often the outputs are written, and the `.ss` outputs' names.
     pub outputs: Outputs,
     /// The options that settle the settings.
-    pub flags: walls_sim::config::Flags,
+    pub flags: Flags,
     /// The files the run reads: the walls file, the `.par` file, the particles and the
     /// cohesion file, which no output may replace.
     pub inputs: Vec<String>,
@@ -184,16 +89,20 @@ pub struct Prepared {
 /// run's mode), the particles, and the settings from options, `.par` and defaults.
 pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     use walls_sim::config;
-    let flags = flags(args);
+    let flags = Flags {
+        inputs: args.inputs.clone(),
+        stepping: args.stepping,
+        counts: args.counts,
+    };
     let par = config::read_par(&flags).map_err(|e| e.to_string())?;
-    if let (Some(path), Some(p)) = (&args.par, &par) {
+    if let (Some(path), Some(p)) = (&flags.inputs.par, &par) {
         for w in &p.warnings {
             crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
     let file =
         config::walls_file(args.file.as_deref(), &flags, par.as_ref()).ok_or_else(
-            || match &args.par {
+            || match &flags.inputs.par {
                 Some(path) => {
                     format!("no walls file: give FILE, or an achWallsFile line in {path}")
                 }
@@ -204,18 +113,18 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     let walls = decode(&checked.scene);
     let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
-    if let Some(path) = &args.par {
+    if let Some(path) = &flags.inputs.par {
         for w in &run.warnings {
             crate::errln!("walls-sim: warning: {path}: {w}");
         }
     }
     let outputs = config::outputs(&flags, par.as_ref());
-    if let (Some(w), Some(path), true) = (&outputs.ss_warning, &args.par, args.ss_output) {
+    if let (Some(w), Some(path), true) = (&outputs.ss_warning, &flags.inputs.par, args.ss_output) {
         crate::errln!("walls-sim: warning: {path}: {w}");
     }
     let inputs = [
         Some(file.clone()),
-        args.par.clone(),
+        flags.inputs.par.clone(),
         config::particle_file(&flags, par.as_ref()),
         config::cohesion_file(&flags, par.as_ref()),
     ]
@@ -233,43 +142,6 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
         numbers: run.numbers,
         flags,
     })
-}
-
-/// The options of `args` that settle the run's settings.
-fn flags(args: &RunArgs) -> walls_sim::config::Flags {
-    use walls_sim::run::Planning;
-    walls_sim::config::Flags {
-        particles: args.particles.clone(),
-        no_particles: args.no_particles,
-        par: args.par.clone(),
-        method: args.method,
-        build: args.pkdgrav_build.clone(),
-        dt: args.dt,
-        t_end: args.t_end,
-        gravity: args
-            .gravity
-            .as_ref()
-            .map(|g| nalgebra::Vector3::new(g[0], g[1], g[2])),
-        eps_n: args.epsn,
-        eps_t: args.epst,
-        k_n: args.k_n,
-        k_t: args.k_t,
-        mu_s: args.mu_s,
-        mu_r: args.mu_r,
-        mu_t: args.mu_t,
-        no_particle_contacts: args.no_particle_contacts,
-        no_edges: args.no_edges,
-        stepping: args.oscillation,
-        integrator: args.integrator,
-        sliding: args.sliding,
-        planning: if args.all_parts {
-            Planning::Everything
-        } else {
-            Planning::Needed
-        },
-        max_steps: Some(args.max_steps),
-        every: args.every,
-    }
 }
 
 fn simulate(args: &RunArgs) -> Result<i32, String> {

@@ -5,11 +5,12 @@
 
 mod output;
 
-use super::{error, exit_status, read_walls, ruled};
+use super::{error, exit_status, read_walls};
 use crate::input::display_name;
 use crate::movie::{self, Snapshot, VizSteps};
 use crate::{Checked, ContactModel};
 use walls_geometry::units::System;
+use walls_sim::cli::ruled;
 
 use std::path::{Path, PathBuf};
 use walls_preview::ssdraw::SsdrawView;
