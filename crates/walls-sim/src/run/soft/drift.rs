@@ -43,12 +43,11 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
     // translating one, the skin), so it cannot reach a particle that has moved less
     // than half the skin since, unless the wall itself has moved more. Such a
     // particle is owed nothing, and when a wall has moved that far, no particle is
-    // (the list is found again after this pass). Nothing is owed with a wall index
-    // or the walls of reactive assemblies, placed only after this pass.
+    // (the list is found again after this pass). Nothing is owed with the walls of
+    // reactive assemblies, placed only after this pass.
     let near = broad.near.as_ref().filter(|_| forces);
     let now: &[WallNow] = if forces { &walls.now } else { &[] };
-    let owing = walls.index.is_none() || !forces;
-    let owing = owing && near.is_none_or(|n| !n.moved(now, half));
+    let owing = near.is_none_or(|n| !n.moved(now, half));
     // The settings held by value (`move`): by reference, every particle read each
     // through a pointer to these locals.
     let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {

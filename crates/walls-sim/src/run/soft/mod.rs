@@ -37,7 +37,7 @@
 //! The stepper's state is kept in named sets, as rapier keeps its bodies and colliders:
 //! what set-up decided ([`Rules`]: the kicks, the [`ContactLaw`] for walls and pairs
 //! alike, the particles' material, the optional physics), the particles ([`Bodies`]),
-//! the walls ([`WallSet`]: materials and the laws' constants, index, motion, assemblies'
+//! the walls ([`WallSet`]: materials and the laws' constants, motion, assemblies'
 //! walls), what may touch ([`Broad`]: the candidate pairs, [`PairList`], and the
 //! near-wall lists, [`NearWalls`]), the assemblies and aggregates ([`Rigid`]), the closing
 //! kicks deferred to the next drift ([`Deferred`]), the passes' scratch and reports
@@ -53,7 +53,6 @@ use super::{
     Overlapping, PARALLEL_FROM, Settings, State, WallNow, Warning, carry, energy, in_parallel,
 };
 use crate::broad::pairs::PairList;
-use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{Material, Restitution};
 use crate::dynamics::aggregate::Aggregates;
 use crate::dynamics::reactive::Assembly;
@@ -176,9 +175,8 @@ struct Deferred {
     largest_inverse: f64,
 }
 
-/// The walls of a run: their materials and the laws' constants worked out once, the wall
-/// index, their motion and where they stand, and the reactive assemblies they belong
-/// to.
+/// The walls of a run: their materials and the laws' constants worked out once, their
+/// motion and where they stand, and the reactive assemblies they belong to.
 struct WallSet {
     /// Each wall's material, with the particles' values where it says so.
     materials: Vec<Material>,
@@ -188,8 +186,6 @@ struct WallSet {
     restitutions: Vec<(Restitution, Restitution)>,
     /// Whether each wall oscillates (a bounce off it may gain speed).
     oscillating: Vec<bool>,
-    /// The wall index, when the plan uses one.
-    index: Option<WallIndex>,
     origins: Origins,
     /// The walls as they stand: placed once when no wall moves (the plan), else every
     /// step; reactive assemblies' walls every step.
@@ -240,8 +236,8 @@ struct Bodies {
     walled: Vec<bool>,
 }
 
-/// What may touch: the candidate pairs, with their open contacts, and, without a wall
-/// index, the walls near each particle, found with them.
+/// What may touch: the candidate pairs, with their open contacts, and the walls near
+/// each particle, found with them (through the wall index among many bounded walls).
 struct Broad {
     candidates: PairList,
     near: Option<NearWalls>,

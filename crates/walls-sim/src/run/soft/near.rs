@@ -1,9 +1,11 @@
 //! The walls near each particle of the soft-sphere run (a Verlet list of walls,
 //! [`NearWalls`]), found with the candidate pairs ([`PairList`]) and found again with
-//! them.
+//! them: through the wall index among many bounded walls (a mesh), else by looking at
+//! every wall.
 
 use super::{State, WallNow};
 use crate::broad::pairs::PairList;
+use crate::broad::wall_index::WallIndex;
 use nalgebra::Vector3;
 
 type Vec3 = Vector3<f64>;
@@ -13,7 +15,10 @@ type Vec3 = Vector3<f64>;
 /// again, and so does a wall that translates (the lists are found again when one has),
 /// so a fixed wall farther than the particle's radius and half the skin when they were,
 /// or a translating one farther than its radius and the skin, cannot touch it. The
-/// walls of reactive assemblies, which turn as well, are visited by every particle.
+/// walls of reactive assemblies, which turn as well, are visited by every particle. With
+/// a wall index (the plan's, among many bounded walls), each particle's are found among
+/// the index's candidates within its widest reach, so that a list costs a query of the
+/// index per particle at each rebuild rather than one at every step.
 pub(super) struct NearWalls {
     /// Whether each wall is kept in the lists: every wall but those of reactive
     /// assemblies.
@@ -27,10 +32,16 @@ pub(super) struct NearWalls {
     /// Where each particle's walls start in `walls` (one more entry than particles).
     pub(super) starts: Vec<u32>,
     pub(super) walls: Vec<usize>,
+    /// The wall index the lists are found through, when the plan uses one.
+    index: Option<WallIndex>,
 }
 
 impl NearWalls {
-    pub(super) fn new(listed: Vec<bool>, translating: Vec<bool>) -> NearWalls {
+    pub(super) fn new(
+        listed: Vec<bool>,
+        translating: Vec<bool>,
+        index: Option<WallIndex>,
+    ) -> NearWalls {
         let moving = (0..listed.len()).filter(|&w| !listed[w]).collect();
         NearWalls {
             listed,
@@ -39,6 +50,7 @@ impl NearWalls {
             built_origins: Vec::new(),
             starts: Vec::new(),
             walls: Vec::new(),
+            index,
         }
     }
 
@@ -46,26 +58,42 @@ impl NearWalls {
     /// skin) beyond its radius for a fixed wall and twice that for a translating one,
     /// in ascending order.
     pub(super) fn build(&mut self, states: &[State], walls: &[WallNow], half: f64) {
-        self.built_origins.clear();
-        self.built_origins.extend(walls.iter().map(|w| w.origin));
-        self.starts.clear();
-        self.walls.clear();
-        self.starts.push(0);
+        let NearWalls {
+            listed,
+            translating,
+            built_origins,
+            starts,
+            walls: near,
+            index,
+            ..
+        } = self;
+        built_origins.clear();
+        built_origins.extend(walls.iter().map(|w| w.origin));
+        starts.clear();
+        near.clear();
+        starts.push(0);
         for s in states {
             if s.alive {
-                let r = s.particle.radius;
-                for (w, wall) in walls.iter().enumerate() {
-                    let reach = if self.translating[w] {
+                let (pos, r) = (&s.particle.pos, s.particle.radius);
+                let test = |w: usize| {
+                    let reach = if translating[w] {
                         r + 2.0 * half
                     } else {
                         r + half
                     };
-                    if self.listed[w] && !wall.cull.clear_of(&s.particle.pos, reach) {
-                        self.walls.push(w);
+                    if listed[w] && !walls[w].cull.clear_of(pos, reach) {
+                        near.push(w);
                     }
+                };
+                match index {
+                    // The index's candidates come ascending, each once.
+                    Some(index) => {
+                        index.for_each_candidate(pos, r + 2.0 * half, built_origins, test)
+                    }
+                    None => (0..walls.len()).for_each(test),
                 }
             }
-            self.starts.push(self.walls.len() as u32);
+            starts.push(near.len() as u32);
         }
     }
 

@@ -103,12 +103,12 @@ impl<'a> SoftStepper<'a> {
                 assembly_of[w] = Some(a);
             }
         }
-        let index = plan.wall_index.then(|| WallIndex::new(scene));
         let mut near = None;
-        if index.is_none() && !scene.is_empty() {
+        if !scene.is_empty() {
             let listed = assembly_of.iter().map(Option::is_none).collect();
             let translating = scene.iter().map(|w| w.motion.translates()).collect();
-            near = Some(NearWalls::new(listed, translating));
+            let index = plan.wall_index.then(|| WallIndex::new(scene));
+            near = Some(NearWalls::new(listed, translating, index));
         }
         // Built once, with the walls near each particle when it keeps them.
         near::build_lists(&mut candidates, &mut near, &states, &now);
@@ -158,7 +158,6 @@ impl<'a> SoftStepper<'a> {
                 damping,
                 restitutions,
                 oscillating,
-                index,
                 origins,
                 now,
                 assembly_of,

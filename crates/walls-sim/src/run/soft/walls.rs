@@ -8,7 +8,6 @@ use super::{
     Bodies, Broad, CHUNK, ContactLaw, Deferred, Event, EventKind, Flow, Journal, Kicks, Law, Load,
     Overlapping, Rigid, Rules, State, Vec3, WallNow, WallSet, Warning, carry, inertia,
 };
-use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{
     Dashpot, Optional, Record, Rolling, Touch, contact, contact_radius, dashpot_contact_with,
     normal_contact, resistance,
@@ -42,10 +41,8 @@ pub(super) struct Walls<'a> {
     set: &'a WallSet,
     /// The walls as they stand (none without forces: `bDoGravity = 0`).
     now: &'a [WallNow],
-    /// The wall index, when the plan uses one (and forces are on).
-    index: Option<&'a WallIndex>,
-    /// Without a wall index, the fixed walls near each particle and the walls that
-    /// move ([`NearWalls`]).
+    /// The fixed walls near each particle and the walls that move ([`NearWalls`]; none
+    /// without walls or forces).
     near: Option<&'a NearWalls>,
     plan: &'a Plan,
     kicks: Kicks,
@@ -151,13 +148,10 @@ pub(super) struct Closing {
 /// touching it.
 #[inline]
 pub(super) fn clear_of_walls(i: usize, s: &State, open: &[(usize, Open)], walls: &Walls) -> bool {
-    walls.index.is_none()
-        && open.is_empty()
-        && clear_of_near(i, &s.particle.pos, s.particle.radius, walls.near, walls.now)
+    open.is_empty() && clear_of_near(i, &s.particle.pos, s.particle.radius, walls.near, walls.now)
 }
 
-/// [`clear_of_walls`] for particle `i` (at `pos`, of radius `r`) without a wall index
-/// and with no contact open: its near walls (`near`, as they stand: `now`) all surely
+/// [`clear_of_walls`] for particle `i` (at `pos`, of radius `r`) with no contact open: its near walls (`near`, as they stand: `now`) all surely
 /// out of its reach, and none moving.
 #[inline(always)]
 pub(super) fn clear_of_near(
@@ -246,48 +240,23 @@ pub(super) fn touch_walls(
     let (t, dt) = (walls.t, walls.closing.dt);
     let (m, r) = (s.particle.mass, s.particle.radius);
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
-    // The walls within reach (from the wall index, when the plan uses one), and those
-    // the particle touched last step, whose contacts may end; in wall order either way.
+    // The walls near it ([`NearWalls`]), those of reactive assemblies, and those the
+    // particle touched last step, whose contacts may end; in wall order.
     visit.clear();
-    let indexed = walls.index.is_some();
-    match walls.index {
-        Some(index) => {
-            index.for_each_candidate(&s.particle.pos, r, &walls.set.origins.now, |w| {
-                visit.push(w)
-            });
-            // The candidates come ascending; search only them (the walls pushed after
-            // them are not in order), so no wall is visited twice.
-            let candidates = visit.len();
-            for (w, _) in open.iter() {
-                if visit[..candidates].binary_search(w).is_err() {
-                    visit.push(*w);
-                }
-            }
-            visit.sort_unstable();
+    if let Some(near) = walls.near {
+        visit.extend(near.of(i));
+        visit.extend(near.moving.iter().copied());
+        for (w, _) in open.iter() {
+            visit.push(*w);
         }
-        None => {
-            if let Some(near) = walls.near {
-                visit.extend(near.of(i));
-                visit.extend(near.moving.iter().copied());
-                for (w, _) in open.iter() {
-                    visit.push(*w);
-                }
-                if visit.len() > 1 {
-                    visit.sort_unstable();
-                    visit.dedup();
-                }
-            }
+        if visit.len() > 1 {
+            visit.sort_unstable();
+            visit.dedup();
         }
     }
-    let indexed = indexed || walls.near.is_some();
-    let count = if indexed {
-        visit.len()
-    } else {
-        walls.now.len()
-    };
-    let listed = |at: usize| if indexed { visit[at] } else { at };
+    let count = visit.len();
     for at in 0..count {
-        let w = listed(at);
+        let w = visit[at];
         let wall = &walls.now[w];
         let k = open.iter().position(|(o, _)| *o == w);
         // Most particles are far from most walls: a cheap test first, unless a contact
@@ -508,7 +477,6 @@ pub(super) fn wall_contacts(
     let walls = Walls {
         set,
         now: if forces { &set.now } else { &[] },
-        index: set.index.as_ref().filter(|_| forces),
         near: near.filter(|_| forces),
         plan: rules.plan,
         kicks: rules.kicks,
