@@ -180,19 +180,7 @@ fn the_wall_index_finds_the_same_contacts_as_looking_at_every_wall() {
         };
         let with = parts(&tiles, &ps, &base).0;
         assert!(with.wall_index, "150 tiles call for the index");
-        let runs: Vec<_> = [true, false]
-            .into_iter()
-            .map(|on| {
-                let s = Settings {
-                    planning: Planning::Exactly(Plan {
-                        wall_index: on,
-                        ..with
-                    }),
-                    ..base.clone()
-                };
-                run(&tiles, ps.clone(), &s)
-            })
-            .collect();
+        let runs = with_and_without_index(&tiles, &ps, &base, with);
         assert!(
             runs[0].events.len() > 10,
             "{method:?}: {}",
@@ -251,20 +239,31 @@ fn the_walls_near_each_particle_found_through_the_index_follow_a_moving_mesh() {
     };
     let with = parts(&floor, &ps, &base).0;
     assert!(with.wall_index && with.moving_walls, "{with:?}");
-    let runs: Vec<_> = [true, false]
+    let runs = with_and_without_index(&floor, &ps, &base, with);
+    assert!(runs[0].events.len() > 10, "{}", runs[0].events.len());
+    assert_eq!(runs[0].events, runs[1].events);
+    assert_eq!(runs[0].particles, runs[1].particles);
+}
+
+/// The runs of `ps` against `walls` with `settings` and `plan`, with the wall index and
+/// without it.
+fn with_and_without_index(
+    walls: &[Wall],
+    ps: &[Particle],
+    settings: &Settings,
+    plan: Plan,
+) -> Vec<walls_sim::run::Outcome> {
+    [true, false]
         .into_iter()
         .map(|on| {
             let s = Settings {
                 planning: Planning::Exactly(Plan {
                     wall_index: on,
-                    ..with
+                    ..plan
                 }),
-                ..base.clone()
+                ..settings.clone()
             };
-            run(&floor, ps.clone(), &s)
+            run(walls, ps.to_vec(), &s)
         })
-        .collect();
-    assert!(runs[0].events.len() > 10, "{}", runs[0].events.len());
-    assert_eq!(runs[0].events, runs[1].events);
-    assert_eq!(runs[0].particles, runs[1].particles);
+        .collect()
 }
