@@ -1,27 +1,31 @@
-//! The soft-sphere run's set-up ([`SoftStepper::new`]): the materials, the checks
-//! before it, the walls, the assemblies that can move, pkdgrav's aggregates and the
-//! candidate pairs.
+//! The soft-sphere run's set-up ([`SoftStepper::new`]): the scene, particles, settings
+//! and plan compiled once into the run's sets (the materials, the checks before it, the
+//! walls, the assemblies that can move, pkdgrav's aggregates, the lists of what may
+//! touch, the particles and the kicks deferred).
 
 use super::near::{self, NearWalls};
 use super::pairs::{PairMaterial, PairPass};
 use super::walls::{Closing, WallPass};
 use super::{
     Bodies, Broad, CHUNK, Clock, ContactLaw, Deferred, Integrator, Journal, Kicks, Load, Materials,
-    OverlapWarnings, PARALLEL_FROM, Rigid, Rules, Settings, SoftStepper, State, WallSet,
+    OverlapWarnings, PARALLEL_FROM, Rigid, Rules, Settings, SoftStepper, State, Vec3, WallSet,
     WarnedOnce, Warning, assembly_energy, energy, in_parallel, inertia,
 };
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
-use crate::contact::ssdem::{Restitution, damping_per_root_mass};
+use crate::contact::ssdem::{Material, Restitution, damping_per_root_mass};
 use crate::dynamics::aggregate::{self, Aggregates};
+use crate::dynamics::reactive::Assembly;
 use crate::run::Origins;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use walls_geometry::Wall;
 
 impl<'a> SoftStepper<'a> {
-    /// The run at its start: the materials, the checks before it ([`crate::run::stability`]),
-    /// the walls, the assemblies that can move, the candidate pairs.
+    /// The run at its start, its sets compiled from the scene, the particles, the
+    /// settings and the plan: the materials, the checks before it
+    /// ([`crate::run::stability`]), pkdgrav's aggregates, the assemblies that can move,
+    /// the walls, the lists of what may touch, the particles and the kicks deferred.
     pub(super) fn new(
         scene: &'a [Wall],
         states: Vec<State>,
@@ -33,115 +37,29 @@ impl<'a> SoftStepper<'a> {
             walls: materials,
             mut between,
         } = Materials::new(scene, &settings.material);
-        let reactive = plan.reactive;
         if settings.build.aggs {
             // An AGGS build has no rolling or twisting between particles (§9.6).
             between.mu_r = 0.0;
             between.mu_t = 0.0;
         }
         let initial = energy(&states, &g)
-            + if reactive {
+            + if plan.reactive {
                 assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
             } else {
                 0.0
             };
-        let n = states.len();
-        // Each load starts the run with gravity alone, whichever the integrator (pkdgrav's
-        // evaluation before the first step, `SoftStepper::start`, adds to it; the others
-        // kick with it at once). In a step, the wall pass starts the next step's, or the
-        // drift or `super::drift::settle` after an owed kick, and for an aggregate's
-        // members.
-        let loads = states.iter().map(|s| Load::gravity(s, &g)).collect();
-        let candidates = PairList::new(
-            &states,
-            plan.particle_contacts,
-            in_parallel(n),
-            n >= PARALLEL_FROM,
-        );
-        let mut warnings = Vec::new();
-        let oscillating: Vec<bool> = scene
-            .iter()
-            .map(|w| w.motion.oscillation.amplitude != 0.0)
-            .collect();
-        warnings.extend(crate::run::stability::soft_warnings(
-            scene, &states, settings,
-        ));
+        let mut warnings = crate::run::stability::soft_warnings(scene, &states, settings);
         let mut states = states;
         let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
-        let mut candidates = candidates;
-        candidates.held |= aggregates.is_some();
-        let origins = Origins::new(scene, settings.stepping, settings.t_start());
-        let now = if settings.integrator == Integrator::Pkdgrav {
-            origins.walls_pkdgrav(scene, settings.t_start())
-        } else {
-            origins.walls(scene, settings.t_start())
-        };
-        let heavy: Vec<usize> = (0..scene.len())
-            .filter(|&w| scene[w].reactive.is_heavy())
-            .collect();
-        if !heavy.is_empty() && !settings.build.walls_react {
-            warnings.push(Warning::MassesIgnored { walls: heavy });
-        }
-        let mut assemblies = if reactive {
-            crate::dynamics::reactive::assemblies(scene)
-        } else {
-            Vec::new()
-        };
-        if settings.integrator == Integrator::Pkdgrav {
-            for a in &mut assemblies {
-                a.follow_pkdgrav(scene);
-            }
-        }
-        let stuck = crate::dynamics::reactive::immovable(&assemblies);
-        if !stuck.is_empty() {
-            assemblies.retain(|a| !stuck.contains(&a.number));
-            warnings.push(Warning::ImmovableAssemblies { assemblies: stuck });
-        }
-        let mut assembly_of = vec![None; scene.len()];
-        for (a, assembly) in assemblies.iter().enumerate() {
-            for &w in &assembly.walls {
-                assembly_of[w] = Some(a);
-            }
-        }
-        let mut near = None;
-        if !scene.is_empty() {
-            let listed = assembly_of.iter().map(Option::is_none).collect();
-            let translating = scene.iter().map(|w| w.motion.translates()).collect();
-            let index = plan.wall_index.then(|| WallIndex::new(scene));
-            near = Some(NearWalls::new(listed, translating, index));
-        }
-        // Built once, with the walls near each particle when it keeps them.
-        near::build_lists(&mut candidates, &mut near, &states, &now);
+        let assemblies = set_up_assemblies(scene, settings, plan, &mut warnings);
+        let walls = wall_set(scene, settings, materials, &assemblies);
+        let broad = broad(scene, &states, plan, &walls);
         let optional = OptionalPhysics::new(scene, &states, settings);
-        let damping: Vec<f64> = materials
-            .iter()
-            .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
-            .collect();
-        let restitutions = materials
-            .iter()
-            .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
-            .collect();
-        // The largest, or not a number if any is (then no kick is owed unchecked).
-        let largest = |a: f64, b: f64| {
-            if a.is_nan() || b.is_nan() {
-                f64::NAN
-            } else {
-                a.max(b)
-            }
-        };
-        let gravity_bound =
-            g.abs().sum() * (states.iter()).map(|s| s.particle.mass).fold(0.0, largest);
-        let inverses: Vec<(f64, f64)> = (states.iter())
-            .map(|s| {
-                let p = &s.particle;
-                (1.0 / p.mass, 1.0 / inertia(p.mass, p.radius))
-            })
-            .collect();
-        let largest_inverse = (inverses.iter())
-            .map(|i| largest(i.0, i.1))
-            .fold(0.0, largest);
         let kicks = Kicks::of(settings.integrator);
         let contact = ContactLaw::of(settings, &kicks, plan, &optional);
+        let n = states.len();
+        let between = PairMaterial::new(between, &states);
+        let bodies = Bodies::new(states, &g);
         SoftStepper {
             rules: Rules {
                 scene,
@@ -149,51 +67,19 @@ impl<'a> SoftStepper<'a> {
                 plan,
                 kicks,
                 contact,
-                between: PairMaterial::new(between, &states),
+                between,
                 optional,
                 parallel: in_parallel(n),
             },
-            walls: WallSet {
-                materials,
-                damping,
-                restitutions,
-                oscillating,
-                origins,
-                now,
-                assembly_of,
-                cogs: Vec::with_capacity(assemblies.len()),
-            },
+            deferred: Deferred::new(&bodies, settings),
+            bodies,
+            walls,
+            broad,
             rigid: Rigid {
                 assemblies,
                 aggregates,
             },
             halted,
-            deferred: Deferred {
-                owed: vec![false; n],
-                loaded: vec![false; n],
-                marks_valid: false,
-                owing: false,
-                visited: (0..n.div_ceil(CHUNK))
-                    .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
-                    .collect(),
-                owed_kick: Closing {
-                    dt: settings.dt,
-                    fraction: 0.0,
-                    acc_crit: settings.acc_crit,
-                },
-                owed_bad: None,
-                force_bound: 0.0,
-                gravity_bound,
-                largest_inverse,
-            },
-            bodies: Bodies {
-                states,
-                loads,
-                inverses,
-                open_walls: (0..n).map(|_| Vec::new()).collect(),
-                walled: vec![false; n],
-            },
-            broad: Broad { candidates, near },
             pair_pass: PairPass::default(),
             wall_pass: WallPass::default(),
             initial,
@@ -210,6 +96,164 @@ impl<'a> SoftStepper<'a> {
             },
         }
     }
+}
+
+impl Bodies {
+    /// The particles `states` at the start of a run under gravity `g`: each load starts
+    /// with gravity alone, whichever the integrator (pkdgrav's evaluation before the
+    /// first step, `SoftStepper::start`, adds to it; the others kick with it at once; in
+    /// a step, the wall pass starts the next step's, or the drift or
+    /// `super::drift::settle` after an owed kick, and for an aggregate's members); no
+    /// wall contact is open.
+    fn new(states: Vec<State>, g: &Vec3) -> Bodies {
+        let n = states.len();
+        Bodies {
+            loads: states.iter().map(|s| Load::gravity(s, g)).collect(),
+            inverses: (states.iter())
+                .map(|s| {
+                    let p = &s.particle;
+                    (1.0 / p.mass, 1.0 / inertia(p.mass, p.radius))
+                })
+                .collect(),
+            open_walls: (0..n).map(|_| Vec::new()).collect(),
+            walled: vec![false; n],
+            states,
+        }
+    }
+}
+
+impl Deferred {
+    /// No kick owed yet, every particle visited by the first wall pass, and the bounds
+    /// on what an owed kick can add: gravity on the heaviest particle and the largest
+    /// 1/m or 1/I.
+    fn new(bodies: &Bodies, settings: &Settings) -> Deferred {
+        let n = bodies.states.len();
+        // The largest, or not a number if any is (then no kick is owed unchecked).
+        let largest = |a: f64, b: f64| {
+            if a.is_nan() || b.is_nan() {
+                f64::NAN
+            } else {
+                a.max(b)
+            }
+        };
+        let heaviest = (bodies.states.iter())
+            .map(|s| s.particle.mass)
+            .fold(0.0, largest);
+        Deferred {
+            owed: vec![false; n],
+            loaded: vec![false; n],
+            marks_valid: false,
+            owing: false,
+            visited: (0..n.div_ceil(CHUNK))
+                .map(|c| (0..(n - c * CHUNK).min(CHUNK) as u32).collect())
+                .collect(),
+            owed_kick: Closing {
+                dt: settings.dt,
+                fraction: 0.0,
+                acc_crit: settings.acc_crit,
+            },
+            owed_bad: None,
+            force_bound: 0.0,
+            gravity_bound: settings.gravity.abs().sum() * heaviest,
+            largest_inverse: (bodies.inverses.iter())
+                .map(|i| largest(i.0, i.1))
+                .fold(0.0, largest),
+        }
+    }
+}
+
+/// The reactive assemblies that can move (pkdgrav's `DEM_WALLS_REACT`, when the plan
+/// has them), following pkdgrav's integrator when the run does; the warnings for walls'
+/// masses a build ignores and for assemblies that cannot move.
+fn set_up_assemblies(
+    scene: &[Wall],
+    settings: &Settings,
+    plan: &Plan,
+    warnings: &mut Vec<Warning>,
+) -> Vec<Assembly> {
+    let heavy: Vec<usize> = (0..scene.len())
+        .filter(|&w| scene[w].reactive.is_heavy())
+        .collect();
+    if !heavy.is_empty() && !settings.build.walls_react {
+        warnings.push(Warning::MassesIgnored { walls: heavy });
+    }
+    let mut assemblies = if plan.reactive {
+        crate::dynamics::reactive::assemblies(scene)
+    } else {
+        Vec::new()
+    };
+    if settings.integrator == Integrator::Pkdgrav {
+        for a in &mut assemblies {
+            a.follow_pkdgrav(scene);
+        }
+    }
+    let stuck = crate::dynamics::reactive::immovable(&assemblies);
+    if !stuck.is_empty() {
+        assemblies.retain(|a| !stuck.contains(&a.number));
+        warnings.push(Warning::ImmovableAssemblies { assemblies: stuck });
+    }
+    assemblies
+}
+
+/// The walls at the start of a run: their `materials` and the laws' constants worked out
+/// once, their origins and where they stand, and the `assemblies` they belong to.
+fn wall_set(
+    scene: &[Wall],
+    settings: &Settings,
+    materials: Vec<Material>,
+    assemblies: &[Assembly],
+) -> WallSet {
+    let origins = Origins::new(scene, settings.stepping, settings.t_start());
+    let now = if settings.integrator == Integrator::Pkdgrav {
+        origins.walls_pkdgrav(scene, settings.t_start())
+    } else {
+        origins.walls(scene, settings.t_start())
+    };
+    let mut assembly_of = vec![None; scene.len()];
+    for (a, assembly) in assemblies.iter().enumerate() {
+        for &w in &assembly.walls {
+            assembly_of[w] = Some(a);
+        }
+    }
+    WallSet {
+        damping: (materials.iter())
+            .map(|m| damping_per_root_mass(m.eps_n, m.k_n))
+            .collect(),
+        restitutions: (materials.iter())
+            .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
+            .collect(),
+        materials,
+        oscillating: (scene.iter())
+            .map(|w| w.motion.oscillation.amplitude != 0.0)
+            .collect(),
+        origins,
+        now,
+        assembly_of,
+        cogs: Vec::with_capacity(assemblies.len()),
+    }
+}
+
+/// The lists of what may touch at the start of a run, found where the particles
+/// `states` and the `walls` stand: the candidate pairs (when the plan has particle
+/// contacts) and the walls near each particle (through the wall index when the plan
+/// uses one).
+fn broad(scene: &[Wall], states: &[State], plan: &Plan, walls: &WallSet) -> Broad {
+    let n = states.len();
+    let mut candidates = PairList::new(
+        states,
+        plan.particle_contacts,
+        in_parallel(n),
+        n >= PARALLEL_FROM,
+    );
+    let mut near = None;
+    if !scene.is_empty() {
+        let listed = walls.assembly_of.iter().map(Option::is_none).collect();
+        let translating = scene.iter().map(|w| w.motion.translates()).collect();
+        let index = plan.wall_index.then(|| WallIndex::new(scene));
+        near = Some(NearWalls::new(listed, translating, index));
+    }
+    near::build_lists(&mut candidates, &mut near, states, &walls.now);
+    Broad { candidates, near }
 }
 
 /// pkdgrav's aggregates of the particles (docs/pkdgrav-physics.md §9), when the run

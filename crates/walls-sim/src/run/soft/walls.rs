@@ -238,24 +238,10 @@ pub(super) fn touch_walls(
         load, open, visit, ..
     } = work;
     let (t, dt) = (walls.t, walls.closing.dt);
-    let (m, r) = (s.particle.mass, s.particle.radius);
+    let r = s.particle.radius;
     let (mut resist, mut stop) = (Vec3::zeros(), 0.0f64);
-    // The walls near it ([`NearWalls`]), those of reactive assemblies, and those the
-    // particle touched last step, whose contacts may end; in wall order.
-    visit.clear();
-    if let Some(near) = walls.near {
-        visit.extend(near.of(i));
-        visit.extend(near.moving.iter().copied());
-        for (w, _) in open.iter() {
-            visit.push(*w);
-        }
-        if visit.len() > 1 {
-            visit.sort_unstable();
-            visit.dedup();
-        }
-    }
-    let count = visit.len();
-    for at in 0..count {
+    walls_to_visit(i, open, visit, walls.near);
+    for at in 0..visit.len() {
         let w = visit[at];
         let wall = &walls.now[w];
         let k = open.iter().position(|(o, _)| *o == w);
@@ -299,7 +285,6 @@ pub(super) fn touch_walls(
             r
         };
         let u = vel + spin.cross(&(-n * lever)) - wall_v;
-        let mat = &walls.set.materials[w];
         let k = k.unwrap_or_else(|| {
             open.push((
                 w,
@@ -310,127 +295,30 @@ pub(super) fn touch_walls(
             ));
             open.len() - 1
         });
-        if mat.eps_n <= 0.0 {
-            // A death wall removes the particle; a sticky wall holds it. An aggregate's
-            // member neither sticks nor dies (pkdgrav asserts, docs/pkdgrav-physics.md
-            // §9.5): the event alone, and `note_wall_contacts` stops the run.
-            let kind = if mat.eps_n < 0.0 {
-                EventKind::Remove
-            } else {
-                EventKind::Stick
-            };
-            if !s.member {
-                if kind == EventKind::Remove {
-                    s.alive = false;
-                } else {
-                    s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
-                    s.particle.vel = wall_v;
-                    s.particle.spin = wall.spin;
-                }
-            }
-            out.events.push(Event {
-                t,
-                particle: i,
-                wall: w,
-                kind,
-                vn_in: open[k].1.vn_in,
-                vn_out: 0.0,
-            });
-            open.swap_remove(k);
+        let eps_n = walls.set.materials[w].eps_n;
+        if eps_n <= 0.0 {
+            let vn_in = open.swap_remove(k).1.vn_in;
+            out.events
+                .push(hold(i, s, w, wall, wall_v, eps_n, (t, vn_in)));
             return true;
         }
-        let plan = walls.plan;
-        if walls.contact.law == Law::Pkdgrav {
-            // pkdgrav's contact law, in its frame: the normal towards the wall, the
-            // wall's motion relative to the particle's (docs/pkdgrav-physics.md
-            // §1.1–§1.5). A reactive wall turns the springs by its spin about the face
-            // normal or axis alone (docs/pkdgrav-physics.md §10).
-            let wall_spin = match walls.set.assembly_of[w] {
-                Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
-                None => wall.spin,
-            };
-            let a = walls.contact.contact_radius(r, lever);
-            let one = Side {
-                radius: r,
-                lever,
-                spin,
-                inertia: inertia(m, r),
-            };
-            let (radius, constant_torque) = walls.contact.rolling(a, one, None);
-            let dashpot = Dashpot {
-                overlap,
-                normal: -n,
-                velocity: -u,
-                spin: wall_spin - spin,
-                turn: s.particle.spin + wall_spin,
-                levers: (lever, 0.0),
-                mass: m,
-                radius,
-                wall: true,
-                constant_torque,
-                sliding: walls.contact.sliding,
-            };
-            let extra = Optional {
-                restitution: Some(walls.set.restitutions[w]),
-                ..walls.optional.wall(w, i, r, a, mat)
-            };
-            let c = dashpot_contact_with(&dashpot, &mut open[k].1.record, dt, mat, &extra);
-            load.force += c.force;
-            load.torque += c.torque;
-            if s.member
-                && c.rolling != Vec3::zeros()
-                && let Some(aggs) = walls.aggregates
-            {
-                // An aggregate feels the rolling torque as a pseudo-force at the contact
-                // point, with its moment about the aggregate's centre
-                // (docs/pkdgrav-physics.md §9.4).
-                let push = aggregate::rolling_push(&c.rolling, &-n, lever);
-                let arm = aggs.offset(i, &s.particle.pos) - n * lever;
-                load.torque += arm.cross(&push) - c.rolling;
-            }
-            if let Some(a) = walls.set.assembly_of[w] {
-                // The reaction (docs/pkdgrav-physics.md §10), with the rolling and
-                // twisting torques.
-                let at = s.particle.pos - n * lever;
-                out.reactions.push((
-                    a,
-                    -c.force,
-                    (at - walls.set.cogs[a]).cross(&-c.force) - c.resistance,
-                ));
-            }
-            continue;
-        }
-        let touch = Touch {
+        let touch = WallTouch {
+            w,
             overlap,
             normal: n,
             velocity: u,
+            lever,
+            spin,
         };
-        let c = if plan.sliding_friction {
-            contact(m, lever, &touch, &mut open[k].1.record.spring, dt, mat)
+        let record = &mut open[k].1.record;
+        if walls.contact.law == Law::Pkdgrav {
+            pkdgrav_wall_contact(i, s, &touch, record, walls, load, out);
         } else {
-            normal_contact(&touch, mat.k_n, walls.set.damping[w] * m.sqrt())
-        };
-        load.force += c.force;
-        load.torque += c.torque;
-        if let Some(a) = walls.set.assembly_of[w] {
-            // The reaction, at the contact point on the particle's surface (where its
-            // own torque acts, so that angular momentum is kept exactly).
-            let cog = walls.set.cogs[a];
-            let at = s.particle.pos - n * lever;
-            out.reactions
-                .push((a, -c.force, (at - cog).cross(&-c.force)));
-        }
-        if walls.plan.rolling || walls.plan.twisting {
-            let rolling = Rolling {
-                spin: spin - wall.spin,
-                normal: n,
-                normal_force: n.dot(&c.force).abs(),
-                lever: r,
-                contact_radius: contact_radius(r, overlap),
-                inertia: inertia(m, r),
-            };
-            resist += resistance(&rolling, mat.mu_r, mat.mu_t, dt);
-            stop = stop.max(inertia(m, r) * rolling.spin.norm() / dt);
+            let resisted = linear_wall_contact(s, &touch, record, walls, load, out);
+            if let Some((resisted, most)) = resisted {
+                resist += resisted;
+                stop = stop.max(most);
+            }
         }
     }
     // Each contact's resistance is capped, but together they must not reverse the spin
@@ -440,6 +328,212 @@ pub(super) fn touch_walls(
     }
     load.torque += resist;
     false
+}
+
+/// Into `visit`, the walls particle `i` is to visit, in wall order: those near it
+/// ([`NearWalls`]), those of reactive assemblies, and those it touched last step
+/// (`open`), whose contacts may end.
+#[inline(always)]
+fn walls_to_visit(
+    i: usize,
+    open: &[(usize, Open)],
+    visit: &mut Vec<usize>,
+    near: Option<&NearWalls>,
+) {
+    visit.clear();
+    if let Some(near) = near {
+        visit.extend(near.of(i));
+        visit.extend(near.moving.iter().copied());
+        for (w, _) in open.iter() {
+            visit.push(*w);
+        }
+        if visit.len() > 1 {
+            visit.sort_unstable();
+            visit.dedup();
+        }
+    }
+}
+
+/// A death wall (`eps_n` < 0) removes particle `i`; a sticky wall (0) holds it where it
+/// touched, moving and spinning with the wall (docs/pkdgrav-physics.md §6). An
+/// aggregate's member neither sticks nor dies (pkdgrav asserts, docs/pkdgrav-physics.md
+/// §9.5): the event alone, and `note_wall_contacts` stops the run. The event, at time
+/// `t`, of a contact that began at normal speed `vn_in`.
+#[inline(always)]
+fn hold(
+    i: usize,
+    s: &mut State,
+    w: usize,
+    wall: &WallNow,
+    wall_v: Vec3,
+    eps_n: f64,
+    (t, vn_in): (f64, f64),
+) -> Event {
+    let kind = if eps_n < 0.0 {
+        EventKind::Remove
+    } else {
+        EventKind::Stick
+    };
+    if !s.member {
+        if kind == EventKind::Remove {
+            s.alive = false;
+        } else {
+            s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
+            s.particle.vel = wall_v;
+            s.particle.spin = wall.spin;
+        }
+    }
+    Event {
+        t,
+        particle: i,
+        wall: w,
+        kind,
+        vn_in,
+        vn_out: 0.0,
+    }
+}
+
+/// One wall contact as the wall pass finds it: the wall, the overlap, the unit normal
+/// from the wall towards the particle, the contact point's velocity relative to the
+/// wall's, the lever (the radius, or pkdgrav's r − x) and the spin the contact sees.
+struct WallTouch {
+    w: usize,
+    overlap: f64,
+    normal: Vec3,
+    velocity: Vec3,
+    lever: f64,
+    spin: Vec3,
+}
+
+/// Particle `i`'s contact `touch` under pkdgrav's contact law, in its frame: the normal
+/// towards the wall, the wall's motion relative to the particle's
+/// (docs/pkdgrav-physics.md §1.1–§1.5), added to its load; a reactive wall turns the
+/// springs by its spin about the face normal or axis alone and takes the reaction
+/// (docs/pkdgrav-physics.md §10); an aggregate's member passes the rolling torque on as
+/// a pseudo-force (docs/pkdgrav-physics.md §9.4).
+#[inline(always)]
+fn pkdgrav_wall_contact(
+    i: usize,
+    s: &State,
+    touch: &WallTouch,
+    record: &mut Record,
+    walls: &Walls,
+    load: &mut Load,
+    out: &mut ParticleStep,
+) {
+    let WallTouch {
+        w,
+        overlap,
+        normal: n,
+        velocity: u,
+        lever,
+        spin,
+    } = *touch;
+    let (m, r) = (s.particle.mass, s.particle.radius);
+    let (wall, mat) = (&walls.now[w], &walls.set.materials[w]);
+    let wall_spin = match walls.set.assembly_of[w] {
+        Some(_) => crate::dynamics::reactive::relative_spin(&wall.shape, &wall.spin),
+        None => wall.spin,
+    };
+    let a = walls.contact.contact_radius(r, lever);
+    let one = Side {
+        radius: r,
+        lever,
+        spin,
+        inertia: inertia(m, r),
+    };
+    let (radius, constant_torque) = walls.contact.rolling(a, one, None);
+    let dashpot = Dashpot {
+        overlap,
+        normal: -n,
+        velocity: -u,
+        spin: wall_spin - spin,
+        turn: s.particle.spin + wall_spin,
+        levers: (lever, 0.0),
+        mass: m,
+        radius,
+        wall: true,
+        constant_torque,
+        sliding: walls.contact.sliding,
+    };
+    let extra = Optional {
+        restitution: Some(walls.set.restitutions[w]),
+        ..walls.optional.wall(w, i, r, a, mat)
+    };
+    let c = dashpot_contact_with(&dashpot, record, walls.closing.dt, mat, &extra);
+    load.force += c.force;
+    load.torque += c.torque;
+    if s.member
+        && c.rolling != Vec3::zeros()
+        && let Some(aggs) = walls.aggregates
+    {
+        // The rolling torque as a pseudo-force at the contact point, with its moment
+        // about the aggregate's centre.
+        let push = aggregate::rolling_push(&c.rolling, &-n, lever);
+        let arm = aggs.offset(i, &s.particle.pos) - n * lever;
+        load.torque += arm.cross(&push) - c.rolling;
+    }
+    if let Some(a) = walls.set.assembly_of[w] {
+        // The reaction, with the rolling and twisting torques.
+        let at = s.particle.pos - n * lever;
+        out.reactions.push((
+            a,
+            -c.force,
+            (at - walls.set.cogs[a]).cross(&-c.force) - c.resistance,
+        ));
+    }
+}
+
+/// Particle `s`'s contact `touch` under the linear spring–dashpot (with sliding friction
+/// when the plan has it), added to its load, its reaction to a reactive wall's assembly;
+/// and, when the plan has rolling or twisting, its resistance with the most it may be
+/// (the spin it could stop in the step), which [`touch_walls`] caps over all the
+/// particle's contacts.
+#[inline(always)]
+fn linear_wall_contact(
+    s: &State,
+    touch: &WallTouch,
+    record: &mut Record,
+    walls: &Walls,
+    load: &mut Load,
+    out: &mut ParticleStep,
+) -> Option<(Vec3, f64)> {
+    let (w, n, lever) = (touch.w, touch.normal, touch.lever);
+    let (m, r, dt) = (s.particle.mass, s.particle.radius, walls.closing.dt);
+    let (wall, mat) = (&walls.now[w], &walls.set.materials[w]);
+    let along = Touch {
+        overlap: touch.overlap,
+        normal: n,
+        velocity: touch.velocity,
+    };
+    let c = if walls.plan.sliding_friction {
+        contact(m, lever, &along, &mut record.spring, dt, mat)
+    } else {
+        normal_contact(&along, mat.k_n, walls.set.damping[w] * m.sqrt())
+    };
+    load.force += c.force;
+    load.torque += c.torque;
+    if let Some(a) = walls.set.assembly_of[w] {
+        // The reaction, at the contact point on the particle's surface (where its own
+        // torque acts, so that angular momentum is kept exactly).
+        let cog = walls.set.cogs[a];
+        let at = s.particle.pos - n * lever;
+        out.reactions
+            .push((a, -c.force, (at - cog).cross(&-c.force)));
+    }
+    if !(walls.plan.rolling || walls.plan.twisting) {
+        return None;
+    }
+    let rolling = Rolling {
+        spin: touch.spin - wall.spin,
+        normal: n,
+        normal_force: n.dot(&c.force).abs(),
+        lever: r,
+        contact_radius: contact_radius(r, touch.overlap),
+        inertia: inertia(m, r),
+    };
+    let resisted = resistance(&rolling, mat.mu_r, mat.mu_t, dt);
+    Some((resisted, inertia(m, r) * rolling.spin.norm() / dt))
 }
 
 /// pkdgrav's `dAccCrit` zeroing (`dem.c pkdDEMZeroSmallMotions`, docs/pkdgrav-physics.md
