@@ -1,7 +1,8 @@
 //! The peer benchmark's scenes (`scripts/bench-peers scene`, docs/performance.md "Against
-//! LAMMPS and LIGGGHTS"): the generator writes the three input sets as expected (the
-//! files under `tests/data/peers/<scene>/`; `UPDATE_PEERS=1` rewrites them), walls-sim
-//! runs its own set, and a bad count is refused; `run` on one core and two starts each
+//! LAMMPS and LIGGGHTS"): the generator writes each scene's input sets as expected (the
+//! files under `tests/data/peers/<scene>/`; `UPDATE_PEERS=1` rewrites them; the `1e6`
+//! scene is the drop's files under its own name), walls-sim runs its own set, and a bad
+//! count is refused; `run` on one core and two starts each
 //! tool as it should (stand-ins record how LAMMPS, LIGGGHTS and the MPI launcher were
 //! started), and `count` takes a run of one step from a run of the scene (a stand-in for
 //! valgrind makes up the counts). LAMMPS and LIGGGHTS are not needed:
@@ -22,10 +23,9 @@ fn bench_peers(args: &[&str]) -> Output {
         .expect("python3 runs")
 }
 
-/// The generated files of `scene` against the expected ones, then walls-sim on its set.
-fn scene_is_written_and_runs(scene: &str, friction: bool, summary: &str) {
-    let dir = tempfile::tempdir().unwrap();
-    let out_dir = dir.path().to_str().unwrap();
+/// `scripts/bench-peers scene` of 8 particles and 1,000 steps into `dir`.
+fn write_scene(dir: &Path, scene: &str, friction: bool) -> Output {
+    let out_dir = dir.to_str().unwrap();
     let mut args = vec![
         "scene",
         out_dir,
@@ -39,32 +39,46 @@ fn scene_is_written_and_runs(scene: &str, friction: bool, summary: &str) {
     if !friction {
         args.push("--no-friction");
     }
-    let out = bench_peers(&args);
+    bench_peers(&args)
+}
+
+/// The files a scene is written as: the cup has triangles for walls-sim and LIGGGHTS,
+/// and no LAMMPS set.
+fn files(scene: &str) -> Vec<&'static str> {
+    let mut files = vec!["walls-sim/particles.csv", "walls-sim/args"];
+    match scene {
+        "cup" => files.extend(["walls-sim/cup.walls", "liggghts/cup.stl"]),
+        "oscillating" => files.extend(["walls-sim/box.walls", "liggghts/floor.stl"]),
+        _ => files.push("walls-sim/box.walls"),
+    }
+    if scene != "cup" {
+        files.extend(["lammps/data.lmp", "lammps/in.lmp"]);
+    }
+    files.extend(["liggghts/data.lig", "liggghts/in.lig"]);
+    files
+}
+
+/// The generated files of `scene` against the expected ones, then walls-sim on its set.
+fn scene_is_written_and_runs(scene: &str, friction: bool, summary: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().to_str().unwrap();
+    let out = write_scene(dir.path(), scene, friction);
     assert!(out.status.success(), "{out:?}");
+    let lammps = if scene == "cup" {
+        String::new()
+    } else {
+        format!("lammps: {out_dir}/lammps\n")
+    };
     assert_eq!(
         String::from_utf8_lossy(&out.stdout),
-        format!(
-            "walls-sim: {out_dir}/walls-sim\nlammps: {out_dir}/lammps\nliggghts: {out_dir}/liggghts\n"
-        )
+        format!("walls-sim: {out_dir}/walls-sim\n{lammps}liggghts: {out_dir}/liggghts\n")
     );
 
     let expected_dir = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/peers")
         .join(scene);
-    let mut files = vec![
-        "walls-sim/box.walls",
-        "walls-sim/particles.csv",
-        "walls-sim/args",
-        "lammps/data.lmp",
-        "lammps/in.lmp",
-        "liggghts/data.lig",
-        "liggghts/in.lig",
-    ];
-    if scene == "oscillating" {
-        files.push("liggghts/floor.stl");
-    }
     let update = std::env::var_os("UPDATE_PEERS").is_some();
-    for file in files {
+    for file in files(scene) {
         let written = std::fs::read_to_string(dir.path().join(file)).unwrap();
         let expected_path = expected_dir.join(file);
         if update {
@@ -92,27 +106,76 @@ fn scene_is_written_and_runs(scene: &str, friction: bool, summary: &str) {
 }
 
 /// Each scene, with or without friction, and the summary walls-sim prints after running
-/// it (the oscillating floor gives the particles energy).
-const SCENES: [(&str, bool, &str); 2] = [
+/// it, after `RAN` (the oscillating floor gives the particles energy; the cup's 8 spheres
+/// settle on its fan of triangles; the poly box's start ten times as fast, and one hits a
+/// wall hard enough for pkdgrav's 3 % overlap warning).
+const SCENES: [(&str, bool, &str); 4] = [
     (
         "drop",
         false,
-        "walls-sim: t = 0.005 after 1000 steps of 5e-6: 8 particles (8 alive), 8 wall events, \
-         2 particle contacts, energy 1.886170e-6 → 1.811994e-6\n",
+        "8 wall events, 2 particle contacts, energy 1.886170e-6 → 1.811994e-6\n",
     ),
     (
         "oscillating",
         true,
-        "walls-sim: t = 0.005 after 1000 steps of 5e-6: 8 particles (8 alive), 12 wall events, \
-         10 particle contacts, energy 1.886170e-6 → 2.667511e-6\n",
+        "12 wall events, 10 particle contacts, energy 1.886170e-6 → 2.667511e-6\n",
+    ),
+    (
+        "cup",
+        true,
+        "7 wall events, 0 particle contacts, energy 9.918228e-7 → 9.023837e-7\n",
+    ),
+    (
+        "poly",
+        true,
+        "2 wall events, 1 particle contacts, energy 1.498122e-5 → 9.441751e-6\n\
+         walls-sim: warning: overlap of 3.1% of the radius (particle 7, wall 4, t = 0.00186): \
+         more than 3%\n",
     ),
 ];
 
+/// The start of walls-sim's summary of every scene's run.
+const RAN: &str = "walls-sim: t = 0.005 after 1000 steps of 5e-6: 8 particles (8 alive), ";
+
 #[test]
-fn each_scene_is_written_for_the_three_tools_and_walls_sim_runs_it() {
+fn each_scene_is_written_for_its_tools_and_walls_sim_runs_it() {
     for (scene, friction, summary) in SCENES {
-        scene_is_written_and_runs(scene, friction, summary);
+        scene_is_written_and_runs(scene, friction, &format!("{RAN}{summary}"));
     }
+}
+
+#[test]
+fn the_1e6_scene_is_the_drop_under_its_own_name() {
+    let (drop, million) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    for (dir, scene) in [(&drop, "drop"), (&million, "1e6")] {
+        let out = write_scene(dir.path(), scene, true);
+        assert!(out.status.success(), "{out:?}");
+    }
+    for file in files("drop") {
+        let read =
+            |dir: &tempfile::TempDir| std::fs::read_to_string(dir.path().join(file)).unwrap();
+        let named = read(&million).replace("scene 1e6 ", "scene drop ");
+        assert_eq!(named, read(&drop), "{file}");
+    }
+}
+
+#[test]
+fn a_cup_of_more_spheres_than_its_lattice_holds_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = bench_peers(&[
+        "scene",
+        dir.path().to_str().unwrap(),
+        "--scene",
+        "cup",
+        "--particles",
+        "10641",
+    ]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "bench-peers: the cup holds at most 10640 particles, not 10641\n"
+    );
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
 #[test]
