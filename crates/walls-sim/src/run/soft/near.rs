@@ -27,6 +27,8 @@ pub(super) struct NearWalls {
     pub(super) translating: Vec<bool>,
     /// The walls of reactive assemblies.
     pub(super) moving: Vec<usize>,
+    /// The listed walls that translate, whose moves the lists must follow.
+    sliding: Vec<usize>,
     /// Each wall's origin when the lists were found.
     pub(super) built_origins: Vec<Vec3>,
     /// Where each particle's walls start in `walls` (one more entry than particles).
@@ -43,10 +45,14 @@ impl NearWalls {
         index: Option<WallIndex>,
     ) -> NearWalls {
         let moving = (0..listed.len()).filter(|&w| !listed[w]).collect();
+        let sliding = (0..listed.len())
+            .filter(|&w| listed[w] && translating[w])
+            .collect();
         NearWalls {
             listed,
             translating,
             moving,
+            sliding,
             built_origins: Vec::new(),
             starts: Vec::new(),
             walls: Vec::new(),
@@ -97,13 +103,14 @@ impl NearWalls {
         }
     }
 
-    /// Whether a listed wall has translated more than `half` since the lists were
-    /// found.
+    /// Whether a listed wall of `walls` (none without forces) has translated more than
+    /// `half` since the lists were found.
     pub(super) fn moved(&self, walls: &[WallNow], half: f64) -> bool {
-        (0..walls.len()).any(|w| {
-            let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
-            self.listed[w] && self.translating[w] && (d2 > half * half || d2.is_nan())
-        })
+        !walls.is_empty()
+            && self.sliding.iter().any(|&w| {
+                let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
+                d2 > half * half || d2.is_nan()
+            })
     }
 
     /// The listed walls near particle `i`.
