@@ -14,7 +14,10 @@ The scenes (docs/performance.md, "Against LAMMPS and LIGGGHTS"), in SI units:
   side 300 segments × 8 rings of two triangles, its bottom a fan of 300), holding up to
   10,640 spheres: a square lattice 2.2 R apart inside radius 28.4 R, 20 layers from
   z = 1.1 R, filled from the floor, each sphere moved by up to ±0.08 R in x and y, its
-  velocity components in ±5 cm/s. walls-sim and LIGGGHTS only: LAMMPS has no mesh walls;
+  velocity components in ±5 cm/s. walls-sim and LIGGGHTS only: LAMMPS has no mesh walls.
+  With ``triangles``, the same cylinder is cut into about that many (``cup_shape``:
+  S segments × K rings and a fan of S, S·(2K + 1) triangles, K/S as near 8/300 as whole
+  numbers allow; 99 for 100, 999 for 1,000, 10,000 and 99,975 for 10⁵);
 * ``poly``: spheres of radius uniform in [R/2, 2R] (mass from the density) on a lattice
   4.4 R apart (50 × 50 × 40 sites for 10⁵: a footprint 5/4 of the pile's height, filled
   layer by layer), velocity components in ±0.5 m/s, in the drop's box of five planes.
@@ -90,14 +93,23 @@ def tools(kind: str) -> tuple[str, ...]:
 
 @dataclass(frozen=True)
 class Scene:
-    """One scene: its kind, particle count, steps, friction, and whether LAMMPS and
-    LIGGGHTS dump the final state (for the check; not when timing)."""
+    """One scene: its kind, particle count, steps, friction, whether LAMMPS and
+    LIGGGHTS dump the final state (for the check; not when timing), and the cup's
+    triangles (about; none for its own 5,100)."""
 
     kind: str
     particles: int
     steps: int
     friction: bool = True
     final_dump: bool = False
+    triangles: int | None = None
+
+    @property
+    def cup(self) -> tuple[int, int]:
+        """The cup's segments and rings."""
+        if self.triangles is None:
+            return (CUP_SEGMENTS, CUP_RINGS)
+        return cup_shape(self.triangles)
 
     @property
     def mu(self) -> float:
@@ -235,27 +247,41 @@ def cup_particles(n: int) -> list[Particle]:
     return out
 
 
-def cup_triangles() -> list[tuple[tuple[float, float, float], ...]]:
-    """The cup's 5,100 triangles, each (a, b, c) with its normal (b − a) × (c − a) into
-    the cup: the side's 300 segments × 8 rings, two triangles each, then the bottom's fan
-    around the axis. Neighbouring triangles share their vertices bit for bit."""
+def cup_shape(triangles: int) -> tuple[int, int]:
+    """The segments S and rings K of a cup of about `triangles` triangles, S·(2K + 1),
+    its rings as tall against its segments' width as the 5,100's (K/S near 8/300): K the
+    nearest whole number to √(triangles · 8/600), at least 1, then S the nearest to
+    triangles / (2K + 1), at least 3."""
+    if triangles < 9:
+        raise ValueError(f"the cup needs at least 9 triangles, not {triangles}")
+    rings = max(1, round(math.sqrt(triangles * CUP_RINGS / (2 * CUP_SEGMENTS))))
+    return (max(3, round(triangles / (2 * rings + 1))), rings)
+
+
+def cup_triangles(
+    segments: int = CUP_SEGMENTS, rings: int = CUP_RINGS
+) -> list[tuple[tuple[float, float, float], ...]]:
+    """The cup's triangles (5,100 by default), each (a, b, c) with its normal
+    (b − a) × (c − a) into the cup: the side's `segments` × `rings`, two triangles each,
+    then the bottom's fan of `segments` around the axis. Neighbouring triangles share
+    their vertices bit for bit."""
     ring = [
-        (CUP_RADIUS * math.cos(2 * math.pi * s / CUP_SEGMENTS), CUP_RADIUS * math.sin(2 * math.pi * s / CUP_SEGMENTS))
-        for s in range(CUP_SEGMENTS)
+        (CUP_RADIUS * math.cos(2 * math.pi * s / segments), CUP_RADIUS * math.sin(2 * math.pi * s / segments))
+        for s in range(segments)
     ]
-    heights = [CUP_HEIGHT * k / CUP_RINGS for k in range(CUP_RINGS + 1)]
+    heights = [CUP_HEIGHT * k / rings for k in range(rings + 1)]
 
     def point(s: int, k: int) -> tuple[float, float, float]:
-        x, y = ring[s % CUP_SEGMENTS]
+        x, y = ring[s % segments]
         return (x, y, heights[k])
 
     out = []
-    for k in range(CUP_RINGS):
-        for s in range(CUP_SEGMENTS):
+    for k in range(rings):
+        for s in range(segments):
             a, b, c, d = point(s, k), point(s + 1, k), point(s + 1, k + 1), point(s, k + 1)
             out += [(a, d, c), (a, c, b)]
     centre = (0.0, 0.0, 0.0)
-    out += [(centre, point(s, 0), point(s + 1, 0)) for s in range(CUP_SEGMENTS)]
+    out += [(centre, point(s, 0), point(s + 1, 0)) for s in range(segments)]
     return out
 
 
@@ -276,6 +302,8 @@ def write(directory: Path, scene: Scene) -> dict[str, Path]:
         raise ValueError(f"unknown scene {scene.kind!r}: expected one of {', '.join(SCENES)}")
     if scene.steps < 1:
         raise ValueError(f"the step count must be at least 1, not {scene.steps}")
+    if scene.triangles is not None and scene.kind != "cup":
+        raise ValueError(f"only the cup has triangles to choose, not the {scene.kind} scene")
     parts = particles(scene.particles, scene.kind)
     lay = layout(scene.particles, scene.kind)
     folders = {tool: Path(directory) / tool for tool in tools(scene.kind)}
@@ -296,7 +324,7 @@ def omega() -> float:
 def write_walls_sim(folder: Path, scene: Scene, parts: list[Particle], lay: Layout) -> None:
     """The walls file, the particles CSV and the arguments of `walls-sim run`."""
     if scene.kind == "cup":
-        write_cup_walls(folder / scene.walls)
+        write_cup_walls(folder / scene.walls, *scene.cup)
     else:
         write_box_walls(folder / scene.walls, scene, lay)
     rows = ["mass,radius,x,y,z,vx,vy,vz"]
@@ -353,15 +381,16 @@ def write_box_walls(path: Path, scene: Scene, lay: Layout) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
-def write_cup_walls(path: Path) -> None:
+def write_cup_walls(path: Path, segments: int, rings: int) -> None:
     """The cup's triangles as triangle walls: origin a, vertex1 b − a, vertex2 c − a."""
+    total = segments * (2 * rings + 1)
     lines = [
-        "# The peer benchmark's cup (scripts/peers/scene.py): an open cylinder of 5,100",
-        "# triangles, its side 300 segments x 8 rings of two, its bottom a fan of 300.",
+        f"# The peer benchmark's cup (scripts/peers/scene.py): an open cylinder of {total:,}",
+        f"# triangles, its side {segments} segments x {rings} ring{'s' * (rings != 1)} of two, its bottom a fan of {segments}.",
         "# Lengths in metres and times in seconds (walls-sim run --units pkdgrav).",
         "# The walls take the particles' material (epsn, epst 99; k_n, k_t, mu_* -1).",
     ]
-    for a, b, c in cup_triangles():
+    for a, b, c in cup_triangles(segments, rings):
         lines += [
             "wall",
             "  type triangle",
@@ -561,7 +590,7 @@ def write_liggghts(folder: Path, scene: Scene, parts: list[Particle], lay: Layou
             f"period {number(1.0 / FREQUENCY)}",
         ]
     elif scene.kind == "cup":
-        write_cup_stl(folder / "cup.stl")
+        write_cup_stl(folder / "cup.stl", *scene.cup)
         lines += [
             "fix cupmesh all mesh/surface file cup.stl type 2",
             f"fix cup all wall/gran {model} mesh n_meshes 1 meshes cupmesh {settings}",
@@ -606,11 +635,11 @@ def write_floor_stl(path: Path, side: float) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
-def write_cup_stl(path: Path) -> None:
+def write_cup_stl(path: Path, segments: int, rings: int) -> None:
     """The cup's triangles as an ASCII STL, each facet's normal (b − a) × (c − a) made a
     unit vector."""
     lines = ["solid cup"]
-    for a, b, c in cup_triangles():
+    for a, b, c in cup_triangles(segments, rings):
         u = [q - p for p, q in zip(a, b)]
         v = [q - p for p, q in zip(a, c)]
         n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])

@@ -102,18 +102,33 @@ pub fn write(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
 /// Writes `chart` of `series` as `<name>.svg` and `<name>.png` in `dir`, without the
 /// CSV (for a chart drawn from data measured elsewhere).
 pub fn write_pictures(dir: &Path, chart: &Chart, series: &[Series]) -> io::Result<()> {
+    write_named_pictures(dir, chart, &[], series)
+}
+
+/// Writes `chart` of `series` as [`write_pictures`] does, its x axis a row of `names`
+/// when there are any: the points at x = k belong to `names[k]` (a series may place
+/// its points a little to either side, so that the tools of a name stand side by side).
+/// `chart.log_x` is then ignored.
+pub fn write_named_pictures(
+    dir: &Path,
+    chart: &Chart,
+    names: &[String],
+    series: &[Series],
+) -> io::Result<()> {
     std::fs::create_dir_all(dir)?;
     register_font();
     let svg = dir.join(format!("{}.svg", chart.name));
     draw(
         SVGBackend::new(&svg, (900, 600)).into_drawing_area(),
         chart,
+        names,
         series,
     )?;
     let png = dir.join(format!("{}.png", chart.name));
     draw(
         BitMapBackend::new(&png, (900, 600)).into_drawing_area(),
         chart,
+        names,
         series,
     )
 }
@@ -207,17 +222,99 @@ fn legend_place(
     best.map_or(SeriesLabelPosition::MiddleRight, |c| c.0.clone())
 }
 
+/// The labelled and the unlabelled grid lines of a logarithmic axis over [lo, hi]: the
+/// labels at m·10ᵏ for m in 1…9 over at most 1.2 decades, 1, 2 and 5 over at most 3,
+/// 1 beyond (so that no two labels come closer than about 20 pixels on a 600-pixel
+/// chart); the other m·10ᵏ unlabelled.
+fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    let decades = (hi / lo).log10();
+    let labelled: &[u32] = if decades <= 1.2 {
+        &[1, 2, 3, 4, 5, 6, 7, 8, 9]
+    } else if decades <= 3.0 {
+        &[1, 2, 5]
+    } else {
+        &[1]
+    };
+    let (mut bold, mut light) = (Vec::new(), Vec::new());
+    for k in lo.log10().floor() as i32..=hi.log10().ceil() as i32 {
+        for m in 1..=9 {
+            let v = f64::from(m) * 10f64.powi(k);
+            if (lo..=hi).contains(&v) {
+                if labelled.contains(&m) {
+                    &mut bold
+                } else {
+                    &mut light
+                }
+                .push(v);
+            }
+        }
+    }
+    (bold, light)
+}
+
+/// The label of `v` on an axis of `names` at 0, 1, …: its name at a whole number, none
+/// between; `tick`'s on a numbered axis.
+fn x_tick(names: &[String], v: f64) -> String {
+    if names.is_empty() {
+        return tick(v);
+    }
+    let k = v.round();
+    match names.get(k as usize) {
+        Some(name) if k >= 0.0 && (v - k).abs() < 1e-9 => name.clone(),
+        _ => String::new(),
+    }
+}
+
+/// A linear axis whose only grid lines and labels are at the given places (the names'
+/// axis); plotters' `with_key_points` of a linear axis has no labels.
+struct Places {
+    linear: plotters::coord::types::RangedCoordf64,
+    at: Vec<f64>,
+}
+
+impl Ranged for Places {
+    type ValueType = f64;
+    type FormatOption = plotters::coord::ranged1d::DefaultFormatting;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.linear.map(value, limit)
+    }
+
+    fn key_points<Hint: plotters::coord::ranged1d::KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            Vec::new()
+        } else {
+            self.at.clone()
+        }
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.linear.range()
+    }
+}
+
 /// Picks the axis type for each scale and draws.
 fn draw<DB: DrawingBackend>(
     area: DrawingArea<DB, Shift>,
     chart: &Chart,
+    names: &[String],
     series: &[Series],
 ) -> io::Result<()>
 where
     DB::ErrorType: 'static,
 {
-    let (x0, x1) = range(series, |p| p.0, chart.log_x);
+    let named = !names.is_empty();
+    let log_x = chart.log_x && !named;
+    let (x0, x1) = if named {
+        (-0.5, names.len() as f64 - 0.5)
+    } else {
+        range(series, |p| p.0, log_x)
+    };
     let (y0, y1) = range(series, |p| p.1, chart.log_y);
+    let chart = &Chart {
+        log_x,
+        ..chart.clone()
+    };
     let failed = |e: String| io::Error::other(e);
     area.fill(&WHITE).map_err(|e| failed(e.to_string()))?;
     let mut builder = ChartBuilder::on(&area);
@@ -234,7 +331,7 @@ where
             ctx.configure_mesh()
                 .x_desc(&chart.x_label)
                 .y_desc(&chart.y_label)
-                .x_label_formatter(&|v| tick(*v))
+                .x_label_formatter(&|v| x_tick(names, *v))
                 .y_label_formatter(&|v| tick(*v))
                 .label_style(("sans-serif", 14))
                 .draw()
@@ -289,11 +386,26 @@ where
                 .map_err(|e| failed(e.to_string()))?;
         }};
     }
-    match (chart.log_x, chart.log_y) {
-        (true, true) => plot!((x0..x1).log_scale(), (y0..y1).log_scale()),
-        (true, false) => plot!((x0..x1).log_scale(), y0..y1),
-        (false, true) => plot!(x0..x1, (y0..y1).log_scale()),
-        (false, false) => plot!(x0..x1, y0..y1),
+    // Logarithmic axes take their grid from `log_ticks`: plotters' own labels each of
+    // 1…10 × 10ᵏ over two decades, which overlap.
+    let log = |lo: f64, hi: f64| {
+        let (bold, light) = log_ticks(lo, hi);
+        (lo..hi)
+            .log_scale()
+            .with_key_points(bold)
+            .with_light_points(light)
+    };
+    let places = || Places {
+        linear: (x0..x1).into(),
+        at: (0..names.len()).map(|k| k as f64).collect(),
+    };
+    match (named, chart.log_x, chart.log_y) {
+        (true, _, true) => plot!(places(), log(y0, y1)),
+        (true, _, false) => plot!(places(), y0..y1),
+        (false, true, true) => plot!(log(x0, x1), log(y0, y1)),
+        (false, true, false) => plot!(log(x0, x1), y0..y1),
+        (false, false, true) => plot!(x0..x1, log(y0, y1)),
+        (false, false, false) => plot!(x0..x1, y0..y1),
     }
     area.present().map_err(|e| failed(e.to_string()))
 }
@@ -314,5 +426,32 @@ fn tick(v: f64) -> String {
         }
     } else {
         format!("{v:.1e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_labels_thin_out_as_the_decades_grow() {
+        let (bold, light) = log_ticks(3e6, 3e7);
+        assert_eq!(bold, [3e6, 4e6, 5e6, 6e6, 7e6, 8e6, 9e6, 1e7, 2e7, 3e7]);
+        assert!(light.is_empty());
+        let (bold, light) = log_ticks(2.4e6, 2e8);
+        assert_eq!(bold, [5e6, 1e7, 2e7, 5e7, 1e8, 2e8]);
+        assert_eq!(light.len(), 12);
+        let (bold, _) = log_ticks(50.0, 2e5);
+        assert_eq!(bold, [100.0, 1e3, 1e4, 1e5]);
+    }
+
+    #[test]
+    fn a_named_axis_labels_its_whole_places_only() {
+        let names = ["cup".to_string(), "poly".to_string()];
+        assert_eq!(x_tick(&names, 1.0), "poly");
+        assert_eq!(x_tick(&names, 0.5), "");
+        assert_eq!(x_tick(&names, 2.0), "");
+        assert_eq!(x_tick(&names, -1.0), "");
+        assert_eq!(x_tick(&[], 1000.0), "1000");
     }
 }

@@ -1,10 +1,12 @@
 //! The peer benchmark's scenes (`scripts/bench-peers scene`, docs/performance.md "Against
 //! LAMMPS and LIGGGHTS"): the generator writes each scene's input sets as expected (the
 //! files under `tests/data/peers/<scene>/`; `UPDATE_PEERS=1` rewrites them; the `1e6`
-//! scene is the drop's files under its own name), walls-sim runs its own set, and a bad
-//! count is refused; `run` on one core and two starts each
+//! scene is the drop's files under its own name; the cup is written with about the
+//! triangles asked for), walls-sim runs its own set, and a bad count is refused; `run` on
+//! one core and two starts each
 //! tool as it should (stand-ins record how LAMMPS, LIGGGHTS and the MPI launcher were
-//! started), and `count` takes a run of one step from a run of the scene (a stand-in for
+//! started), a sweep of the cup's triangles gives each count rows of their own, and
+//! `count` takes a run of one step from a run of the scene (a stand-in for
 //! valgrind makes up the counts). LAMMPS and LIGGGHTS are not needed:
 //! `scripts/bench-peers check` runs them where they are installed.
 
@@ -159,17 +161,16 @@ fn the_1e6_scene_is_the_drop_under_its_own_name() {
     }
 }
 
+/// `scripts/bench-peers scene DIR --scene cup` with `more` arguments.
+fn write_cup(dir: &Path, more: &[&str]) -> Output {
+    let front = ["scene", dir.to_str().unwrap(), "--scene", "cup"];
+    bench_peers(&[&front[..], more].concat())
+}
+
 #[test]
 fn a_cup_of_more_spheres_than_its_lattice_holds_is_refused() {
     let dir = tempfile::tempdir().unwrap();
-    let out = bench_peers(&[
-        "scene",
-        dir.path().to_str().unwrap(),
-        "--scene",
-        "cup",
-        "--particles",
-        "10641",
-    ]);
+    let out = write_cup(dir.path(), &["--particles", "10641"]);
     assert_eq!(out.status.code(), Some(2), "{out:?}");
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
@@ -297,6 +298,80 @@ fn a_run_on_one_core_and_two_starts_walls_sim_on_threads_and_the_peers_on_mpi_ra
             "{tool}: {stdout}"
         );
     }
+}
+
+#[test]
+fn the_cup_is_written_with_about_the_triangles_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = write_cup(dir.path(), &["--particles", "8", "--triangles", "1000"]);
+    assert!(out.status.success(), "{out:?}");
+    let walls = std::fs::read_to_string(dir.path().join("walls-sim/cup.walls")).unwrap();
+    assert!(walls.starts_with(
+        "# The peer benchmark's cup (scripts/peers/scene.py): an open cylinder of 999\n\
+         # triangles, its side 111 segments x 4 rings of two, its bottom a fan of 111.\n"
+    ));
+    assert_eq!(walls.matches("type triangle").count(), 999);
+    let stl = std::fs::read_to_string(dir.path().join("liggghts/cup.stl")).unwrap();
+    assert_eq!(stl.matches("facet normal").count(), 999);
+}
+
+#[test]
+fn a_sweep_of_the_cups_triangles_writes_rows_of_their_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let calls = dir.path().join("calls");
+    // LIGGGHTS's stand-in records the facets of the mesh it was given.
+    let script = format!(
+        "#!/bin/sh\necho \"liggghts $* facets=$(grep -c 'facet normal' cup.stl)\" >> {}\n",
+        calls.display()
+    );
+    let liggghts = executable(dir.path(), "liggghts", &script);
+    let sweep = dir.path().join("sweep.csv");
+    let out = bench_peers(&[
+        "--walls-sim",
+        env!("CARGO_BIN_EXE_walls-sim"),
+        "--liggghts",
+        liggghts.to_str().unwrap(),
+        "run",
+        "--scenes",
+        "cup",
+        "--particles",
+        "8",
+        "--steps",
+        "10",
+        "--rounds",
+        "1",
+        "--triangles",
+        "100,1000",
+        "--csv",
+        sweep.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    assert_eq!(
+        std::fs::read_to_string(&calls).unwrap(),
+        "liggghts -in in.lig -log none facets=99\n\
+         liggghts -in in.lig -log none facets=999\n"
+    );
+    let rows: Vec<String> = (std::fs::read_to_string(&sweep).unwrap().lines())
+        .map(|l| l.split(',').take(4).collect::<Vec<_>>().join(","))
+        .collect();
+    assert_eq!(
+        rows,
+        [
+            "tool,scene,particles,steps",
+            "liggghts,cup-99,8,10",
+            "walls-sim,cup-99,8,10",
+            "liggghts,cup-999,8,10",
+            "walls-sim,cup-999,8,10",
+        ]
+    );
+
+    let out = bench_peers(&["--walls-sim", "/bin/true", "run", "--triangles", "100"]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(
+        String::from_utf8_lossy(&out.stderr)
+            .ends_with("error: --triangles: only the cup's (--scenes cup)\n"),
+        "{out:?}"
+    );
 }
 
 /// A stand-in for valgrind: appends to `calls` the tool it was asked to count, with its
