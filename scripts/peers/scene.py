@@ -247,6 +247,11 @@ def cup_particles(n: int) -> list[Particle]:
     return out
 
 
+# The most triangles a cup is cut into: ten times the sweep's largest, its walls file
+# about 210 MB and its STL about 310 MB.
+MAX_CUP_TRIANGLES = 1_000_000
+
+
 def cup_shape(triangles: int) -> tuple[int, int]:
     """The segments S and rings K of a cup of about `triangles` triangles, S·(2K + 1),
     its rings as tall against its segments' width as the 5,100's (K/S near 8/300): K the
@@ -254,6 +259,11 @@ def cup_shape(triangles: int) -> tuple[int, int]:
     triangles / (2K + 1), at least 3."""
     if triangles < 9:
         raise ValueError(f"the cup needs at least 9 triangles, not {triangles}")
+    if triangles > MAX_CUP_TRIANGLES:
+        raise ValueError(
+            f"the cup takes at most {MAX_CUP_TRIANGLES:,} triangles (about 520 bytes of "
+            f"walls file and STL each), not {triangles:,}"
+        )
     rings = max(1, round(math.sqrt(triangles * CUP_RINGS / (2 * CUP_SEGMENTS))))
     return (max(3, round(triangles / (2 * rings + 1))), rings)
 

@@ -316,6 +316,26 @@ fn the_cup_is_written_with_about_the_triangles_asked_for() {
 }
 
 #[test]
+fn a_cup_of_too_few_or_too_many_triangles_is_refused_before_anything_is_written() {
+    for (triangles, says) in [
+        ("3", "the cup needs at least 9 triangles, not 3"),
+        (
+            "1000000000",
+            "the cup takes at most 1,000,000 triangles (about 520 bytes of walls file and STL each), not 1,000,000,000",
+        ),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = write_cup(dir.path(), &["--particles", "8", "--triangles", triangles]);
+        assert_eq!(out.status.code(), Some(2), "{out:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(says),
+            "{out:?}"
+        );
+        assert!(!dir.path().join("walls-sim/cup.walls").exists());
+    }
+}
+
+#[test]
 fn a_sweep_of_the_cups_triangles_writes_rows_of_their_own() {
     let dir = tempfile::tempdir().unwrap();
     let calls = dir.path().join("calls");
