@@ -122,6 +122,13 @@ impl ContactLaw {
         }
     }
 
+    /// Whether a contact is pkdgrav's law with the rolling radius R* and the springs of
+    /// `DEM_ROTATION_DASHPOT`: no contact radius, no constant torques (the contacts the
+    /// four-at-a-time lanes take, [`crate::contact::lanes`]).
+    pub(super) fn plain_dashpot(&self) -> bool {
+        self.law == Law::Pkdgrav && !self.contact_radius && !self.constant_torque
+    }
+
     /// pkdgrav's contact radius of a particle of radius `r` with lever `lever`, when the
     /// run uses it (`bUseContactRadius`, docs/pkdgrav-physics.md §1.4).
     #[inline(always)]

@@ -564,19 +564,15 @@ impl PairContext<'_> {
         let settings = self.settings;
         let simd = lanes::Simd::new()?;
         let between = self.between;
-        (self.contact.law == Law::Pkdgrav
-            && !self.optional.any()
-            && !settings.contact_radius
-            && settings.build.rotation_dashpot)
-            .then_some(lanes::Setting {
-                simd,
-                dt: settings.dt,
-                predict: self.kicks.predict_all,
-                mat: &between.mat,
-                sliding: settings.sliding,
-                restitution: between.restitution,
-                damping: between.damping,
-            })
+        (self.contact.plain_dashpot() && !self.optional.any()).then_some(lanes::Setting {
+            simd,
+            dt: settings.dt,
+            predict: self.kicks.predict_all,
+            mat: &between.mat,
+            sliding: self.contact.sliding,
+            restitution: between.restitution,
+            damping: between.damping,
+        })
     }
 
     /// Whether the particles of four pairs are all free.
