@@ -125,9 +125,18 @@ pub struct Inputs {
 }
 
 impl Inputs {
-    /// `--gravity` as a vector (its three numbers, x, y and z, as clap takes them).
-    pub fn gravity(&self) -> Option<Vec3> {
-        self.gravity.as_deref().map(Vec3::from_column_slice)
+    /// `--gravity` as a vector (its three numbers, x, y and z, as clap takes them); an
+    /// error if it holds another count (only a caller that builds `Inputs` itself can
+    /// give one).
+    pub fn gravity(&self) -> Result<Option<Vec3>, ConfigError> {
+        match self.gravity.as_deref() {
+            None => Ok(None),
+            Some(&[x, y, z]) => Ok(Some(Vec3::new(x, y, z))),
+            Some(other) => Err(ConfigError::Unusable(format!(
+                "--gravity takes three numbers (x, y, z), not {}",
+                other.len()
+            ))),
+        }
     }
 }
 
@@ -415,7 +424,7 @@ pub fn resolve(
     };
     // pkdgrav's `bDoGravity = 0`: no forces at all, uniform gravity included.
     let forces = par.and_then(|p| p.do_gravity).unwrap_or(true);
-    let gravity = match (given.gravity(), par.and_then(|p| p.gravity)) {
+    let gravity = match (given.gravity()?, par.and_then(|p| p.gravity)) {
         (None, _) if !forces => Vec3::zeros(),
         (Some(g), _) => g,
         (None, Some(g)) => g,

@@ -55,6 +55,30 @@ fn a_flag_beats_the_par_file() {
 }
 
 #[test]
+fn a_gravity_of_other_than_three_numbers_is_an_error_not_a_panic() {
+    for numbers in [vec![], vec![1.0], vec![1.0, 2.0, 3.0, 4.0]] {
+        let flags = Flags {
+            inputs: Inputs {
+                gravity: Some(numbers.clone()),
+                ..Inputs::default()
+            },
+            ..Flags::default()
+        };
+        let Err(ConfigError::Unusable(e)) = resolve(&flags, None, &scene(FLOOR), Some(ball()))
+        else {
+            panic!("{numbers:?}: accepted");
+        };
+        assert_eq!(
+            e,
+            format!(
+                "--gravity takes three numbers (x, y, z), not {}",
+                numbers.len()
+            )
+        );
+    }
+}
+
+#[test]
 fn the_par_file_beats_the_default() {
     let run = resolve(&Flags::default(), Some(&par()), &scene(FLOOR), Some(ball())).unwrap();
     assert_eq!(run.settings.dt, 2e-5);
