@@ -172,13 +172,20 @@ fn an_elastic_strike_keeps_the_energy_of_particle_and_plate() {
 fn an_assembly_without_a_positive_moment_of_inertia_stays_and_is_reported() {
     // izj-vec 0 (a rod's moment about its own axis): Euler's equations cannot turn it. It
     // stays where it is, the run says so, and the run ends.
-    let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 10\n assembly 0\n cog 0 0 0\n izj-vec 0 0 0\n";
-    let out = run(
-        &scene(plate),
-        vec![particle([0.5, 0.0, 0.15], [0.3, 0.0, -1.0])],
-        &settings(0.3),
-    );
+    let plate = "wall type rectangle\n origin -1 -1 0\n vertex1 2 0 0\n vertex2 0 2 0\n mass 10\n assembly 0\n cog 0 0 0.5\n izj-vec 0 0 0\n";
+    let ball = particle([0.5, 0.0, 0.15], [0.3, 0.0, -1.0]);
+    let s = settings(0.3);
+    let out = run(&scene(plate), vec![ball.clone()], &s);
     assert!(out.assemblies.is_empty());
+    // The energy at the start is the particle's alone, as at the end: the plate that
+    // stays is not counted in one and left out of the other.
+    let p = &ball;
+    let start = p.mass * (0.5 * p.vel.norm_squared() - s.gravity.dot(&p.pos));
+    assert!(
+        (out.energy.0 / start - 1.0).abs() < 1e-12,
+        "{} vs {start}",
+        out.energy.0
+    );
     assert!(
         out.warnings
             .iter()

@@ -14,7 +14,7 @@ type Vec3 = Vector3<f64>;
 /// spheres, swollen by half the skin each, overlapped when the list was built. It is
 /// rebuilt on the cell grid once some particle has moved more than half the skin since,
 /// so every pair that overlaps now is in it. The skin is 0.4 of the largest radius: in
-/// a settled pile the list lasts many steps (docs/performance.md).
+/// a settled pile the list lasts many steps (docs/performance-history.md).
 pub(crate) struct PairList {
     pub(crate) pairs: Vec<(u32, u32)>,
     /// Each particle's centre and radius (x, y, z, r) as it is now: the pairs' first

@@ -261,7 +261,7 @@ impl Settings {
 }
 
 /// Below this many particles a step runs on one thread: handing the work to rayon costs
-/// more than it saves (docs/performance.md).
+/// more than it saves (docs/performance-history.md).
 const PARALLEL_FROM: usize = 1024;
 
 /// Whether a run of `n` particles takes its passes in parallel: with many particles and

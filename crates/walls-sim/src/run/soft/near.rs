@@ -22,18 +22,18 @@ type Vec3 = Vector3<f64>;
 pub(super) struct NearWalls {
     /// Whether each wall is kept in the lists: every wall but those of reactive
     /// assemblies.
-    pub(super) listed: Vec<bool>,
+    listed: Vec<bool>,
     /// Whether each wall translates.
-    pub(super) translating: Vec<bool>,
+    translating: Vec<bool>,
     /// The walls of reactive assemblies.
     pub(super) moving: Vec<usize>,
     /// The listed walls that translate, whose moves the lists must follow.
     sliding: Vec<usize>,
     /// Each wall's origin when the lists were found.
-    pub(super) built_origins: Vec<Vec3>,
+    built_origins: Vec<Vec3>,
     /// Where each particle's walls start in `walls` (one more entry than particles).
-    pub(super) starts: Vec<u32>,
-    pub(super) walls: Vec<usize>,
+    starts: Vec<u32>,
+    walls: Vec<usize>,
     /// The wall index the lists are found through, when the plan uses one.
     index: Option<WallIndex>,
 }
@@ -103,22 +103,16 @@ impl NearWalls {
         }
     }
 
-    /// Whether a listed wall of `walls` (none without forces) has translated more than
-    /// `half` since the lists were found.
+    /// Whether a listed wall has translated more than `half` since the lists were
+    /// found.
     pub(super) fn moved(&self, walls: &[WallNow], half: f64) -> bool {
-        !walls.is_empty()
-            && self.sliding.iter().any(|&w| {
-                let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
-                d2 > half * half || d2.is_nan()
-            })
+        self.sliding.iter().any(|&w| {
+            let d2 = (walls[w].origin - self.built_origins[w]).norm_squared();
+            d2 > half * half || d2.is_nan()
+        })
     }
 
     /// The listed walls near particle `i`.
-    pub(super) fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
-        self.listed_of(i).iter().copied()
-    }
-
-    /// [`NearWalls::of`] as a slice.
     #[inline]
     pub(super) fn listed_of(&self, i: usize) -> &[usize] {
         &self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]

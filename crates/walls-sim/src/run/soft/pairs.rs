@@ -25,6 +25,8 @@ pub(super) struct PairMaterial {
     pub(super) mat: Material,
     /// The normal and tangential restitutions.
     restitution: (Restitution, Restitution),
+    /// The linear law's normal damping over √m (the reduced mass's root).
+    damping_per_root_mass: f64,
     /// A reduced mass and the damping coefficients (C_n, C_t) of a contact of that
     /// reduced mass: a contact of that mass (two free particles of the first one's mass;
     /// in a run of one size, every contact) takes them rather than two square roots.
@@ -44,6 +46,7 @@ impl PairMaterial {
         PairMaterial {
             mat,
             restitution: (eps_n, eps_t),
+            damping_per_root_mass: damping_per_root_mass(mat.eps_n, mat.k_n),
             damping,
         }
     }
@@ -743,7 +746,7 @@ impl PairContext<'_> {
         let c = if plan.sliding_friction {
             contact(reduced, li, &touch, &mut record.spring, dt, mat)
         } else {
-            let c_n = damping_per_root_mass(mat.eps_n, mat.k_n) * reduced.sqrt();
+            let c_n = self.between.damping_per_root_mass * reduced.sqrt();
             normal_contact(&touch, mat.k_n, c_n)
         };
         // The tangential force acts at the contact point: −R_i·n̂ from i, +R_j·n̂

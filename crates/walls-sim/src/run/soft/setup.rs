@@ -42,16 +42,13 @@ impl<'a> SoftStepper<'a> {
             between.mu_r = 0.0;
             between.mu_t = 0.0;
         }
-        let initial = energy(&states, &g)
-            + if plan.reactive {
-                assembly_energy(&crate::dynamics::reactive::assemblies(scene), &g)
-            } else {
-                0.0
-            };
         let mut warnings = crate::run::stability::soft_warnings(scene, &states, settings);
         let mut states = states;
         let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
         let assemblies = set_up_assemblies(scene, settings, plan, &mut warnings);
+        // The energy of what the run moves: the assemblies that cannot move are left
+        // out, as they are from the energy at the end.
+        let initial = energy(&states, &g) + assembly_energy(&assemblies, &g);
         let walls = wall_set(scene, settings, materials, &assemblies);
         let broad = broad(scene, &states, plan, &walls);
         let optional = OptionalPhysics::new(scene, &states, settings);

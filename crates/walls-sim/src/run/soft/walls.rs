@@ -342,7 +342,7 @@ fn walls_to_visit(
 ) {
     visit.clear();
     if let Some(near) = near {
-        visit.extend(near.of(i));
+        visit.extend_from_slice(near.listed_of(i));
         visit.extend(near.moving.iter().copied());
         for (w, _) in open.iter() {
             visit.push(*w);
