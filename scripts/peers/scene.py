@@ -175,6 +175,10 @@ def layout(n: int, kind: str = "drop") -> Layout:
     height, 50 × 50 × 40 sites for 10⁵)."""
     if n < 1:
         raise ValueError(f"the particle count must be at least 1, not {n}")
+    if n > MAX_PARTICLES:
+        raise ValueError(
+            f"at most {MAX_PARTICLES:,} particles (about 300 bytes of input files each), not {n:,}"
+        )
     if kind == "poly":
         nx = max(1, math.ceil(round((1.25 * n) ** (1.0 / 3.0), 9)))
         spacing = POLY_SPACING
@@ -247,6 +251,10 @@ def cup_particles(n: int) -> list[Particle]:
     return out
 
 
+# The most particles a scene holds: ten times the largest the benchmark runs, its three
+# input sets about 3 GB.
+MAX_PARTICLES = 10_000_000
+
 # The most triangles a cup is cut into: ten times the sweep's largest, its walls file
 # about 210 MB and its STL about 310 MB.
 MAX_CUP_TRIANGLES = 1_000_000
@@ -314,6 +322,8 @@ def write(directory: Path, scene: Scene) -> dict[str, Path]:
         raise ValueError(f"the step count must be at least 1, not {scene.steps}")
     if scene.triangles is not None and scene.kind != "cup":
         raise ValueError(f"only the cup has triangles to choose, not the {scene.kind} scene")
+    if scene.kind == "cup":
+        scene.cup  # noqa: B018 (its bounds are checked before any folder is made)
     parts = particles(scene.particles, scene.kind)
     lay = layout(scene.particles, scene.kind)
     folders = {tool: Path(directory) / tool for tool in tools(scene.kind)}

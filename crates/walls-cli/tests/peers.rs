@@ -331,7 +331,11 @@ fn a_cup_of_too_few_or_too_many_triangles_is_refused_before_anything_is_written(
             String::from_utf8_lossy(&out.stderr).contains(says),
             "{out:?}"
         );
-        assert!(!dir.path().join("walls-sim/cup.walls").exists());
+        assert_eq!(
+            std::fs::read_dir(dir.path()).unwrap().count(),
+            0,
+            "{triangles}"
+        );
     }
 }
 
@@ -478,5 +482,58 @@ fn count_refuses_a_single_step() {
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
         "bench-peers: count needs at least 2 steps, not 1\n"
+    );
+}
+
+#[test]
+fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "").unwrap();
+    let d = dir.path().to_str().unwrap();
+    let f = file.to_str().unwrap();
+    let cases: [(&[&str], &str); 4] = [
+        (
+            &["scene", d, "--scene", "drop", "--steps", "0"],
+            "argument --steps: not a count: '0'",
+        ),
+        (
+            &["scene", f, "--scene", "drop", "--particles", "8"],
+            "Not a directory",
+        ),
+        (
+            &["scene", d, "--scene", "drop", "--particles", "100000000"],
+            "at most 10,000,000 particles",
+        ),
+        // A CSV that could not be rewritten is found before the runs it would lose.
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "drop",
+                "--particles",
+                "8",
+                "--tools",
+                "walls-sim",
+                "--csv",
+                d,
+            ],
+            "Is a directory",
+        ),
+    ];
+    for (args, says) in cases {
+        let out = bench_peers(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {out:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(says),
+            "{args:?}: {out:?}"
+        );
+    }
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "only the file"
     );
 }
