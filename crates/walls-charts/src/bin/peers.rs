@@ -168,6 +168,21 @@ fn main() -> io::Result<()> {
     let sweep = read(&dir.join("peers_triangles.csv"), true)?;
     if !sweep.is_empty() {
         let set_up = read(&dir.join("peers_triangles_setup.csv"), true)?;
+        // One sweep is one count of spheres: the first row's; rows of another count are
+        // left out, and named.
+        let spheres = sweep[0].particles;
+        let of = |runs: Vec<Run>| -> Vec<Run> {
+            let (kept, other): (Vec<Run>, Vec<Run>) =
+                runs.into_iter().partition(|r| r.particles == spheres);
+            for r in &other {
+                println!(
+                    "{} {} of {} spheres: not the sweep's {spheres}: left out",
+                    r.tool, r.scene, r.particles
+                );
+            }
+            kept
+        };
+        let (sweep, set_up) = (of(sweep), of(set_up));
         let series = triangle_costs(&sweep, &set_up);
         for s in &series {
             for (triangles, ns) in &s.points {
@@ -181,8 +196,10 @@ fn main() -> io::Result<()> {
             &dir,
             &Chart {
                 name: "peers_triangles".into(),
-                title: "the cup's 10,640 spheres: cost against triangles (median of the rounds)"
-                    .into(),
+                title: format!(
+                    "the cup's {} spheres: cost against triangles (median of the rounds)",
+                    grouped(spheres)
+                ),
                 x_label: "triangles".into(),
                 y_label: "ns per particle-step".into(),
                 log_x: true,

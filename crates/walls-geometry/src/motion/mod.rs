@@ -128,17 +128,19 @@ impl Motion {
         self.position(t).unwrap_or(self.origin)
     }
 
-    fn phase(&self, t: f64) -> f64 {
-        let o = &self.oscillation;
-        o.frequency * self.quantised_time(t) + TAU * o.cycle()
-    }
-
     /// The velocity of the wall's origin at time `t`: linear plus oscillation.
     pub fn origin_velocity(&self, t: f64) -> Vec3 {
+        self.velocity_at(self.quantised_time(t))
+    }
+
+    /// The origin's velocity, linear plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, at the
+    /// time `t` as given (quantised or not by the caller).
+    fn velocity_at(&self, t: f64) -> Vec3 {
         let o = &self.oscillation;
         let mut v = self.velocity;
         if o.amplitude != 0.0 {
-            v += o.direction * (o.amplitude * o.frequency * self.phase(t).cos());
+            let angle = o.frequency * t + TAU * o.cycle();
+            v += o.direction * (o.amplitude * o.frequency * angle.cos());
         }
         v
     }
@@ -165,13 +167,7 @@ impl Motion {
     /// §5): `velocity` plus A·ω·cos(ω·t + 2πφ) along `osc-vec`, with t not quantised to
     /// `step`.
     pub fn smooth_velocity(&self, t: f64) -> Vec3 {
-        let o = &self.oscillation;
-        let mut v = self.velocity;
-        if o.amplitude != 0.0 {
-            let angle = o.frequency * t + TAU * o.cycle();
-            v += o.direction * (o.amplitude * o.frequency * angle.cos());
-        }
-        v
+        self.velocity_at(t)
     }
 
     /// The origin after the step from `t` to `t + dt`, from `origin`, as pkdgrav's
