@@ -10,6 +10,10 @@
 //!   overflow. An observer that looks now and then sees, at those steps, exactly what
 //!   one looking every step sees; a run nobody looks at ends exactly as one looked at
 //!   every step; and a kick that overflows stops the run at its own step.
+//! - **Places.** The soft stepper keeps the particles in the pair grid's order, not the
+//!   file's ([`Places`]): a run kept either way ends bit for bit the same, seen at
+//!   every step and on any number of threads, its events, warnings and stops naming
+//!   the file's particles in the file's order.
 //!
 //! The scene: two thousand spheres of assorted sizes (radii 0.8–1 mm, so that each
 //! particle's mass and inertia are its own in every pass) dropped into a box of five
@@ -17,9 +21,10 @@
 
 use nalgebra::Vector3;
 use walls_sim::run::{
-    Integrator, Outcome, Overlapping, ParticleMaterial, Settings, State, Stop, Warning, defaults,
-    run, run_observed,
+    EventKind, Integrator, Outcome, Overlapping, ParticleMaterial, Places, Settings, State, Stop,
+    Warning, defaults, run, run_observed,
 };
+use walls_test_support::scene;
 use walls_test_support::scenes::{ball, box_of_spheres};
 
 /// The dropped box on `threads` threads, looked at on the steps `looks` says; the
@@ -239,4 +244,88 @@ fn an_overlap_stop_counts_the_contacts_opened_before_it_and_no_others() {
     let out = run(&[], balls, &settings);
     assert_eq!(out.stopped, Some(Stop::Overlap));
     assert_eq!((out.steps, out.pair_contacts), (2, 2));
+}
+
+/// Whether two runs (outcome and states seen) are the same bit for bit: their numbers
+/// as Debug writes them (the shortest text that reads back to the same bits).
+fn same_bits<T: std::fmt::Debug>(a: &T, b: &T) -> bool {
+    format!("{a:?}") == format!("{b:?}")
+}
+
+#[test]
+fn where_the_particles_are_kept_changes_nothing() {
+    // The dropped box, numbered x fastest as a lattice is, kept in the grid's cell
+    // order (x slowest) and in the file's: the same at every step, on one thread and
+    // on three (where the pair and wall passes run in parallel).
+    for threads in [1, 3] {
+        let file = dropped_with(threads, |_| true, |s| s.places = Places::File);
+        let grid = dropped_with(threads, |_| true, |s| s.places = Places::Grid);
+        assert!(file.0.pair_contacts > 1000 && !file.0.events.is_empty());
+        assert_eq!(file.1.len(), 12);
+        assert!(same_bits(&file, &grid), "{threads} threads");
+    }
+}
+
+#[test]
+fn events_warnings_and_stops_name_the_files_particles_wherever_they_are_kept() {
+    // The box's spheres, fast and on soft springs, in a box whose floor is sticky and
+    // whose side x = 0 removes them: sticks, removals and bounces, pkdgrav's overlap
+    // warnings, in the file's order and naming the file's particles, kept either way.
+    let (_, particles) = box_of_spheres(2000, 4.0);
+    let side = 11.0 * 2.2e-3;
+    let walls = scene(&format!(
+        "wall type plane\n  orient 0 0 1\n  epsn 0\n\
+         wall type plane\n  orient 1 0 0\n  epsn -1\n\
+         wall type plane\n  origin {side} 0 0\n  orient -1 0 0\n\
+         wall type plane\n  orient 0 1 0\n\
+         wall type plane\n  origin 0 {side} 0\n  orient 0 -1 0\n"
+    ));
+    let settings = |places: Places| Settings {
+        gravity: Vector3::new(0.0, 0.0, -9.81),
+        places,
+        ..Settings::new(5e-6, 400.0 * 5e-6, defaults::default_material(20.0))
+    };
+    let on = |threads: usize, places: Places| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+            .install(|| run(&walls, particles.clone(), &settings(places)))
+    };
+    let file = on(1, Places::File);
+    let kinds = |kind: EventKind| file.events.iter().filter(|e| e.kind == kind).count();
+    assert!(kinds(EventKind::Stick) > 10, "{:?}", file.events.len());
+    assert!(kinds(EventKind::Remove) > 10, "{:?}", file.events.len());
+    assert!(!file.warnings.is_empty());
+    for threads in [1, 3] {
+        assert!(
+            same_bits(&file, &on(threads, Places::Grid)),
+            "{threads} threads"
+        );
+    }
+}
+
+#[test]
+fn a_run_that_overflows_names_the_files_first_particle_wherever_it_is_kept() {
+    // The overflowing pair of `an_owed_kick_that_overflows_stops_the_run_at_its_step`
+    // as the file's second and third particles, the second on the right, in the grid's
+    // next cell along x, and the first far off: kept in the grid's order the third is
+    // first and the first last, and the stop still names the second.
+    let light = |x: f64, index: i32| walls_geometry::Particle {
+        mass: 1e-20,
+        index,
+        ..ball([x, 0.0, 0.0], [0.0; 3])
+    };
+    for places in [Places::File, Places::Grid] {
+        let settings = Settings {
+            integrator: Integrator::Leapfrog,
+            places,
+            ..Settings::new(1e-3, 1.0, defaults::default_material(1e300))
+        };
+        let balls = vec![light(10.0, 0), light(0.30, 1), light(0.11, 2)];
+        let out = run(&[], balls, &settings);
+        assert_eq!((out.steps, out.stopped), (1, Some(Stop::NotFinite(1))));
+        assert!(out.particles[0].particle.vel.x.is_finite());
+        assert!(!out.particles[1].particle.vel.x.is_finite());
+    }
 }

@@ -41,8 +41,9 @@
 //! cell: still correct, slower.
 //!
 //! **Determinism**: the order of the pairs depends only on the input: cells by key,
-//! within a cell by particle index, neighbour cells in a fixed order. No hashing with
-//! random state, no threads.
+//! within a cell by rank (the particle's index, unless the builder ranks them otherwise:
+//! [`CellGrid::refill_ranked`]), neighbour cells in a fixed order; each pair is reported
+//! lower rank first. No hashing with random state, no threads.
 //!
 //! **Left out**: a particle whose position has a non-finite coordinate, or whose swollen
 //! radius is not finite or is negative, is not binned and meets nothing (no panic). To
@@ -72,12 +73,14 @@ const FORWARD_COLUMNS: [(i64, i64); 4] = [(0, 1), (1, -1), (1, 0), (1, 1)];
 /// Bits of a packed key per axis.
 const BITS: u32 = 21;
 
-/// A binned particle: its position, swollen radius and index.
+/// A binned particle: its position, swollen radius, index and rank (40 bytes, as
+/// without the rank: it takes the index's padding).
 #[derive(Debug, Clone, Copy)]
 struct Slot {
     p: Vec3,
     s: f64,
     id: u32,
+    rank: u32,
 }
 
 /// A cell key, ordered as (i, j, k) lexicographically.
@@ -135,7 +138,7 @@ pub struct CellGrid {
     h: f64,
     /// 1/h, for the cell keys.
     inv_h: f64,
-    /// The binned particles, sorted by cell key then index.
+    /// The binned particles, sorted by cell key then rank.
     slots: Vec<Slot>,
     /// The occupied cells' keys, ascending.
     keys: Keys,
@@ -159,12 +162,12 @@ impl Default for CellGrid {
 }
 
 /// What building a [`CellGrid`] works in besides the grid (the particles binned, in index
-/// order, and their keys to sort), kept between builds by whoever builds one again and
-/// again ([`CellGrid::refill`]).
+/// order, and their keys to sort with their ranks), kept between builds by whoever builds
+/// one again and again ([`CellGrid::refill`]).
 #[derive(Debug, Default)]
 pub struct GridScratch {
     kept: Vec<Slot>,
-    order: Vec<(Packed, u32)>,
+    order: Vec<(Packed, u32, u32)>,
 }
 
 impl CellGrid {
@@ -213,7 +216,24 @@ impl CellGrid {
     pub fn refill(
         &mut self,
         len: usize,
+        sphere: impl FnMut(usize) -> Option<(Vec3, f64)>,
+        scratch: &mut GridScratch,
+    ) {
+        self.refill_ranked(len, sphere, |i| i as u32, scratch);
+    }
+
+    /// [`CellGrid::refill`] with particle i ranked `rank(i)` (distinct ranks): the ranks
+    /// order the particles of a cell and the two of a pair in place of their indices,
+    /// so that particles numbered anew (the soft-sphere run's places) give the pairs of
+    /// their old numbers (the ranks), in the same order.
+    ///
+    /// # Panics
+    /// If `len` is `u32::MAX` or more.
+    pub fn refill_ranked(
+        &mut self,
+        len: usize,
         mut sphere: impl FnMut(usize) -> Option<(Vec3, f64)>,
+        rank: impl Fn(usize) -> u32,
         scratch: &mut GridScratch,
     ) {
         assert!(len < NONE as usize, "at most 2³² − 2 particles");
@@ -223,7 +243,12 @@ impl CellGrid {
         for i in 0..len {
             let Some((p, s)) = sphere(i) else { continue };
             if p.iter().all(|x| x.is_finite()) && s.is_finite() && s >= 0.0 {
-                kept.push(Slot { p, s, id: i as u32 });
+                kept.push(Slot {
+                    p,
+                    s,
+                    id: i as u32,
+                    rank: rank(i),
+                });
             }
         }
         let s_max = kept.iter().map(|k| k.s).fold(0.0, f64::max);
@@ -256,15 +281,15 @@ impl CellGrid {
                 )
             },
         );
-        // `kept` is in index order, so sorting (key, position in `kept`) sorts by key
-        // then index.
+        // Sorting (key, rank, position in `kept`) sorts by key then rank (the ranks
+        // are distinct: the positions only come along).
         self.keys = if (0..3).all(|d| hi[d] - lo[d] < (1 << BITS) - 2) {
             let order = &mut scratch.order;
             order.clear();
             order.extend(
                 kept.iter()
                     .zip(0..)
-                    .map(|(slot, n)| (Packed::new(self.key(&slot.p), lo), n)),
+                    .map(|(slot, n)| (Packed::new(self.key(&slot.p), lo), slot.rank, n)),
             );
             self.bin(kept, order, &mut packed);
             Keys::Packed(packed, lo)
@@ -272,7 +297,7 @@ impl CellGrid {
             let mut order: Vec<_> = kept
                 .iter()
                 .zip(0..)
-                .map(|(slot, n)| (self.key(&slot.p), n))
+                .map(|(slot, n)| (self.key(&slot.p), slot.rank, n))
                 .collect();
             let mut keys = Vec::new();
             self.bin(kept, &mut order, &mut keys);
@@ -280,12 +305,12 @@ impl CellGrid {
         };
     }
 
-    /// Sorts `order` (key, position in `kept`) and fills the slots and cells from it, and
-    /// `keys` (empty) with the cells' keys.
-    fn bin<K: Key>(&mut self, kept: &[Slot], order: &mut [(K, u32)], keys: &mut Vec<K>) {
+    /// Sorts `order` (key, rank, position in `kept`) and fills the slots and cells from
+    /// it, and `keys` (empty) with the cells' keys.
+    fn bin<K: Key>(&mut self, kept: &[Slot], order: &mut [(K, u32, u32)], keys: &mut Vec<K>) {
         order.sort_unstable();
         self.slots.reserve_exact(order.len());
-        for (n, &(key, k)) in order.iter().enumerate() {
+        for (n, &(key, _, k)) in order.iter().enumerate() {
             if keys.last() != Some(&key) {
                 if !keys.is_empty() {
                     self.starts.push(n as u32);
@@ -299,6 +324,11 @@ impl CellGrid {
         self.starts.push(order.len() as u32);
     }
 
+    /// The binned particles in the grid's order: cells by key, within a cell by rank.
+    pub fn order(&self) -> impl ExactSizeIterator<Item = u32> + '_ {
+        self.slots.iter().map(|slot| slot.id)
+    }
+
     /// The cell edge: the largest swollen diameter, a little more (module documentation).
     pub fn cell_size(&self) -> f64 {
         self.h
@@ -309,8 +339,9 @@ impl CellGrid {
         self.starts.len() - 1
     }
 
-    /// Calls `f(i, j)` once for each unordered pair i < j whose swollen spheres overlap,
-    /// in an order that depends only on the input.
+    /// Calls `f(i, j)` once for each unordered pair whose swollen spheres overlap, i the
+    /// lower ranked (i < j unless ranked otherwise), in an order that depends only on
+    /// the input.
     pub fn for_each_pair(&self, f: impl FnMut(usize, usize)) {
         self.for_each_pair_in(0..self.cell_count(), f);
     }
@@ -333,7 +364,7 @@ impl CellGrid {
         }
     }
 
-    /// The pairs of [`CellGrid::for_each_pair`], in its order, as (i, j) with i < j.
+    /// The pairs of [`CellGrid::for_each_pair`], in its order, as (i, j), i the lower ranked.
     pub fn pairs(&self) -> Vec<(u32, u32)> {
         let mut pairs = Vec::new();
         self.pairs_into(&mut pairs);
@@ -480,8 +511,9 @@ impl CellGrid {
     #[inline]
     fn check(&self, a: usize, b: usize, f: &mut impl FnMut(usize, usize)) {
         if self.overlap(a, b) {
-            let (i, j) = (self.slots[a].id as usize, self.slots[b].id as usize);
-            f(i.min(j), i.max(j));
+            let (a, b) = (&self.slots[a], &self.slots[b]);
+            let (i, j) = (a.id as usize, b.id as usize);
+            if a.rank < b.rank { f(i, j) } else { f(j, i) }
         }
     }
 }

@@ -81,8 +81,32 @@ impl PairList {
         }
     }
 
-    /// The candidate pairs (when wanted) where the particles are now.
-    pub(crate) fn build(&mut self, states: &[State]) {
+    /// The particles in the order of the grid the list is found on (cells by key, within
+    /// a cell by index), those it leaves out (not alive, or not finite) last: where the
+    /// soft-sphere run keeps them, so that a pair's two are near each other in memory.
+    pub(crate) fn grid_order(&mut self, states: &[State]) -> Vec<u32> {
+        let half = self.skin / 2.0;
+        let sphere = |i: usize| {
+            let s = &states[i];
+            s.alive
+                .then_some((s.particle.pos, s.particle.radius + half))
+        };
+        self.grid.refill(states.len(), sphere, &mut self.scratch);
+        let mut order: Vec<u32> = self.grid.order().collect();
+        if order.len() < states.len() {
+            let mut binned = vec![false; states.len()];
+            for &i in &order {
+                binned[i as usize] = true;
+            }
+            order.extend((0..states.len() as u32).filter(|&i| !binned[i as usize]));
+        }
+        order
+    }
+
+    /// The candidate pairs (when wanted) where the particles are now, particle i ranked
+    /// `rank(i)` ([`CellGrid::refill_ranked`]: the order of the pairs, and of the two of
+    /// a pair, is that of the ranks).
+    pub(crate) fn build(&mut self, states: &[State], rank: impl Fn(usize) -> u32) {
         let half = self.skin / 2.0;
         self.built_at.clear();
         self.built_at.extend(states.iter().map(|s| s.particle.pos));
@@ -93,13 +117,14 @@ impl PairList {
         }
         // The grid, the pairs and their slots in the memory they held at the last build:
         // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
-        self.grid.refill(
+        self.grid.refill_ranked(
             states.len(),
             |i| {
                 let s = &states[i];
                 s.alive
                     .then_some((s.particle.pos, s.particle.radius + half))
             },
+            rank,
             &mut self.scratch,
         );
         // The open contacts go with their pairs into the new list (every pair that

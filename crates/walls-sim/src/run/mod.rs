@@ -154,6 +154,22 @@ pub struct Settings {
     /// pkdgrav's reset (the default) or the Coulomb clamp (docs/accuracy.md, "Sliding
     /// friction").
     pub sliding: crate::contact::ssdem::Sliding,
+    /// SSDEM: where the run keeps its particles in memory (not an option of the tools:
+    /// the outputs are the same bit for bit, and tests compare the two).
+    pub places: Places,
+}
+
+/// Where the soft-sphere run keeps its particles in memory: what it does and reports is
+/// the same either way, bit for bit, but not how fast (docs/performance.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Places {
+    /// In the order of the pair grid's cells, where a pair's two are near each other
+    /// in memory as they are in space (but an aggregate's members, which name each
+    /// other, keep the file's order).
+    #[default]
+    Grid,
+    /// In the file's order.
+    File,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -193,6 +209,7 @@ impl Settings {
             cohesion: crate::contact::cohesion::Cohesion::default(),
             two_layer: None,
             sliding: crate::contact::ssdem::Sliding::Reset,
+            places: Places::Grid,
         }
     }
 

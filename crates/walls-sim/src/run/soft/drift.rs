@@ -213,7 +213,7 @@ pub(super) fn may_owe(d2: f64, vel: &Vec3, spin: &Vec3, r: f64, dt: f64) -> bool
 
 /// The closing kicks the last wall pass owed, given now (as the next drift would
 /// give them), so that the particles stand as the step left them. The first
-/// particle whose numbers overflowed in its kick is kept for
+/// particle (in the file's order) whose numbers overflowed in its kick is kept for
 /// [`super::SoftStepper::not_finite`].
 pub(super) fn settle(bodies: &mut Bodies, deferred: &mut Deferred, rules: &Rules) {
     if !std::mem::take(&mut deferred.owing) {
@@ -231,8 +231,9 @@ pub(super) fn settle(bodies: &mut Bodies, deferred: &mut Deferred, rules: &Rules
         if std::mem::take(owed) {
             let motion = close_step(s, load, inverse, kick);
             *load = Load::gravity(s, &g);
-            if bad.is_none() && !s.finite_with(motion) {
-                bad = Some(i);
+            if !s.finite_with(motion) {
+                let i = bodies.numbering.file(i);
+                bad = Some(bad.map_or(i, |first: usize| first.min(i)));
             }
         }
     }

@@ -19,7 +19,7 @@
 //! (only once a particle is held), `move_assemblies`, the list's update, `pair_contacts`,
 //! `wall_contacts` (the contacts and closing kick of the particles not owed theirs,
 //! after which each load starts the next step with gravity), `note_wall_contacts`
-//! (events and warnings, in particle order), `kick_assemblies` and `gather_aggregates`.
+//! (events and warnings, in the file's order), `kick_assemblies` and `gather_aggregates`.
 //! The passes over all the particles are plain loops over chunks, in parallel only with
 //! many particles and more than one thread; what they carry per particle is kept small
 //! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere,
@@ -65,6 +65,7 @@ use walls_geometry::Wall;
 mod drift;
 mod law;
 mod near;
+mod numbering;
 mod pairs;
 mod rigid;
 mod setup;
@@ -72,6 +73,7 @@ mod walls;
 
 use law::{ContactLaw, Kicks, Law};
 use near::NearWalls;
+use numbering::Numbering;
 use pairs::{PairMaterial, PairPass};
 use walls::{Closing, Open, WallPass};
 
@@ -164,8 +166,8 @@ struct Deferred {
     visited: Vec<Vec<u32>>,
     /// The closing kick owed.
     owed_kick: Closing,
-    /// The first particle whose numbers overflowed in an owed kick given by
-    /// [`drift::settle`] this step.
+    /// The first particle (in the file's order) whose numbers overflowed in an owed
+    /// kick given by [`drift::settle`] this step.
     owed_bad: Option<usize>,
     /// The sum of the sizes (|x| + |y| + |z|) of every particle contact's force and
     /// torques this step, and the largest size of gravity on a particle, and 1/m or 1/I
@@ -217,13 +219,19 @@ struct Rules<'a> {
     parallel: bool,
 }
 
-/// The particles, one entry each in particle order, laid out as the passes read them:
+/// The particles, one entry each at its place ([`Numbering`]: the pair grid's order),
+/// laid out as the passes read them:
 /// each [`State`], its [`Load`], its 1/m and 1/I (a solid sphere's I = 0.4·m·r², worked
 /// out once: a division costs as much as the rest of a free particle's step, and kept
 /// beside the states, which the drift writes back every step: it only reads these), its
 /// open wall contacts (wall, contact), kept apart from its load so that the passes that
 /// do not need them do not carry them, and whether it has one open.
 struct Bodies {
+    /// Which particle of the file each place holds.
+    numbering: Numbering,
+    /// Whether the states are in the file's order for a look at them
+    /// ([`super::Snapshot::look`]), not at their places: put back before the next step.
+    filed: bool,
     states: Vec<State>,
     loads: Vec<Load>,
     inverses: Vec<(f64, f64)>,
@@ -310,6 +318,7 @@ impl<'a> SoftStepper<'a> {
     /// on, the lists found again if stale, the contacts ([`SoftStepper::contacts`]), and
     /// the assemblies' and aggregates' closing kick.
     fn step(&mut self) -> Flow {
+        self.bodies.place_order();
         let SoftStepper {
             rules,
             bodies,
@@ -336,8 +345,13 @@ impl<'a> SoftStepper<'a> {
             carry_stuck(&mut bodies.states, broad, walls, rules);
         }
         rigid::move_assemblies(rigid, walls, rules);
-        let (states, now) = (&bodies.states, &walls.now);
-        near::update_lists(&mut broad.candidates, &mut broad.near, states, now);
+        let particles = (bodies.states.as_slice(), &bodies.numbering);
+        near::update_lists(
+            &mut broad.candidates,
+            &mut broad.near,
+            particles,
+            &walls.now,
+        );
         let Some(flow) = self.contacts() else {
             return Flow::Stop;
         };
@@ -378,15 +392,17 @@ impl<'a> SoftStepper<'a> {
         Some(flow)
     }
 
-    /// The first particle whose numbers overflowed in the last step, if any: in the
-    /// wall pass, or in a kick owed (given now unless surely finite).
+    /// The first particle (in the file's order) whose numbers overflowed in the last
+    /// step, if any: in the wall pass, or in a kick owed (given now unless surely
+    /// finite).
     fn not_finite(&mut self) -> Option<usize> {
         if !drift::surely_finite(&self.deferred) {
             drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
         }
+        let numbering = &self.bodies.numbering;
         let reported = (self.wall_pass.reports.iter().flatten())
             .find(|(_, r)| r.not_finite)
-            .map(|(i, _)| *i);
+            .map(|(i, _)| numbering.file(*i));
         match (reported, self.deferred.owed_bad) {
             (Some(i), Some(j)) => Some(i.min(j)),
             (i, j) => i.or(j),
@@ -397,6 +413,7 @@ impl<'a> SoftStepper<'a> {
     /// which the warnings say).
     fn outcome(mut self, stopped: Option<super::Stop>) -> Outcome {
         drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
+        self.bodies.file_order();
         let g = self.rules.settings.gravity;
         let assemblies = self.rigid.assemblies;
         let last = energy(&self.bodies.states, &g) + assembly_energy(&assemblies, &g);
@@ -410,6 +427,24 @@ impl<'a> SoftStepper<'a> {
             energy: (self.initial, last),
             warnings: self.journal.warnings,
             stopped,
+        }
+    }
+}
+
+impl Bodies {
+    /// The states put in the file's order, to be looked at.
+    fn file_order(&mut self) {
+        if !self.filed {
+            self.numbering.to_file(&mut self.states);
+            self.filed = true;
+        }
+    }
+
+    /// The states back at their places after a look ([`Bodies::file_order`]).
+    fn place_order(&mut self) {
+        if self.filed {
+            self.numbering.to_places(&mut self.states);
+            self.filed = false;
         }
     }
 }
@@ -462,9 +497,10 @@ fn carry_stuck(states: &mut [State], broad: &Broad, walls: &WallSet, rules: &Rul
 }
 
 impl super::Snapshot for SoftStepper<'_> {
-    /// The particles after the kicks owed ([`drift::settle`]).
+    /// The particles after the kicks owed ([`drift::settle`]), in the file's order.
     fn look(&mut self) -> (&[State], &[Assembly]) {
         drift::settle(&mut self.bodies, &mut self.deferred, &self.rules);
+        self.bodies.file_order();
         (&self.bodies.states, &self.rigid.assemblies)
     }
 }

@@ -3,6 +3,7 @@
 //! them: through the wall index among many bounded walls (a mesh), else by looking at
 //! every wall.
 
+use super::numbering::Numbering;
 use super::{State, WallNow};
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
@@ -124,13 +125,13 @@ impl NearWalls {
 pub(super) fn build_lists(
     candidates: &mut PairList,
     near: &mut Option<NearWalls>,
-    states: &[State],
+    (states, numbering): (&[State], &Numbering),
     walls: &[WallNow],
 ) {
     if let Some(near) = near {
         near.build(states, walls, candidates.skin / 2.0);
     }
-    candidates.build(states);
+    candidates.build(states, |place| numbering.rank(place));
 }
 
 /// Finds the lists again ([`build_lists`]) if some particle (free, or carried by its
@@ -139,7 +140,7 @@ pub(super) fn build_lists(
 pub(super) fn update_lists(
     candidates: &mut PairList,
     near: &mut Option<NearWalls>,
-    states: &[State],
+    (states, numbering): (&[State], &Numbering),
     walls: &[WallNow],
 ) {
     if !candidates.wanted && near.is_none() {
@@ -147,6 +148,6 @@ pub(super) fn update_lists(
     }
     let walls_moved = (near.as_ref()).is_some_and(|n| n.moved(walls, candidates.skin / 2.0));
     if candidates.stale(states, walls_moved) {
-        build_lists(candidates, near, states, walls);
+        build_lists(candidates, near, (states, numbering), walls);
     }
 }

@@ -4,6 +4,7 @@
 //! thread or many; and the particles' material as the pass uses it ([`PairMaterial`]).
 
 use super::law::Side;
+use super::numbering::Numbering;
 use super::{
     Bodies, ContactLaw, Deferred, Flow, Journal, Kicks, Law, Load, Overlapping, Rigid, Rules,
     Settings, State, Vec3, inertia,
@@ -78,7 +79,7 @@ pub(super) fn pair_contacts(
     );
     // …then, in the list's order, the overlaps checked (a deep one may stop the run,
     // before any contact is opened or closed)…
-    if check_overlaps(candidates, pair_pass, journal, t) {
+    if check_overlaps(candidates, pair_pass, (journal, &bodies.numbering), t) {
         return Flow::Stop;
     }
     let PairList {
@@ -339,7 +340,7 @@ pub(super) fn scan_pairs(
 pub(super) fn check_overlaps(
     candidates: &PairList,
     pair_pass: &PairPass,
-    journal: &mut Journal,
+    (journal, numbering): (&mut Journal, &Numbering),
     t: f64,
 ) -> bool {
     let PairList { pairs, slots, .. } = candidates;
@@ -347,7 +348,7 @@ pub(super) fn check_overlaps(
     for (c, scan) in scans.iter().enumerate().filter(|(_, scan)| scan.deep) {
         for (n, &(k, fraction)) in scan.touching.iter().enumerate() {
             let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-            let what = Overlapping::Particles(i, j);
+            let what = Overlapping::Particles(numbering.file(i), numbering.file(j));
             if journal
                 .overlaps
                 .check(fraction, what, t, &mut journal.warnings)

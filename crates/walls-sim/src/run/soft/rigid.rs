@@ -80,7 +80,7 @@ pub(super) fn place_assemblies(assemblies: &[Assembly], walls: &mut WallSet, sce
     walls.cogs.extend(assemblies.iter().map(|a| a.cog));
 }
 
-/// The particles' reactions on the assemblies, summed in particle order, and the
+/// The particles' reactions on the assemblies, summed in the file's order, and the
 /// assemblies' closing half kick.
 pub(super) fn kick_assemblies(rigid: &mut Rigid, wall_pass: &WallPass, rules: &Rules) {
     let (g, dt) = (rules.settings.gravity, rules.settings.dt);
@@ -93,7 +93,7 @@ pub(super) fn kick_assemblies(rigid: &mut Rigid, wall_pass: &WallPass, rules: &R
     }
 }
 
-/// The particles' reactions on the assemblies, summed in particle order.
+/// The particles' reactions on the assemblies, summed in the file's order.
 pub(super) fn sum_reactions(assemblies: &mut [Assembly], wall_pass: &WallPass) {
     for a in assemblies.iter_mut() {
         a.force = Vec3::zeros();

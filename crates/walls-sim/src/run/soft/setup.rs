@@ -4,6 +4,7 @@
 //! touch, the particles and the kicks deferred).
 
 use super::near::{self, NearWalls};
+use super::numbering::Numbering;
 use super::pairs::{PairMaterial, PairPass};
 use super::walls::{Closing, WallPass};
 use super::{
@@ -16,9 +17,9 @@ use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{Material, Restitution, damping_per_root_mass};
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
-use crate::run::Origins;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
+use crate::run::{Origins, Places};
 use walls_geometry::Wall;
 
 impl<'a> SoftStepper<'a> {
@@ -50,13 +51,16 @@ impl<'a> SoftStepper<'a> {
         // out, as they are from the energy at the end.
         let initial = energy(&states, &g) + assembly_energy(&assemblies, &g);
         let walls = wall_set(scene, settings, materials, &assemblies);
-        let broad = broad(scene, &states, plan, &walls);
+        // The particles' material takes its reference mass from the file's first.
+        let between = PairMaterial::new(between, &states);
+        // From here on each particle is at its place (`Numbering`).
+        let renumber = aggregates.is_none() && settings.places == Places::Grid;
+        let (broad, numbering) = broad(scene, &mut states, plan, &walls, renumber);
         let optional = OptionalPhysics::new(scene, &states, settings);
         let kicks = Kicks::of(settings.integrator);
         let contact = ContactLaw::of(settings, &kicks, plan, &optional);
         let n = states.len();
-        let between = PairMaterial::new(between, &states);
-        let bodies = Bodies::new(states, &g);
+        let bodies = Bodies::new(states, numbering, &g);
         SoftStepper {
             rules: Rules {
                 scene,
@@ -102,9 +106,11 @@ impl Bodies {
     /// a step, the wall pass starts the next step's, or the drift or
     /// `super::drift::settle` after an owed kick, and for an aggregate's members); no
     /// wall contact is open.
-    fn new(states: Vec<State>, g: &Vec3) -> Bodies {
+    fn new(states: Vec<State>, numbering: Numbering, g: &Vec3) -> Bodies {
         let n = states.len();
         Bodies {
+            numbering,
+            filed: false,
             loads: states.iter().map(|s| Load::gravity(s, g)).collect(),
             inverses: (states.iter())
                 .map(|s| {
@@ -234,7 +240,13 @@ fn wall_set(
 /// `states` and the `walls` stand: the candidate pairs (when the plan has particle
 /// contacts) and the walls near each particle (through the wall index when the plan
 /// uses one).
-fn broad(scene: &[Wall], states: &[State], plan: &Plan, walls: &WallSet) -> Broad {
+fn broad(
+    scene: &[Wall],
+    states: &mut [State],
+    plan: &Plan,
+    walls: &WallSet,
+    renumber: bool,
+) -> (Broad, Numbering) {
     let n = states.len();
     let mut candidates = PairList::new(
         states,
@@ -242,6 +254,15 @@ fn broad(scene: &[Wall], states: &[State], plan: &Plan, walls: &WallSet) -> Broa
         in_parallel(n),
         n >= PARALLEL_FROM,
     );
+    // The particles kept in the pair grid's order when they meet (an aggregate's
+    // members, which name each other, keep the file's).
+    let numbering = if renumber && candidates.wanted {
+        Numbering::along(candidates.grid_order(states))
+    } else {
+        Numbering::default()
+    };
+    numbering.to_places(states);
+    let states = &*states;
     let mut near = None;
     if !scene.is_empty() {
         let listed = walls.assembly_of.iter().map(Option::is_none).collect();
@@ -249,8 +270,8 @@ fn broad(scene: &[Wall], states: &[State], plan: &Plan, walls: &WallSet) -> Broa
         let index = plan.wall_index.then(|| WallIndex::new(scene));
         near = Some(NearWalls::new(listed, translating, index));
     }
-    near::build_lists(&mut candidates, &mut near, states, &walls.now);
-    Broad { candidates, near }
+    near::build_lists(&mut candidates, &mut near, (states, &numbering), &walls.now);
+    (Broad { candidates, near }, numbering)
 }
 
 /// pkdgrav's aggregates of the particles (docs/pkdgrav-physics.md §9), when the run

@@ -1,9 +1,10 @@
 //! The wall pass of the soft-sphere run ([`wall_contacts`]): each particle's contacts
 //! with the walls it may touch, added to its load, then its closing kick; and what they
-//! did, noted in particle order ([`note_wall_contacts`]).
+//! did, noted in the file's order ([`note_wall_contacts`]).
 
 use super::law::Side;
 use super::near::NearWalls;
+use super::numbering::Numbering;
 use super::{
     Bodies, Broad, CHUNK, ContactLaw, Deferred, Event, EventKind, Flow, Journal, Kicks, Law, Load,
     Overlapping, Rigid, Rules, State, Vec3, WallNow, WallSet, Warning, carry, inertia,
@@ -26,12 +27,31 @@ pub(super) struct Open {
 }
 
 /// The wall pass's reports and scratch, kept from step to step to save allocating: what
-/// the wall contacts of each particle with something to note did this step, each chunk's
-/// in particle order, and each chunk's list of the walls to visit.
+/// the wall contacts of each particle (by place) with something to note did this step,
+/// in the file's order once the pass is done ([`WallPass::in_file_order`]), and each
+/// chunk's list of the walls to visit.
 #[derive(Default)]
 pub(super) struct WallPass {
     pub(super) reports: Vec<Vec<(usize, ParticleStep)>>,
     visits: Vec<Vec<usize>>,
+}
+
+impl WallPass {
+    /// The reports, each chunk's in the order of its places, put in the file's order:
+    /// everything that follows them (events, warnings, the reactions' sums on the
+    /// assemblies) takes them in that order, the order of a run kept in the file's.
+    fn in_file_order(&mut self, numbering: &Numbering) {
+        if numbering.in_file_order() {
+            return;
+        }
+        let Some((first, rest)) = self.reports.split_first_mut() else {
+            return;
+        };
+        for chunk in rest {
+            first.append(chunk);
+        }
+        first.sort_unstable_by_key(|(i, _)| numbering.file(*i));
+    }
 }
 
 /// What every particle's wall contacts share in a step: the walls as they stand, with
@@ -652,13 +672,14 @@ pub(super) fn wall_contacts(
     } else {
         chunks!(chunks, chunks_mut, iter, iter_mut).for_each(chunk);
     }
+    wall_pass.in_file_order(&bodies.numbering);
     // The kicks the drift marked as owed are owed now.
     deferred.owing = true;
     deferred.owed_kick = walls.closing;
 }
 
 /// The wall contacts' events and warnings (overlaps, too fast, energy gained, too
-/// many walls at once), in particle order so that the outcome does not depend on the
+/// many walls at once), in the file's order so that the outcome does not depend on the
 /// threads; [`Flow::Stop`] when an overlap is past pkdgrav's abort.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn note_wall_contacts(
@@ -672,8 +693,11 @@ pub(super) fn note_wall_contacts(
     t: f64,
 ) -> Flow {
     let mut stop = rigid.aggregates.is_some() && aggregates_held(wall_pass, journal, bodies, t);
-    for (i, report) in wall_pass.reports.iter_mut().flatten() {
-        let i = *i;
+    for (place, report) in wall_pass.reports.iter_mut().flatten() {
+        let (place, i) = (*place, bodies.numbering.file(*place));
+        for e in &mut report.events {
+            e.particle = i;
+        }
         if let Some((fraction, w)) = report.deepest {
             stop |= journal.overlaps.check(
                 fraction,
@@ -703,7 +727,7 @@ pub(super) fn note_wall_contacts(
                         * (1.0
                             + gain_tolerance(
                                 walls.materials[e.wall].k_n,
-                                bodies.states[i].particle.mass,
+                                bodies.states[place].particle.mass,
                                 rules.settings.dt,
                             ))
                 && !walls.oscillating[e.wall]
@@ -747,11 +771,11 @@ pub(super) fn aggregates_held(
     t: f64,
 ) -> bool {
     let mut held = false;
-    for (i, report) in wall_pass.reports.iter_mut().flatten() {
-        let i = *i;
-        if !bodies.states[i].member {
+    for (place, report) in wall_pass.reports.iter_mut().flatten() {
+        if !bodies.states[*place].member {
             continue;
         }
+        let i = bodies.numbering.file(*place);
         for e in &report.events {
             if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
                 journal.warnings.push(Warning::AggregateHeld {

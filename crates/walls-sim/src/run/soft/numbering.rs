@@ -1,0 +1,117 @@
+//! Where each particle is kept in the soft-sphere run ([`Numbering`]): in the pair grid's
+//! order, not the file's, so that the two spheres of a candidate pair are near each
+//! other in memory as they are in space.
+//!
+//! The particles come numbered as their file lists them (a lattice is written x
+//! fastest), and the pair grid orders cells x slowest: at 10⁶ particles three quarters
+//! of the pairs' first test was the load of a pair's second sphere, a cache miss
+//! (docs/performance-history.md, issue 42). Set-up therefore keeps each particle at its
+//! *place* in the grid's order ([`Numbering::along`]). Nothing else changes: the pair
+//! grid ranks each particle by its number in the file ([`CellGrid::refill_ranked`]), so
+//! the pairs come in the same order and each pair the same way round, and each load sums
+//! its forces as before; what the run reports (events, warnings, the first particle not
+//! finite) names the file's numbers, in the file's order; and whoever looks at the
+//! particles sees them in the file's order ([`crate::run::Snapshot`]). The outputs are
+//! those of a run kept in the file's order, bit for bit.
+//!
+//! [`CellGrid::refill_ranked`]: crate::broad::grid::CellGrid::refill_ranked
+
+/// Each place's particle by its number in the file: empty when the places are the
+/// file's order.
+#[derive(Default)]
+pub(super) struct Numbering {
+    file_of: Vec<u32>,
+}
+
+impl Numbering {
+    /// The places `order` gives (the particle at each place, every one once), the
+    /// file's order if it is that.
+    pub(super) fn along(order: Vec<u32>) -> Numbering {
+        let same = order.iter().zip(0..).all(|(&i, n)| i == n);
+        Numbering {
+            file_of: if same { Vec::new() } else { order },
+        }
+    }
+
+    /// Whether the places are the file's order.
+    pub(super) fn in_file_order(&self) -> bool {
+        self.file_of.is_empty()
+    }
+
+    /// The file's number of the particle at `place`.
+    #[inline]
+    pub(super) fn file(&self, place: usize) -> usize {
+        self.file_of.get(place).map_or(place, |&i| i as usize)
+    }
+
+    /// Each place's rank for the pair grid: its particle's number in the file.
+    pub(super) fn rank(&self, place: usize) -> u32 {
+        self.file(place) as u32
+    }
+
+    /// `items`, one per particle in the file's order, moved to the particles' places
+    /// (in place: no second copy).
+    pub(super) fn to_places<T>(&self, items: &mut [T]) {
+        // Along each cycle, each place takes the item of the particle it holds, which
+        // sits at the next place of the cycle until then.
+        self.along_cycles(items.len(), |_, j, k| items.swap(j, k));
+    }
+
+    /// `items`, one per place, put back in the file's order (the inverse of
+    /// [`Numbering::to_places`]).
+    pub(super) fn to_file<T>(&self, items: &mut [T]) {
+        // Along each cycle, the item held at its start is sent to its particle's
+        // number, and the one found there takes its turn.
+        self.along_cycles(items.len(), |start, _, k| items.swap(start, k));
+    }
+
+    /// Calls `step(start, j, k)` for each place j of each cycle of the permutation of
+    /// `len` places, from its start, and the next place k = its particle's number (but
+    /// the cycle's last, which leads back to its start).
+    fn along_cycles(&self, len: usize, mut step: impl FnMut(usize, usize, usize)) {
+        if self.in_file_order() {
+            return;
+        }
+        let mut done = vec![false; len];
+        for start in 0..len {
+            if done[start] {
+                continue;
+            }
+            done[start] = true;
+            let (mut j, mut k) = (start, self.file_of[start] as usize);
+            while k != start {
+                step(start, j, k);
+                done[k] = true;
+                (j, k) = (k, self.file_of[k] as usize);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn places_and_back(order in (0..200u32).prop_flat_map(|n| Just((0..n).collect::<Vec<_>>()).prop_shuffle())) {
+            let numbering = Numbering::along(order.clone());
+            let file: Vec<u32> = (0..order.len() as u32).collect();
+            let mut items = file.clone();
+            numbering.to_places(&mut items);
+            prop_assert_eq!(&items, &order);
+            let numbers: Vec<u32> = (0..order.len()).map(|p| numbering.rank(p)).collect();
+            prop_assert_eq!(&numbers, &order);
+            numbering.to_file(&mut items);
+            prop_assert_eq!(items, file);
+        }
+    }
+
+    #[test]
+    fn the_files_order_is_kept_as_it_is() {
+        let numbering = Numbering::along(vec![0, 1, 2]);
+        assert!(numbering.in_file_order());
+        assert_eq!(numbering.file(2), 2);
+    }
+}
