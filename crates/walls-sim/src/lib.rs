@@ -28,6 +28,7 @@ pub mod config;
 pub mod contact;
 pub mod dynamics;
 pub mod io;
+mod permute;
 pub mod report;
 pub mod run;
 pub mod warning;

@@ -54,6 +54,7 @@
 //! pair loop reads them contiguously, and the grid cannot be queried with positions other
 //! than those it binned. The copy is 40 bytes a particle, rebuilt each step with the rest.
 
+use crate::permute;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -161,12 +162,11 @@ impl Default for CellGrid {
     }
 }
 
-/// What building a [`CellGrid`] works in besides the grid (the particles binned, in index
-/// order, and their keys to sort with their ranks), kept between builds by whoever builds
-/// one again and again ([`CellGrid::refill`]).
+/// What building a [`CellGrid`] works in besides the grid (the binned particles' keys to
+/// sort, with their ranks), kept between builds by whoever builds one again and again
+/// ([`CellGrid::refill`]).
 #[derive(Debug, Default)]
 pub struct GridScratch {
-    kept: Vec<Slot>,
     order: Vec<(Packed, u32, u32)>,
 }
 
@@ -237,7 +237,9 @@ impl CellGrid {
         scratch: &mut GridScratch,
     ) {
         assert!(len < NONE as usize, "at most 2³² − 2 particles");
-        let kept = &mut scratch.kept;
+        // The particles kept, in index order, in the slots, which are then sorted in
+        // place (a second array of them was 40 bytes a particle more at each build).
+        let mut kept = std::mem::take(&mut self.slots);
         kept.clear();
         kept.reserve(len);
         for i in 0..len {
@@ -257,7 +259,6 @@ impl CellGrid {
             ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
         self.h = h;
         self.inv_h = 1.0 / h;
-        self.slots.clear();
         self.starts.clear();
         self.starts.push(0);
         self.slot_of.clear();
@@ -270,6 +271,8 @@ impl CellGrid {
         packed.clear();
         if s_max == 0.0 {
             // Nothing overlaps: distance² < 0 never holds.
+            kept.clear();
+            self.slots = kept;
             return;
         }
         let (lo, hi) = kept.iter().map(|slot| self.key(&slot.p)).fold(
@@ -305,23 +308,22 @@ impl CellGrid {
         };
     }
 
-    /// Sorts `order` (key, rank, position in `kept`) and fills the slots and cells from
-    /// it, and `keys` (empty) with the cells' keys.
-    fn bin<K: Key>(&mut self, kept: &[Slot], order: &mut [(K, u32, u32)], keys: &mut Vec<K>) {
+    /// Sorts `order` (key, rank, position in `kept`) and the slots `kept` with it, and
+    /// fills the cells from it, and `keys` (empty) with the cells' keys.
+    fn bin<K: Key>(&mut self, mut kept: Vec<Slot>, order: &mut [(K, u32, u32)], keys: &mut Vec<K>) {
         order.sort_unstable();
-        self.slots.reserve_exact(order.len());
-        for (n, &(key, _, k)) in order.iter().enumerate() {
+        permute::gather(&mut kept, |n| order[n].2 as usize);
+        for (n, (&(key, _, _), slot)) in order.iter().zip(&kept).enumerate() {
             if keys.last() != Some(&key) {
                 if !keys.is_empty() {
                     self.starts.push(n as u32);
                 }
                 keys.push(key);
             }
-            let slot = kept[k as usize];
             self.slot_of[slot.id as usize] = n as u32;
-            self.slots.push(slot);
         }
         self.starts.push(order.len() as u32);
+        self.slots = kept;
     }
 
     /// The binned particles in the grid's order: cells by key, within a cell by rank.

@@ -33,14 +33,23 @@ pub struct Particles {
 
 /// Reads particles from CSV text.
 pub fn read_csv(text: &str) -> Result<Particles, InputError> {
+    read_csv_from(text.as_bytes())
+}
+
+/// Reads particles from the CSV `source` gives, row by row (a file is never in memory
+/// whole), a field's bytes that are not UTF-8 read as U+FFFD, as [`read_bytes`] reads
+/// them.
+fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
+    // The header trimmed by the reader, each field by `field` below (the reader's trim
+    // of the fields makes a new record for each row).
     let mut reader = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .from_reader(text.as_bytes());
+        .trim(csv::Trim::Headers)
+        .from_reader(source);
     let header: Vec<String> = reader
-        .headers()
+        .byte_headers()
         .map_err(|e| error("line 1", e.to_string()))?
         .iter()
-        .map(str::to_string)
+        .map(|h| String::from_utf8_lossy(h).into_owned())
         .collect();
     const REQUIRED: [&str; 8] = ["mass", "radius", "x", "y", "z", "vx", "vy", "vz"];
     const OPTIONAL: [&str; 4] = ["wx", "wy", "wz", "color"];
@@ -59,36 +68,44 @@ pub fn read_csv(text: &str) -> Result<Particles, InputError> {
     {
         return Err(error("line 1", format!("unknown column `{extra}`")));
     }
+    // Each column's place in a row, found once (`wx`, `wy`, `wz` and `color` may be
+    // absent).
+    let [mass, radius, x, y, z, vx, vy, vz, wx, wy, wz, color] = [
+        "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "color",
+    ]
+    .map(|name| (name, column(name)));
     // One record read into again and again, and the line named only in an error
     // (allocating both for every row took 5 % of the instructions of a run's set-up
     // from 10⁵ rows).
     let mut out = Vec::new();
     let mut warnings = Vec::new();
-    let mut record = csv::StringRecord::new();
+    let mut record = csv::ByteRecord::new();
     for n in 0_usize.. {
         let line = || format!("line {}", n + 2);
-        match reader.read_record(&mut record) {
+        match reader.read_byte_record(&mut record) {
             Ok(true) => {}
             Ok(false) => break,
             Err(e) => return Err(error(line(), e.to_string())),
         }
-        let mut number = |name: &str| -> Result<f64, InputError> {
-            let Some(i) = column(name) else {
+        // A field without the ASCII spaces around it (as the reader's trim left it).
+        let field = |i: usize| String::from_utf8_lossy(record.get(i).unwrap_or(b"").trim_ascii());
+        let mut number = |(name, column): (&str, Option<usize>)| -> Result<f64, InputError> {
+            let Some(i) = column else {
                 return Ok(0.0);
             };
-            let field = record.get(i).unwrap_or("");
-            super::number(field, || format!("{}: `{name}`", line()), &mut warnings)
+            let field = field(i);
+            super::number(&field, || format!("{}: `{name}`", line()), &mut warnings)
                 .map_err(|why| error(line(), format!("`{name}` is `{field}`, {why}")))
         };
         let particle = Particle {
-            mass: number("mass")?,
-            radius: number("radius")?,
-            pos: Vec3::new(number("x")?, number("y")?, number("z")?),
-            vel: Vec3::new(number("vx")?, number("vy")?, number("vz")?),
-            spin: Vec3::new(number("wx")?, number("wy")?, number("wz")?),
-            color: match column("color") {
+            mass: number(mass)?,
+            radius: number(radius)?,
+            pos: Vec3::new(number(x)?, number(y)?, number(z)?),
+            vel: Vec3::new(number(vx)?, number(vy)?, number(vz)?),
+            spin: Vec3::new(number(wx)?, number(wy)?, number(wz)?),
+            color: match color.1 {
                 Some(i) => {
-                    let field = record.get(i).unwrap_or("");
+                    let field = field(i);
                     field.parse::<i32>().map_err(|_| {
                         error(line(), format!("`color` is `{field}`, not an integer"))
                     })?
@@ -374,7 +391,7 @@ pub fn format_of(name: &str, bytes: &[u8]) -> Option<Format> {
 /// [`format_of`] finds.
 pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Particles, InputError> {
     match format_of(name, bytes) {
-        Some(Format::Csv) => read_csv(&String::from_utf8_lossy(bytes)),
+        Some(Format::Csv) => read_csv_from(bytes),
         Some(Format::Ss) => read_ss(bytes).map(|(_, ps)| ps),
         None => Err(error(
             "byte 0",
@@ -397,9 +414,19 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
 /// Particles from the file at `path` (`-`: standard input), CSV or a pkdgrav `.ss`
 /// file ([`format_of`]), the warnings located in it.
 pub fn read_file(path: &str) -> Result<Particles, FileError> {
-    let bytes = read_input(path)?;
     let name = if path == "-" { "<stdin>" } else { path };
-    let read = read_bytes(path, &bytes).map_err(|e| FileError::input(name, e))?;
+    // A file named as CSV is read as it streams in: at 10⁶ particles its 124 MB of
+    // text, read whole, lay beside the particles.
+    let csv_file = path != "-"
+        && format_of(path, &[]) == Some(Format::Csv)
+        && std::fs::metadata(path).is_ok_and(|m| m.is_file());
+    let read = if csv_file {
+        let file = std::fs::File::open(path).map_err(|e| FileError::read(path, e))?;
+        read_csv_from(io::BufReader::with_capacity(1 << 16, file))
+    } else {
+        read_bytes(path, &read_input(path)?)
+    };
+    let read = read.map_err(|e| FileError::input(name, e))?;
     Ok(Particles {
         warnings: super::in_file(name, read.warnings),
         ..read

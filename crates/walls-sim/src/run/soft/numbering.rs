@@ -16,6 +16,8 @@
 //!
 //! [`CellGrid::refill_ranked`]: crate::broad::grid::CellGrid::refill_ranked
 
+use crate::permute;
+
 /// Each place's particle by its number in the file: empty when the places are the
 /// file's order.
 #[derive(Default)]
@@ -52,38 +54,16 @@ impl Numbering {
     /// `items`, one per particle in the file's order, moved to the particles' places
     /// (in place: no second copy).
     pub(super) fn to_places<T>(&self, items: &mut [T]) {
-        // Along each cycle, each place takes the item of the particle it holds, which
-        // sits at the next place of the cycle until then.
-        self.along_cycles(items.len(), |_, j, k| items.swap(j, k));
+        if !self.in_file_order() {
+            permute::gather(items, |place| self.file_of[place] as usize);
+        }
     }
 
     /// `items`, one per place, put back in the file's order (the inverse of
     /// [`Numbering::to_places`]).
     pub(super) fn to_file<T>(&self, items: &mut [T]) {
-        // Along each cycle, the item held at its start is sent to its particle's
-        // number, and the one found there takes its turn.
-        self.along_cycles(items.len(), |start, _, k| items.swap(start, k));
-    }
-
-    /// Calls `step(start, j, k)` for each place j of each cycle of the permutation of
-    /// `len` places, from its start, and the next place k = its particle's number (but
-    /// the cycle's last, which leads back to its start).
-    fn along_cycles(&self, len: usize, mut step: impl FnMut(usize, usize, usize)) {
-        if self.in_file_order() {
-            return;
-        }
-        let mut done = vec![false; len];
-        for start in 0..len {
-            if done[start] {
-                continue;
-            }
-            done[start] = true;
-            let (mut j, mut k) = (start, self.file_of[start] as usize);
-            while k != start {
-                step(start, j, k);
-                done[k] = true;
-                (j, k) = (k, self.file_of[k] as usize);
-            }
+        if !self.in_file_order() {
+            permute::scatter(items, |place| self.file_of[place] as usize);
         }
     }
 }

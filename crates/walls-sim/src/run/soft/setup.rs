@@ -20,6 +20,7 @@ use crate::dynamics::reactive::Assembly;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use crate::run::{Origins, Places};
+use thin_vec::ThinVec;
 use walls_geometry::Wall;
 
 impl<'a> SoftStepper<'a> {
@@ -118,7 +119,7 @@ impl Bodies {
                     (1.0 / p.mass, 1.0 / inertia(p.mass, p.radius))
                 })
                 .collect(),
-            open_walls: (0..n).map(|_| Vec::new()).collect(),
+            open_walls: (0..n).map(|_| ThinVec::new()).collect(),
             walled: vec![false; n],
             states,
         }

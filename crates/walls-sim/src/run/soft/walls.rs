@@ -17,6 +17,7 @@ use crate::dynamics::aggregate::{self, Aggregates};
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use rayon::prelude::*;
+use thin_vec::ThinVec;
 
 /// An open wall contact: its springs (the tangential spring alone, but with
 /// [`crate::run::Integrator::Pkdgrav`] every spring pkdgrav keeps) and the normal speed it began
@@ -112,7 +113,7 @@ pub(super) struct WallWork<'a> {
     load: &'a mut Load,
     /// 1/m and 1/I.
     inverse: (f64, f64),
-    open: &'a mut Vec<(usize, Open)>,
+    open: &'a mut ThinVec<(usize, Open)>,
     visit: &'a mut Vec<usize>,
 }
 
@@ -817,7 +818,7 @@ pub(super) type WallChunk<'a> = (
                 (&'a mut [State], &'a mut [Load]),
                 (&'a Vec<u32>, &'a [(f64, f64)]),
             ),
-            (&'a mut [Vec<(usize, Open)>], &'a mut [bool]),
+            (&'a mut [ThinVec<(usize, Open)>], &'a mut [bool]),
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
     ),
