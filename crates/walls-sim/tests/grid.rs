@@ -182,6 +182,38 @@ proptest! {
     }
 
     #[test]
+    fn ranked_particles_moved_to_the_grids_order_give_the_same_pairs(
+        sp in spheres(),
+        alive in prop::collection::vec(any::<bool>(), 200),
+    ) {
+        // The soft-sphere run's places: each binned particle moved to its place in the
+        // grid's order (the others after them) and ranked by its index before. Built
+        // anew there, or taken as it was, the grid gives the same pairs in the same
+        // order, each pair its lower rank first, and brute force's pairs.
+        let s = swollen(&sp.r, &sp.m);
+        let sphere = |i: usize| alive[i].then(|| (sp.p[i], s[i]));
+        let mut grid = CellGrid::from_fn(sp.p.len(), sphere);
+        let mut order: Vec<usize> = grid.order().map(|i| i as usize).collect();
+        let left_out: Vec<usize> = (0..sp.p.len()).filter(|i| !order.contains(i)).collect();
+        order.extend(left_out);
+        let old: Vec<(usize, usize)> = (grid.pairs().into_iter())
+            .map(|(i, j)| (i as usize, j as usize))
+            .collect();
+        grid.placed_in_order();
+        let mut anew = CellGrid::default();
+        let placed = |place: usize| sphere(order[place]);
+        anew.refill_ranked(sp.p.len(), placed, |place| order[place] as u32, &mut GridScratch::default());
+        let to_old = |pairs: Vec<(u32, u32)>| -> Vec<(usize, usize)> {
+            pairs.into_iter().map(|(a, b)| (order[a as usize], order[b as usize])).collect()
+        };
+        prop_assert_eq!(to_old(grid.pairs()), old.clone());
+        prop_assert_eq!(to_old(anew.pairs()), old.clone());
+        prop_assert!(old.iter().all(|(i, j)| i < j));
+        let s_alive: Vec<f64> = (0..sp.p.len()).map(|i| if alive[i] { s[i] } else { f64::NAN }).collect();
+        prop_assert_eq!(old.into_iter().collect::<BTreeSet<_>>(), brute_pairs(&sp.p, &s_alive));
+    }
+
+    #[test]
     fn left_out_particles_meet_nothing_and_keep_the_indices(
         sp in spheres(),
         alive in prop::collection::vec(any::<bool>(), 200),

@@ -331,6 +331,22 @@ impl CellGrid {
         self.slots.iter().map(|slot| slot.id)
     }
 
+    /// The grid as [`CellGrid::refill_ranked`] would find it once each particle is
+    /// moved to its place in [`CellGrid::order`] (the n-th binned at n, those left out
+    /// after them) and ranked by its index before: the same cells and slots, each slot's
+    /// particle its place, its rank the particle's index (for a grid built with the
+    /// indices as ranks).
+    pub fn placed_in_order(&mut self) {
+        for (n, slot) in self.slots.iter_mut().enumerate() {
+            slot.rank = slot.id;
+            slot.id = n as u32;
+        }
+        let binned = self.slots.len();
+        for (n, slot) in self.slot_of.iter_mut().enumerate() {
+            *slot = if n < binned { n as u32 } else { NONE };
+        }
+    }
+
     /// The cell edge: the largest swollen diameter, a little more (module documentation).
     pub fn cell_size(&self) -> f64 {
         self.h

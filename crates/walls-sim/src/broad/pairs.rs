@@ -28,6 +28,9 @@ pub(crate) struct PairList {
     /// the next build, which fills the same memory.
     pub(crate) grid: CellGrid,
     pub(crate) scratch: GridScratch,
+    /// Whether the grid already bins the particles where they are, at the places
+    /// [`PairList::grid_order`] found, for the next build (the first).
+    placed: bool,
     pub(crate) built_at: Vec<Vec3>,
     pub(crate) skin: f64,
     /// Whether a particle drifted this step has moved more than half the skin (worked
@@ -62,6 +65,7 @@ impl PairList {
             contacts: PairContacts::default(),
             grid: CellGrid::default(),
             scratch: GridScratch::default(),
+            placed: false,
             built_at: Vec::new(),
             skin: 0.4 * largest,
             drifted: false,
@@ -84,6 +88,8 @@ impl PairList {
     /// The particles in the order of the grid the list is found on (cells by key, within
     /// a cell by index), those it leaves out (not alive, or not finite) last: where the
     /// soft-sphere run keeps them, so that a pair's two are near each other in memory.
+    /// The next build takes the grid as it is, for the particles moved to those places
+    /// and ranked by their indices (`CellGrid::placed_in_order`).
     pub(crate) fn grid_order(&mut self, states: &[State]) -> Vec<u32> {
         let half = self.skin / 2.0;
         let sphere = |i: usize| {
@@ -100,6 +106,8 @@ impl PairList {
             }
             order.extend((0..states.len() as u32).filter(|&i| !binned[i as usize]));
         }
+        self.grid.placed_in_order();
+        self.placed = true;
         order
     }
 
@@ -117,16 +125,18 @@ impl PairList {
         }
         // The grid, the pairs and their slots in the memory they held at the last build:
         // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
-        self.grid.refill_ranked(
-            states.len(),
-            |i| {
-                let s = &states[i];
-                s.alive
-                    .then_some((s.particle.pos, s.particle.radius + half))
-            },
-            rank,
-            &mut self.scratch,
-        );
+        if !std::mem::take(&mut self.placed) {
+            self.grid.refill_ranked(
+                states.len(),
+                |i| {
+                    let s = &states[i];
+                    s.alive
+                        .then_some((s.particle.pos, s.particle.radius + half))
+                },
+                rank,
+                &mut self.scratch,
+            );
+        }
         // The open contacts go with their pairs into the new list (every pair that
         // touches is in it); any other ends. They are found by their first particle:
         // its open contacts, (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
