@@ -32,6 +32,17 @@ fn csv_with_and_without_optional_columns() {
         (ps[0].mass, ps[1].radius, ps[1].pos.z, ps[1].index),
         (1.0, 0.2, 5.0, 1)
     );
+    // White space as Unicode has it, not only ASCII's: a no-break space, a vertical
+    // tab, an em space around a value, a colour or a name.
+    let ps = read_csv(
+        "mass\u{a0},radius,x,y,z,vx,vy,vz,wx,wy,wz,color\n\u{a0}1,0.1\u{a0},0,0,1,\u{b}2,0,0,0,0,0,\u{2003}3\n",
+    )
+    .unwrap()
+    .particles;
+    assert_eq!(
+        (ps[0].mass, ps[0].radius, ps[0].vel.x, ps[0].color),
+        (1.0, 0.1, 2.0, 3)
+    );
 }
 
 #[test]

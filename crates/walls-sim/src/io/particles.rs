@@ -40,16 +40,15 @@ pub fn read_csv(text: &str) -> Result<Particles, InputError> {
 /// whole), a field's bytes that are not UTF-8 read as U+FFFD, as [`read_bytes`] reads
 /// them.
 fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
-    // The header trimmed by the reader, each field by `field` below (the reader's trim
-    // of the fields makes a new record for each row).
-    let mut reader = csv::ReaderBuilder::new()
-        .trim(csv::Trim::Headers)
-        .from_reader(source);
+    // The names and fields trimmed of white space as Unicode defines it (as the csv
+    // reader's trim of text records does), here, one field at a time: the reader's own
+    // trim made a new record for each row.
+    let mut reader = csv::ReaderBuilder::new().from_reader(source);
     let header: Vec<String> = reader
         .byte_headers()
         .map_err(|e| error("line 1", e.to_string()))?
         .iter()
-        .map(|h| String::from_utf8_lossy(h).into_owned())
+        .map(|h| String::from_utf8_lossy(h).trim().to_string())
         .collect();
     const REQUIRED: [&str; 8] = ["mass", "radius", "x", "y", "z", "vx", "vy", "vz"];
     const OPTIONAL: [&str; 4] = ["wx", "wy", "wz", "color"];
@@ -87,14 +86,15 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
             Ok(false) => break,
             Err(e) => return Err(error(line(), e.to_string())),
         }
-        // A field without the ASCII spaces around it (as the reader's trim left it).
-        let field = |i: usize| String::from_utf8_lossy(record.get(i).unwrap_or(b"").trim_ascii());
+        // A field as text (trimmed where it is used).
+        let field = |i: usize| String::from_utf8_lossy(record.get(i).unwrap_or(b""));
         let mut number = |(name, column): (&str, Option<usize>)| -> Result<f64, InputError> {
             let Some(i) = column else {
                 return Ok(0.0);
             };
-            let field = field(i);
-            super::number(&field, || format!("{}: `{name}`", line()), &mut warnings)
+            let text = field(i);
+            let field = text.trim();
+            super::number(field, || format!("{}: `{name}`", line()), &mut warnings)
                 .map_err(|why| error(line(), format!("`{name}` is `{field}`, {why}")))
         };
         let particle = Particle {
@@ -105,7 +105,8 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
             spin: Vec3::new(number(wx)?, number(wy)?, number(wz)?),
             color: match color.1 {
                 Some(i) => {
-                    let field = field(i);
+                    let text = field(i);
+                    let field = text.trim();
                     field.parse::<i32>().map_err(|_| {
                         error(line(), format!("`color` is `{field}`, not an integer"))
                     })?

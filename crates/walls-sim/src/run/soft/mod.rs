@@ -23,7 +23,9 @@
 //! The passes over all the particles are plain loops over chunks, in parallel only with
 //! many particles and more than one thread; what they carry per particle is kept small
 //! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere,
-//! a byte marking a load that a pair touched),
+//! a byte marking a load that a pair touched), the particles lie in the pair grid's
+//! order, not the file's ([`numbering`]: a pair's two spheres near each other in
+//! memory, every output the same),
 //! and a free particle clear of the walls gets its closing kick in the next drift
 //! rather than in a pass of its own, as memory, not arithmetic, bounds them. The kicks
 //! still owed are given ([`drift::settle`]) when the particles are looked at
