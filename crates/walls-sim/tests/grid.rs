@@ -458,3 +458,37 @@ fn a_grid_filled_again_goes_between_packed_wide_and_no_keys() {
         }
     }
 }
+
+#[test]
+fn many_particles_are_sorted_by_cell_then_index_on_any_thread() {
+    // 40,000 spheres, more than the grid sorts on rayon's threads: the grid's order is
+    // the cells' keys ascending, then the indices, on one thread or three.
+    let n = 40_000;
+    let at = |k: usize, a: f64| ((k as f64 * a).fract() - 0.5) * 0.2;
+    let p: Vec<Vec3> = (0..n)
+        .map(|k| {
+            v(
+                at(k, 0.754_877_666),
+                at(k, 0.569_840_291),
+                at(k, 0.430_159_709),
+            )
+        })
+        .collect();
+    let r = vec![1e-3; n];
+    for threads in [1, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let grid = pool.install(|| CellGrid::new(&p, &r));
+        let h = grid.cell_size();
+        let inv_h = 1.0 / h;
+        let key = |i: usize| p[i].map(|x| (x * inv_h).floor() as i64);
+        let order: Vec<usize> = grid.order().map(|i| i as usize).collect();
+        assert_eq!(order.len(), n);
+        assert!(order.windows(2).all(|w| {
+            let (a, b) = (key(w[0]), key(w[1]));
+            (a[0], a[1], a[2], w[0]) < (b[0], b[1], b[2], w[1])
+        }));
+    }
+}

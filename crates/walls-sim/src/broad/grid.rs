@@ -62,6 +62,9 @@ use std::ops::Range;
 /// Into how many ranges of cells [`CellGrid::par_pairs`] cuts the grid.
 const PAIR_RANGES: usize = 64;
 
+/// From how many particles the grid sorts them on rayon's threads.
+const PAR_SORT_FROM: usize = 1 << 15;
+
 type Vec3 = Vector3<f64>;
 
 /// The slot of a particle that is not binned.
@@ -85,7 +88,7 @@ struct Slot {
 }
 
 /// A cell key, ordered as (i, j, k) lexicographically.
-trait Key: Copy + Ord {
+trait Key: Copy + Ord + Send {
     /// The key of the cell (di, dj, dk) away, each in {−1, 0, 1}.
     fn shift(self, di: i64, dj: i64, dk: i64) -> Self;
 }
@@ -311,7 +314,13 @@ impl CellGrid {
     /// Sorts `order` (key, rank, position in `kept`) and the slots `kept` with it, and
     /// fills the cells from it, and `keys` (empty) with the cells' keys.
     fn bin<K: Key>(&mut self, mut kept: Vec<Slot>, order: &mut [(K, u32, u32)], keys: &mut Vec<K>) {
-        order.sort_unstable();
+        // On rayon's threads when there are many: the ranks are distinct, so any sort
+        // gives the one order.
+        if order.len() >= PAR_SORT_FROM {
+            order.par_sort_unstable();
+        } else {
+            order.sort_unstable();
+        }
         permute::gather(&mut kept, |n| order[n].2 as usize);
         for (n, (&(key, _, _), slot)) in order.iter().zip(&kept).enumerate() {
             if keys.last() != Some(&key) {

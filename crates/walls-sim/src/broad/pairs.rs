@@ -117,9 +117,14 @@ impl PairList {
     pub(crate) fn build(&mut self, states: &[State], rank: impl Fn(usize) -> u32) {
         let half = self.skin / 2.0;
         self.built_at.clear();
-        self.built_at.extend(states.iter().map(|s| s.particle.pos));
         self.spheres.clear();
-        self.spheres.extend(states.iter().map(Self::sphere));
+        if self.parallel {
+            (self.built_at).par_extend(states.par_iter().map(|s| s.particle.pos));
+            (self.spheres).par_extend(states.par_iter().map(Self::sphere));
+        } else {
+            self.built_at.extend(states.iter().map(|s| s.particle.pos));
+            self.spheres.extend(states.iter().map(Self::sphere));
+        }
         if !self.wanted {
             return;
         }
