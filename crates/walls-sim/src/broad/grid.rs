@@ -43,7 +43,8 @@
 //! **Determinism**: the order of the pairs depends only on the input: cells by key,
 //! within a cell by rank (the particle's index, unless the builder ranks them otherwise:
 //! [`CellGrid::refill_ranked`]), neighbour cells in a fixed order; each pair is reported
-//! lower rank first. No hashing with random state, no threads.
+//! lower rank first. No hashing with random state; many particles are sorted on
+//! rayon's threads, which the distinct ranks leave one order to find.
 //!
 //! **Left out**: a particle whose position has a non-finite coordinate, or whose swollen
 //! radius is not finite or is negative, is not binned and meets nothing (no panic). To

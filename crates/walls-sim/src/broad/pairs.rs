@@ -92,11 +92,7 @@ impl PairList {
     /// and ranked by their indices (`CellGrid::placed_in_order`).
     pub(crate) fn grid_order(&mut self, states: &[State]) -> Vec<u32> {
         let half = self.skin / 2.0;
-        let sphere = |i: usize| {
-            let s = &states[i];
-            s.alive
-                .then_some((s.particle.pos, s.particle.radius + half))
-        };
+        let sphere = |i: usize| Self::swollen(&states[i], half);
         self.grid.refill(states.len(), sphere, &mut self.scratch);
         let mut order: Vec<u32> = self.grid.order().collect();
         if order.len() < states.len() {
@@ -131,16 +127,8 @@ impl PairList {
         // The grid, the pairs and their slots in the memory they held at the last build:
         // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
         if !std::mem::take(&mut self.placed) {
-            self.grid.refill_ranked(
-                states.len(),
-                |i| {
-                    let s = &states[i];
-                    s.alive
-                        .then_some((s.particle.pos, s.particle.radius + half))
-                },
-                rank,
-                &mut self.scratch,
-            );
+            let sphere = |i: usize| Self::swollen(&states[i], half);
+            (self.grid).refill_ranked(states.len(), sphere, rank, &mut self.scratch);
         }
         // The open contacts go with their pairs into the new list (every pair that
         // touches is in it); any other ends. They are found by their first particle:
@@ -189,6 +177,14 @@ impl PairList {
             free: Vec::new(),
             next: std::mem::take(&mut self.contacts.next),
         };
+    }
+
+    /// A particle as the grid bins it: its centre and its radius swollen by `half` the
+    /// skin, or none once it has left the run.
+    #[inline]
+    fn swollen(s: &State, half: f64) -> Option<(Vec3, f64)> {
+        s.alive
+            .then_some((s.particle.pos, s.particle.radius + half))
     }
 
     /// A particle's centre and radius, as the pairs' first test reads them.
