@@ -494,14 +494,34 @@ fn pkdgrav_wall_contact(
         let arm = aggs.offset(i, &s.particle.pos) - n * lever;
         load.torque += arm.cross(&push) - c.rolling;
     }
+    react(
+        out,
+        walls,
+        w,
+        &(s.particle.pos - n * lever),
+        &c.force,
+        &c.resistance,
+    );
+}
+
+/// The reaction of a contact with wall `w` on its reactive assembly, if it has one: the
+/// contact's force `force` turned around, at `at`, the contact point on the particle's
+/// surface (where the particle's own torque acts, so that angular momentum is kept
+/// exactly), and its moment about the assembly's centre of gravity, less the contact's
+/// rolling and twisting torques `resistance`.
+#[inline(always)]
+fn react(
+    out: &mut ParticleStep,
+    walls: &Walls,
+    w: usize,
+    at: &Vec3,
+    force: &Vec3,
+    resistance: &Vec3,
+) {
     if let Some(a) = walls.set.assembly_of[w] {
-        // The reaction, with the rolling and twisting torques.
-        let at = s.particle.pos - n * lever;
-        out.reactions.push((
-            a,
-            -c.force,
-            (at - walls.set.cogs[a]).cross(&-c.force) - c.resistance,
-        ));
+        let cog = walls.set.cogs[a];
+        out.reactions
+            .push((a, -force, (at - cog).cross(&-force) - resistance));
     }
 }
 
@@ -534,14 +554,15 @@ fn linear_wall_contact(
     };
     load.force += c.force;
     load.torque += c.torque;
-    if let Some(a) = walls.set.assembly_of[w] {
-        // The reaction, at the contact point on the particle's surface (where its own
-        // torque acts, so that angular momentum is kept exactly).
-        let cog = walls.set.cogs[a];
-        let at = s.particle.pos - n * lever;
-        out.reactions
-            .push((a, -c.force, (at - cog).cross(&-c.force)));
-    }
+    // The linear law's torques are the contact's own: nothing to take from the moment.
+    react(
+        out,
+        walls,
+        w,
+        &(s.particle.pos - n * lever),
+        &c.force,
+        &Vec3::zeros(),
+    );
     if !(walls.plan.rolling || walls.plan.twisting) {
         return None;
     }
