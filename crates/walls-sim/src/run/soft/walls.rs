@@ -76,6 +76,8 @@ pub(super) struct Walls<'a> {
     aggregates: Option<&'a Aggregates>,
     /// The time at the step's end.
     t: f64,
+    /// Which particle of the file each place holds: an event names the file's.
+    numbering: &'a Numbering,
 }
 
 /// What one particle's wall contacts did in a step.
@@ -280,7 +282,7 @@ pub(super) fn touch_walls(
                 let wall_v = wall.point_velocity(&near.point);
                 out.events.push(Event {
                     t,
-                    particle: i,
+                    particle: walls.numbering.file(i),
                     wall: w,
                     kind: EventKind::Bounce,
                     vn_in: o.vn_in,
@@ -319,8 +321,15 @@ pub(super) fn touch_walls(
         let eps_n = walls.set.materials[w].eps_n;
         if eps_n <= 0.0 {
             let vn_in = open.swap_remove(k).1.vn_in;
-            out.events
-                .push(hold(i, s, w, wall, wall_v, eps_n, (t, vn_in)));
+            out.events.push(hold(
+                walls.numbering.file(i),
+                s,
+                w,
+                wall,
+                wall_v,
+                eps_n,
+                (t, vn_in),
+            ));
             return true;
         }
         let touch = WallTouch {
@@ -365,9 +374,7 @@ fn walls_to_visit(
     if let Some(near) = near {
         visit.extend_from_slice(near.listed_of(i));
         visit.extend(near.moving.iter().copied());
-        for (w, _) in open.iter() {
-            visit.push(*w);
-        }
+        visit.extend(open.iter().map(|(w, _)| *w));
         if visit.len() > 1 {
             visit.sort_unstable();
             visit.dedup();
@@ -379,7 +386,8 @@ fn walls_to_visit(
 /// touched, moving and spinning with the wall (docs/pkdgrav-physics.md §6). An
 /// aggregate's member neither sticks nor dies (pkdgrav asserts, docs/pkdgrav-physics.md
 /// §9.5): the event alone, and `note_wall_contacts` stops the run. The event, at time
-/// `t`, of a contact that began at normal speed `vn_in`.
+/// `t`, of a contact that began at normal speed `vn_in` (`i`: the particle's number in
+/// the file).
 #[inline(always)]
 fn hold(
     i: usize,
@@ -625,6 +633,7 @@ pub(super) fn wall_contacts(
         optional: &rules.optional,
         aggregates: rigid.aggregates.as_ref(),
         t,
+        numbering: &bodies.numbering,
     };
     // A plain loop over the particles of each chunk not owed their kick, its reports
     // kept with it (in particle order within the chunk), chunks in parallel for many
@@ -717,9 +726,6 @@ pub(super) fn note_wall_contacts(
     let mut stop = rigid.aggregates.is_some() && aggregates_held(wall_pass, journal, bodies, t);
     for (place, report) in wall_pass.reports.iter_mut().flatten() {
         let (place, i) = (*place, bodies.numbering.file(*place));
-        for e in &mut report.events {
-            e.particle = i;
-        }
         if let Some((fraction, w)) = report.deepest {
             stop |= journal.overlaps.check(
                 fraction,
