@@ -131,7 +131,8 @@ pub(super) fn build_lists(
     if let Some(near) = near {
         near.build(states, walls, candidates.skin / 2.0);
     }
-    candidates.build(states, |place| numbering.rank(place));
+    // Each particle ranked by its number in the file: the pairs come in the file's order.
+    candidates.build(states, |place| numbering.file(place) as u32);
 }
 
 /// Finds the lists again ([`build_lists`]) if some particle (free, or carried by its

@@ -46,11 +46,6 @@ impl Numbering {
         self.file_of.get(place).map_or(place, |&i| i as usize)
     }
 
-    /// Each place's rank for the pair grid: its particle's number in the file.
-    pub(super) fn rank(&self, place: usize) -> u32 {
-        self.file(place) as u32
-    }
-
     /// `items`, one per particle in the file's order, moved to the particles' places
     /// (in place: no second copy).
     pub(super) fn to_places<T>(&self, items: &mut [T]) {
@@ -81,7 +76,7 @@ mod tests {
             let mut items = file.clone();
             numbering.to_places(&mut items);
             prop_assert_eq!(&items, &order);
-            let numbers: Vec<u32> = (0..order.len()).map(|p| numbering.rank(p)).collect();
+            let numbers: Vec<u32> = (0..order.len()).map(|p| numbering.file(p) as u32).collect();
             prop_assert_eq!(&numbers, &order);
             numbering.to_file(&mut items);
             prop_assert_eq!(items, file);

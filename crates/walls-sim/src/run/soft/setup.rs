@@ -30,7 +30,7 @@ impl<'a> SoftStepper<'a> {
     /// the walls, the lists of what may touch, the particles and the kicks deferred.
     pub(super) fn new(
         scene: &'a [Wall],
-        states: Vec<State>,
+        mut states: Vec<State>,
         settings: &'a Settings,
         plan: &'a Plan,
     ) -> SoftStepper<'a> {
@@ -45,7 +45,6 @@ impl<'a> SoftStepper<'a> {
             between.mu_t = 0.0;
         }
         let mut warnings = crate::run::stability::soft_warnings(scene, &states, settings);
-        let mut states = states;
         let (aggregates, halted) = set_up_aggregates(&mut states, settings, &mut warnings);
         let assemblies = set_up_assemblies(scene, settings, plan, &mut warnings);
         // The energy of what the run moves: the assemblies that cannot move are left
