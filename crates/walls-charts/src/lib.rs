@@ -266,7 +266,9 @@ fn x_tick(names: &[String], v: f64) -> String {
 }
 
 /// A linear axis whose only grid lines and labels are at the given places (the names'
-/// axis); plotters' `with_key_points` of a linear axis has no labels.
+/// axis). plotters' `(x0..x1).with_key_points(…)` would place them, but it forwards an
+/// f64 axis's `NoDefaultFormatting` without its `ValueFormatter`, so `configure_mesh`
+/// refuses it (plotters 0.3.7).
 struct Places {
     linear: plotters::coord::types::RangedCoordf64,
     at: Vec<f64>,
