@@ -179,15 +179,23 @@ fn a_cup_of_more_spheres_than_its_lattice_holds_is_refused() {
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
+/// Asserts that bench-peers refused `case` with exit 2 and an error that says `says`,
+/// not a traceback.
+fn assert_refused(out: &Output, says: &str, case: &str) {
+    assert_eq!(out.status.code(), Some(2), "{case}: {out:?}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(says) && !stderr.contains("Traceback"),
+        "{case}: {stderr}"
+    );
+}
+
 #[test]
 fn a_particle_count_below_one_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let out = bench_peers(&["scene", dir.path().to_str().unwrap(), "--particles", "0"]);
-    assert_eq!(out.status.code(), Some(2), "{out:?}");
-    assert_eq!(
-        String::from_utf8_lossy(&out.stderr),
-        "bench-peers: the particle count must be at least 1, not 0\n"
-    );
+    let says = "bench-peers: the particle count must be at least 1, not 0\n";
+    assert_refused(&out, says, "0");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
@@ -200,13 +208,9 @@ fn a_core_or_particle_count_that_is_not_a_whole_number_is_refused() {
         ("--particles", "1e400"),
     ] {
         let out = bench_peers(&["--walls-sim", "/bin/true", "run", flag, word]);
-        assert_eq!(out.status.code(), Some(2), "{flag} {word}: {out:?}");
-        let stderr = String::from_utf8_lossy(&out.stderr);
         let bad = word.rsplit(',').next().unwrap();
-        assert!(
-            stderr.ends_with(&format!("error: argument {flag}: not a count: '{bad}'\n")),
-            "{flag} {word}: {stderr}"
-        );
+        let says = format!("error: argument {flag}: not a count: '{bad}'\n");
+        assert_refused(&out, &says, &format!("{flag} {word}"));
     }
 }
 
@@ -326,11 +330,7 @@ fn a_cup_of_too_few_or_too_many_triangles_is_refused_before_anything_is_written(
     ] {
         let dir = tempfile::tempdir().unwrap();
         let out = write_cup(dir.path(), &["--particles", "8", "--triangles", triangles]);
-        assert_eq!(out.status.code(), Some(2), "{out:?}");
-        assert!(
-            String::from_utf8_lossy(&out.stderr).contains(says),
-            "{out:?}"
-        );
+        assert_refused(&out, says, triangles);
         assert_eq!(
             std::fs::read_dir(dir.path()).unwrap().count(),
             0,
@@ -524,12 +524,7 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
         ),
     ];
     for (args, says) in cases {
-        let out = bench_peers(args);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {out:?}");
-        assert!(
-            String::from_utf8_lossy(&out.stderr).contains(says),
-            "{args:?}: {out:?}"
-        );
+        assert_refused(&bench_peers(args), says, &format!("{args:?}"));
     }
     assert_eq!(
         std::fs::read_dir(dir.path()).unwrap().count(),
