@@ -194,8 +194,7 @@ fn assert_refused(out: &Output, says: &str, case: &str) {
 fn a_particle_count_below_one_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let out = bench_peers(&["scene", dir.path().to_str().unwrap(), "--particles", "0"]);
-    let says = "bench-peers: the particle count must be at least 1, not 0\n";
-    assert_refused(&out, says, "0");
+    assert_refused(&out, "error: argument --particles: not a count: '0'\n", "0");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
@@ -327,6 +326,10 @@ fn a_cup_of_too_few_or_too_many_triangles_is_refused_before_anything_is_written(
             "1000000000",
             "the cup takes at most 1,000,000 triangles (about 520 bytes of walls file and STL each), not 1,000,000,000",
         ),
+        ("0", "argument --triangles: not a count: '0'"),
+        ("-1", "argument --triangles: not a count: '-1'"),
+        ("1e308", "argument --triangles: not a count: '1e308'"),
+        ("nan", "argument --triangles: not a count: 'nan'"),
     ] {
         let dir = tempfile::tempdir().unwrap();
         let out = write_cup(dir.path(), &["--particles", "8", "--triangles", triangles]);
