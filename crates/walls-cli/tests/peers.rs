@@ -495,7 +495,7 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
     std::fs::write(&file, "").unwrap();
     let d = dir.path().to_str().unwrap();
     let f = file.to_str().unwrap();
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 5] = [
         (
             &["scene", d, "--scene", "drop", "--steps", "0"],
             "argument --steps: not a count: '0'",
@@ -524,6 +524,21 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
                 d,
             ],
             "Is a directory",
+        ),
+        // The same cup twice would time it twice and write its rows twice.
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "cup",
+                "--triangles",
+                "1000,1001",
+                "--csv",
+                "",
+            ],
+            "error: --triangles: two counts make the same cup (1000 → 999, 1001 → 999)\n",
         ),
     ];
     for (args, says) in cases {
