@@ -495,7 +495,7 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
     std::fs::write(&file, "").unwrap();
     let d = dir.path().to_str().unwrap();
     let f = file.to_str().unwrap();
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 6] = [
         (
             &["scene", d, "--scene", "drop", "--steps", "0"],
             "argument --steps: not a count: '0'",
@@ -539,6 +539,21 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
                 "",
             ],
             "error: --triangles: two counts make the same cup (1000 → 999, 1001 → 999)\n",
+        ),
+        // LAMMPS alone on the cup would run nothing and report success.
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "cup",
+                "--tools",
+                "lammps",
+                "--csv",
+                "",
+            ],
+            "error: --tools: none of lammps runs the cup scene\n",
         ),
     ];
     for (args, says) in cases {
