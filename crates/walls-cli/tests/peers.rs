@@ -495,7 +495,7 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
     std::fs::write(&file, "").unwrap();
     let d = dir.path().to_str().unwrap();
     let f = file.to_str().unwrap();
-    let cases: [(&[&str], &str); 6] = [
+    let cases: [(&[&str], &str); 7] = [
         (
             &["scene", d, "--scene", "drop", "--steps", "0"],
             "argument --steps: not a count: '0'",
@@ -524,6 +524,23 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
                 d,
             ],
             "Is a directory",
+        ),
+        // Nor one whose folder takes no file (/proc, even as root).
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "drop",
+                "--particles",
+                "8",
+                "--tools",
+                "walls-sim",
+                "--csv",
+                "/proc/peers.csv",
+            ],
+            "bench-peers: --csv: cannot write in /proc: ",
         ),
         // The same cup twice would time it twice and write its rows twice.
         (
