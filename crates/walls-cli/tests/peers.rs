@@ -502,7 +502,7 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
         ),
         (
             &["scene", f, "--scene", "drop", "--particles", "8"],
-            "Not a directory",
+            &format!("error: {f} is not a folder\n"),
         ),
         (
             &["scene", d, "--scene", "drop", "--particles", "100000000"],
