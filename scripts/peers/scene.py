@@ -104,6 +104,13 @@ class Scene:
     final_dump: bool = False
     triangles: int | None = None
 
+    def __post_init__(self) -> None:
+        """The cup's triangles are checked here, before any folder is made."""
+        if self.triangles is not None:
+            if self.kind != "cup":
+                raise ValueError(f"only the cup has triangles to choose, not the {self.kind} scene")
+            cup_shape(self.triangles)
+
     @property
     def cup(self) -> tuple[int, int]:
         """The cup's segments and rings."""
@@ -320,10 +327,6 @@ def write(directory: Path, scene: Scene) -> dict[str, Path]:
         raise ValueError(f"unknown scene {scene.kind!r}: expected one of {', '.join(SCENES)}")
     if scene.steps < 1:
         raise ValueError(f"the step count must be at least 1, not {scene.steps}")
-    if scene.triangles is not None and scene.kind != "cup":
-        raise ValueError(f"only the cup has triangles to choose, not the {scene.kind} scene")
-    if scene.kind == "cup":
-        scene.cup  # noqa: B018 (its bounds are checked before any folder is made)
     parts = particles(scene.particles, scene.kind)
     lay = layout(scene.particles, scene.kind)
     folders = {tool: Path(directory) / tool for tool in tools(scene.kind)}
