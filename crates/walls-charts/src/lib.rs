@@ -448,6 +448,33 @@ mod tests {
     }
 
     #[test]
+    fn a_named_chart_draws_its_names_under_their_places_and_log_labels_on_y() {
+        let dir = tempfile::tempdir().unwrap();
+        let chart = Chart {
+            name: "named".into(),
+            title: "t".into(),
+            x_label: "scene".into(),
+            y_label: "rate".into(),
+            log_x: true,
+            log_y: true,
+        };
+        let names = ["cup: 10,640".to_string(), "poly: 100,000".to_string()];
+        let series = [Series::new(
+            "walls-sim",
+            vec![(-0.1, 3e6), (1.1, 3e7)],
+            Mark::Dots,
+        )];
+        write_named_pictures(dir.path(), &chart, &names, &series).unwrap();
+        let svg = std::fs::read_to_string(dir.path().join("named.svg")).unwrap();
+        // Each label once: a name under its place, none between; y's 1, 2 and 5 × 10ᵏ.
+        for label in ["cup: 10,640", "poly: 100,000", "5.0e6", "1.0e7"] {
+            let text = format!(">\n{label}\n</text>");
+            assert_eq!(svg.matches(&text).count(), 1, "{label}");
+        }
+        assert!(dir.path().join("named.png").exists());
+    }
+
+    #[test]
     fn a_named_axis_labels_its_whole_places_only() {
         let names = ["cup".to_string(), "poly".to_string()];
         assert_eq!(x_tick(&names, 1.0), "poly");
