@@ -283,6 +283,12 @@ def cup_shape(triangles: int) -> tuple[int, int]:
     return (max(3, round(triangles / (2 * rings + 1))), rings)
 
 
+def cup_size(segments: int, rings: int) -> int:
+    """The triangles of a cup of `segments` and `rings`: two a segment of each ring, and
+    the bottom's fan of one a segment."""
+    return segments * (2 * rings + 1)
+
+
 def cup_triangles(
     segments: int = CUP_SEGMENTS, rings: int = CUP_RINGS
 ) -> list[tuple[tuple[float, float, float], ...]]:
@@ -406,7 +412,7 @@ def write_box_walls(path: Path, scene: Scene, lay: Layout) -> None:
 
 def write_cup_walls(path: Path, segments: int, rings: int) -> None:
     """The cup's triangles as triangle walls: origin a, vertex1 b − a, vertex2 c − a."""
-    total = segments * (2 * rings + 1)
+    total = cup_size(segments, rings)
     lines = [
         f"# The peer benchmark's cup (scripts/peers/scene.py): an open cylinder of {total:,}",
         f"# triangles, its side {segments} segments x {rings} ring{'s' * (rings != 1)} of two, its bottom a fan of {segments}.",
