@@ -104,6 +104,13 @@ class Scene:
     final_dump: bool = False
     triangles: int | None = None
 
+    def __post_init__(self) -> None:
+        """The cup's triangles are checked here, before any folder is made."""
+        if self.triangles is not None:
+            if self.kind != "cup":
+                raise ValueError(f"only the cup has triangles to choose, not the {self.kind} scene")
+            cup_shape(self.triangles)
+
     @property
     def cup(self) -> tuple[int, int]:
         """The cup's segments and rings."""
@@ -276,6 +283,12 @@ def cup_shape(triangles: int) -> tuple[int, int]:
     return (max(3, round(triangles / (2 * rings + 1))), rings)
 
 
+def cup_size(segments: int, rings: int) -> int:
+    """The triangles of a cup of `segments` and `rings`: two a segment of each ring, and
+    the bottom's fan of one a segment."""
+    return segments * (2 * rings + 1)
+
+
 def cup_triangles(
     segments: int = CUP_SEGMENTS, rings: int = CUP_RINGS
 ) -> list[tuple[tuple[float, float, float], ...]]:
@@ -320,10 +333,6 @@ def write(directory: Path, scene: Scene) -> dict[str, Path]:
         raise ValueError(f"unknown scene {scene.kind!r}: expected one of {', '.join(SCENES)}")
     if scene.steps < 1:
         raise ValueError(f"the step count must be at least 1, not {scene.steps}")
-    if scene.triangles is not None and scene.kind != "cup":
-        raise ValueError(f"only the cup has triangles to choose, not the {scene.kind} scene")
-    if scene.kind == "cup":
-        scene.cup  # noqa: B018 (its bounds are checked before any folder is made)
     parts = particles(scene.particles, scene.kind)
     lay = layout(scene.particles, scene.kind)
     folders = {tool: Path(directory) / tool for tool in tools(scene.kind)}
@@ -403,7 +412,7 @@ def write_box_walls(path: Path, scene: Scene, lay: Layout) -> None:
 
 def write_cup_walls(path: Path, segments: int, rings: int) -> None:
     """The cup's triangles as triangle walls: origin a, vertex1 b − a, vertex2 c − a."""
-    total = segments * (2 * rings + 1)
+    total = cup_size(segments, rings)
     lines = [
         f"# The peer benchmark's cup (scripts/peers/scene.py): an open cylinder of {total:,}",
         f"# triangles, its side {segments} segments x {rings} ring{'s' * (rings != 1)} of two, its bottom a fan of {segments}.",

@@ -266,7 +266,9 @@ fn x_tick(names: &[String], v: f64) -> String {
 }
 
 /// A linear axis whose only grid lines and labels are at the given places (the names'
-/// axis); plotters' `with_key_points` of a linear axis has no labels.
+/// axis). plotters' `(x0..x1).with_key_points(…)` would place them, but it forwards an
+/// f64 axis's `NoDefaultFormatting` without its `ValueFormatter`, so `configure_mesh`
+/// refuses it (plotters 0.3.7).
 struct Places {
     linear: plotters::coord::types::RangedCoordf64,
     at: Vec<f64>,
@@ -443,6 +445,33 @@ mod tests {
         assert_eq!(light.len(), 12);
         let (bold, _) = log_ticks(50.0, 2e5);
         assert_eq!(bold, [100.0, 1e3, 1e4, 1e5]);
+    }
+
+    #[test]
+    fn a_named_chart_draws_its_names_under_their_places_and_log_labels_on_y() {
+        let dir = tempfile::tempdir().unwrap();
+        let chart = Chart {
+            name: "named".into(),
+            title: "t".into(),
+            x_label: "scene".into(),
+            y_label: "rate".into(),
+            log_x: true,
+            log_y: true,
+        };
+        let names = ["cup: 10,640".to_string(), "poly: 100,000".to_string()];
+        let series = [Series::new(
+            "walls-sim",
+            vec![(-0.1, 3e6), (1.1, 3e7)],
+            Mark::Dots,
+        )];
+        write_named_pictures(dir.path(), &chart, &names, &series).unwrap();
+        let svg = std::fs::read_to_string(dir.path().join("named.svg")).unwrap();
+        // Each label once: a name under its place, none between; y's 1, 2 and 5 × 10ᵏ.
+        for label in ["cup: 10,640", "poly: 100,000", "5.0e6", "1.0e7"] {
+            let text = format!(">\n{label}\n</text>");
+            assert_eq!(svg.matches(&text).count(), 1, "{label}");
+        }
+        assert!(dir.path().join("named.png").exists());
     }
 
     #[test]

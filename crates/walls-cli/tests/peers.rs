@@ -179,15 +179,22 @@ fn a_cup_of_more_spheres_than_its_lattice_holds_is_refused() {
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
+/// Asserts that bench-peers refused `case` with exit 2 and an error that says `says`,
+/// not a traceback.
+fn assert_refused(out: &Output, says: &str, case: &str) {
+    assert_eq!(out.status.code(), Some(2), "{case}: {out:?}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(says) && !stderr.contains("Traceback"),
+        "{case}: {stderr}"
+    );
+}
+
 #[test]
 fn a_particle_count_below_one_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let out = bench_peers(&["scene", dir.path().to_str().unwrap(), "--particles", "0"]);
-    assert_eq!(out.status.code(), Some(2), "{out:?}");
-    assert_eq!(
-        String::from_utf8_lossy(&out.stderr),
-        "bench-peers: the particle count must be at least 1, not 0\n"
-    );
+    assert_refused(&out, "error: argument --particles: not a count: '0'\n", "0");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
 
@@ -200,13 +207,9 @@ fn a_core_or_particle_count_that_is_not_a_whole_number_is_refused() {
         ("--particles", "1e400"),
     ] {
         let out = bench_peers(&["--walls-sim", "/bin/true", "run", flag, word]);
-        assert_eq!(out.status.code(), Some(2), "{flag} {word}: {out:?}");
-        let stderr = String::from_utf8_lossy(&out.stderr);
         let bad = word.rsplit(',').next().unwrap();
-        assert!(
-            stderr.ends_with(&format!("error: argument {flag}: not a count: '{bad}'\n")),
-            "{flag} {word}: {stderr}"
-        );
+        let says = format!("error: argument {flag}: not a count: '{bad}'\n");
+        assert_refused(&out, &says, &format!("{flag} {word}"));
     }
 }
 
@@ -323,14 +326,14 @@ fn a_cup_of_too_few_or_too_many_triangles_is_refused_before_anything_is_written(
             "1000000000",
             "the cup takes at most 1,000,000 triangles (about 520 bytes of walls file and STL each), not 1,000,000,000",
         ),
+        ("0", "argument --triangles: not a count: '0'"),
+        ("-1", "argument --triangles: not a count: '-1'"),
+        ("1e308", "argument --triangles: not a count: '1e308'"),
+        ("nan", "argument --triangles: not a count: 'nan'"),
     ] {
         let dir = tempfile::tempdir().unwrap();
         let out = write_cup(dir.path(), &["--particles", "8", "--triangles", triangles]);
-        assert_eq!(out.status.code(), Some(2), "{out:?}");
-        assert!(
-            String::from_utf8_lossy(&out.stderr).contains(says),
-            "{out:?}"
-        );
+        assert_refused(&out, says, triangles);
         assert_eq!(
             std::fs::read_dir(dir.path()).unwrap().count(),
             0,
@@ -492,14 +495,14 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
     std::fs::write(&file, "").unwrap();
     let d = dir.path().to_str().unwrap();
     let f = file.to_str().unwrap();
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 7] = [
         (
             &["scene", d, "--scene", "drop", "--steps", "0"],
             "argument --steps: not a count: '0'",
         ),
         (
             &["scene", f, "--scene", "drop", "--particles", "8"],
-            "Not a directory",
+            &format!("error: {f} is not a folder\n"),
         ),
         (
             &["scene", d, "--scene", "drop", "--particles", "100000000"],
@@ -522,14 +525,56 @@ fn bad_arguments_are_refused_with_exit_2_before_anything_is_run_or_written() {
             ],
             "Is a directory",
         ),
+        // Nor one whose folder takes no file (/proc, even as root).
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "drop",
+                "--particles",
+                "8",
+                "--tools",
+                "walls-sim",
+                "--csv",
+                "/proc/peers.csv",
+            ],
+            "bench-peers: --csv: cannot write in /proc: ",
+        ),
+        // The same cup twice would time it twice and write its rows twice.
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "cup",
+                "--triangles",
+                "1000,1001",
+                "--csv",
+                "",
+            ],
+            "error: --triangles: two counts make the same cup (1000 → 999, 1001 → 999)\n",
+        ),
+        // LAMMPS alone on the cup would run nothing and report success.
+        (
+            &[
+                "--walls-sim",
+                "/nonexistent/walls-sim",
+                "run",
+                "--scenes",
+                "cup",
+                "--tools",
+                "lammps",
+                "--csv",
+                "",
+            ],
+            "error: --tools: none of lammps runs the cup scene\n",
+        ),
     ];
     for (args, says) in cases {
-        let out = bench_peers(args);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {out:?}");
-        assert!(
-            String::from_utf8_lossy(&out.stderr).contains(says),
-            "{args:?}: {out:?}"
-        );
+        assert_refused(&bench_peers(args), says, &format!("{args:?}"));
     }
     assert_eq!(
         std::fs::read_dir(dir.path()).unwrap().count(),
