@@ -66,6 +66,14 @@ fn csv_errors_say_where() {
         read_csv("mass,radius,x,y,z,vx,vy,vz,color\n1,0.1,0,0,0,0,0,0,2\n1,0.1,0,0,0,0,0,0,red\n")
             .unwrap_err();
     assert_eq!(e.to_string(), "line 3: `color` is `red`, not an integer");
+    // A field's bytes that are not UTF-8 are shown as U+FFFD, streamed from a file or
+    // read whole.
+    let bad = b"mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,\xff1\xe2\x82,0,0,0\n";
+    let e = walls_sim::io::particles::read_bytes("p.csv", bad).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "line 2: `z` is `\u{fffd}1\u{fffd}`, not a number"
+    );
     assert!(
         read_csv("mass,radius,x,y,z,vx,vy,vz,spin\n")
             .unwrap_err()
