@@ -29,7 +29,9 @@ fn example(explanation: &str, label: &str) -> Option<(String, Options)> {
         dt: flag("--dt"),
     };
     let after = rest.strip_prefix(line)?.trim_start_matches('\n');
-    let body = after.strip_prefix("```walls\n")?;
+    let body = after
+        .strip_prefix("```walls\n")
+        .or_else(|| after.strip_prefix("```par\n"))?;
     Some((body[..body.find("```")?].to_string(), options))
 }
 
@@ -42,7 +44,15 @@ fn examples_in_explanations_are_true() {
         let mode = bad.as_ref().map_or_else(Options::default, |b| b.1.clone());
         let (good, _) = example(code.explanation, "Good")
             .unwrap_or_else(|| panic!("{} has no good example", code.id));
-        let diagnostics = check_bytes(good.clone().into_bytes(), &mode).diagnostics;
+        // The `.par` codes' examples are `.par` files, read by the default build.
+        let check = |text: String, mode: &Options| {
+            if code.id.starts_with('P') {
+                walls_ide::par::check_par_text(text, &walls_par::Build::default()).diagnostics
+            } else {
+                check_bytes(text.into_bytes(), mode).diagnostics
+            }
+        };
+        let diagnostics = check(good.clone(), &mode);
         assert!(
             diagnostics.is_empty(),
             "{}: good example gives {diagnostics:#?}",
@@ -50,7 +60,7 @@ fn examples_in_explanations_are_true() {
         );
         match bad {
             Some((bad, mode)) => {
-                let diagnostics = check_bytes(bad.clone().into_bytes(), &mode).diagnostics;
+                let diagnostics = check(bad.clone(), &mode);
                 assert!(
                     diagnostics.iter().any(|d| std::ptr::eq(d.code, code)),
                     "{}: bad example gives {diagnostics:#?}",
@@ -174,9 +184,10 @@ const LINT_COMMAND: &str = "
 `walls-lint PATH…` checks files and folders (`-` is standard input). A folder is walked
 with `.gitignore`, `.ignore` and hidden files skipped (a `.gitignore` counts outside a git
 repository too); in it, walls-lint checks every file matching an `--include` glob
-(default `*.walls`; repeat the option for several, which replace the default) and every
-walls file that a `.par` file of the tree names with `achWallsFile` (relative to the
-`.par`), whatever its name. `--exclude GLOB` (repeatable) skips matching files and whole
+(default `*.walls`; repeat the option for several, which replace the default), every
+pkdgrav `.par` file but `ssdraw.par` (checked as pkdgrav reads it: [par-files.md](par-files.md))
+and every walls file that a `.par` file of the tree names with `achWallsFile` (relative
+to the `.par`), whatever its name. `--exclude GLOB` (repeatable) skips matching files and whole
 folders. Globs are gitignore-style, relative to the folder named. Each file is checked
 once. A folder with no walls file, a `.par` that cannot be read or names a missing walls
 file, and a file that cannot be read are I/O errors.
@@ -203,7 +214,8 @@ fn docs_list_every_code() {
         "# Diagnostic codes\n\n<!-- Generated from the code registry by `UPDATE_DOCS=1 cargo test -p walls-cli --test codes`; do not edit. -->\n\n\
          `walls-lint --explain CODE` prints the same text. `S` codes are syntax (what pkdgrav refuses to read), \
          `M` codes depend on the contact model (`--mode`), `L` codes are about the suppression comments \
-         (`# walls-lint: ignore CODE`, [configuration.md](configuration.md#suppression-comments)).\n\n| code | name | summary |\n|---|---|---|\n",
+         (`# walls-lint: ignore CODE`, [configuration.md](configuration.md#suppression-comments)), \
+         `P` codes are about pkdgrav's `.par` files, read by the `--pkdgrav-build` build ([par-files.md](par-files.md)).\n\n| code | name | summary |\n|---|---|---|\n",
     );
     for c in all_codes() {
         doc.push_str(&format!(

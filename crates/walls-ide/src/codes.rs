@@ -9,6 +9,7 @@ pub fn all_codes() -> impl Iterator<Item = &'static Code> {
         .iter()
         .chain(walls_model::codes::ALL)
         .chain(crate::suppress::ALL)
+        .chain(walls_par::codes::ALL)
         .copied()
 }
 

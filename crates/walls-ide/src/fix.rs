@@ -7,7 +7,35 @@
 //! an overlap held back, or that a fix made possible, are applied too.
 
 use crate::Checked;
-use walls_diagnostics::{Applicability, apply_fixes_counted};
+use crate::par::ParChecked;
+use walls_diagnostics::{Applicability, Diagnostic, apply_fixes_counted};
+
+/// A checked text whose diagnostics' fixes can be applied: a walls file's [`Checked`] or a
+/// `.par` file's [`ParChecked`].
+pub trait Fixable {
+    /// The text the diagnostics' spans refer to.
+    fn text(&self) -> &str;
+    /// Its diagnostics.
+    fn diagnostics(&self) -> &[Diagnostic];
+}
+
+impl Fixable for Checked {
+    fn text(&self) -> &str {
+        &self.text
+    }
+    fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+}
+
+impl Fixable for ParChecked {
+    fn text(&self) -> &str {
+        &self.text
+    }
+    fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+}
 
 /// The most rounds of fixes on one file.
 pub const MAX_ROUNDS: usize = 10;
@@ -15,17 +43,17 @@ pub const MAX_ROUNDS: usize = 10;
 /// The check of `first`'s text with the fixes of `level` applied, round after round, each
 /// new text checked by `check`, and how many fixes were applied; `None` if there was
 /// nothing to apply.
-pub fn fix_rounds(
-    first: &Checked,
+pub fn fix_rounds<C: Fixable>(
+    first: &C,
     level: Applicability,
-    check: &dyn Fn(String) -> Checked,
-) -> Option<(Checked, usize)> {
-    let mut fixed: Option<Checked> = None;
+    check: &dyn Fn(String) -> C,
+) -> Option<(C, usize)> {
+    let mut fixed: Option<C> = None;
     let mut count = 0;
     for _ in 0..MAX_ROUNDS {
         let current = fixed.as_ref().unwrap_or(first);
-        let (text, applied) = apply_fixes_counted(&current.text, &current.diagnostics, level);
-        if applied == 0 || *text == *current.text {
+        let (text, applied) = apply_fixes_counted(current.text(), current.diagnostics(), level);
+        if applied == 0 || text == current.text() {
             break;
         }
         count += applied;

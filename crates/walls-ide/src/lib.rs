@@ -4,7 +4,8 @@
 //! and sorts the diagnostics of a file, honouring its suppression comments ([`suppress`]):
 //! `walls-lint`, `walls-sim`, the language server and the charts all start from the
 //! [`Checked`] they return. [`all_codes`],
-//! [`find_code`] and [`explain`] are the registry of diagnostic codes.
+//! [`find_code`] and [`explain`] are the registry of diagnostic codes, the `.par` files'
+//! (`P…`, [`walls_par`]) among them; [`par`] is the one check of a `.par` file.
 //!
 //! The editor features are functions of an [`Analysis`] (a [`Checked`] file and its
 //! [`Lines`]) and a byte offset or byte range, returning plain data whose positions are
@@ -28,6 +29,7 @@ mod hover;
 mod lines;
 mod locate;
 mod outline;
+pub mod par;
 pub mod suppress;
 mod tokens;
 
@@ -36,7 +38,7 @@ pub use check::{Analysis, Checked, check_bytes, check_text};
 pub use codes::{all_codes, explain, explain_code, find_code};
 pub use completion::{CompletionItem, CompletionKind, completion};
 pub use definition::definition;
-pub use fix::{MAX_ROUNDS as MAX_FIX_ROUNDS, fix_rounds};
+pub use fix::{Fixable, MAX_ROUNDS as MAX_FIX_ROUNDS, fix_rounds};
 pub use format::{format, format_range};
 pub use hints::{InlayHint, inlay_hints};
 pub use hover::{Hover, hover};

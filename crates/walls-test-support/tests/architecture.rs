@@ -24,6 +24,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("walls-output", 0),
     ("tree-sitter-walls", 0),
     ("walls-syntax", 1),
+    ("walls-par", 1),
     ("walls-model", 2),
     ("walls-format", 2),
     ("walls-ide", 3),
@@ -327,12 +328,12 @@ fn previews_do_not_depend_on_the_simulator() {
 /// walls-sim works on walls-geometry's typed walls: walls-model is not among its
 /// `[dependencies]` (its tests may build scenes from text with it). Besides
 /// walls-geometry it knows only walls-keywords, for the `ContactModel` the whole
-/// toolkit shares.
+/// toolkit shares, and walls-par, pkdgrav's `.par` files (no walls file in it).
 #[test]
 fn the_simulator_knows_geometry_not_the_model() {
     let ws = Workspace::load();
     let sim = ws.member("walls-sim").expect("a workspace member");
-    let allowed = ["walls-geometry", "walls-keywords"];
+    let allowed = ["walls-geometry", "walls-keywords", "walls-par"];
     let broken: Vec<String> = ws
         .workspace_deps(sim, Kind::Build)
         .into_iter()

@@ -10,14 +10,14 @@
 //! written is reported with the diagnostics of its unchanged text and an error. Standard input's fixed text goes to
 //! standard output. `--diff` writes nothing: it prints what the fixes would change.
 
-use super::{Format, LintArgs, Linted, plural};
+use super::{Format, Language, LintArgs, Linted, Report, plural};
 use crate::commands::fmt::unified_diff;
-use crate::{Checked, check_bytes, input};
+use crate::input;
 use clap::ValueEnum;
 use std::io::Write;
 use std::path::Path;
 use walls_diagnostics::{Applicability, Diagnostic};
-use walls_ide::{check_text, fix_rounds};
+use walls_ide::fix_rounds;
 use walls_model::Options;
 
 /// What the command line asks of the fixes.
@@ -69,12 +69,12 @@ pub(super) struct FileFixes {
     pub not_written: Option<String>,
 }
 
-/// Reads the file at `path` (`-`: standard input), checks it (`keep` drops the
-/// diagnostics its settings ignore, after every check), applies its fixes as `fixing`
-/// says and writes the result (or makes its diff).
+/// Reads the file at `path` (`-`: standard input), checks it in its `language` (`keep`
+/// drops the diagnostics its settings ignore, after every check), applies its fixes as
+/// `fixing` says and writes the result (or makes its diff).
 pub(super) fn lint(
     path: &str,
-    options: &Options,
+    language: &Language,
     keep: &dyn Fn(&mut Vec<Diagnostic>),
     fixing: Fixing,
 ) -> (Linted, FileFixes) {
@@ -97,9 +97,9 @@ pub(super) fn lint(
     };
     // Bytes that are not UTF-8 give only the encoding error, which has no fix: such a file
     // is never written.
-    let mut checked = check_bytes(bytes, options);
+    let mut checked = language.check_bytes(bytes);
     keep(&mut checked.diagnostics);
-    let after = fix(&checked, options, keep, fixing.level);
+    let after = fix(&checked, language, keep, fixing.level);
     let mut fixes = FileFixes {
         fixed: after.as_ref().map_or(0, |(_, fixed)| *fixed),
         ..FileFixes::default()
@@ -127,16 +127,16 @@ pub(super) fn lint(
 }
 
 /// The text of `first` with the fixes of `level` applied ([`fix_rounds`]), each new text
-/// checked with `options` less what `keep` drops, and how many fixes were applied; `None`
+/// checked in `language` less what `keep` drops, and how many fixes were applied; `None`
 /// if there was nothing to apply.
 fn fix(
-    first: &Checked,
-    options: &Options,
+    first: &Report,
+    language: &Language,
     keep: &dyn Fn(&mut Vec<Diagnostic>),
     level: Applicability,
-) -> Option<(Checked, usize)> {
+) -> Option<(Report, usize)> {
     fix_rounds(first, level, &|text| {
-        let mut checked = check_text(text, options);
+        let mut checked = language.check_text(text);
         keep(&mut checked.diagnostics);
         checked
     })
@@ -145,8 +145,9 @@ fn fix(
 /// The text `walls-lint --fix` (with `Unsafe`: `--unsafe-fixes`) makes of `text` with no
 /// settings file, and how many fixes it applied: the same rounds as a file's.
 pub fn fix_text(text: &str, options: &Options, level: Applicability) -> (String, usize) {
-    let checked = check_text(text, options);
-    match fix(&checked, options, &|_| {}, level) {
+    let language = Language::Walls(options.clone());
+    let checked = language.check_text(text.to_string());
+    match fix(&checked, &language, &|_| {}, level) {
         Some((fixed, count)) => (fixed.text.to_string(), count),
         None => (text.to_string(), 0),
     }

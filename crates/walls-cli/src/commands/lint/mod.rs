@@ -1,4 +1,9 @@
-//! `walls-lint`: check walls files for everything pkdgrav would reject or misread.
+//! `walls-lint`: check walls files and pkdgrav's `.par` files for everything pkdgrav
+//! would reject or misread.
+//!
+//! A file is checked in its language ([`Language`]): a `.par` file (but `ssdraw.par`,
+//! ssdraw's own) as pkdgrav's reader and the `--pkdgrav-build` build see it
+//! ([`walls_par`]), anything else as a walls file.
 //!
 //! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
 //! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
@@ -23,6 +28,7 @@ use std::io::Write;
 use std::sync::Arc;
 use walls_diagnostics::render::{self, FileReport, ToolInfo, Unreadable};
 use walls_diagnostics::{Diagnostic, Severity};
+use walls_ide::Fixable;
 use walls_model::Options;
 
 /// The command line of `walls-lint`.
@@ -31,7 +37,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls) and the walls files its .par files name (achWallsFile).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it.\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -61,6 +67,11 @@ pub struct LintArgs {
     /// The simulation timestep (pkdgrav units): the update step of walls with `step 0`.
     #[arg(long, value_name = "DT", value_parser = positive)]
     pub dt: Option<f64>,
+    /// The pkdgrav build `.par` files are checked for: its compile options, space or
+    /// comma separated, with or without `USE_` (COLLISIONS and WALLS are always on)
+    /// [default: DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT].
+    #[arg(long, value_name = "OPTIONS", value_parser = pkdgrav_build)]
+    pub pkdgrav_build: Option<walls_par::Build>,
     /// Exit with status 1 on warnings too.
     #[arg(long)]
     pub deny_warnings: bool,
@@ -107,6 +118,87 @@ pub enum Color {
     Auto,
     Always,
     Never,
+}
+
+/// How a file is checked: as a walls file with its options, or as a pkdgrav `.par` file
+/// for a build.
+pub(super) enum Language {
+    /// A walls file.
+    Walls(Options),
+    /// A pkdgrav parameter file.
+    Par(walls_par::Build),
+}
+
+/// A checked file's text and its diagnostics, whichever its language.
+pub(super) struct Report {
+    /// The text the spans refer to.
+    pub text: Arc<str>,
+    /// Its diagnostics, sorted by position.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Fixable for Report {
+    fn text(&self) -> &str {
+        &self.text
+    }
+    fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+}
+
+impl Language {
+    /// The language of the file at `path`: a `.par` file is pkdgrav's (but `ssdraw.par`,
+    /// ssdraw's own parameter file, which is no `key = value` file); anything else, and
+    /// standard input, a walls file.
+    fn of(path: &str, options: Options, build: &walls_par::Build) -> Language {
+        if is_pkdgrav_par(std::path::Path::new(path)) {
+            Language::Par(build.clone())
+        } else {
+            Language::Walls(options)
+        }
+    }
+
+    /// Checks a file's bytes.
+    pub(super) fn check_bytes(&self, bytes: Vec<u8>) -> Report {
+        match self {
+            Language::Walls(options) => check_bytes(bytes, options).into(),
+            Language::Par(build) => walls_ide::par::check_par_bytes(bytes, build).into(),
+        }
+    }
+
+    /// Checks a text (a fixed one).
+    pub(super) fn check_text(&self, text: String) -> Report {
+        match self {
+            Language::Walls(options) => walls_ide::check_text(text, options).into(),
+            Language::Par(build) => walls_ide::par::check_par_text(text, build).into(),
+        }
+    }
+}
+
+impl From<crate::Checked> for Report {
+    fn from(c: crate::Checked) -> Report {
+        Report {
+            text: c.text,
+            diagnostics: c.diagnostics,
+        }
+    }
+}
+
+impl From<walls_ide::par::ParChecked> for Report {
+    fn from(c: walls_ide::par::ParChecked) -> Report {
+        Report {
+            text: c.text,
+            diagnostics: c.diagnostics,
+        }
+    }
+}
+
+/// Whether `path` names a pkdgrav parameter file: `.par`, but not `ssdraw.par`.
+pub(super) fn is_pkdgrav_par(path: &std::path::Path) -> bool {
+    path.extension().is_some_and(|e| e == "par")
+        && !path
+            .file_name()
+            .is_some_and(|n| n.eq_ignore_ascii_case("ssdraw.par"))
 }
 
 /// One checked file: the text the diagnostics refer to, or the I/O error.
@@ -283,16 +375,23 @@ fn lint(
         min_radius: args.min_radius.or(set.min_radius),
         dt: args.dt.or(set.dt),
     };
+    let language = Language::of(
+        path,
+        options,
+        args.pkdgrav_build
+            .as_ref()
+            .unwrap_or(&walls_par::Build::default()),
+    );
     let file = absolute_file(path);
     let keep = |diagnostics: &mut Vec<Diagnostic>| {
         set.filter(file.as_deref(), diagnostics);
     };
     let (mut linted, fixes) = match fixing {
-        Some(fixing) => fix::lint(path, &options, &keep, fixing),
+        Some(fixing) => fix::lint(path, &language, &keep, fixing),
         None => {
             let read = input::read(path);
             let outcome = read.bytes.map(|bytes| {
-                let mut checked = check_bytes(bytes, &options);
+                let mut checked = language.check_bytes(bytes);
                 keep(&mut checked.diagnostics);
                 (checked.text, checked.diagnostics)
             });
@@ -311,6 +410,11 @@ fn lint(
     }
     linted.deny_warnings = args.deny_warnings || set.deny_warnings.unwrap_or(false);
     (linted, fixes)
+}
+
+/// `--pkdgrav-build`'s value: pkdgrav's compile options.
+fn pkdgrav_build(s: &str) -> Result<walls_par::Build, String> {
+    walls_par::Build::parse(s).map_err(|e| e.to_string())
 }
 
 /// A glob for `--include` and `--exclude`, checked as the settings file's are.

@@ -161,6 +161,12 @@ impl Walk<'_> {
                 add(path.to_path_buf(), seen, targets);
                 found += 1;
             }
+            // A pkdgrav `.par` is checked itself ([`super::Language`]), and followed to
+            // the walls file it names.
+            if super::is_pkdgrav_par(path) && !includes.matched(path, false).is_whitelist() {
+                add(path.to_path_buf(), seen, targets);
+                found += 1;
+            }
             if path.extension().is_some_and(|e| e == "par") {
                 match self.named_walls_file(file, &path.display().to_string(), &listed) {
                     Ok(Some(walls)) => {
@@ -197,14 +203,14 @@ impl Walk<'_> {
             .and_then(|f| crate::input::read_all(f, shown))
             .map_err(|e| (error(e, None), None))?;
         let text = String::from_utf8_lossy(&bytes);
-        let params = walls_sim::io::par::read_par(&text).map_err(|e| {
-            let message = format!("{shown}: cannot find its walls file: {e}");
-            (error(message, None), None)
-        })?;
-        let Some(name) = params.walls_file.as_deref() else {
+        // Read as pkdgrav reads it (the file's own findings are its check's to report).
+        let build = walls_par::Build::default();
+        let file = walls_par::check::File::read(&text, &build, &mut Vec::new());
+        let Some(name) = file.string("achWallsFile").filter(|n| !n.is_empty()) else {
             return Ok(None);
         };
-        let line = params.line_of("achWallsFile");
+        let name = name.as_str();
+        let line = file.given("achWallsFile").map(|e| e.line);
         let at = match line {
             Some(line) => format!("{shown}:{line}: achWallsFile = {name}"),
             None => format!("{shown}: achWallsFile = {name}"),
@@ -388,11 +394,18 @@ mod tests {
             |_| Ok((Vec::new(), vec!["old".to_string()])),
         )
         .unwrap();
-        // scene.dat is named first, so the .par naming it adds nothing; the folder named
-        // again, and the one inside it, add nothing and are not "folders with no walls file".
+        // scene.dat is named first, so the .par naming it adds only itself; the folder
+        // named again, and the one inside it, add nothing and are not "folders with no
+        // walls file". The .par files are checked too, in the order found.
         assert_eq!(
             targets.files,
-            [named, format!("{r}/a.walls"), format!("{r}/sub/b.walls")]
+            [
+                named,
+                format!("{r}/a.walls"),
+                format!("{r}/sub/b.walls"),
+                format!("{r}/sub/run.par"),
+                format!("{r}/z/missing.par"),
+            ]
         );
         let par = format!("{r}/z/missing.par");
         assert_eq!(

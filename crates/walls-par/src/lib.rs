@@ -1,0 +1,23 @@
+//! pkdgrav's parameter files (`.par`) as pkdgrav reads them, for a given build: its
+//! reader's rules (docs/pkdgrav-physics.md §14), the keys each build registers with
+//! their types and defaults (§18, [`keys`]), and what it checks, warns about and
+//! changes when it starts (§19, [`startup`]); and what walls-sim does with each key
+//! ([`evaluator`]). [`check`] turns a file into diagnostics (`P…` codes, [`codes`]),
+//! which walls-lint and the language server report as they report a walls file's.
+//!
+//! The build is a set of compile options ([`Build`]); the default is pkdgrav's default
+//! soft-sphere build with walls ([`options::DEFAULT`]).
+
+pub mod check;
+pub mod codes;
+pub mod evaluator;
+pub mod keys;
+pub mod options;
+pub mod rules;
+pub mod startup;
+pub mod syntax;
+pub mod value;
+
+pub use check::check;
+pub use options::{Build, UnknownOption};
+pub use startup::KT_PER_KN;

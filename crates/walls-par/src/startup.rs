@@ -1,0 +1,689 @@
+//! What pkdgrav does with a `.par` file's values when it starts, and the values it takes
+//! without a check that make the run something else than it says: one row a check
+//! (docs/pkdgrav-physics.md §15, §19, and docs/pkdgrav-startup-checks.md, whose row ids
+//! the rows keep: `A73` stops, `B38` warns, `C28` changes a value; `N…` are its "not
+//! checked at start-up" notes). [`crate::rules::startup`] reports them.
+//!
+//! The rows are those a `.par` file alone can show, in the granular builds (soft and
+//! hard spheres, walls, aggregates, springs); the checks on the walls file and the
+//! initial conditions, the gas-dynamics and sliding-patch builds' and a few that fire
+//! on every run whatever the file says (`B20`, `B59`) are not rows (docs/par-files.md).
+
+use crate::check::File;
+
+/// pkdgrav's 2/7, as its `master.c` writes it: `dKt = -1` means this times `dKn`, and
+/// the two-layer `dKtOuter`/`dKtInner` = −1 this times their normal constant.
+#[allow(
+    clippy::excessive_precision,
+    reason = "the digits pkdgrav's source writes"
+)]
+pub const KT_PER_KN: f64 = 0.2857142857142857143;
+
+/// What pkdgrav does when a check holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// It stops (exit status 1, or an assertion), at start-up or at the first contact or
+    /// output.
+    Stops,
+    /// It prints a warning and runs.
+    Warns,
+    /// It changes a value after reading, without a word.
+    Changes,
+    /// It runs without a word, and the run is not what the file says.
+    Differs,
+}
+
+/// One check.
+pub struct Check {
+    /// Its row in startup_checks.md (`A73`), or `N…` for its notes on what is not
+    /// checked.
+    pub id: &'static str,
+    /// The compile options it is made in (par_keys.md's notation).
+    pub build: &'static str,
+    /// What pkdgrav does.
+    pub outcome: Outcome,
+    /// Only when `bVWarnings` is on (its default).
+    pub verbose: bool,
+    /// The keys it reads; the first the file gives locates the finding.
+    pub keys: &'static [&'static str],
+    /// Whether it holds for the file.
+    pub holds: fn(&File) -> bool,
+    /// What pkdgrav does, in a sentence.
+    pub says: &'static str,
+}
+
+/// The number pkdgrav runs with for `key` (NaN when there is none: no check holds).
+fn n(file: &File, key: &str) -> f64 {
+    file.real(key).unwrap_or(f64::NAN)
+}
+
+/// `dKt` as pkdgrav runs with it: −1 is 2/7 of `dKn`.
+fn k_t(file: &File) -> f64 {
+    spring(n(file, "dKt"), n(file, "dKn"))
+}
+
+/// A tangential constant with pkdgrav's −1 sentinel resolved against `k_n`.
+fn spring(k_t: f64, k_n: f64) -> f64 {
+    if k_t == -1.0 { KT_PER_KN * k_n } else { k_t }
+}
+
+/// The two-layer normal constants as pkdgrav runs with them: both −1 are `dKn`.
+fn layers(file: &File) -> (f64, f64) {
+    let (outer, inner) = (n(file, "dKnOuter"), n(file, "dKnInner"));
+    if outer == -1.0 && inner == -1.0 {
+        (n(file, "dKn"), n(file, "dKn"))
+    } else {
+        (outer, inner)
+    }
+}
+
+const fn row(
+    id: &'static str,
+    build: &'static str,
+    outcome: Outcome,
+    keys: &'static [&'static str],
+    holds: fn(&File) -> bool,
+    says: &'static str,
+) -> Check {
+    Check {
+        id,
+        build,
+        outcome,
+        verbose: false,
+        keys,
+        holds,
+        says,
+    }
+}
+
+/// A row printed only with `bVWarnings` on.
+const fn verbose(check: Check) -> Check {
+    Check {
+        verbose: true,
+        ..check
+    }
+}
+
+use Outcome::{Changes, Differs, Stops, Warns};
+
+/// The checks, in startup_checks.md's order, then its notes.
+pub const CHECKS: &[Check] = &[
+    row(
+        "A7",
+        "always",
+        Stops,
+        &["dRungDDWeight"],
+        |f| f.given("dRungDDWeight").is_some(),
+        "pkdgrav aborts at start-up on an assertion when the .par file gives `dRungDDWeight` (registered as a double with an int's size)",
+    ),
+    row(
+        "A9",
+        "COLLISIONS",
+        Stops,
+        &["bKDK"],
+        |f| n(f, "bKDK") == 0.0,
+        "pkdgrav aborts at start-up: a collisions build runs kick-drift-kick only (`bKDK` must be 1)",
+    ),
+    row(
+        "A10",
+        "always",
+        Stops,
+        &["nDigits"],
+        |f| !(1.0..=2048.0).contains(&n(f, "nDigits")),
+        "pkdgrav stops at start-up: `nDigits` must be from 1 to 2048",
+    ),
+    row(
+        "A11",
+        "always",
+        Stops,
+        &["achInFile", "bRestart"],
+        |f| f.string("achInFile").is_some_and(|s| s.is_empty()) && n(f, "bRestart") == 0.0,
+        "pkdgrav stops at start-up: no input file (`achInFile`)",
+    ),
+    row(
+        "A12",
+        "always",
+        Stops,
+        &["dTheta"],
+        |f| n(f, "dTheta") < 0.0,
+        "pkdgrav stops at start-up: the opening angle `dTheta` must be 0 or more",
+    ),
+    row(
+        "A15",
+        "always",
+        Stops,
+        &["bGravStep", "bDoGravity"],
+        |f| n(f, "bGravStep") != 0.0 && n(f, "bDoGravity") == 0.0,
+        "pkdgrav stops at start-up: gravity stepping (`bGravStep`) needs `bDoGravity`",
+    ),
+    row(
+        "A17",
+        "always",
+        Stops,
+        &["bHeliocentric", "bDoGravity"],
+        |f| n(f, "bHeliocentric") != 0.0 && n(f, "bDoGravity") == 0.0,
+        "pkdgrav stops at start-up: heliocentric frames need `bDoGravity`",
+    ),
+    row(
+        "A36",
+        "COLLISIONS && WALLS",
+        Stops,
+        &["bFandG"],
+        |f| n(f, "bFandG") != 0.0,
+        "pkdgrav aborts at start-up: a walls build cannot use `bFandG`",
+    ),
+    row(
+        "A62",
+        "COLLISIONS && !DEM && WALLS",
+        Stops,
+        &["iOverlapOption", "bStrictOverlap"],
+        |f| n(f, "iOverlapOption") == 1.0 && n(f, "bStrictOverlap") == 0.0,
+        "pkdgrav stops at start-up: hard-sphere walls with the backstep overlap option (`iOverlapOption = 1`) need `bStrictOverlap = 1`",
+    ),
+    row(
+        "A72",
+        "SPRINGS",
+        Stops,
+        &["iForceOverrideOption"],
+        |f| n(f, "iForceOverrideOption") == 0.0,
+        "pkdgrav stops at start-up: a SPRINGS build needs `iForceOverrideOption = 2`",
+    ),
+    row(
+        "A73",
+        "DEM",
+        Stops,
+        &["iForceOverrideOption"],
+        |f| n(f, "iForceOverrideOption") == 0.0,
+        "pkdgrav stops at start-up: a DEM build needs `iForceOverrideOption = 2`",
+    ),
+    row(
+        "A74",
+        "always",
+        Stops,
+        &["iForceOverrideOption"],
+        |f| n(f, "iForceOverrideOption") == 1.0,
+        "pkdgrav stops at start-up: `iForceOverrideOption = 1` (van der Waals) is not implemented",
+    ),
+    row(
+        "A75",
+        "!SPRINGS && !DEM",
+        Stops,
+        &["iForceOverrideOption"],
+        |f| n(f, "iForceOverrideOption") == 2.0,
+        "pkdgrav stops at start-up: `iForceOverrideOption = 2` needs a DEM or SPRINGS build",
+    ),
+    row(
+        "A76",
+        "always",
+        Stops,
+        &["iForceOverrideOption"],
+        |f| {
+            ![0.0, 1.0, 2.0].contains(&n(f, "iForceOverrideOption"))
+                && !n(f, "iForceOverrideOption").is_nan()
+        },
+        "pkdgrav stops at start-up: `iForceOverrideOption` must be 0, 1 or 2",
+    ),
+    row(
+        "A77",
+        "SPRINGS",
+        Stops,
+        &["iCheckInterval"],
+        |f| n(f, "iCheckInterval") > 0.0,
+        "pkdgrav stops at start-up: a SPRINGS build cannot restart from checkpoints (`iCheckInterval` must be 0)",
+    ),
+    row(
+        "A87",
+        "DEM",
+        Stops,
+        &["iCheckInterval"],
+        |f| n(f, "iCheckInterval") > 0.0,
+        "pkdgrav stops at start-up: a DEM build cannot restart from checkpoints (`iCheckInterval` must be 0)",
+    ),
+    row(
+        "A88",
+        "DEM",
+        Stops,
+        &["dKn"],
+        |f| n(f, "dKn") < 0.0,
+        "pkdgrav stops at start-up: the normal spring constant `dKn` must be 0 or more",
+    ),
+    row(
+        "A89",
+        "DEM",
+        Stops,
+        &["dKt", "dKn"],
+        |f| k_t(f) < 0.0,
+        "pkdgrav stops at start-up: the tangential spring constant `dKt` must be 0 or more (−1 is 2/7 of `dKn`)",
+    ),
+    row(
+        "A90",
+        "DEM",
+        Stops,
+        &["dMuS"],
+        |f| n(f, "dMuS") < 0.0,
+        "pkdgrav stops at start-up: `dMuS` must be 0 or more",
+    ),
+    row(
+        "A91",
+        "DEM",
+        Stops,
+        &["dMuR"],
+        |f| n(f, "dMuR") < 0.0,
+        "pkdgrav stops at start-up: `dMuR` must be 0 or more",
+    ),
+    row(
+        "A92",
+        "DEM",
+        Stops,
+        &["dMuT"],
+        |f| n(f, "dMuT") < 0.0,
+        "pkdgrav stops at start-up: `dMuT` must be 0 or more",
+    ),
+    row(
+        "A93",
+        "DEM",
+        Stops,
+        &["dAccCrit"],
+        |f| n(f, "dAccCrit") < 0.0,
+        "pkdgrav stops at start-up: `dAccCrit` must be 0 or more",
+    ),
+    row(
+        "A94",
+        "DEM",
+        Stops,
+        &["dTangentialSpringDrag"],
+        |f| {
+            !(0.0..=1.0).contains(&n(f, "dTangentialSpringDrag"))
+                && !n(f, "dTangentialSpringDrag").is_nan()
+        },
+        "pkdgrav stops at start-up: `dTangentialSpringDrag` must be from 0 to 1",
+    ),
+    row(
+        "A95",
+        "DEM",
+        Stops,
+        &["dMinorFrac"],
+        |f| n(f, "dMinorFrac") < 0.0,
+        "pkdgrav stops at start-up: `dMinorFrac` must be 0 or more",
+    ),
+    row(
+        "A96",
+        "DEM",
+        Stops,
+        &["dMajorFrac", "dMinorFrac"],
+        |f| n(f, "dMajorFrac") < n(f, "dMinorFrac"),
+        "pkdgrav stops at start-up: `dMajorFrac` must be at least `dMinorFrac`",
+    ),
+    row(
+        "A97",
+        "DEM",
+        Stops,
+        &["dErrorFrac", "dMajorFrac"],
+        |f| n(f, "dErrorFrac") < n(f, "dMajorFrac"),
+        "pkdgrav stops at start-up: `dErrorFrac` must be at least `dMajorFrac`",
+    ),
+    row(
+        "A98",
+        "DEM",
+        Stops,
+        &["iDEMStatsInterval"],
+        |f| n(f, "iDEMStatsInterval") < 0.0,
+        "pkdgrav stops at start-up: `iDEMStatsInterval` must be 0 or more",
+    ),
+    row(
+        "A99",
+        "DEM && DEM_FIXED_BALL",
+        Stops,
+        &["iFixedBallOption"],
+        |f| {
+            ![0.0, 1.0, 2.0].contains(&n(f, "iFixedBallOption"))
+                && !n(f, "iFixedBallOption").is_nan()
+        },
+        "pkdgrav stops at start-up: `iFixedBallOption` must be 0, 1 or 2",
+    ),
+    row(
+        "A100",
+        "DEM && DEM_ROTATION_DASHPOT",
+        Stops,
+        &["dBetaS"],
+        |f| n(f, "dBetaS") < 0.0,
+        "pkdgrav stops at start-up: `dBetaS` must be 0 or more",
+    ),
+    row(
+        "A101",
+        "DEM && DEM_COHESION",
+        Stops,
+        &["iCohesionModel"],
+        |f| ![0.0, 1.0].contains(&n(f, "iCohesionModel")) && !n(f, "iCohesionModel").is_nan(),
+        "pkdgrav stops at start-up: `iCohesionModel` must be 0 or 1",
+    ),
+    row(
+        "A102",
+        "DEM && DEM_COHESION",
+        Stops,
+        &["dCohesiveCoeff"],
+        |f| n(f, "dCohesiveCoeff") < 0.0,
+        "pkdgrav stops at start-up: `dCohesiveCoeff` must be 0 or more",
+    ),
+    row(
+        "A103",
+        "DEM && DEM_TWOLAYERS",
+        Stops,
+        &["dInnerOverlapBndry"],
+        |f| n(f, "dInnerOverlapBndry") < 0.0,
+        "pkdgrav stops at start-up: `dInnerOverlapBndry` must be 0 or more",
+    ),
+    row(
+        "A104",
+        "DEM && DEM_TWOLAYERS",
+        Stops,
+        &["dKnOuter", "dKnInner", "dKtOuter", "dKtInner", "dKn"],
+        |f| {
+            let (outer, inner) = layers(f);
+            [
+                outer,
+                inner,
+                spring(n(f, "dKtOuter"), outer),
+                spring(n(f, "dKtInner"), inner),
+            ]
+            .iter()
+            .any(|&k| k <= 0.0)
+        },
+        "pkdgrav stops at start-up: every two-layer spring constant must be above 0 once its −1 is resolved (both normal constants −1 are `dKn`; a tangential −1 is 2/7 of its normal constant; one normal constant alone left at −1 stays −1)",
+    ),
+    row(
+        "N1",
+        "DEM",
+        Stops,
+        &["dEpsN", "dEpsT"],
+        |f| n(f, "dEpsN") <= 0.0 || n(f, "dEpsT") <= 0.0,
+        "pkdgrav does not check it at start-up but aborts at the first particle contact: a DEM build needs `dEpsN` and `dEpsT` above 0",
+    ),
+    row(
+        "N2",
+        "DEM",
+        Stops,
+        &["nDEMOutputs", "iOutInterval"],
+        |f| n(f, "nDEMOutputs") <= -2.0 && n(f, "iOutInterval") == 0.0,
+        "pkdgrav divides by zero at the first output (SIGFPE): `nDEMOutputs` of −2 or less with `iOutInterval = 0`",
+    ),
+    row(
+        "B4",
+        "always",
+        Warns,
+        &["nReplicas", "bPeriodic"],
+        |f| n(f, "bPeriodic") == 0.0 && n(f, "nReplicas") != 0.0,
+        "pkdgrav warns at start-up: `nReplicas` is not 0 in a run that is not periodic",
+    ),
+    verbose(row(
+        "B5",
+        "always",
+        Warns,
+        &["dTheta"],
+        |f| n(f, "dTheta") == 0.0,
+        "pkdgrav warns at start-up: an opening angle `dTheta` of 0 is risky",
+    )),
+    row(
+        "B6",
+        "always",
+        Warns,
+        &["bDoSelfGravity", "bDoGravity"],
+        |f| n(f, "bDoSelfGravity") != 0.0 && n(f, "bDoGravity") == 0.0,
+        "pkdgrav warns at start-up: `bDoSelfGravity` may need `bDoGravity`",
+    ),
+    verbose(row(
+        "B9",
+        "always",
+        Warns,
+        &["iMaxRung"],
+        |f| n(f, "iMaxRung") < 1.0,
+        "pkdgrav warns at start-up and sets `iMaxRung` to 1",
+    )),
+    row(
+        "B10",
+        "always",
+        Warns,
+        &["iMaxRung"],
+        |f| n(f, "iMaxRung") > 29.0,
+        "pkdgrav warns at start-up and reduces `iMaxRung` to 29",
+    ),
+    verbose(row(
+        "B15",
+        "COLLISIONS && DEM && !DEM_FIXED_BALL",
+        Warns,
+        &["nSmooth"],
+        |f| n(f, "nSmooth") < 2.0,
+        "pkdgrav warns at start-up: with `nSmooth` below 2 no neighbours are found (no particle contacts)",
+    )),
+    verbose(row(
+        "B16",
+        "COLLISIONS && !DEM && WALLS",
+        Warns,
+        &["nSmooth"],
+        |f| n(f, "nSmooth") < 1.0,
+        "pkdgrav warns at start-up: with `nSmooth` below 1 collision detection is off",
+    )),
+    row(
+        "B22",
+        "COLLISIONS && !DEM",
+        Warns,
+        &["iOverlapOption"],
+        |f| n(f, "iOverlapOption") == -1.0,
+        "pkdgrav warns at start-up: overlaps are ignored (`iOverlapOption = -1`)",
+    ),
+    row(
+        "B23",
+        "COLLISIONS && !DEM",
+        Warns,
+        &["iOverlapOption"],
+        |f| (1.0..=4.0).contains(&n(f, "iOverlapOption")),
+        "pkdgrav prints a long caution about its overlap handling (`iOverlapOption` 1 to 4) at start-up",
+    ),
+    row(
+        "B26",
+        "COLLISIONS && AGGS",
+        Warns,
+        &["bDoGravity"],
+        |f| n(f, "bDoGravity") == 0.0,
+        "pkdgrav warns at start-up: aggregates' accelerations and torques expect `bDoGravity`",
+    ),
+    row(
+        "B28",
+        "COLLISIONS && AGGS",
+        Warns,
+        &["iEpsNOption"],
+        |f| n(f, "iEpsNOption") != 0.0 && !n(f, "iEpsNOption").is_nan(),
+        "pkdgrav warns at start-up: a variable `dEpsN` (`iEpsNOption`) is a hack with aggregates",
+    ),
+    row(
+        "B29",
+        "COLLISIONS && AGGS",
+        Warns,
+        &["dEpsT"],
+        |f| n(f, "dEpsT") != 1.0 && !n(f, "dEpsT").is_nan(),
+        "pkdgrav warns at start-up: aggregates ignore the tangential restitution `dEpsT`",
+    ),
+    row(
+        "B31",
+        "DEM && AGGS",
+        Warns,
+        &["dMuR", "dMuT"],
+        |f| n(f, "dMuR") > 0.0 || n(f, "dMuT") > 0.0,
+        "pkdgrav warns at start-up and sets the particles' rolling and twisting friction (`dMuR`, `dMuT`) to 0 with aggregates",
+    ),
+    verbose(row(
+        "B33",
+        "WALLS",
+        Warns,
+        &["achWallsFile"],
+        |f| f.string("achWallsFile").is_some_and(|s| s.is_empty()),
+        "pkdgrav warns at start-up: no walls (`achWallsFile` is empty)",
+    )),
+    row(
+        "B34",
+        "WALLS && DEM_WALLS_REACT",
+        Warns,
+        &["bDoGravity"],
+        |f| n(f, "bDoGravity") == 0.0,
+        "pkdgrav warns at start-up: reactive walls expect `bDoGravity`",
+    ),
+    verbose(row(
+        "B37",
+        "DEM",
+        Warns,
+        &["iOutcomes"],
+        |f| n(f, "iOutcomes") != 0.0 && !n(f, "iOutcomes").is_nan(),
+        "pkdgrav warns at start-up that a DEM build ignores `iOutcomes` (set it to 0 to be rid of the warning; its default is 2)",
+    )),
+    row(
+        "B38",
+        "DEM",
+        Warns,
+        &["dKn"],
+        |f| n(f, "dKn") == 0.0,
+        "pkdgrav warns at start-up: the normal spring constant `dKn` is 0 (its default): particles pass through walls and each other",
+    ),
+    row(
+        "B39",
+        "DEM",
+        Warns,
+        &["dKt", "dKn"],
+        |f| k_t(f) == 0.0,
+        "pkdgrav warns at start-up: the tangential spring constant is 0 (`dKt`, or 2/7 of a `dKn` of 0)",
+    ),
+    row(
+        "B40",
+        "DEM",
+        Warns,
+        &["dEpsT", "dMuS"],
+        |f| n(f, "dEpsT") < 1.0 && n(f, "dMuS") == 0.0,
+        "pkdgrav warns at start-up: `dEpsT` below 1 does nothing without static friction (`dMuS` is 0)",
+    ),
+    row(
+        "B41",
+        "DEM",
+        Warns,
+        &["dTangentialSpringDrag"],
+        |f| {
+            ![0.0, 1.0].contains(&n(f, "dTangentialSpringDrag"))
+                && !n(f, "dTangentialSpringDrag").is_nan()
+        },
+        "pkdgrav warns at start-up: a `dTangentialSpringDrag` other than 0 or 1 depends on the timestep",
+    ),
+    row(
+        "B42",
+        "DEM && DEM_TWOLAYERS",
+        Warns,
+        &["dKnOuter", "dKnInner", "dKn"],
+        |f| {
+            let (outer, inner) = layers(f);
+            outer >= inner
+        },
+        "pkdgrav warns at start-up: the outer layer is as stiff as the inner one or stiffer (`dKnOuter` ≥ `dKnInner`, both −1 being `dKn`)",
+    ),
+    verbose(row(
+        "B43",
+        "always",
+        Warns,
+        &["bUseWallClock"],
+        |f| n(f, "bUseWallClock") == 0.0,
+        "pkdgrav warns at start-up: the times it reports are CPU time (`bUseWallClock = 0`)",
+    )),
+    row(
+        "C5",
+        "always",
+        Changes,
+        &["bFandG", "bPeriodic"],
+        |f| n(f, "bFandG") != 0.0 && n(f, "bPeriodic") != 0.0,
+        "pkdgrav sets `bPeriodic` to 0 when `bFandG` is on, without a word",
+    ),
+    row(
+        "C7",
+        "always",
+        Changes,
+        &["bPeriodic", "nReplicas"],
+        |f| n(f, "bPeriodic") != 0.0 && f.given("nReplicas").is_none(),
+        "pkdgrav sets `nReplicas` to 1 in a periodic run that does not give it",
+    ),
+    row(
+        "C9",
+        "always",
+        Changes,
+        &["dPeriod"],
+        |f| {
+            f.given("dPeriod").is_some()
+                && ["dxPeriod", "dyPeriod", "dzPeriod"]
+                    .iter()
+                    .any(|k| f.given(k).is_none())
+        },
+        "pkdgrav copies `dPeriod` into each of `dxPeriod`, `dyPeriod`, `dzPeriod` the file does not give (a period of 0 is infinite)",
+    ),
+    row(
+        "C28",
+        "COLLISIONS",
+        Changes,
+        &["dSoft"],
+        |f| f.given("dSoft").is_some(),
+        "pkdgrav replaces every particle's radius with `dSoft` when the .par file gives it (any value, 0 too), without a word",
+    ),
+    row(
+        "N3",
+        "always",
+        Differs,
+        &["dDelta"],
+        |f| n(f, "dDelta") <= 0.0,
+        "pkdgrav never checks `dDelta`: 0 (its default) runs `nSteps` steps of no length, a negative value runs backwards",
+    ),
+    row(
+        "N4",
+        "always",
+        Differs,
+        &["nSteps", "iStartStep"],
+        |f| n(f, "nSteps") <= n(f, "iStartStep"),
+        "pkdgrav runs no step and writes no output, and exits with status 0, when `nSteps` is not above `iStartStep`",
+    ),
+    row(
+        "N5",
+        "DEM",
+        Differs,
+        &["bDoGravity"],
+        |f| n(f, "bDoGravity") == 0.0,
+        "pkdgrav evaluates no forces at all with `bDoGravity = 0` in a DEM build (its contact forces are computed in the gravity step): no uniform gravity, no contacts",
+    ),
+    row(
+        "N6",
+        "DEM",
+        Differs,
+        &["dEpsN", "dEpsT"],
+        |f| n(f, "dEpsN") > 1.0 || n(f, "dEpsT") > 1.0,
+        "pkdgrav accepts a restitution above 1 (`dEpsN`, `dEpsT`) without a word: negative damping, contacts that add energy",
+    ),
+    row(
+        "N7",
+        "DEM",
+        Differs,
+        &["iOutInterval", "nDEMOutputs"],
+        |f| n(f, "iOutInterval") == 0.0 && n(f, "nDEMOutputs") >= 1.0,
+        "pkdgrav deletes the `.dem` contact file it writes at the final output straight after writing it when `iOutInterval` is 0 and `nDEMOutputs` 1 or more (its defaults)",
+    ),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::keys;
+    use crate::options::{Build, OPTIONS};
+
+    #[test]
+    fn every_row_names_registered_keys_and_known_options() {
+        let every = Build::parse(&OPTIONS.join(" ")).unwrap();
+        let mut ids = std::collections::HashSet::new();
+        for c in CHECKS {
+            assert!(ids.insert(c.id), "{} twice", c.id);
+            let _ = every.meets(c.build);
+            for k in c.keys {
+                assert!(keys::any(k).next().is_some(), "{}: `{k}` is no key", c.id);
+            }
+        }
+    }
+}
