@@ -1,6 +1,6 @@
 //! An interactive, self-contained HTML page of a scene or a movie (docs/spec.md §2
 //! `walls-sim preview`): three.js draws the walls in ssdraw's colours (colour 0 not
-//! drawn) and the particles as spheres in their pkdgrav colours; a slider steps through
+//! drawn) and the particles as spheres in their ssdraw colours (0 black); a slider steps through
 //! the frames, a play button runs through them, the mouse orbits the camera, and hovering
 //! a wall shows its type, index and tokens.
 //!
@@ -54,8 +54,8 @@ const SEGMENTS: usize = 64;
 pub struct Particles {
     /// Each particle's radius.
     pub radii: Vec<f64>,
-    /// Each particle's ssdraw colour (0 draws it in the default light grey, as do missing
-    /// entries).
+    /// Each particle's ssdraw colour (0 black; a colour outside 0–255, or a missing
+    /// entry, draws it in light grey).
     pub colors: Vec<i64>,
     /// The time of each frame, increasing.
     pub times: Vec<f64>,
@@ -163,7 +163,8 @@ fn particles_at(p: &Particles, t: f64) -> Vec<Particle> {
                 .colors
                 .get(i)
                 .and_then(|&c| i32::try_from(c).ok())
-                .unwrap_or(0);
+                // None: light grey, as a colour outside ssdraw's palette.
+                .unwrap_or(i32::MIN);
             Some(particle)
         })
         .collect()
