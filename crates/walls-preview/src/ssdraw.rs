@@ -153,8 +153,7 @@ pub fn read(bytes: impl AsRef<[u8]>) -> Result<SsdrawView, SsdrawError> {
         let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
         if raw.len() > MAX_LINE {
             return Err(err(format!(
-                "{} bytes long; ssdraw reads at most {MAX_LINE} characters a line (it would split this one)",
-                raw.len()
+                "longer than the {MAX_LINE} characters a line ssdraw reads (it would split the line)"
             )));
         }
         let content = match raw.iter().position(|&b| b == b'!' || b == b'#') {

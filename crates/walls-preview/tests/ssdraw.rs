@@ -278,13 +278,13 @@ fn lines_beyond_ssdraws_limits_are_refused() {
     let longer = format!("\n{}", longest.replace("!", "!x"));
     assert_eq!(
         error(longer.as_bytes()),
-        "line 2: 257 bytes long; ssdraw reads at most 256 characters a line (it would split this one)"
+        "line 2: longer than the 256 characters a line ssdraw reads (it would split the line)"
     );
     // A 10 MB line is refused as soon as it is seen, and not quoted.
     let huge = vec![b'a'; 10_000_000];
     assert_eq!(
         error(&huge),
-        "line 1: 10000000 bytes long; ssdraw reads at most 256 characters a line (it would split this one)"
+        "line 1: longer than the 256 characters a line ssdraw reads (it would split the line)"
     );
     let most = "! comment\n".repeat(MAX_LINES);
     assert!(read(&most).is_ok());
