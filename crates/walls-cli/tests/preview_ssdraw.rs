@@ -222,6 +222,21 @@ fn hostile_files_end_in_clear_messages() {
         assert_eq!(stderr(&out), says, "{name}");
         assert!(out.stdout.is_empty(), "{name}");
     }
+    // A wall time offset that takes the walls beyond what a picture can draw: the
+    // message says where the time came from.
+    let dir = case("Wall time offset 1e308\n");
+    let out = walls_sim(
+        dir.path(),
+        &["preview", "walls.dat", "--ssdraw", "ssdraw.par"],
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains(
+            "nothing was drawn (each frame's walls are drawn 1e308 later than its time: the ssdraw.par's `Wall time offset`"
+        ),
+        "{}",
+        stderr(&out)
+    );
     // An empty file: every label ssdraw always reads is missing, named; the walls of
     // the command line are drawn.
     let dir = case("");

@@ -620,10 +620,17 @@ fn wall(
 /// units of the scene's size) and colour, and in each frame its position (`null`s for
 /// one the frame lacks); `null` for a movie without particles.
 fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
-    // Every particle's slot, by index, with its radius and colour where first seen.
-    let mut seen: BTreeMap<i32, (f64, i32)> = BTreeMap::new();
-    for p in frames.iter().flat_map(|f| &f.particles) {
-        seen.entry(p.index).or_insert((p.radius, p.color));
+    // Every particle's slot, by index, with its radius and colour where first seen (a
+    // stuck particle's, its wall's there).
+    let mut seen: BTreeMap<i32, (f64, Option<String>)> = BTreeMap::new();
+    for f in frames {
+        let wall_colour = |w: usize| f.walls.iter().find(|m| m.wall == w).map(|m| m.color);
+        for p in &f.particles {
+            seen.entry(p.index).or_insert_with(|| {
+                let colour = palette::particle(i64::from(p.color), wall_colour);
+                (p.radius, colour.and_then(palette::hex))
+            });
+        }
     }
     if seen.is_empty() {
         s.push_str("null");
@@ -637,11 +644,9 @@ fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
     s.push_str(",\"radii\":");
     nums(s, seen.values().map(|(r, _)| r.abs() / size));
     s.push_str(",\"colors\":");
-    array(s, seen.values(), |s, (_, color)| {
-        match palette::hex(i64::from(*color)) {
-            Some(hex) => string(s, &hex),
-            None => s.push_str("null"),
-        }
+    array(s, seen.values(), |s, (_, color)| match color {
+        Some(hex) => string(s, hex),
+        None => s.push_str("null"),
     });
     s.push_str(",\"positions\":");
     let mut at: Vec<Option<Vec3>> = vec![None; seen.len()];

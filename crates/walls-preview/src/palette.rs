@@ -2,7 +2,8 @@
 //! for particles and walls: 0 black, 1 white, 2 red, 3 green, 4 blue, 5 yellow, 6
 //! magenta, 7 cyan, 8 gold, 9 pink, 10 orange, 11 khaki, 12 violet, 13 maroon, 14 aqua,
 //! 15 navy ([`NAMED`] holds their bytes); 16–255 greys of level ⌊255·(c − 16)/239⌋. Walls
-//! of colour 0 are not drawn ([`wall`]); particles of colour 0 are drawn black.
+//! of colour 0 are not drawn ([`wall`]); particles of colour 0 are drawn black, and a
+//! particle of colour −1 − w (stuck to wall w) in wall w's colour ([`particle`]).
 
 /// The names of colours 0–15, as the POV-Ray scenes' `walls.inc` declares them
 /// (`Ssdraw` and the name: `SsdrawGold`).
@@ -54,6 +55,23 @@ pub fn rgb(index: i64) -> Option<[f64; 3]> {
 /// wall) and outside 0–255.
 pub fn wall(index: i64) -> Option<[f64; 3]> {
     rgb(index).filter(|_| index != 0)
+}
+
+/// The colour a particle of colour `color` is drawn in, as an index of the palette: its
+/// own for 0–255; for −1 − w (a particle stuck to wall w), wall w's, which
+/// `wall_colour` gives (0 too: the particle is drawn black); `None` for anything else
+/// (ssdraw refuses it), a wall `wall_colour` does not know included.
+pub fn particle(color: i64, wall_colour: impl Fn(usize) -> Option<i64>) -> Option<i64> {
+    let own = |c: i64| (0..=255).contains(&c).then_some(c);
+    match color {
+        0..=255 => Some(color),
+        ..0 => {
+            // −1 − color is 0 to i64::MAX: no overflow.
+            let wall = usize::try_from(-1 - color).ok()?;
+            own(wall_colour(wall)?)
+        }
+        _ => None,
+    }
 }
 
 /// The colour `index` as a CSS hex colour (`#rrggbb`), or `None` outside 0–255.

@@ -10,7 +10,8 @@
 //!   declares for them (`SsdrawBlack` … `SsdrawNavy`, ssdraw's values, not those of
 //!   POV-Ray's `colors.inc`), 16–255 greys `rgb <l, l, l>` with l = ⌊255·(c − 16)/239⌋/255;
 //!   walls of colour 0 are not drawn; a wall's transparency is its `transmit`;
-//! - particles are spheres in their colour (0 black, as ssdraw draws them);
+//! - particles are spheres in their colour (0 black, as ssdraw draws them; −1 − w, a
+//!   particle stuck to wall w, in the wall's colour; any other colour not drawn);
 //! - a camera looking at the box around the walls and particles from a [`View`]'s
 //!   direction, a light over its shoulder, a dim one at the camera, and a background.
 //! - like ssdraw's "Renormalize?", every coordinate written as (p − centre)/size of
@@ -134,7 +135,7 @@ fn still(
     let walls = decode(scene);
     let drawn_particles: Vec<Particle> = particles
         .iter()
-        .filter(|p| drawn(p.color.into()))
+        .filter(|p| particle_colour(p, &walls).is_some())
         .cloned()
         .collect();
     let bounds = scene_bounds(&walls, &drawn_particles);
@@ -261,7 +262,8 @@ fn write_shapes(
         writeln!(out, "\n// Particles")?;
     }
     for p in particles {
-        if let Some(colour) = colour(p.color.into()).filter(|_| p.radius > 0.0) {
+        let index = particle_colour(p, walls);
+        if let Some(colour) = index.and_then(colour).filter(|_| p.radius > 0.0) {
             writeln!(
                 out,
                 "sphere {{ {}, {} ParticleStyle({colour}) }}",
@@ -273,10 +275,12 @@ fn write_shapes(
     Ok(())
 }
 
-/// Whether a particle of colour `color` is drawn: 0–255 (0 black), as ssdraw's palette
-/// has it.
-fn drawn(color: i64) -> bool {
-    palette::rgb(color).is_some()
+/// The palette index particle `p` is drawn in (a stuck particle's, its wall's among
+/// `walls`); `None`: not drawn (a colour ssdraw refuses).
+fn particle_colour(p: &Particle, walls: &[walls_geometry::Wall]) -> Option<i64> {
+    let wall_colour =
+        |w: usize| (walls.iter().find(|wall| wall.index == w)).map(|wall| wall.appearance.color);
+    palette::particle(p.color.into(), wall_colour)
 }
 
 /// The POV-Ray colour of ssdraw's colour `index`: the name `walls.inc` declares for

@@ -237,6 +237,22 @@ pub fn read(bytes: impl AsRef<[u8]>) -> Result<SsdrawView, SsdrawError> {
             _ => view.unused.push((line, label)),
         }
     }
+    // A camera at the point it looks at looks nowhere (POV-Ray refuses such a scene).
+    if let (Some(camera), Some(look_at)) = (view.camera, view.look_at)
+        && camera == look_at
+    {
+        let at = |label: &str| LABELS.iter().position(|(l, _)| *l == label);
+        let line = at("Look at/view direction")
+            .and_then(|i| found[i])
+            .unwrap_or(0);
+        let camera_line = at("Camera position").and_then(|i| found[i]).unwrap_or(0);
+        return Err(SsdrawError {
+            line,
+            message: format!(
+                "`Look at/view direction` is `Camera position` (line {camera_line}): a camera at the point it looks at looks nowhere"
+            ),
+        });
+    }
     let needed = |need: Needed| match need {
         Needed::Always => true,
         Needed::PovRay => shape == Some(POV_RAY_SHAPE),

@@ -140,6 +140,24 @@ fn the_palette_is_ssdraws() {
 }
 
 #[test]
+fn a_stuck_particle_takes_its_walls_colour() {
+    // Colour −1 − w: wall w's colour (0 too, drawn black); any other colour outside
+    // 0–255, or a wall there is not, has none.
+    let walls = [0, 8, 300];
+    let wall_colour = |w: usize| walls.get(w).copied();
+    let particle = |c| palette::particle(c, wall_colour);
+    assert_eq!(particle(0), Some(0));
+    assert_eq!(particle(255), Some(255));
+    assert_eq!(particle(-1), Some(0));
+    assert_eq!(particle(-2), Some(8));
+    assert_eq!(particle(-3), None, "wall 2's colour is outside the palette");
+    assert_eq!(particle(-4), None, "there is no wall 3");
+    assert_eq!(particle(256), None);
+    assert_eq!(particle(666), None);
+    assert_eq!(particle(i64::MIN), None);
+}
+
+#[test]
 fn a_plane_is_cut_to_the_scenes_box() {
     // A floor through an upright disk of radius 1 centred at height 0.5: the box is y in
     // [−1, 1], z in [−0.5, 1.5] and x a hundredth of that around 0; the floor is the

@@ -257,6 +257,28 @@ fn colours_follow_ssdraw() {
 }
 
 #[test]
+fn a_stuck_particle_is_drawn_in_its_walls_colour() {
+    // Colour −1 − w is wall w's colour (ssdraw's palette, §16); a wall that is not there
+    // or a colour above 255 leaves the particle out.
+    let s = scene(
+        "wall type disk\n  radius 1\n  color 0\n\
+         wall type disk\n  radius 1\n  color 8\n",
+    );
+    let t = text(
+        &s,
+        &[
+            particle(0.0, 0.0, 1.0, 0.1, -2),
+            particle(0.0, 0.0, 2.0, 0.1, -1),
+            particle(0.0, 0.0, 3.0, 0.1, -3),
+            particle(0.0, 0.0, 4.0, 0.1, 300),
+        ],
+    );
+    assert!(t.contains("ParticleStyle(SsdrawGold)"), "{t}");
+    assert!(t.contains("ParticleStyle(SsdrawBlack)"), "{t}");
+    assert_eq!(t.matches("ParticleStyle(").count(), 2, "{t}");
+}
+
+#[test]
 fn walls_inc_declares_ssdraws_palette() {
     // Each of colours 0–15 is declared once, as `rgb <r, g, b> / 255` with ssdraw's
     // bytes (gold 255 215 0, not colors.inc's 0.8 0.498 0.196), under the name the

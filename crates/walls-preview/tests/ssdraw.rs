@@ -262,6 +262,10 @@ fn values_the_preview_cannot_read_are_refused_with_their_line() {
             "line 1: `Wall data file` names a file with the control character \\u{7}: `a\\u{7}b.walls`",
         ),
         (
+            b"Look at/view direction 1 2 3\nCamera position 1 2 3",
+            "line 1: `Look at/view direction` is `Camera position` (line 2): a camera at the point it looks at looks nowhere",
+        ),
+        (
             b"Wall data file w\xffalls",
             "line 1: `Wall data file`'s value is not UTF-8 text",
         ),

@@ -188,7 +188,12 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
-    drawable(&movie, &file, &checked)?;
+    drawable(&movie, &file, &checked).map_err(|e| match wall_offset {
+        0.0 => e,
+        offset => format!(
+            "{e} (each frame's walls are drawn {offset:e} later than its time: the ssdraw.par's `Wall time offset`, 0 standing for the walls file's `time`)"
+        ),
+    })?;
     // Every input, so that no output replaces one (`walls.inc` named as the walls file).
     let mut outputs = walls_output::Outputs::new(walls_output::Tool::PREVIEW, args.force);
     outputs.reads(&file);
