@@ -54,8 +54,8 @@ const SEGMENTS: usize = 64;
 pub struct Particles {
     /// Each particle's radius.
     pub radii: Vec<f64>,
-    /// Each particle's ssdraw colour (0 black; a colour outside 0–255, or a missing
-    /// entry, draws it in light grey).
+    /// Each particle's ssdraw colour (0 black; −1 − w, stuck to wall w, the wall's; any
+    /// other colour outside 0–255, or a missing entry, draws it in light grey).
     pub colors: Vec<i64>,
     /// The time of each frame, increasing.
     pub times: Vec<f64>,
