@@ -231,7 +231,8 @@ pub struct Movie {
 
 /// The frames of a movie of `scene` with `segments` around round shapes: one per
 /// snapshot, sorted by time (a snapshot without one at `t0`), every wall where its
-/// motion has it `wall_offset` later (ssdraw's `Wall time offset`, usually 0), in one
+/// motion has it `wall_offset` later (ssdraw's `Wall time offset`, or the walls file's
+/// own `time` that its 0 stands for; 0 without an ssdraw.par), in one
 /// box around all the walls and particles of the movie;
 /// reactive walls placed from `viz` by step (a frame without a step: the last line).
 pub fn frames(

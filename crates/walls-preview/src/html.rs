@@ -1,6 +1,6 @@
 //! An interactive, self-contained HTML page of a scene or a movie (docs/spec.md §2
 //! `walls-sim preview`): three.js draws the walls in ssdraw's colours (colour 0 not
-//! drawn) and the particles as spheres in their pkdgrav colours; a slider steps through
+//! drawn) and the particles as spheres in their ssdraw colours (0 black); a slider steps through
 //! the frames, a play button runs through them, the mouse orbits the camera, and hovering
 //! a wall shows its type, index and tokens.
 //!
@@ -54,8 +54,8 @@ const SEGMENTS: usize = 64;
 pub struct Particles {
     /// Each particle's radius.
     pub radii: Vec<f64>,
-    /// Each particle's ssdraw colour (0 draws it in the default light grey, as do missing
-    /// entries).
+    /// Each particle's ssdraw colour (0 black; −1 − w, stuck to wall w, the wall's; any
+    /// other colour outside 0–255, or a missing entry, draws it in light grey).
     pub colors: Vec<i64>,
     /// The time of each frame, increasing.
     pub times: Vec<f64>,
@@ -163,7 +163,8 @@ fn particles_at(p: &Particles, t: f64) -> Vec<Particle> {
                 .colors
                 .get(i)
                 .and_then(|&c| i32::try_from(c).ok())
-                .unwrap_or(0);
+                // None: light grey, as a colour outside ssdraw's palette.
+                .unwrap_or(i32::MIN);
             Some(particle)
         })
         .collect()
@@ -619,10 +620,17 @@ fn wall(
 /// units of the scene's size) and colour, and in each frame its position (`null`s for
 /// one the frame lacks); `null` for a movie without particles.
 fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
-    // Every particle's slot, by index, with its radius and colour where first seen.
-    let mut seen: BTreeMap<i32, (f64, i32)> = BTreeMap::new();
-    for p in frames.iter().flat_map(|f| &f.particles) {
-        seen.entry(p.index).or_insert((p.radius, p.color));
+    // Every particle's slot, by index, with its radius and colour where first seen (a
+    // stuck particle's, its wall's there).
+    let mut seen: BTreeMap<i32, (f64, Option<String>)> = BTreeMap::new();
+    for f in frames {
+        let wall_colour = |w: usize| f.walls.iter().find(|m| m.wall == w).map(|m| m.color);
+        for p in &f.particles {
+            seen.entry(p.index).or_insert_with(|| {
+                let colour = palette::particle(i64::from(p.color), wall_colour);
+                (p.radius, colour.and_then(palette::hex))
+            });
+        }
     }
     if seen.is_empty() {
         s.push_str("null");
@@ -636,11 +644,9 @@ fn particles(s: &mut String, frames: &[MovieFrame], centre: &Vec3, size: f64) {
     s.push_str(",\"radii\":");
     nums(s, seen.values().map(|(r, _)| r.abs() / size));
     s.push_str(",\"colors\":");
-    array(s, seen.values(), |s, (_, color)| {
-        match palette::hex(i64::from(*color)) {
-            Some(hex) => string(s, &hex),
-            None => s.push_str("null"),
-        }
+    array(s, seen.values(), |s, (_, color)| match color {
+        Some(hex) => string(s, hex),
+        None => s.push_str("null"),
     });
     s.push_str(",\"positions\":");
     let mut at: Vec<Option<Vec3>> = vec![None; seen.len()];

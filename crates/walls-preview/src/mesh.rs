@@ -77,7 +77,7 @@ pub fn wall_meshes_in(
                 wall: w,
                 wall_type: wall.shape.wall_type(),
                 color,
-                rgb: palette::rgb(color),
+                rgb: palette::wall(color),
                 opacity: (1.0 - wall.appearance.transparency).clamp(0.0, 1.0),
                 origin,
                 turn: nalgebra::Rotation3::identity(),

@@ -6,9 +6,12 @@
 //!   cylinder as an open `cone` from R at −length/2 to R(1 − taper) at +length/2, an
 //!   infinite cylinder as an open `cylinder` twice the scene's size long, a shell as a
 //!   `sphere` minus a slightly smaller one minus the cap within `open-angle` of its axis;
-//! - colour 0 is not drawn, 1–15 are the names of POV-Ray's `colors.inc`, 16–255 greys
-//!   `rgb <l, l, l>` with l = (c − 16)/239; a wall's transparency is its `transmit`;
-//! - particles are spheres in their colour (0 not drawn);
+//! - ssdraw's palette ([`crate::palette`]): colours 0–15 by the names `walls.inc`
+//!   declares for them (`SsdrawBlack` … `SsdrawNavy`, ssdraw's values, not those of
+//!   POV-Ray's `colors.inc`), 16–255 greys `rgb <l, l, l>` with l = ⌊255·(c − 16)/239⌋/255;
+//!   walls of colour 0 are not drawn; a wall's transparency is its `transmit`;
+//! - particles are spheres in their colour (0 black, as ssdraw draws them; −1 − w, a
+//!   particle stuck to wall w, in the wall's colour; any other colour not drawn);
 //! - a camera looking at the box around the walls and particles from a [`View`]'s
 //!   direction, a light over its shoulder, a dim one at the camera, and a background.
 //! - like ssdraw's "Renormalize?", every coordinate written as (p − centre)/size of
@@ -132,7 +135,7 @@ fn still(
     let walls = decode(scene);
     let drawn_particles: Vec<Particle> = particles
         .iter()
-        .filter(|p| drawn(p.color.into()))
+        .filter(|p| particle_colour(p, &walls).is_some())
         .cloned()
         .collect();
     let bounds = scene_bounds(&walls, &drawn_particles);
@@ -242,7 +245,7 @@ fn write_shapes(
     for (i, (wall, shape)) in walls.iter().zip(&shapes).enumerate() {
         let color = wall.appearance.color;
         let kind = wall.shape.wall_type().name();
-        let Some(colour) = colour(color) else {
+        let Some(colour) = colour(color).filter(|_| color != 0) else {
             writeln!(out, "// wall {i}: {kind}, colour {color}: not drawn")?;
             continue;
         };
@@ -259,7 +262,8 @@ fn write_shapes(
         writeln!(out, "\n// Particles")?;
     }
     for p in particles {
-        if let Some(colour) = colour(p.color.into()).filter(|_| p.radius > 0.0) {
+        let index = particle_colour(p, walls);
+        if let Some(colour) = index.and_then(colour).filter(|_| p.radius > 0.0) {
             writeln!(
                 out,
                 "sphere {{ {}, {} ParticleStyle({colour}) }}",
@@ -271,15 +275,20 @@ fn write_shapes(
     Ok(())
 }
 
-fn drawn(color: i64) -> bool {
-    palette::rgb(color).is_some()
+/// The palette index particle `p` is drawn in (a stuck particle's, its wall's among
+/// `walls`); `None`: not drawn (a colour ssdraw refuses).
+fn particle_colour(p: &Particle, walls: &[walls_geometry::Wall]) -> Option<i64> {
+    let wall_colour =
+        |w: usize| (walls.iter().find(|wall| wall.index == w)).map(|wall| wall.appearance.color);
+    palette::particle(p.color.into(), wall_colour)
 }
 
-/// The POV-Ray colour of ssdraw's colour `index`: a `colors.inc` name for 1–15, a grey
-/// `rgb <l, l, l>` for 16–255; `None` for 0 (not drawn) and outside 0–255.
+/// The POV-Ray colour of ssdraw's colour `index`: the name `walls.inc` declares for
+/// 0–15 (`SsdrawGold`), a grey `rgb <l, l, l>` for 16–255; `None` outside 0–255. (A
+/// wall of colour 0 is not drawn; a particle of colour 0 is, black.)
 pub fn colour(index: i64) -> Option<String> {
     match index {
-        1..=15 => Some(palette::NAMES[index as usize - 1].to_string()),
+        0..=15 => Some(format!("Ssdraw{}", palette::NAMES[index as usize])),
         16..=255 => {
             let [l, _, _] = palette::rgb(index)?;
             let l = num(l);
@@ -356,7 +365,7 @@ fn camera(out: &mut impl Write, centre: Vec3, radius: f64, view: &View) -> io::R
         num(angle),
         vec(&centre)
     )?;
-    writeln!(out, "light_source {{ {} color White }}", vec(&key))?;
+    writeln!(out, "light_source {{ {} color rgb <1, 1, 1> }}", vec(&key))?;
     writeln!(
         out,
         "light_source {{ {} color rgb <0.25, 0.25, 0.25> shadowless }}",

@@ -1,56 +1,122 @@
-//! ssdraw's view, read from an `ssdraw.par`, so that a pkdgrav user's existing camera
-//! carries over to `walls-sim preview --ssdraw ssdraw.par` (docs/preview.md, "ssdraw's
-//! view").
+//! ssdraw's parameter file, `ssdraw.par`, read as ssdraw reads it
+//! (docs/pkdgrav-physics.md §16), so that a pkdgrav user's camera carries over to
+//! `walls-sim preview --ssdraw ssdraw.par` (docs/preview.md, "ssdraw's view").
 //!
-//! ssdraw's parameter file is a list of labelled values, one a line: the label in
-//! words (`Camera position`, `Wall time offset`), then its values, with an optional `=`
-//! or `:` between them and `#` starting a comment. The labels read are:
+//! A line is a label at its start, then the value: `Camera position        0 0 10`, no
+//! `=` or `:`. `!` or `#` cuts the rest of a line. Labels are exact, case-sensitive
+//! prefixes of the line ([`LABELS`]), and the first line a label starts is the one read;
+//! lines that start with no label, or with a label an earlier line started, are not read
+//! by ssdraw. The preview uses `Camera position`, `Look at/view direction`, `Sky vector`,
+//! `Wall data file`, `Wall time offset` and `Aspect ratio` ([`SsdrawView`]), and reads
+//! `Particle shape` (whether ssdraw writes POV-Ray, and so which labels it needs),
+//! `Camera option` and `View option` (told back as not followed: §16 gives them no
+//! meaning). Everything else is told back as data ([`SsdrawView::notes`], `unused`,
+//! `missing`), never dropped silently.
 //!
-//! | label | values | what the preview does |
-//! |---|---|---|
-//! | `Camera position` | x y z | the camera is there |
-//! | `Camera look-at` (or `Look-at point`) | x y z | and looks at this point |
-//! | `Camera up` | x y z | the picture's up, unless `Camera sky` is given |
-//! | `Camera sky` | x y z | the picture's up (POV-Ray's `sky`) |
-//! | `Wall time offset` | t | walls are drawn at the frame's time + t |
-//! | `Wall data file` | name | the walls file, when the command line names none |
-//! | `Aspect ratio` | w/h | the picture's width over its height |
-//! | `Background colour` | r g b (0–1) | the background |
-//! | `Colour N` | r g b (0–1) | colour index N (0–255) is drawn in r g b |
-//!
-//! `colour` may be spelt `color`; labels are matched without regard to case or
-//! spacing. Every other line is reported back with its number as not used: the preview
-//! draws what it can and says what it left out, never silently.
+//! Where ssdraw would go on regardless, the preview refuses with the line's number
+//! ([`SsdrawError`]): a line over [`MAX_LINE`] bytes or a file over [`MAX_LINES`] lines
+//! (ssdraw reads no more), and a value of a label the preview reads that does not read
+//! whole (ssdraw reads numbers without checks: `1e400` as infinity, `1e-400` as 0,
+//! `abc` as 0; the tools' one rule for numbers, [`walls_keywords::number::read`],
+//! refuses them). A label ssdraw needs and the file lacks is fatal to ssdraw; the
+//! preview lists it in [`SsdrawView::missing`] and draws all the same.
 
 use nalgebra::Vector3;
-use std::collections::BTreeMap;
 
 type Vec3 = Vector3<f64>;
 
-/// What an `ssdraw.par` sets for the picture; `None` where it is silent.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct SsdrawView {
-    /// Where the camera is.
-    pub camera: Option<Vec3>,
-    /// The point it looks at.
-    pub look_at: Option<Vec3>,
-    /// The picture's up (`Camera sky`, else `Camera up`).
-    pub up: Option<Vec3>,
-    /// Added to each frame's time where the walls are drawn.
-    pub wall_time_offset: Option<f64>,
-    /// The walls file it names.
-    pub walls_file: Option<String>,
-    /// The picture's width over its height.
-    pub aspect: Option<f64>,
-    /// The background's red, green and blue.
-    pub background: Option<[f64; 3]>,
-    /// Colour indices redefined, with their red, green and blue.
-    pub colours: BTreeMap<u8, [f64; 3]>,
-    /// The lines not used, with their numbers (from 1) and labels.
-    pub unused: Vec<(usize, String)>,
+/// The most bytes (C's characters) a line may have, its line ending left out.
+pub const MAX_LINE: usize = 256;
+
+/// The most lines a file may have.
+pub const MAX_LINES: usize = 1000;
+
+/// When ssdraw reads a label: always, only when it writes POV-Ray (`Particle shape` 2),
+/// or only when a walls file is named.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Needed {
+    /// Every run.
+    Always,
+    /// With POV-Ray output.
+    PovRay,
+    /// When `Wall data file` names a file.
+    WithWalls,
 }
 
-/// An `ssdraw.par` line that names a label the preview reads with values it cannot.
+/// Every label ssdraw reads, in the order §16 lists them, with when it needs it.
+pub const LABELS: [(&str, Needed); 31] = [
+    ("Length unit", Needed::Always),
+    ("Time unit", Needed::Always),
+    ("Frame size", Needed::Always),
+    ("Light source option", Needed::Always),
+    ("Light source position", Needed::Always),
+    ("Light source intensity", Needed::Always),
+    ("Camera option", Needed::Always),
+    ("Camera position", Needed::Always),
+    ("View option", Needed::Always),
+    ("Look at/view direction", Needed::Always),
+    ("Focus distance", Needed::Always),
+    ("Sky vector", Needed::Always),
+    ("Starting view size", Needed::Always),
+    ("View scaling criterion", Needed::Always),
+    ("Scale length by radius?", Needed::Always),
+    ("View target zoom factor", Needed::Always),
+    ("Particle shape", Needed::Always),
+    ("Particle radius scaling", Needed::Always),
+    ("Color override", Needed::Always),
+    ("Draw color first", Needed::Always),
+    ("Start at COM?", Needed::Always),
+    ("Inertia control", Needed::Always),
+    ("Use sliding patches?", Needed::Always),
+    ("Wall data file", Needed::Always),
+    ("Shape file", Needed::PovRay),
+    ("Renormalize?", Needed::PovRay),
+    ("Aspect ratio", Needed::PovRay),
+    ("Camera light intensity", Needed::PovRay),
+    ("Blob threshold", Needed::PovRay),
+    ("Highlight index", Needed::PovRay),
+    ("Wall time offset", Needed::WithWalls),
+];
+
+/// `Particle shape`'s value for POV-Ray output.
+const POV_RAY_SHAPE: i64 = 2;
+
+/// What an `ssdraw.par` sets for the picture (`None` where it has no line), and what of
+/// it the preview does not use.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SsdrawView {
+    /// `Camera position`: where the camera is, in the walls' coordinates.
+    pub camera: Option<Vec3>,
+    /// `Look at/view direction`, taken as the point the camera looks at.
+    pub look_at: Option<Vec3>,
+    /// `Sky vector`: the picture's up.
+    pub up: Option<Vec3>,
+    /// `Wall data file`: the walls file it names (`None` for an empty value).
+    pub walls_file: Option<String>,
+    /// `Wall time offset` as written; 0 means the walls file's own `time` (§16).
+    pub wall_time_offset: Option<f64>,
+    /// `Aspect ratio`: the picture's width over its height.
+    pub aspect: Option<f64>,
+    /// Lines read that the preview does not follow, or that ssdraw does not read, with
+    /// why ([`Note`]), in line order.
+    pub notes: Vec<Note>,
+    /// The lines of labels ssdraw reads and the preview does not use, with the label.
+    pub unused: Vec<(usize, &'static str)>,
+    /// The labels ssdraw needs for this file and it lacks (ssdraw aborts at the first),
+    /// in [`LABELS`]' order.
+    pub missing: Vec<&'static str>,
+}
+
+/// A line the preview tells back: its number (from 1) and what about it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Note {
+    /// The line's number, from 1.
+    pub line: usize,
+    /// What the preview (or ssdraw) does with it.
+    pub message: String,
+}
+
+/// A line whose value the preview cannot read, or a file ssdraw cannot read whole.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SsdrawError {
     /// The line's number, from 1.
@@ -67,145 +133,196 @@ impl std::fmt::Display for SsdrawError {
 
 impl std::error::Error for SsdrawError {}
 
-/// The label's canonical form: lower case, words separated by one space, `colour`
-/// spelt `color`.
-fn canonical(label: &str) -> String {
-    label
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ")
-        .to_ascii_lowercase()
-        .replace("colour", "color")
-}
-
-/// Reads an `ssdraw.par` (see the module documentation).
-pub fn read(text: &str) -> Result<SsdrawView, SsdrawError> {
+/// Reads an `ssdraw.par`'s bytes (see the module documentation).
+pub fn read(bytes: impl AsRef<[u8]>) -> Result<SsdrawView, SsdrawError> {
+    let bytes = bytes.as_ref();
     let mut view = SsdrawView::default();
-    let mut sky = None;
-    for (k, raw) in text.lines().enumerate() {
+    // Where each label was found first, by its place in LABELS.
+    let mut found: [Option<usize>; LABELS.len()] = [None; LABELS.len()];
+    let mut shape = None;
+    let body = bytes.strip_suffix(b"\n").unwrap_or(bytes);
+    let lines = (!bytes.is_empty()).then(|| body.split(|&b| b == b'\n'));
+    for (k, raw) in lines.into_iter().flatten().enumerate() {
         let line = k + 1;
-        let content = raw.split('#').next().unwrap_or("").trim();
-        if content.is_empty() {
+        let err = |message: String| SsdrawError { line, message };
+        if line > MAX_LINES {
+            return Err(err(format!(
+                "ssdraw reads at most {MAX_LINES} lines; this file has more"
+            )));
+        }
+        let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
+        if raw.len() > MAX_LINE {
+            return Err(err(format!(
+                "longer than the {MAX_LINE} characters a line ssdraw reads (it would split the line)"
+            )));
+        }
+        let content = match raw.iter().position(|&b| b == b'!' || b == b'#') {
+            Some(cut) => &raw[..cut],
+            None => raw,
+        };
+        if content.iter().all(u8::is_ascii_whitespace) {
             continue;
         }
-        let (label, values) = split(content);
-        let name = canonical(label);
-        let err = |message: String| SsdrawError { line, message };
-        let numbers = |n: usize| -> Result<Vec<f64>, SsdrawError> {
-            let words: Vec<&str> = values.split_whitespace().collect();
-            // The tools' one rule for numbers: not finite, overflow, underflow refused.
-            let parsed: Option<Vec<f64>> = (words.iter())
-                .map(|w| walls_keywords::number::read(w).ok())
-                .collect();
-            match parsed {
-                Some(v) if v.len() == n => Ok(v),
-                _ => Err(err(format!(
-                    "`{label}` takes {n} number{}, not `{values}`",
-                    if n == 1 { "" } else { "s" }
-                ))),
-            }
+        let Some(i) = LABELS
+            .iter()
+            .position(|(label, _)| content.starts_with(label.as_bytes()))
+        else {
+            view.notes.push(Note {
+                line,
+                message: not_a_label(content),
+            });
+            continue;
         };
-        let vector = || numbers(3).map(|v| Vec3::new(v[0], v[1], v[2]));
-        match name.as_str() {
-            "camera position" => view.camera = Some(vector()?),
-            "camera look-at" | "look-at point" => view.look_at = Some(vector()?),
-            "camera up" => view.up = Some(vector()?),
-            "camera sky" => sky = Some(vector()?),
-            "background color" => view.background = Some(rgb(&numbers(3)?).map_err(err)?),
-            "wall time offset" => view.wall_time_offset = Some(numbers(1)?[0]),
-            "aspect ratio" => {
-                let a = numbers(1)?[0];
+        let label = LABELS[i].0;
+        if let Some(first) = found[i] {
+            view.notes.push(Note {
+                line,
+                message: format!(
+                    "`{label}` again: ssdraw reads line {first}'s (the first), and so does the preview; this line is not read"
+                ),
+            });
+            continue;
+        }
+        found[i] = Some(line);
+        let value = std::str::from_utf8(&content[label.len()..])
+            .map_err(|_| err(format!("`{label}`'s value is not UTF-8 text")))?
+            .trim();
+        let vector = || numbers::<3>(label, value).map(Vec3::from).map_err(err);
+        match label {
+            "Camera position" => view.camera = Some(vector()?),
+            "Look at/view direction" => view.look_at = Some(vector()?),
+            "Sky vector" => view.up = Some(vector()?),
+            "Wall time offset" => view.wall_time_offset = Some(numbers::<1>(label, value).map_err(err)?[0]),
+            "Aspect ratio" => {
+                let [a] = numbers::<1>(label, value).map_err(err)?;
                 if a <= 0.0 {
                     return Err(err(format!("`{label}` must be above 0, not {a}")));
                 }
                 view.aspect = Some(a);
             }
-            "wall data file" => {
-                if values.is_empty() {
-                    return Err(err(format!("`{label}` names no file")));
+            "Wall data file" => {
+                if let Some(c) = value.chars().find(|c| c.is_control()) {
+                    return Err(err(format!(
+                        "`{label}` names a file with the control character {}: `{}`",
+                        c.escape_default(),
+                        shown(value)
+                    )));
                 }
-                view.walls_file = Some(values.to_string());
+                view.walls_file = (!value.is_empty()).then(|| value.to_string());
             }
-            _ => match colour_index(&name) {
-                Some(index) => {
-                    let index = index.map_err(err)?;
-                    let rgb = rgb(&numbers(3)?).map_err(err)?;
-                    view.colours.insert(index, rgb);
-                }
-                None => view.unused.push((line, label.to_string())),
-            },
+            "Particle shape" => {
+                let whole = value.parse::<i64>().map_err(|_| {
+                    err(format!(
+                        "`{label}` takes a whole number (0 point, 1 solid sphere, 2 POV-Ray), not `{}`",
+                        shown(value)
+                    ))
+                })?;
+                shape = Some(whole);
+                view.unused.push((line, label));
+            }
+            "Camera option" => view.notes.push(Note {
+                line,
+                message: format!(
+                    "`{label}` `{}` is read but not followed: the preview takes `Camera position` in the walls' own coordinates",
+                    shown(value)
+                ),
+            }),
+            "View option" => view.notes.push(Note {
+                line,
+                message: format!(
+                    "`{label}` `{}` is read but not followed: the preview takes `Look at/view direction` as the point looked at",
+                    shown(value)
+                ),
+            }),
+            _ => view.unused.push((line, label)),
         }
     }
-    if sky.is_some() {
-        view.up = sky;
+    // A camera at the point it looks at looks nowhere (POV-Ray refuses such a scene).
+    if let (Some(camera), Some(look_at)) = (view.camera, view.look_at)
+        && camera == look_at
+    {
+        let at = |label: &str| LABELS.iter().position(|(l, _)| *l == label);
+        let line = at("Look at/view direction")
+            .and_then(|i| found[i])
+            .unwrap_or(0);
+        let camera_line = at("Camera position").and_then(|i| found[i]).unwrap_or(0);
+        return Err(SsdrawError {
+            line,
+            message: format!(
+                "`Look at/view direction` is `Camera position` (line {camera_line}): a camera at the point it looks at looks nowhere"
+            ),
+        });
     }
+    let needed = |need: Needed| match need {
+        Needed::Always => true,
+        Needed::PovRay => shape == Some(POV_RAY_SHAPE),
+        Needed::WithWalls => view.walls_file.is_some(),
+    };
+    view.missing = (LABELS.iter().zip(&found))
+        .filter(|((_, need), at)| at.is_none() && needed(*need))
+        .map(|((label, _), _)| *label)
+        .collect();
     Ok(view)
 }
 
-/// The labels read without a colour index, in canonical form (lower case, single
-/// spaces, `color`); `read` matches these.
-const LABELS: [&str; 9] = [
-    "camera position",
-    "camera look-at",
-    "look-at point",
-    "camera up",
-    "camera sky",
-    "background color",
-    "wall time offset",
-    "wall data file",
-    "aspect ratio",
-];
-
-/// The label and the values of a line: split at the first `=` or `:` if it has one,
-/// else after the longest run of leading words that is a label read (`Colour N`
-/// included), else before the first word that starts like a number.
-fn split(content: &str) -> (&str, &str) {
-    if let Some(i) = content.find(['=', ':']) {
-        return (content[..i].trim(), content[i + 1..].trim());
-    }
-    let ends: Vec<usize> = content
-        .split_whitespace()
-        .map(|w| w.as_ptr() as usize - content.as_ptr() as usize + w.len())
-        .collect();
-    for &end in ends.iter().rev() {
-        if LABELS.contains(&canonical(&content[..end]).as_str()) {
-            return (content[..end].trim(), content[end..].trim());
-        }
-    }
-    if ends.len() >= 2 && canonical(&content[..ends[0]]) == "color" {
-        return (content[..ends[1]].trim(), content[ends[1]..].trim());
-    }
-    let first_number = content
-        .split_whitespace()
-        .find(|w| w.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '-' | '+' | '.')));
-    match first_number {
-        Some(w) => {
-            let i = w.as_ptr() as usize - content.as_ptr() as usize;
-            (content[..i].trim(), content[i..].trim())
-        }
-        None => (content, ""),
-    }
+/// `N` numbers: the whitespace-separated words of `value`, each read by the tools' rule
+/// (finite, neither overflowing nor underflowing), or why not.
+fn numbers<const N: usize>(label: &str, value: &str) -> Result<[f64; N], String> {
+    let takes = || {
+        format!(
+            "`{label}` takes {N} number{}, not `{}`",
+            if N == 1 { "" } else { "s" },
+            shown(value)
+        )
+    };
+    let read: Vec<f64> = (value.split_ascii_whitespace())
+        .map(|word| {
+            walls_keywords::number::read(word)
+                .map_err(|problem| format!("{}: `{}` is {problem}", takes(), shown(word)))
+        })
+        .collect::<Result<_, _>>()?;
+    read.try_into().map_err(|_| takes())
 }
 
-/// `Some` for a `color N` label: N as a colour index, or why it is not one.
-fn colour_index(name: &str) -> Option<Result<u8, String>> {
-    let rest = name.strip_prefix("color ")?;
-    Some(
-        rest.parse::<u8>()
-            .map_err(|_| format!("`{rest}` is not a colour index (0 to 255)")),
+/// What is said of a line that starts with no label: ssdraw does not read it; with the
+/// label it may have meant, when it starts with one but for case or leading blanks.
+fn not_a_label(content: &[u8]) -> String {
+    let text = String::from_utf8_lossy(content);
+    let text = text.trim();
+    let lower = text.to_lowercase();
+    let meant = LABELS
+        .iter()
+        .find(|(label, _)| lower.starts_with(&label.to_lowercase()));
+    let hint = match meant {
+        Some((label, _)) => {
+            format!(" (ssdraw's labels are exact, case-sensitive and start the line: `{label}`?)")
+        }
+        None => String::new(),
+    };
+    format!(
+        "`{}` starts with no label ssdraw reads: ssdraw ignores the line, and so does the preview{hint}",
+        shown(text)
     )
 }
 
-/// Red, green and blue from 0 to 1.
-fn rgb(v: &[f64]) -> Result<[f64; 3], String> {
-    if v.iter().all(|x| (0.0..=1.0).contains(x)) {
-        Ok([v[0], v[1], v[2]])
-    } else {
-        Err(format!(
-            "colours are red, green and blue from 0 to 1, not {} {} {}",
-            v[0], v[1], v[2]
-        ))
+/// `text` to quote in a message: control characters escaped, at most 60 characters.
+fn shown(text: &str) -> String {
+    let mut out: String = text
+        .chars()
+        .take(60)
+        .flat_map(|c| {
+            let escaped: Vec<char> = if c.is_control() {
+                c.escape_default().collect()
+            } else {
+                vec![c]
+            };
+            escaped
+        })
+        .collect();
+    if text.chars().nth(60).is_some() {
+        out.push('…');
     }
+    out
 }
 
 #[cfg(test)]
@@ -213,61 +330,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_view_carries_over() {
-        let text = "\
-# my view
-Camera position = 0 -10 5
-Camera look-at: 0 0 1
-Camera up 0 0 1
-Camera sky 0 1 0
-Wall time offset = 0.25
-Wall data file walls.dat
-Aspect ratio = 1.5
-Background colour = 0 0 0.2
-Colour 16 = 1 0.5 0
-color 3 0 1 0
-Particle shape = 2
-";
-        let view = read(text).unwrap();
-        assert_eq!(view.camera, Some(Vec3::new(0.0, -10.0, 5.0)));
-        assert_eq!(view.look_at, Some(Vec3::new(0.0, 0.0, 1.0)));
-        assert_eq!(view.up, Some(Vec3::y()), "the sky wins over up");
-        assert_eq!(view.wall_time_offset, Some(0.25));
-        assert_eq!(view.walls_file.as_deref(), Some("walls.dat"));
-        assert_eq!(view.aspect, Some(1.5));
-        assert_eq!(view.background, Some([0.0, 0.0, 0.2]));
-        assert_eq!(view.colours[&16], [1.0, 0.5, 0.0]);
-        assert_eq!(view.colours[&3], [0.0, 1.0, 0.0]);
-        assert_eq!(view.unused, [(12, "Particle shape".to_string())]);
+    fn shown_escapes_and_shortens() {
+        assert_eq!(shown("a\u{0}b\u{1b}"), "a\\u{0}b\\u{1b}");
+        assert_eq!(shown(&"x".repeat(61)), format!("{}…", "x".repeat(60)));
+        assert_eq!(shown(&"x".repeat(60)), "x".repeat(60));
     }
 
     #[test]
-    fn bad_values_name_their_line() {
-        for (text, message) in [
-            (
-                "\nCamera position = 1 2\n",
-                "line 2: `Camera position` takes 3 numbers, not `1 2`",
-            ),
-            (
-                "Colour 300 = 1 1 1",
-                "line 1: `300` is not a colour index (0 to 255)",
-            ),
-            (
-                "Background color = 2 0 0",
-                "line 1: colours are red, green and blue from 0 to 1, not 2 0 0",
-            ),
-            (
-                "Aspect ratio = -1",
-                "line 1: `Aspect ratio` must be above 0, not -1",
-            ),
-            ("Wall data file =", "line 1: `Wall data file` names no file"),
-            // A number the tools' rule refuses (1e-400 was read as 0).
-            (
-                "Camera up = 0 0 1e-400",
-                "line 1: `Camera up` takes 3 numbers, not `0 0 1e-400`",
-            ),
-        ] {
-            assert_eq!(read(text).unwrap_err().to_string(), message, "{text:?}");
+    fn no_label_is_a_prefix_of_another() {
+        // So a line starts with one label at most, and "the first match" is the first
+        // line a label starts.
+        for (a, _) in LABELS {
+            for (b, _) in LABELS {
+                assert!(a == b || !b.starts_with(a), "{a} / {b}");
+            }
         }
     }
 }

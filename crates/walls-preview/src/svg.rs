@@ -205,7 +205,11 @@ fn items(camera: &Camera, frame: &Frame) -> Vec<(f64, Item)> {
         }
     }
     for p in frame.particles {
-        let rgb = crate::palette::rgb(i64::from(p.color)).unwrap_or([0.5; 3]);
+        // ssdraw's colour, a stuck particle's its wall's; mid grey for one ssdraw refuses.
+        let wall_colour = |w: usize| frame.walls.iter().find(|m| m.wall == w).map(|m| m.color);
+        let rgb = crate::palette::particle(i64::from(p.color), wall_colour)
+            .and_then(crate::palette::rgb)
+            .unwrap_or([0.5; 3]);
         out.push((
             camera.towards.dot(&p.pos) + p.radius,
             Item::Disc {

@@ -818,3 +818,26 @@ fn a_page_of_no_frames_holds_the_picture_of_an_empty_scene() {
     );
     assert!(!page.contains("<?xml"), "the SVG's declaration is left out");
 }
+
+#[test]
+fn particles_take_ssdraws_colours() {
+    // Colour 0 black; −2, stuck to wall 1 (the blue floor), blue; −3, stuck to the
+    // plane of colour 0, black; 300 and a missing colour have none (light grey).
+    let p = Particles {
+        radii: vec![0.1; 5],
+        colors: vec![0, -2, -3, 300],
+        times: vec![0.0],
+        frames: vec![
+            (0..5)
+                .map(|i| [f64::from(i) - 2.0, 0.0, 0.0].into())
+                .collect(),
+        ],
+    };
+    let mut out = Vec::new();
+    html::write(&mut out, &scene(), Some(&p), 1.0, 2).unwrap();
+    let d = data(&String::from_utf8(out).unwrap());
+    assert_eq!(
+        d["particles"]["colors"],
+        serde_json::json!(["#000000", "#0000ff", "#000000", null, null])
+    );
+}

@@ -88,10 +88,73 @@ fn meshes_move_with_their_walls_and_take_ssdraw_colours() {
     }
     assert_eq!(a.rgb, Some([1.0, 0.0, 0.0]));
     assert!((a.opacity - 0.75).abs() < 1e-12);
-    assert_eq!(palette::rgb(0), None);
-    assert_eq!(palette::hex(16).as_deref(), Some("#000000"));
-    assert_eq!(palette::hex(255).as_deref(), Some("#ffffff"));
-    assert_eq!(palette::hex(223).as_deref(), Some("#dddddd"));
+    // A wall of colour 0 is not drawn.
+    let hidden = scene("wall type disk\n  radius 1\n  color 0\n");
+    assert_eq!(wall_meshes(&hidden, 0.0, 16)[0].rgb, None);
+}
+
+#[test]
+fn the_palette_is_ssdraws() {
+    // docs/pkdgrav-physics.md §16: the same for particles and walls.
+    for (index, bytes) in [
+        (0, [0, 0, 0]),
+        (1, [255, 255, 255]),
+        (2, [255, 0, 0]),
+        (3, [0, 255, 0]),
+        (4, [0, 0, 255]),
+        (5, [255, 255, 0]),
+        (6, [255, 0, 255]),
+        (7, [0, 255, 255]),
+        (8, [255, 215, 0]),
+        (9, [255, 192, 203]),
+        (10, [255, 165, 0]),
+        (11, [240, 230, 140]),
+        (12, [238, 130, 238]),
+        (13, [176, 48, 96]),
+        (14, [127, 255, 212]),
+        (15, [0, 0, 128]),
+        // Greys of level ⌊255·(c − 16)/239⌋.
+        (16, [0, 0, 0]),
+        (17, [1, 1, 1]),
+        (135, [126, 126, 126]),
+        (223, [220, 220, 220]),
+        (254, [253, 253, 253]),
+        (255, [255, 255, 255]),
+    ] {
+        assert_eq!(palette::bytes(index), Some(bytes), "colour {index}");
+        let [r, g, b] = bytes;
+        let hex = format!("#{r:02x}{g:02x}{b:02x}");
+        assert_eq!(palette::hex(index).as_deref(), Some(hex.as_str()));
+        let rgb = palette::rgb(index).unwrap();
+        assert_eq!(rgb, bytes.map(|x| f64::from(x) / 255.0));
+        assert_eq!(palette::css(rgb), hex);
+    }
+    // Particles of colour 0 are drawn (black); walls of colour 0 are not.
+    assert_eq!(palette::rgb(0), Some([0.0; 3]));
+    assert_eq!(palette::wall(0), None);
+    assert_eq!(palette::wall(8), palette::rgb(8));
+    for outside in [-1, 256, i64::MIN, i64::MAX] {
+        assert_eq!(palette::bytes(outside), None);
+        assert_eq!(palette::wall(outside), None);
+    }
+}
+
+#[test]
+fn a_stuck_particle_takes_its_walls_colour() {
+    // Colour −1 − w: wall w's colour (0 too, drawn black); any other colour outside
+    // 0–255, or a wall there is not, has none.
+    let walls = [0, 8, 300];
+    let wall_colour = |w: usize| walls.get(w).copied();
+    let particle = |c| palette::particle(c, wall_colour);
+    assert_eq!(particle(0), Some(0));
+    assert_eq!(particle(255), Some(255));
+    assert_eq!(particle(-1), Some(0));
+    assert_eq!(particle(-2), Some(8));
+    assert_eq!(particle(-3), None, "wall 2's colour is outside the palette");
+    assert_eq!(particle(-4), None, "there is no wall 3");
+    assert_eq!(particle(256), None);
+    assert_eq!(particle(666), None);
+    assert_eq!(particle(i64::MIN), None);
 }
 
 #[test]

@@ -227,15 +227,19 @@ fn colours_follow_ssdraw() {
             particle(0.0, 0.0, 2.0, 0.1, 15),
         ],
     );
-    assert!(t.contains("DiskStyle(Red, 0)"), "{t}");
+    assert!(t.contains("DiskStyle(SsdrawRed, 0)"), "{t}");
     assert!(t.contains("// wall 1: disk, colour 0: not drawn"), "{t}");
     assert!(t.contains("DiskStyle(rgb <1, 1, 1>, 0.25)"), "{t}");
     assert!(t.contains("DiskStyle(rgb <0, 0, 0>, 0.5)"), "{t}");
     assert_eq!(t.matches("disc {").count(), 3, "{t}");
-    assert_eq!(t.matches("ParticleStyle(").count(), 1, "{t}");
-    assert!(t.contains("ParticleStyle(Navy)"), "{t}");
+    // A particle of colour 0 is drawn, black (only walls of colour 0 are not).
+    assert_eq!(t.matches("ParticleStyle(").count(), 2, "{t}");
+    assert!(t.contains("ParticleStyle(SsdrawBlack)"), "{t}");
+    assert!(t.contains("ParticleStyle(SsdrawNavy)"), "{t}");
     assert!(t.contains("#include \"walls.inc\""), "{t}");
-    assert!(pov::INCLUDE.contains("#include \"colors.inc\""));
+    // The scene needs nothing of POV-Ray's library: ssdraw's colours are walls.inc's.
+    assert!(!pov::INCLUDE.contains("colors.inc\""));
+    assert!(!t.contains("White"), "{t}");
     for style in [
         "Plane",
         "Triangle",
@@ -250,6 +254,53 @@ fn colours_follow_ssdraw() {
             "{style}"
         );
     }
+}
+
+#[test]
+fn a_stuck_particle_is_drawn_in_its_walls_colour() {
+    // Colour −1 − w is wall w's colour (ssdraw's palette, §16); a wall that is not there
+    // or a colour above 255 leaves the particle out.
+    let s = scene(
+        "wall type disk\n  radius 1\n  color 0\n\
+         wall type disk\n  radius 1\n  color 8\n",
+    );
+    let t = text(
+        &s,
+        &[
+            particle(0.0, 0.0, 1.0, 0.1, -2),
+            particle(0.0, 0.0, 2.0, 0.1, -1),
+            particle(0.0, 0.0, 3.0, 0.1, -3),
+            particle(0.0, 0.0, 4.0, 0.1, 300),
+        ],
+    );
+    assert!(t.contains("ParticleStyle(SsdrawGold)"), "{t}");
+    assert!(t.contains("ParticleStyle(SsdrawBlack)"), "{t}");
+    assert_eq!(t.matches("ParticleStyle(").count(), 2, "{t}");
+}
+
+#[test]
+fn walls_inc_declares_ssdraws_palette() {
+    // Each of colours 0–15 is declared once, as `rgb <r, g, b> / 255` with ssdraw's
+    // bytes (gold 255 215 0, not colors.inc's 0.8 0.498 0.196), under the name the
+    // scenes use.
+    for (index, [r, g, b]) in walls_preview::palette::NAMED.iter().enumerate() {
+        let name = pov::colour(index as i64).unwrap();
+        let declared = format!("#declare {name} = rgb <{r}, {g}, {b}> / 255;");
+        assert_eq!(pov::INCLUDE.matches(&declared).count(), 1, "{declared}");
+        assert_eq!(
+            pov::INCLUDE.matches(&format!("#declare {name} ")).count(),
+            1
+        );
+    }
+    assert_eq!(pov::colour(8).as_deref(), Some("SsdrawGold"));
+    assert_eq!(pov::colour(14).as_deref(), Some("SsdrawAqua"));
+    assert_eq!(pov::colour(16).as_deref(), Some("rgb <0, 0, 0>"));
+    assert_eq!(
+        pov::colour(135).as_deref(),
+        Some("rgb <0.4941176471, 0.4941176471, 0.4941176471>")
+    );
+    assert_eq!(pov::colour(256), None);
+    assert_eq!(pov::colour(-1), None);
 }
 
 #[test]

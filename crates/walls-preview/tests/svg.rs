@@ -100,6 +100,41 @@ fn a_moving_wall_moves_between_frames_and_the_animation_has_them_all() {
     assert!(red(&first, w).1 > 100);
 }
 
+/// Particles in ssdraw's palette: colour 0 black, a stuck particle (−1 − w) in wall w's
+/// colour, a colour ssdraw refuses mid grey.
+#[test]
+fn particles_take_ssdraws_colours() {
+    let scene = scene("wall type disk\n  radius 0.5\n  color 9\n");
+    let meshes = wall_meshes(&scene, 0.0, 16);
+    let particle = |x: f64, color| walls_geometry::Particle {
+        color,
+        ..walls_geometry::Particle::at_rest(0.1, Vector3::new(x, 0.0, 1.0), 0)
+    };
+    let particles = [particle(-1.0, 0), particle(0.0, -1), particle(1.0, 256)];
+    let frames = [Frame {
+        t: 0.0,
+        walls: &meshes,
+        particles: &particles,
+    }];
+    let mut out = Vec::new();
+    let box_ = (Vector3::new(-2.0, -2.0, -1.0), Vector3::new(2.0, 2.0, 1.0));
+    let readout = Readout::new(System::Pkdgrav, &scene.units);
+    write(&mut out, &frames, &View::default(), box_, 1.0, &readout).unwrap();
+    let svg = String::from_utf8(out).unwrap();
+    let discs: Vec<&str> = svg.lines().filter(|l| l.starts_with("<circle")).collect();
+    assert_eq!(discs.len(), 3, "{svg}");
+    for fill in ["#000000", "#ffc0cb", "#808080"] {
+        assert_eq!(
+            discs
+                .iter()
+                .filter(|d| d.contains(&format!("fill=\"{fill}\"")))
+                .count(),
+            1,
+            "{fill}: {discs:?}"
+        );
+    }
+}
+
 /// The time label and the scale bar in the units asked for: seconds and centimetres for
 /// a file in centimetres read in cgs, both numbers with `auto`.
 #[test]

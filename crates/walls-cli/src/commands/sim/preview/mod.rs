@@ -23,9 +23,9 @@ pub struct PreviewArgs {
     /// --ssdraw.
     #[arg(value_name = "FILE", required_unless_present = "ssdraw")]
     pub file: Option<String>,
-    /// ssdraw's view: an ssdraw.par whose camera position, look-at, up and sky, wall
-    /// time offset, walls file, aspect ratio, background and colours the pictures take
-    /// (--view, --up and --size win over it).
+    /// ssdraw's view: an ssdraw.par (read as ssdraw reads it) whose camera position,
+    /// look-at point, sky vector, wall data file, wall time offset and aspect ratio the
+    /// pictures take (--view, --up and --size win over it).
     #[arg(long, value_name = "FILE")]
     pub ssdraw: Option<PathBuf>,
     /// Where the walls are: at this time (pkdgrav units).
@@ -171,31 +171,29 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
             })
             .collect()
     };
-    let mut movie = movie::frames(
+    // ssdraw's `Wall time offset`, 0 (or none) meaning the walls file's own `time`.
+    let wall_offset = match ssdraw.as_ref().and_then(|s| s.wall_time_offset) {
+        Some(offset) if offset != 0.0 => offset,
+        _ if ssdraw.is_some() => walls_time(&checked),
+        _ => 0.0,
+    };
+    let movie = movie::frames(
         scene,
         snapshots,
         args.time,
-        ssdraw
-            .as_ref()
-            .and_then(|s| s.wall_time_offset)
-            .unwrap_or(0.0),
+        wall_offset,
         viz.as_ref(),
         args.segments as usize,
     );
-    if let Some(s) = &ssdraw {
-        // ssdraw's colour table, for the walls.
-        for frame in &mut movie.frames {
-            for w in &mut frame.walls {
-                if let Some(rgb) = u8::try_from(w.color).ok().and_then(|c| s.colours.get(&c)) {
-                    w.rgb = Some(*rgb);
-                }
-            }
-        }
-    }
     if let Some(w) = &movie.warning {
         crate::errln!("walls-sim: warning: {w}");
     }
-    drawable(&movie, &file, &checked)?;
+    drawable(&movie, &file, &checked).map_err(|e| match wall_offset {
+        0.0 => e,
+        offset => format!(
+            "{e} (each frame's walls are drawn {offset:e} later than its time: the ssdraw.par's `Wall time offset`, 0 standing for the walls file's `time`)"
+        ),
+    })?;
     // Every input, so that no output replaces one (`walls.inc` named as the walls file).
     let mut outputs = walls_output::Outputs::new(walls_output::Tool::PREVIEW, args.force);
     outputs.reads(&file);
@@ -295,25 +293,76 @@ struct ParticlesRead {
     files: Vec<PathBuf>,
 }
 
-/// The `ssdraw.par` at `path`, its unused lines reported on standard error.
+/// The `ssdraw.par` at `path`; what of it the preview does not use, and the labels
+/// ssdraw would miss, told on standard error.
 fn read_ssdraw(path: &Path) -> Result<SsdrawView, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    let view =
-        walls_preview::ssdraw::read(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-    for (line, label) in &view.unused {
+    use std::io::Read;
+    use walls_preview::ssdraw::{MAX_LINE, MAX_LINES, read};
+    let shown = path.display();
+    // No more than a file ssdraw can read holds, and a little more, so that a device or
+    // a huge file is refused by its first line too long or too many, not read whole.
+    let most = (MAX_LINES as u64 + 1) * (MAX_LINE as u64 + 2);
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(most).read_to_end(&mut bytes))
+        .map_err(|e| format!("cannot read {shown}: {e}"))?;
+    let view = read(&bytes).map_err(|e| format!("{shown}:{}: {}", e.line, e.message))?;
+    for note in &view.notes {
         crate::errln!(
-            "walls-sim: warning: {}:{line}: `{label}` is not used by walls-sim preview",
-            path.display()
+            "walls-sim: warning: {shown}:{}: {}",
+            note.line,
+            note.message
         );
     }
-    if !view.colours.is_empty() {
+    if !view.unused.is_empty() {
+        let lines: Vec<String> = (view.unused.iter())
+            .map(|(line, label)| format!("`{label}` (line {line})"))
+            .collect();
         crate::errln!(
-            "walls-sim: note: {}: its colours are used for the walls; particles keep ssdraw's standard colours",
-            path.display()
+            "walls-sim: note: {shown}: lines ssdraw reads that walls-sim preview does not use: {}",
+            lines.join(", ")
         );
+    }
+    match &view.missing[..] {
+        [] => {}
+        [label] => crate::errln!(
+            "walls-sim: warning: {shown}: no `{label}` line: ssdraw aborts without it; walls-sim preview draws all the same"
+        ),
+        labels => {
+            let labels: Vec<String> = labels.iter().map(|l| format!("`{l}`")).collect();
+            crate::errln!(
+                "walls-sim: warning: {shown}: no lines for {}: ssdraw aborts at the first it asks for; walls-sim preview draws all the same",
+                labels.join(", ")
+            );
+        }
     }
     Ok(view)
+}
+
+/// The walls file's own `time` (the last one written, in pkdgrav units: times the
+/// `timeunit` in force there), or 0 without one: what ssdraw's `Wall time offset` 0
+/// stands for.
+fn walls_time(checked: &Checked) -> f64 {
+    use walls_keywords::Keyword;
+    let tree = &checked.parse.tree;
+    let mut unit = 1.0;
+    let mut time = 0.0;
+    for (stmt, _) in tree.statements() {
+        let keyword = tree.keyword(stmt);
+        if !matches!(keyword, Some(Keyword::Time | Keyword::TimeUnit)) {
+            continue;
+        }
+        let value = match tree.values(stmt) {
+            [v] => walls_keywords::number::read(tree.token_text(*v)).ok(),
+            _ => None,
+        };
+        match (keyword, value) {
+            (Some(Keyword::TimeUnit), Some(x)) if x > 0.0 => unit = x,
+            (Some(Keyword::Time), Some(x)) if x >= 0.0 => time = x * unit,
+            _ => {}
+        }
+    }
+    if time.is_finite() { time } else { 0.0 }
 }
 
 /// The walls file: the command line's, else the `Wall data file` of --ssdraw, taken

@@ -314,8 +314,8 @@ fn is_the_include(path: &Path) -> bool {
         && there == include
 }
 
-/// The POV-Ray view: the SVG view's direction and aspect, ssdraw's camera, background and
-/// up where `--view` and `--up` do not say otherwise.
+/// The POV-Ray view: the SVG view's direction and aspect, ssdraw's camera and sky where
+/// `--view` and `--up` do not say otherwise.
 fn pov_view(
     args: &PreviewArgs,
     ssdraw: Option<&SsdrawView>,
@@ -332,9 +332,6 @@ fn pov_view(
     walls_preview::pov::View {
         from: view.from,
         aspect: f64::from(view.width) / f64::from(view.height),
-        background: ssdraw
-            .and_then(|s| s.background)
-            .unwrap_or(default.background),
         camera,
         sky: args
             .up
@@ -352,8 +349,8 @@ fn numbered(path: &Path, k: usize, extension: &str) -> std::path::PathBuf {
 }
 
 /// The SVG view of --view, --up and --size, else of ssdraw's camera (the direction
-/// from its look-at point, or the scene's centre, to its position), up and aspect
-/// ratio, else the default.
+/// from its look-at point, or the scene's centre, to its position), sky vector and
+/// aspect ratio, else the default.
 fn svg_view(
     args: &PreviewArgs,
     ssdraw: Option<&SsdrawView>,
