@@ -339,6 +339,7 @@ impl<'t> Resolver<'t> {
             Keyword::LengthUnit => self.units.length = x,
             Keyword::MassUnit => self.units.mass = x,
             Keyword::TimeUnit => self.units.time = x,
+            Keyword::Time => self.scene.time = Some(x * self.units.time),
             _ => {}
         }
     }

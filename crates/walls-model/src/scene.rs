@@ -359,6 +359,9 @@ pub struct Scene {
     pub defaults: Vec<(Keyword, Range<usize>)>,
     /// The units in force at the end of the file.
     pub units: Units,
+    /// The file's `time` (the last one written) in pkdgrav units, times the `timeunit`
+    /// in force where it is written; `None` without one.
+    pub time: Option<f64>,
 }
 
 /// `lengthunit`, `massunit` and `timeunit` as the file set them (docs/spec.md §1): how

@@ -43,6 +43,9 @@ pub struct File<'a> {
     pub entries: Vec<Entry>,
     /// The index in `entries` of each key's last entry.
     last: HashMap<&'static str, usize>,
+    /// The keys a command line sets over the file (pkdgrav's flags win over it): their
+    /// values are not the file's to judge.
+    overridden: Vec<&'a str>,
 }
 
 impl<'a> File<'a> {
@@ -139,6 +142,7 @@ impl<'a> File<'a> {
             lines,
             entries,
             last,
+            overridden: Vec::new(),
         }
     }
 
@@ -156,6 +160,9 @@ impl<'a> File<'a> {
     /// The number pkdgrav runs with for `key`: the file's, else the default (`None` for
     /// a string, a value pkdgrav cannot read, or a key the build does not register).
     pub fn real(&self, key: &str) -> Option<f64> {
+        if self.overridden.contains(&key) {
+            return None;
+        }
         match self.given(key) {
             Some(e) => e.value.as_ref()?.real(),
             None => keys::registered(key, self.build)?.default_value(),
@@ -164,6 +171,9 @@ impl<'a> File<'a> {
 
     /// The string pkdgrav runs with for `key` (empty when the file leaves it out).
     pub fn string(&self, key: &str) -> Option<String> {
+        if self.overridden.contains(&key) {
+            return None;
+        }
         match self.given(key) {
             Some(e) => match e.value.as_ref()? {
                 Value::Str(s) => Some(s.clone()),
@@ -176,8 +186,16 @@ impl<'a> File<'a> {
 
 /// The findings for the `.par` text `text` read by a pkdgrav of `build`, sorted by place.
 pub fn check(text: &str, build: &Build) -> Vec<Diagnostic> {
+    check_overridden(text, build, &[])
+}
+
+/// [`check`], for a run whose command line sets the keys `overridden` over the file's
+/// (`walls-sim run --particles` sets `achInFile`): what the file says of them, or leaves
+/// out, is not judged.
+pub fn check_overridden(text: &str, build: &Build, overridden: &[&str]) -> Vec<Diagnostic> {
     let mut out = Vec::new();
-    let file = File::read(text, build, &mut out);
+    let mut file = File::read(text, build, &mut out);
+    file.overridden = overridden.to_vec();
     rules::duplicate_key::check(&file, &mut out);
     let stopped = rules::startup::check(&file, &mut out);
     rules::not_modelled::check(&file, &stopped, &mut out);

@@ -21,3 +21,4 @@ pub mod value;
 pub use check::check;
 pub use options::{Build, UnknownOption};
 pub use startup::KT_PER_KN;
+pub use walls_diagnostics::{Diagnostic, Severity};

@@ -335,14 +335,21 @@ impl std::fmt::Display for ConfigError {
 
 impl std::error::Error for ConfigError {}
 
-/// Reads the `.par` file that `flags` name, if any.
+/// Reads the `.par` file that `flags` name, if any, refused where the run's pkdgrav build
+/// would refuse it ([`par::read_file_for`]).
 pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
-    Ok(flags
-        .inputs
-        .par
-        .as_deref()
-        .map(par::read_file)
-        .transpose()?)
+    let Some(path) = flags.inputs.par.as_deref() else {
+        return Ok(None);
+    };
+    let build = walls_par::Build::parse(&flags.build().names())
+        .expect("the evaluator's options are pkdgrav's");
+    // The particle file named on the command line stands for the file's `achInFile`.
+    let overridden: &[&str] = if flags.inputs.particles.is_some() {
+        &["achInFile"]
+    } else {
+        &[]
+    };
+    Ok(Some(par::read_file_for(path, &build, overridden)?))
 }
 
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and

@@ -421,10 +421,17 @@ fn par_keys_of_a_build_option_the_run_lacks_are_warned_about() {
 fn the_cohesion_file_is_read_beside_the_par_file() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("coh.txt"), "1\n2\n4 5e-3\n").unwrap();
+    std::fs::write(
+        dir.path().join("ball.csv"),
+        "mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0.3,0,0,0\n",
+    )
+    .unwrap();
     let par = dir.path().join("run.par");
+    // A run directory pkdgrav's DEM build runs (its input file, the two settings every
+    // DEM run needs), with cohesion's keys.
     std::fs::write(
         &par,
-        "dKn = 1e5\ndCohesiveCoeff = 1e-3\nachCohesionFile = coh.txt\n",
+        "achInFile = ball.csv\niForceOverrideOption = 2\niCheckInterval = 0\ndKn = 1e5\ndCohesiveCoeff = 1e-3\nachCohesionFile = coh.txt\n",
     )
     .unwrap();
     let flags = Flags {

@@ -171,7 +171,7 @@ fn load_reads_the_par_file_and_its_particles() {
     let write = |name: &str, text: &str| std::fs::write(dir.path().join(name), text).unwrap();
     write(
         "run.par",
-        "achInFile = ball.csv\ndDelta = 1e-5\ndKn = 3e5\n",
+        "achInFile = ball.csv\ndDelta = 1e-5\ndKn = 3e5\niForceOverrideOption = 2\niCheckInterval = 0\n",
     );
     write(
         "ball.csv",
@@ -196,7 +196,10 @@ fn load_reads_the_par_file_and_its_particles() {
     assert_eq!(load_all(&flags, &scene(FLOOR)).unwrap().particles.len(), 2);
 
     // Errors name the file and the line.
-    write("bad.par", "dDelta = 0\n");
+    write(
+        "bad.par",
+        "dDelta = 0\niForceOverrideOption = 2\niCheckInterval = 0\n",
+    );
     flags.inputs.par = Some(path("bad.par"));
     let e = load_all(&flags, &scene(FLOOR)).unwrap_err();
     assert!(matches!(e, ConfigError::File(_)));
@@ -411,4 +414,38 @@ fn the_ss_outputs_never_take_a_folder_from_achoutname() {
         assert_eq!(got, base, "{name}");
         assert!(warning.unwrap().contains(name), "{name}");
     }
+}
+
+#[test]
+fn a_par_file_pkdgrav_refuses_is_refused_unless_the_command_line_sets_the_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let par = dir.path().join("run.par");
+    std::fs::write(
+        &par,
+        "dDelta = 1e-5\nnSteps = 10\niForceOverrideOption = 2\niCheckInterval = 0\n",
+    )
+    .unwrap();
+    let mut flags = Flags {
+        inputs: Inputs {
+            par: Some(par.to_string_lossy().into_owned()),
+            ..Inputs::default()
+        },
+        ..Flags::default()
+    };
+    // pkdgrav stops without an input file ...
+    let e = read_par(&flags).unwrap_err().to_string();
+    assert!(
+        e.contains("no input file (`achInFile`) [A11]") && e.contains("[P008]"),
+        "{e}"
+    );
+    // ... which the command line's particle file is.
+    flags.inputs.particles = Some("ball.csv".into());
+    assert!(read_par(&flags).unwrap().is_some());
+    // A line pkdgrav refuses is named, with what pkdgrav would do.
+    std::fs::write(&par, "achInFile = b.csv\ndDelta = 1e-5 ! s\n").unwrap();
+    let e = read_par(&flags).unwrap_err().to_string();
+    assert!(
+        e.contains("line 2: `!` is not a comment in a .par file"),
+        "{e}"
+    );
 }

@@ -192,7 +192,7 @@ fn unknown_and_duplicate_par_keys_are_reported() {
     );
     assert!(
         says.iter()
-            .any(|w| w.starts_with("line 3: `bWallEdgeDetect`: not a pkdgrav parameter"))
+            .any(|w| w.starts_with("line 3: `bWallEdgeDetect`: the evaluator does not model it"))
     );
 }
 

@@ -156,17 +156,17 @@ fn unknown_keys_warn_with_a_suggestion() {
             ParWarning {
                 line: Some(5),
                 key: "dKN".into(),
-                message: "not a pkdgrav parameter the evaluator knows, so it is ignored; did you mean `dKn`?".into(),
+                message: "the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it); did you mean `dKn`?".into(),
             },
             ParWarning {
                 line: Some(6),
                 key: "nFoo".into(),
-                message: "not a pkdgrav parameter the evaluator knows, so it is ignored".into(),
+                message: "the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it)".into(),
             },
             ParWarning {
                 line: Some(8),
                 key: "dzUnifGrv".into(),
-                message: "not a pkdgrav parameter the evaluator knows, so it is ignored; did you mean `dzUnifGrav`?".into(),
+                message: "the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it); did you mean `dzUnifGrav`?".into(),
             },
         ]
     );
@@ -177,7 +177,7 @@ fn unknown_keys_warn_with_a_suggestion() {
     assert_eq!(suggestion("bDoSelfGrav"), None);
     assert_eq!(
         p.warnings[0].to_string(),
-        "line 5: `dKN`: not a pkdgrav parameter the evaluator knows, so it is ignored; did you mean `dKn`?"
+        "line 5: `dKN`: the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it); did you mean `dKn`?"
     );
 }
 

@@ -63,6 +63,9 @@ pub struct InputError {
 
 impl std::fmt::Display for InputError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.at.is_empty() {
+            return f.write_str(&self.message);
+        }
         write!(f, "{}: {}", self.at, self.message)
     }
 }

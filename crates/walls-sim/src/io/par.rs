@@ -507,14 +507,16 @@ pub fn read_par(text: &str) -> Result<Params, InputError> {
             );
         }
         match use_of(key) {
+            // A key pkdgrav's build registers, but the evaluator does not model (a key
+            // no build registers is refused first: `read_file_for`).
             None => warn(
                 Some(n),
                 key,
                 match suggestion(key) {
                     Some(s) => format!(
-                        "not a pkdgrav parameter the evaluator knows, so it is ignored; did you mean `{s}`?"
+                        "the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it); did you mean `{s}`?"
                     ),
-                    None => "not a pkdgrav parameter the evaluator knows, so it is ignored".into(),
+                    None => "the evaluator does not model it, so it is ignored (pkdgrav follows it, if its build registers it)".into(),
                 },
             ),
             Some(Use::NotYet(why)) => warn(Some(n), key, why.to_string()),
@@ -713,4 +715,49 @@ pub fn read_file(path: &str) -> Result<Params, FileError> {
     let mut params = read_par(&text).map_err(|e| FileError::input(path, e))?;
     params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
     Ok(params)
+}
+
+/// Reads the pkdgrav parameter file at `path` as a pkdgrav of `build` reads it: a file
+/// that pkdgrav refuses, or stops on ([`walls_par::check`]'s errors: a syntax error, a
+/// key the build does not register, a value it stops on, at start-up or later), is an
+/// error at the first such line, with how many there are (`walls-lint` lists them all).
+/// The keys `overridden` are set on the command line: the file's word on them is not
+/// judged.
+pub fn read_file_for(
+    path: &str,
+    build: &walls_par::Build,
+    overridden: &[&str],
+) -> Result<Params, FileError> {
+    let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
+    let refused: Vec<_> = walls_par::check::check_overridden(&text, build, overridden)
+        .into_iter()
+        .filter(|d| d.severity == walls_par::Severity::Error)
+        .collect();
+    // A line's error before those of keys left out (often its consequence: a line
+    // refused leaves its key unset).
+    let first = (refused.iter())
+        .find(|d| d.span != (0..0))
+        .or(refused.first());
+    if let Some(first) = first {
+        // A key left at a default pkdgrav stops on has no line: the message names it.
+        let at = if first.span == (0..0) {
+            String::new()
+        } else {
+            format!(
+                "line {}",
+                1 + text[..first.span.start].matches('\n').count()
+            )
+        };
+        let more = match refused.len() {
+            1 => String::new(),
+            n => format!("; {} more (`walls-lint {path}` lists them)", n - 1),
+        };
+        let help = first
+            .help
+            .as_ref()
+            .map_or(String::new(), |h| format!(": {h}"));
+        let message = format!("{}{help} [{}]{more}", first.message, first.code.id);
+        return Err(FileError::input(path, error(at, message)));
+    }
+    read_file(path)
 }

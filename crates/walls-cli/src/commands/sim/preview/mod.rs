@@ -343,26 +343,7 @@ fn read_ssdraw(path: &Path) -> Result<SsdrawView, String> {
 /// `timeunit` in force there), or 0 without one: what ssdraw's `Wall time offset` 0
 /// stands for.
 fn walls_time(checked: &Checked) -> f64 {
-    use walls_keywords::Keyword;
-    let tree = &checked.parse.tree;
-    let mut unit = 1.0;
-    let mut time = 0.0;
-    for (stmt, _) in tree.statements() {
-        let keyword = tree.keyword(stmt);
-        if !matches!(keyword, Some(Keyword::Time | Keyword::TimeUnit)) {
-            continue;
-        }
-        let value = match tree.values(stmt) {
-            [v] => walls_keywords::number::read(tree.token_text(*v)).ok(),
-            _ => None,
-        };
-        match (keyword, value) {
-            (Some(Keyword::TimeUnit), Some(x)) if x > 0.0 => unit = x,
-            (Some(Keyword::Time), Some(x)) if x >= 0.0 => time = x * unit,
-            _ => {}
-        }
-    }
-    if time.is_finite() { time } else { 0.0 }
+    checked.scene.time.filter(|t| t.is_finite()).unwrap_or(0.0)
 }
 
 /// The walls file: the command line's, else the `Wall data file` of --ssdraw, taken
