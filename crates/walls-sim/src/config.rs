@@ -343,8 +343,9 @@ pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
     };
     let build = walls_par::Build::parse(&flags.build().names())
         .expect("the evaluator's options are pkdgrav's");
-    // The particle file named on the command line stands for the file's `achInFile`.
-    let overridden: &[&str] = if flags.inputs.particles.is_some() {
+    // The particle file named on the command line (or none, asked for) stands for the
+    // file's `achInFile`.
+    let overridden: &[&str] = if flags.inputs.particles.is_some() || flags.inputs.no_particles {
         &["achInFile"]
     } else {
         &[]
