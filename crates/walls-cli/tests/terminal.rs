@@ -119,11 +119,11 @@ const CASES: &[Case] = &[
     Case {
         files: &[
             ("w.walls", "wall type plane\n"),
-            ("a.par", "achWallsFile = w.walls\ndDelta = 1e-4{OSC}\n"),
+            ("a.par", "achWallsFile = w.walls\niForceOverrideOption = 2\niCheckInterval = 0\ndDelta = 1e-4{OSC}\n"),
         ],
         tool: "walls-sim",
         args: &["run", "--par", "a.par", "--no-particles"],
-        shows: "walls-sim: error: a.par: line 2: `dDelta` is `1e-4{SHOWN}`, not a number\n",
+        shows: "walls-sim: error: a.par: line 4: `dDelta` is `1e-4{SHOWN}`, not a number\n",
     },
     Case {
         files: &[

@@ -126,6 +126,16 @@ pub struct Settings {
     pub lint: Lint,
     /// The `[format]` table's options, if the file has one.
     pub format: Option<FormatOptions>,
+    /// The `[run]` table (empty when the file has none).
+    pub run: Run,
+}
+
+/// The `[run]` table: what a run directory is run by.
+#[derive(Debug, Clone, Default)]
+pub struct Run {
+    /// `pkdgrav-build`: the pkdgrav build `.par` files are checked for (its compile
+    /// options, as `--pkdgrav-build` takes them; docs/par-files.md).
+    pub pkdgrav_build: Option<walls_par::Build>,
 }
 
 /// The `[lint]` table: each value, if the file sets it.

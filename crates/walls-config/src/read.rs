@@ -10,7 +10,7 @@
 //! ([`crate::check_glob`]), and every location is found through one index of the
 //! text's lines, so that a list of any length is read in linear time.
 
-use crate::{Ignore, Lint, Location, MAX_FILE_BYTES, PerFile, Settings, SettingsError};
+use crate::{Ignore, Lint, Location, MAX_FILE_BYTES, PerFile, Run, Settings, SettingsError};
 use ignore::gitignore::GitignoreBuilder;
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -28,6 +28,14 @@ use walls_keywords::ContactModel;
 struct WallsTables {
     lint: Option<LintTable>,
     format: Option<FormatTable>,
+    run: Option<RunTable>,
+}
+
+/// The `[run]` table as written.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct RunTable {
+    pkdgrav_build: Option<Spanned<String>>,
 }
 
 /// `pyproject.toml`: only `[tool.walls]` is ours.
@@ -249,7 +257,17 @@ pub(crate) fn read(path: &Path, origin: Origin) -> Result<Option<Settings>, Sett
         Kind::Format => WallsTables {
             lint: None,
             format: Some(file.parse::<FormatTable>()?),
+            run: None,
         },
+    };
+    let run = match tables.run.and_then(|t| t.pkdgrav_build) {
+        Some(build) => Run {
+            pkdgrav_build: Some(
+                walls_par::Build::parse(build.get_ref())
+                    .map_err(|e| file.error(Some(build.span()), format!("pkdgrav-build: {e}")))?,
+            ),
+        },
+        None => Run::default(),
     };
     let lint = match tables.lint {
         Some(table) => file.lint(table)?,
@@ -263,6 +281,7 @@ pub(crate) fn read(path: &Path, origin: Origin) -> Result<Option<Settings>, Sett
         path: Some(path.to_path_buf()),
         lint,
         format,
+        run,
     }))
 }
 

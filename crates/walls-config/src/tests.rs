@@ -125,7 +125,7 @@ fn every_mistake_is_located() {
         ),
         (
             "[fmt]\n",
-            "ROOT/walls.toml:1:2: unknown field `fmt`, expected `lint` or `format`",
+            "ROOT/walls.toml:1:2: unknown field `fmt`, expected one of `lint`, `format`, `run`",
         ),
         (
             "[lint\n",
@@ -353,4 +353,31 @@ fn a_settings_file_that_is_not_utf8_is_located() {
         error(root, root),
         "ROOT/walls.toml:2:9: is not UTF-8 text (byte 0xff)"
     );
+}
+
+#[test]
+fn the_run_table_names_the_pkdgrav_build_and_an_unknown_option_is_located() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    write(
+        root,
+        "a/walls.toml",
+        "[run]\npkdgrav-build = \"USE_DEM, DEM_COHESION\"\n",
+    );
+    let s = find(&root.join("a")).unwrap();
+    assert_eq!(
+        s.run.pkdgrav_build.map(|b| b.names()),
+        Some("COLLISIONS DEM DEM_COHESION WALLS".to_string())
+    );
+    write(
+        root,
+        "b/walls.toml",
+        "[run]\npkdgrav-build = \"DEM DEM_COHESON\"\n",
+    );
+    assert_eq!(
+        error(root, &root.join("b")),
+        "ROOT/b/walls.toml:2:17: pkdgrav-build: unknown pkdgrav compile option `DEM_COHESON`, did you mean `DEM_COHESION`?"
+    );
+    write(root, "c/walls.toml", "[run]\nbuild = \"DEM\"\n");
+    assert!(error(root, &root.join("c")).contains("unknown field `build`"));
 }

@@ -68,8 +68,9 @@ pub struct LintArgs {
     #[arg(long, value_name = "DT", value_parser = positive)]
     pub dt: Option<f64>,
     /// The pkdgrav build `.par` files are checked for: its compile options, space or
-    /// comma separated, with or without `USE_` (COLLISIONS and WALLS are always on)
-    /// [default: DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT].
+    /// comma separated, with or without `USE_` (COLLISIONS and WALLS are always on;
+    /// else the settings' `[run] pkdgrav-build`) [default: DEM DEM_FIXED_BALL
+    /// DEM_ROTATION_DASHPOT].
     #[arg(long, value_name = "OPTIONS", value_parser = pkdgrav_build)]
     pub pkdgrav_build: Option<walls_par::Build>,
     /// Exit with status 1 on warnings too.
@@ -375,13 +376,11 @@ fn lint(
         min_radius: args.min_radius.or(set.min_radius),
         dt: args.dt.or(set.dt),
     };
-    let language = Language::of(
-        path,
-        options,
-        args.pkdgrav_build
-            .as_ref()
-            .unwrap_or(&walls_par::Build::default()),
-    );
+    let build = (args.pkdgrav_build.as_ref())
+        .or(settings.run.pkdgrav_build.as_ref())
+        .cloned()
+        .unwrap_or_default();
+    let language = Language::of(path, options, &build);
     let file = absolute_file(path);
     let keep = |diagnostics: &mut Vec<Diagnostic>| {
         set.filter(file.as_deref(), diagnostics);
