@@ -119,7 +119,10 @@ const CASES: &[Case] = &[
     Case {
         files: &[
             ("w.walls", "wall type plane\n"),
-            ("a.par", "achWallsFile = w.walls\niForceOverrideOption = 2\niCheckInterval = 0\ndDelta = 1e-4{OSC}\n"),
+            (
+                "a.par",
+                "achWallsFile = w.walls\niForceOverrideOption = 2\niCheckInterval = 0\ndDelta = 1e-4{OSC}\n",
+            ),
         ],
         tool: "walls-sim",
         args: &["run", "--par", "a.par", "--no-particles"],
