@@ -27,14 +27,20 @@ pub fn check_par_text(text: String, build: &Build) -> ParChecked {
     }
 }
 
-/// Checks the `.par` bytes `bytes` for `build`.
+/// Checks the `.par` bytes `bytes` for `build`. pkdgrav reads bytes, not characters: a
+/// file that is not UTF-8 (a Latin-1 comment) is checked with each such byte read as
+/// U+FFFD, and offers no fix (its text is not the file's, so it is never rewritten).
 pub fn check_par_bytes(bytes: Vec<u8>, build: &Build) -> ParChecked {
-    match walls_syntax::decode(bytes) {
+    match String::from_utf8(bytes) {
         Ok(text) => check_par_text(text, build),
-        Err((prefix, diagnostic)) => ParChecked {
-            text: prefix.into(),
-            diagnostics: vec![*diagnostic],
-        },
+        Err(e) => {
+            let text = String::from_utf8_lossy(e.as_bytes()).into_owned();
+            let mut checked = check_par_text(text, build);
+            for d in &mut checked.diagnostics {
+                d.fix = None;
+            }
+            checked
+        }
     }
 }
 

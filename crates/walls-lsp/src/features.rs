@@ -8,13 +8,13 @@
 //! (formatting, "fix all") carry one edit of about the document's size. The bounds and
 //! what each costs are in docs/editors.md ("Limits").
 
-use crate::document::Document;
+use crate::document::{Document, ParDocument};
 use crate::position::{offset, position, range};
 use std::collections::HashMap;
 use tower_lsp_server::ls_types::{self as lsp, *};
 use walls_diagnostics::Severity;
 use walls_format::FormatOptions;
-use walls_ide::{ActionKind, Analysis, CompletionKind, HighlightKind, SymbolKind as Kind};
+use walls_ide::{ActionKind, Analysis, CompletionKind, HighlightKind, Lines, SymbolKind as Kind};
 
 /// The most entries of an outline: `walls-ide` shapes it to fit (the blocks without their
 /// statements, else runs of blocks).
@@ -66,10 +66,35 @@ fn byte_range(a: &Analysis, r: Range) -> std::ops::Range<usize> {
 /// one saying how many more there are.
 pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
     let a = &doc.analysis;
-    let all = a.diagnostics();
+    shown_diagnostics(
+        uri,
+        (&a.lines, a.text()),
+        a.diagnostics(),
+        doc.settings_problem.as_ref(),
+    )
+}
+
+/// [`diagnostics`] of a `.par` document.
+pub fn par_diagnostics(uri: &Uri, doc: &ParDocument) -> Vec<lsp::Diagnostic> {
+    shown_diagnostics(
+        uri,
+        (&doc.lines, doc.text()),
+        &doc.checked.diagnostics,
+        doc.settings_problem.as_ref(),
+    )
+}
+
+/// The diagnostics `all` of the text `(lines, text)` as the client shows them, after
+/// `settings_problem`.
+fn shown_diagnostics(
+    uri: &Uri,
+    (lines, text): (&Lines, &str),
+    all: &[walls_diagnostics::Diagnostic],
+    settings_problem: Option<&lsp::Diagnostic>,
+) -> Vec<lsp::Diagnostic> {
     let shown = published(all, MAX_DIAGNOSTICS);
-    let mut out: Vec<lsp::Diagnostic> = doc.settings_problem.iter().cloned().collect();
-    out.extend(shown.iter().map(|&i| to_lsp(uri, a, &all[i])));
+    let mut out: Vec<lsp::Diagnostic> = settings_problem.into_iter().cloned().collect();
+    out.extend(shown.iter().map(|&i| to_lsp(uri, (lines, text), &all[i])));
     let left_out = all.len() - shown.len();
     if left_out > 0 {
         // At the first one left out, where the editor's list stops being whole.
@@ -77,7 +102,7 @@ pub fn diagnostics(uri: &Uri, doc: &Document) -> Vec<lsp::Diagnostic> {
             .find(|i| shown.binary_search(i).is_err())
             .map_or(0..0, |i| all[i].span.clone());
         out.push(lsp::Diagnostic {
-            range: lsp_range(a, &first),
+            range: range(lines, text, &first),
             severity: Some(DiagnosticSeverity::INFORMATION),
             source: Some("walls".into()),
             message: format!(
@@ -123,14 +148,18 @@ fn published(all: &[walls_diagnostics::Diagnostic], max: usize) -> Vec<usize> {
         .collect()
 }
 
-fn to_lsp(uri: &Uri, a: &Analysis, d: &walls_diagnostics::Diagnostic) -> lsp::Diagnostic {
+fn to_lsp(
+    uri: &Uri,
+    (lines, text): (&Lines, &str),
+    d: &walls_diagnostics::Diagnostic,
+) -> lsp::Diagnostic {
     let mut message = d.message.clone();
     if let Some(help) = &d.help {
         message.push_str("\nhelp: ");
         message.push_str(help);
     }
     lsp::Diagnostic {
-        range: lsp_range(a, &d.span),
+        range: range(lines, text, &d.span),
         severity: Some(match d.severity {
             Severity::Error => DiagnosticSeverity::ERROR,
             Severity::Warning => DiagnosticSeverity::WARNING,
@@ -143,7 +172,7 @@ fn to_lsp(uri: &Uri, a: &Analysis, d: &walls_diagnostics::Diagnostic) -> lsp::Di
             d.labels
                 .iter()
                 .map(|l| DiagnosticRelatedInformation {
-                    location: Location::new(uri.clone(), lsp_range(a, &l.span)),
+                    location: Location::new(uri.clone(), range(lines, text, &l.span)),
                     message: l.message.clone(),
                 })
                 .collect()
@@ -212,7 +241,11 @@ pub fn code_actions(uri: &Uri, doc: &Document, r: Range) -> Vec<CodeActionOrComm
             } => CodeAction {
                 title: action.title,
                 kind: Some(CodeActionKind::QUICKFIX),
-                diagnostics: Some(vec![to_lsp(uri, a, &a.diagnostics()[diagnostic])]),
+                diagnostics: Some(vec![to_lsp(
+                    uri,
+                    (&a.lines, a.text()),
+                    &a.diagnostics()[diagnostic],
+                )]),
                 edit,
                 is_preferred: Some(preferred),
                 ..CodeAction::default()
@@ -291,25 +324,57 @@ pub fn completion(doc: &Document, at: Position) -> Vec<CompletionItem> {
     let a = &doc.analysis;
     walls_ide::completion(a, offset(&a.lines, a.text(), at))
         .into_iter()
-        .map(|item| CompletionItem {
-            label: item.label,
-            kind: Some(match item.kind {
-                CompletionKind::WallType => CompletionItemKind::ENUM_MEMBER,
-                CompletionKind::Property => CompletionItemKind::PROPERTY,
-                CompletionKind::Keyword => CompletionItemKind::KEYWORD,
-            }),
-            detail: Some(item.detail),
-            documentation: item.documentation.map(|value| {
-                Documentation::MarkupContent(MarkupContent {
-                    kind: MarkupKind::Markdown,
-                    value,
-                })
-            }),
-            sort_text: item.sort_text,
-            insert_text_format: item.snippet.is_some().then_some(InsertTextFormat::SNIPPET),
-            insert_text: item.snippet,
-            ..CompletionItem::default()
-        })
+        .map(completion_item)
+        .collect()
+}
+
+/// A completion as LSP's.
+fn completion_item(item: walls_ide::CompletionItem) -> CompletionItem {
+    CompletionItem {
+        label: item.label,
+        kind: Some(match item.kind {
+            CompletionKind::WallType => CompletionItemKind::ENUM_MEMBER,
+            CompletionKind::Property => CompletionItemKind::PROPERTY,
+            CompletionKind::Keyword => CompletionItemKind::KEYWORD,
+        }),
+        detail: Some(item.detail),
+        documentation: item.documentation.map(|value| {
+            Documentation::MarkupContent(MarkupContent {
+                kind: MarkupKind::Markdown,
+                value,
+            })
+        }),
+        sort_text: item.sort_text,
+        insert_text_format: item.snippet.is_some().then_some(InsertTextFormat::SNIPPET),
+        insert_text: item.snippet,
+        ..CompletionItem::default()
+    }
+}
+
+/// The `.par` key's documentation where the cursor is ([`walls_ide::par::par_hover`]).
+pub fn par_hover(doc: &ParDocument, at: Position) -> Option<Hover> {
+    let (lines, text) = (&doc.lines, doc.text());
+    let offset = offset(lines, text, at);
+    if position(lines, text, offset) != at {
+        return None;
+    }
+    let hover = walls_ide::par::par_hover(text, offset, doc.check.build())?;
+    Some(Hover {
+        contents: HoverContents::Markup(MarkupContent {
+            kind: MarkupKind::Markdown,
+            value: hover.markdown,
+        }),
+        range: Some(range(lines, text, &hover.range)),
+    })
+}
+
+/// The `.par` keys the build registers, for the word being typed
+/// ([`walls_ide::par::par_completion`]).
+pub fn par_completion(doc: &ParDocument, at: Position) -> Vec<CompletionItem> {
+    let (lines, text) = (&doc.lines, doc.text());
+    walls_ide::par::par_completion(text, offset(lines, text, at), doc.check.build())
+        .into_iter()
+        .map(completion_item)
         .collect()
 }
 

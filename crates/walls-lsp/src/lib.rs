@@ -46,7 +46,7 @@ pub mod position;
 mod settings;
 mod transport;
 
-use document::Document;
+use document::{Document, ParDocument, is_par};
 use settings::Check;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -66,6 +66,8 @@ pub struct Backend {
 #[derive(Default)]
 struct State {
     documents: HashMap<Uri, Document>,
+    /// The open pkdgrav `.par` files ([`document::is_par`]).
+    par_documents: HashMap<Uri, ParDocument>,
     /// The editor's options (what a settings file does not set).
     options: Options,
     /// The (first) workspace folder: where the settings of a document that is not a file
@@ -163,8 +165,9 @@ impl Backend {
     async fn publish(&self, uri: Uri, version: i32) {
         let diagnostics = {
             let state = self.lock();
-            match state.documents.get(&uri) {
-                Some(doc) if doc.version == version => features::diagnostics(&uri, doc),
+            match (state.documents.get(&uri), state.par_documents.get(&uri)) {
+                (Some(doc), _) if doc.version == version => features::diagnostics(&uri, doc),
+                (_, Some(doc)) if doc.version == version => features::par_diagnostics(&uri, doc),
                 _ => return,
             }
         };
@@ -199,6 +202,24 @@ impl Backend {
     fn document(state: &State, uri: &Uri, version: i32, text: String) -> Document {
         let check = Check::find(uri, state.folder.as_deref(), &state.options);
         Document::new(version, text, check)
+    }
+
+    /// Checks `text` as the document at `uri` in its language (a `.par` file or a walls
+    /// file) and keeps it, in place of what the document was.
+    fn keep(state: &mut State, uri: Uri, version: i32, text: String) {
+        if is_par(&uri) {
+            let check = Check::find(&uri, state.folder.as_deref(), &state.options);
+            state
+                .par_documents
+                .insert(uri, ParDocument::new(version, text, check));
+        } else {
+            let document = Self::document(state, &uri, version, text);
+            state.documents.insert(uri, document);
+        }
+    }
+
+    fn with_par_document<T>(&self, uri: &Uri, f: impl FnOnce(&ParDocument) -> T) -> Option<T> {
+        self.lock().par_documents.get(uri).map(f)
     }
 
     fn with_document<T>(&self, uri: &Uri, f: impl FnOnce(&Document) -> T) -> Option<T> {
@@ -276,11 +297,7 @@ impl LanguageServer for Backend {
 
     async fn did_open(&self, params: DidOpenTextDocumentParams) {
         let doc = params.text_document;
-        {
-            let mut state = self.lock();
-            let document = Self::document(&state, &doc.uri, doc.version, doc.text);
-            state.documents.insert(doc.uri.clone(), document);
-        }
+        Self::keep(&mut self.lock(), doc.uri.clone(), doc.version, doc.text);
         self.publish(doc.uri, doc.version).await;
     }
 
@@ -293,22 +310,27 @@ impl LanguageServer for Backend {
         };
         {
             let mut state = self.lock();
-            if state
-                .documents
-                .get(&uri)
-                .is_some_and(|d| d.version > version)
+            let newer = |v: i32| v > version;
+            if state.documents.get(&uri).is_some_and(|d| newer(d.version))
+                || state
+                    .par_documents
+                    .get(&uri)
+                    .is_some_and(|d| newer(d.version))
             {
                 return;
             }
-            let document = Self::document(&state, &uri, version, change.text);
-            state.documents.insert(uri.clone(), document);
+            Self::keep(&mut state, uri.clone(), version, change.text);
         }
         self.publish(uri, version).await;
     }
 
     async fn did_close(&self, params: DidCloseTextDocumentParams) {
         let uri = params.text_document.uri;
-        self.lock().documents.remove(&uri);
+        {
+            let mut state = self.lock();
+            state.documents.remove(&uri);
+            state.par_documents.remove(&uri);
+        }
         self.client.publish_diagnostics(uri, Vec::new(), None).await;
     }
 
@@ -330,6 +352,10 @@ impl LanguageServer for Backend {
                 versions.push((uri.clone(), doc.version));
                 state.documents.insert(uri, doc);
             }
+            for (uri, doc) in std::mem::take(&mut state.par_documents) {
+                versions.push((uri.clone(), doc.version));
+                Self::keep(&mut state, uri, doc.version, doc.text().to_string());
+            }
             (versions, problems)
         };
         if let Some(message) = settings_message(&problems) {
@@ -344,8 +370,13 @@ impl LanguageServer for Backend {
 
     async fn hover(&self, params: HoverParams) -> Result<Option<Hover>> {
         let p = params.text_document_position_params;
+        let uri = &p.text_document.uri;
+        if let Some(hover) = self.with_par_document(uri, |doc| features::par_hover(doc, p.position))
+        {
+            return Ok(hover);
+        }
         Ok(self
-            .with_document(&p.text_document.uri, |doc| features::hover(doc, p.position))
+            .with_document(uri, |doc| features::hover(doc, p.position))
             .flatten())
     }
 
@@ -388,10 +419,14 @@ impl LanguageServer for Backend {
 
     async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
         let p = params.text_document_position;
+        let uri = &p.text_document.uri;
+        if let Some(items) =
+            self.with_par_document(uri, |doc| features::par_completion(doc, p.position))
+        {
+            return Ok(Some(CompletionResponse::Array(items)));
+        }
         Ok(self
-            .with_document(&p.text_document.uri, |doc| {
-                features::completion(doc, p.position)
-            })
+            .with_document(uri, |doc| features::completion(doc, p.position))
             .map(CompletionResponse::Array))
     }
 

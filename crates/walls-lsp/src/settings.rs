@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use tower_lsp_server::ls_types::{self as lsp, *};
 use walls_config::{Lint, SettingsError};
 use walls_format::FormatOptions;
+use walls_ide::par::ParChecked;
 use walls_ide::{Analysis, Checked};
 use walls_model::Options;
 
@@ -56,6 +57,9 @@ pub struct Check {
     file: Option<PathBuf>,
     /// The settings file that could not be used, if any.
     broken: Option<SettingsError>,
+    /// The pkdgrav build `.par` files are checked for (the settings' `[run]
+    /// pkdgrav-build`, else the default).
+    build: walls_par::Build,
 }
 
 impl Check {
@@ -64,16 +68,36 @@ impl Check {
     pub fn find(uri: &Uri, folder: Option<&Path>, editor: &Options) -> Check {
         let place = Place::of(uri, folder);
         let found = place.dir.as_deref().map(walls_config::find).transpose();
-        let (lint, broken) = match found {
-            Ok(settings) => (settings.map(|s| s.lint).unwrap_or_default(), None),
-            Err(e) => (Lint::default(), Some(e)),
+        let (lint, build, broken) = match found {
+            Ok(Some(settings)) => (
+                settings.lint,
+                settings.run.pkdgrav_build.unwrap_or_default(),
+                None,
+            ),
+            Ok(None) => (Lint::default(), walls_par::Build::default(), None),
+            Err(e) => (Lint::default(), walls_par::Build::default(), Some(e)),
         };
         Check {
             options: lint.options(editor),
             lint,
             file: place.file,
             broken,
+            build,
         }
+    }
+
+    /// Checks the `.par` text `text` for the build, less the warnings and infos the
+    /// settings ignore (errors stay).
+    pub fn checked_par(&self, text: String) -> ParChecked {
+        let mut checked = walls_ide::par::check_par_text(text, &self.build);
+        self.lint
+            .filter(self.file.as_deref(), &mut checked.diagnostics);
+        checked
+    }
+
+    /// The build `.par` files are checked for.
+    pub fn build(&self) -> &walls_par::Build {
+        &self.build
     }
 
     /// Checks `text`, less the warnings and infos the settings ignore (errors stay).

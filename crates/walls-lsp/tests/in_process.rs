@@ -900,3 +900,62 @@ async fn a_fifo_named_walls_toml_is_named_not_waited_on() {
     );
     assert_eq!(codes(&published), ["-", "C209"]);
 }
+
+#[tokio::test]
+async fn par_files_are_checked_hovered_and_completed_for_the_build() {
+    let dir = tempfile::tempdir().unwrap();
+    let uri = |name: &str| format!("file://{}/{name}", dir.path().display());
+    let mut c = Client::start(json!({})).await;
+    // pkdgrav's reader: `!` is a syntax error, `dKN` no key of the build.
+    let text = "achInFile = ss.ic\ndKN = 1e5 ! spring\niCohesionModel = 1\n";
+    let published = c.open_at(&uri("run.par"), text).await;
+    let found = codes(&published);
+    assert!(
+        found.contains(&"P001".to_string()) && found.contains(&"P003".to_string()),
+        "{found:?}"
+    );
+    let d = published["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|d| d["code"] == "P001")
+        .unwrap();
+    assert_eq!(
+        d["range"],
+        json!({"start": {"line": 1, "character": 10}, "end": {"line": 1, "character": 11}})
+    );
+    let hover = c
+        .request(
+            "textDocument/hover",
+            json!({"textDocument": {"uri": uri("run.par")}, "position": {"line": 2, "character": 3}}),
+        )
+        .await;
+    let shown = hover["contents"]["value"].as_str().unwrap();
+    assert!(shown.starts_with("**`iCohesionModel`** (int"), "{shown}");
+    assert!(shown.contains("Not registered by this build"), "{shown}");
+    // With the settings' build, the cohesion keys are the build's.
+    std::fs::write(
+        dir.path().join("walls.toml"),
+        "[run]\npkdgrav-build = \"DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT DEM_COHESION\"\n",
+    )
+    .unwrap();
+    c.change(&uri("run.par"), 2, "iCoh").await;
+    let items = c
+        .request(
+            "textDocument/completion",
+            json!({"textDocument": {"uri": uri("run.par")}, "position": {"line": 0, "character": 4}}),
+        )
+        .await;
+    let labels: Vec<&str> = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert_eq!(labels, ["iCohesionModel"]);
+    // ssdraw.par is ssdraw's: not a pkdgrav .par.
+    let published = c
+        .open_at(&uri("ssdraw.par"), "Camera position 1 2 3\n")
+        .await;
+    assert!(codes(&published).iter().all(|c| !c.starts_with('P')));
+}

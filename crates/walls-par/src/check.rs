@@ -57,7 +57,11 @@ impl<'a> File<'a> {
         let mut last = HashMap::new();
         for line in &lines {
             rules::line_too_long::check(text, line, out);
-            let line_span = line.span.start..(line.span.end + 1).min(text.len());
+            // The line with its break (`\n` or `\r\n`), for a fix that deletes it.
+            let line_span = line.span.start
+                ..text[line.span.end..]
+                    .find('\n')
+                    .map_or(text.len(), |k| line.span.end + k + 1);
             // The rest of a long line is read as lines of their own (`rest`): of their
             // errors only the first is reported (pkdgrav stops there; a 10 MB line is
             // one finding, not eighty thousand), what they set is kept.
@@ -196,6 +200,20 @@ pub fn check_overridden(text: &str, build: &Build, overridden: &[&str]) -> Vec<D
     let mut out = Vec::new();
     let mut file = File::read(text, build, &mut out);
     file.overridden = overridden.to_vec();
+    // What the file writes for a key the command line sets is not judged either.
+    let set_elsewhere = |d: &Diagnostic| {
+        std::ptr::eq(d.code, &crate::codes::NOT_FINITE)
+            || std::ptr::eq(d.code, &crate::codes::READ_AS)
+    };
+    out.retain(|d| {
+        !(set_elsewhere(d)
+            && file.entries.iter().any(|e| {
+                overridden.contains(&e.key.name)
+                    && e.value_span.start <= d.span.start
+                    && d.span.end <= e.value_span.end
+            }))
+    });
+    rules::unknown_key::no_rename_to_a_key_given(&file, &mut out);
     rules::duplicate_key::check(&file, &mut out);
     let stopped = rules::startup::check(&file, &mut out);
     rules::not_modelled::check(&file, &stopped, &mut out);

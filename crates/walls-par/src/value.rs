@@ -63,7 +63,12 @@ pub const UNQUOTED: [&str; 4] = [
 pub fn read(key: &str, kind: Kind, text: &str) -> Result<Reading, Unreadable> {
     match kind {
         Kind::Str => {
-            let end = text.find('#').unwrap_or(text.len());
+            // A NUL byte ends the C string pkdgrav reads the line into.
+            let nul = text.find('\0');
+            let end = text[..nul.unwrap_or(text.len())]
+                .find('#')
+                .or(nul)
+                .unwrap_or(text.len());
             let s = text[..end].trim_end_matches([' ', '\t', '\r', '\x0b', '\x0c']);
             let s = if UNQUOTED.contains(&key) {
                 let s = s.strip_prefix('"').unwrap_or(s);
@@ -74,7 +79,10 @@ pub fn read(key: &str, kind: Kind, text: &str) -> Result<Reading, Unreadable> {
             Ok(Reading {
                 value: Value::Str(s.to_string()),
                 read: end,
-                ignored: String::new(),
+                ignored: match nul {
+                    Some(at) if at == end => text[at..].to_string(),
+                    _ => String::new(),
+                },
             })
         }
         Kind::Int | Kind::Bool => {
@@ -136,7 +144,22 @@ fn float_prefix(text: &str) -> Option<usize> {
             .bytes()
             .take_while(|c| c.is_ascii_hexdigit() || *c == b'.')
             .count();
-        return (hex > 0).then_some(sign + 2 + hex);
+        if hex == 0 {
+            return None;
+        }
+        // A binary exponent, read only with digits after it.
+        let mut at = sign + 2 + hex;
+        if matches!(b.get(at), Some(b'p' | b'P')) {
+            let s = usize::from(matches!(b.get(at + 1), Some(b'-' | b'+')));
+            let e = b[(at + 1 + s).min(b.len())..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            if e > 0 {
+                at += 1 + s + e;
+            }
+        }
+        return Some(at);
     }
     let digits = |from: usize| b[from..].iter().take_while(|c| c.is_ascii_digit()).count();
     let mut at = sign;
@@ -169,7 +192,11 @@ fn parse_c_double(text: &str) -> f64 {
         _ => (false, text),
     };
     let x = if body.len() > 2 && body[..2].eq_ignore_ascii_case("0x") {
-        let (whole, fraction) = body[2..].split_once('.').unwrap_or((&body[2..], ""));
+        let (mantissa, exponent) = body[2..]
+            .split_once(['p', 'P'])
+            .unwrap_or((&body[2..], "0"));
+        let exponent: i32 = exponent.parse().unwrap_or(i32::MAX);
+        let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
         let mut x = 0.0;
         for c in whole.chars() {
             x = x * 16.0 + f64::from(c.to_digit(16).unwrap_or(0));
@@ -179,7 +206,7 @@ fn parse_c_double(text: &str) -> f64 {
             x += f64::from(c.to_digit(16).unwrap_or(0)) * scale;
             scale /= 16.0;
         }
-        x
+        x * 2f64.powi(exponent.clamp(-2000, 2000))
     } else if body.to_ascii_lowercase().starts_with("nan") {
         f64::NAN
     } else {
@@ -226,6 +253,8 @@ mod tests {
         assert_eq!(double("2.e"), (2.0, "e".into()));
         assert_eq!(double(".5"), (0.5, String::new()));
         assert_eq!(double("0x1.8p"), (1.5, "p".into()));
+        assert_eq!(double("0x1p3"), (8.0, String::new()));
+        assert_eq!(double("-0x1p-3 # s"), (-0.125, String::new()));
         assert!(double("1e400").0.is_infinite());
         assert!(double("-inf").0.is_infinite());
         assert!(double("nan").0.is_nan());

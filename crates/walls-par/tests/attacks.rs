@@ -77,3 +77,48 @@ proptest::proptest! {
         }
     }
 }
+
+#[test]
+fn the_attack_review_s_breaks_stay_fixed() {
+    let build = Build::default();
+    let codes = |text: &str| -> Vec<&'static str> {
+        check(text, &build).iter().map(|d| d.code.id).collect()
+    };
+    // Hex floats with a binary exponent are read as strtod reads them (8, not 1).
+    assert!(!codes("dDelta = 0x1p3\n").contains(&"P004"));
+    // A CRLF line of 127 bytes: its `\r` is a blank line to pkdgrav, no long line.
+    let line = format!("achOutName = {}\r\n", "o".repeat(114));
+    assert_eq!(line.len(), 129);
+    assert!(!codes(&line).contains(&"P002"));
+    // A rename that would set a key the file sets is not offered.
+    let text = "achInFile = p.ss\nnSteps = 100\nnStep = 5\n";
+    let found = check(text, &build);
+    let d = found.iter().find(|d| d.code.id == "P003").unwrap();
+    assert!(
+        d.fix.is_none() && d.help.as_deref().unwrap().contains("line 2"),
+        "{d:#?}"
+    );
+    assert_eq!(apply_fixes(text, &found, Applicability::Unsafe), text);
+    // The overridden line of a CRLF file goes with its `\r\n`.
+    let text = "achInFile = p.ss\r\nnSteps = 1\r\nnSteps = 2\r\n";
+    let fixed = apply_fixes(text, &check(text, &build), Applicability::Safe);
+    assert_eq!(fixed, "achInFile = p.ss\r\nnSteps = 2\r\n");
+    // A NUL byte ends a string value.
+    assert!(codes("achOutName = ab\0cd\n").contains(&"P004"));
+    // SLIDING_PATCH is no build that reads walls files.
+    assert!(Build::parse("DEM SLIDING_PATCH").is_err());
+    // Ten thousand unknown keys, each with its "did you mean", quickly.
+    let many: String = (0..10_000).map(|i| format!("zz{i} = 1\n")).collect();
+    let t = std::time::Instant::now();
+    assert_eq!(
+        codes(&many).iter().filter(|c| **c == "P003").count(),
+        10_000
+    );
+    // And a hundred thousand duplicates.
+    let dups: String = (0..100_000).map(|i| format!("nSteps = {i}\n")).collect();
+    assert_eq!(
+        codes(&dups).iter().filter(|c| **c == "P006").count(),
+        99_999
+    );
+    assert!(t.elapsed().as_secs() < 20, "{:?}", t.elapsed());
+}

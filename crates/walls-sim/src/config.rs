@@ -335,6 +335,32 @@ impl std::fmt::Display for ConfigError {
 
 impl std::error::Error for ConfigError {}
 
+/// The `.par` keys the command line `inputs` sets over the file's (its values win,
+/// [`resolve`]): the file's word on them is not judged.
+fn overridden(inputs: &Inputs) -> Vec<&'static str> {
+    let set = |given: bool, keys: &[&'static str]| if given { keys.to_vec() } else { Vec::new() };
+    [
+        set(
+            inputs.particles.is_some() || inputs.no_particles,
+            &["achInFile"],
+        ),
+        set(inputs.dt.is_some(), &["dDelta"]),
+        set(inputs.t_end.is_some(), &["nSteps"]),
+        set(
+            inputs.gravity.is_some(),
+            &["dxUnifGrav", "dyUnifGrav", "dzUnifGrav"],
+        ),
+        set(inputs.eps_n.is_some(), &["dEpsN"]),
+        set(inputs.eps_t.is_some(), &["dEpsT"]),
+        set(inputs.k_n.is_some(), &["dKn"]),
+        set(inputs.k_t.is_some(), &["dKt"]),
+        set(inputs.mu_s.is_some(), &["dMuS"]),
+        set(inputs.mu_r.is_some(), &["dMuR"]),
+        set(inputs.mu_t.is_some(), &["dMuT"]),
+    ]
+    .concat()
+}
+
 /// Reads the `.par` file that `flags` name, if any, refused where the run's pkdgrav build
 /// would refuse it ([`par::read_file_for`]).
 pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
@@ -343,14 +369,11 @@ pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
     };
     let build = walls_par::Build::parse(&flags.build().names())
         .expect("the evaluator's options are pkdgrav's");
-    // The particle file named on the command line (or none, asked for) stands for the
-    // file's `achInFile`.
-    let overridden: &[&str] = if flags.inputs.particles.is_some() || flags.inputs.no_particles {
-        &["achInFile"]
-    } else {
-        &[]
-    };
-    Ok(Some(par::read_file_for(path, &build, overridden)?))
+    Ok(Some(par::read_file_for(
+        path,
+        &build,
+        &overridden(&flags.inputs),
+    )?))
 }
 
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and

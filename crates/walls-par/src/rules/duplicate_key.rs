@@ -49,13 +49,13 @@ pub(crate) fn check(file: &File, out: &mut Vec<Diagnostic>) {
         // A line read whole (not the rest of a long one) can go whole.
         let whole = file
             .lines
-            .iter()
-            .any(|l| l.number == entry.line && l.reads.len() == 1);
+            .get(entry.line - 1)
+            .is_some_and(|l| l.reads.len() == 1);
         let mut d = Diagnostic::warning(
             &DUPLICATE_KEY,
             entry.key_span.clone(),
             format!(
-                "`{}` is given again on line {}, which pkdgrav takes: this line does nothing",
+                "`{}` is given again on line {}, which pkdgrav takes: this value does nothing",
                 entry.key.name, last.line
             ),
         )

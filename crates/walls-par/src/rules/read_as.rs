@@ -58,7 +58,20 @@ pub(crate) fn check(
     let shown = match value {
         Value::Int(x) => x.to_string(),
         Value::Double(_) => read.to_string(),
-        Value::Str(_) => return,
+        Value::Str(s) => {
+            out.push(
+                Diagnostic::warning(
+                    &READ_AS,
+                    span,
+                    format!(
+                        "pkdgrav reads `{}` as `{s}`: a NUL byte ends the line it reads, and `{ignored}` is lost",
+                        key.name
+                    ),
+                )
+                .with_help("take the NUL byte out"),
+            );
+            return;
+        }
     };
     let message = match key.kind {
         Kind::Int | Kind::Bool => format!(

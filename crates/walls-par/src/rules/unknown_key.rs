@@ -38,6 +38,25 @@ Good:
     ),
 };
 
+/// Takes back the rename a finding offers when the file already sets that key: the
+/// renamed line would override the file's own (the help says where it is).
+pub(crate) fn no_rename_to_a_key_given(file: &crate::check::File, out: &mut [Diagnostic]) {
+    for d in out
+        .iter_mut()
+        .filter(|d| std::ptr::eq(d.code, &UNKNOWN_KEY))
+    {
+        let Some(fix) = &d.fix else { continue };
+        let Some(given) = fix.edits.first().and_then(|e| file.given(&e.replacement)) else {
+            continue;
+        };
+        d.help = Some(format!(
+            "did you mean `{}`? The file sets it on line {}: renaming this line would override that one",
+            given.key.name, given.line
+        ));
+        d.fix = None;
+    }
+}
+
 /// Reports `name` at `span`, which `build` does not register.
 pub(crate) fn check(name: &str, span: Range<usize>, build: &Build, out: &mut Vec<Diagnostic>) {
     let elsewhere: Vec<&str> = keys::any(name).map(|k| k.condition).collect();

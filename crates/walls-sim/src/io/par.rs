@@ -728,7 +728,7 @@ pub fn read_file_for(
     build: &walls_par::Build,
     overridden: &[&str],
 ) -> Result<Params, FileError> {
-    let text = std::fs::read_to_string(path).map_err(|e| FileError::read(path, e))?;
+    let text = read_text(path)?;
     let refused: Vec<_> = walls_par::check::check_overridden(&text, build, overridden)
         .into_iter()
         .filter(|d| d.severity == walls_par::Severity::Error)
@@ -759,5 +759,38 @@ pub fn read_file_for(
         let message = format!("{}{help} [{}]{more}", first.message, first.code.id);
         return Err(FileError::input(path, error(at, message)));
     }
-    read_file(path)
+    let mut params = read_par(&text).map_err(|e| FileError::input(path, e))?;
+    params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
+    Ok(params)
+}
+
+/// The most bytes of a `.par` file read: a real one is a few kilobytes; a device or a
+/// stray file is refused at this size rather than read whole.
+pub const MAX_PAR_BYTES: u64 = 16 << 20;
+
+/// The text of the `.par` file at `path`, read up to [`MAX_PAR_BYTES`]; bytes that are
+/// not UTF-8 (pkdgrav reads bytes: a Latin-1 comment) read as U+FFFD.
+fn read_text(path: &str) -> Result<String, FileError> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| FileError::read(path, e))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_PAR_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| FileError::read(path, e))?;
+    if bytes.len() as u64 > MAX_PAR_BYTES {
+        return Err(FileError::input(
+            path,
+            error(
+                String::new(),
+                format!(
+                    "over {} MiB: not a pkdgrav parameter file (a device, or another file named as one)",
+                    MAX_PAR_BYTES >> 20
+                ),
+            ),
+        ));
+    }
+    Ok(match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
+    })
 }
