@@ -19,10 +19,16 @@ use walls_sim::io::par::Rule;
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
 pub struct PreviewArgs {
-    /// The walls file; `-` reads standard input. Without it, the `Wall data file` of
-    /// --ssdraw.
-    #[arg(value_name = "FILE", required_unless_present = "ssdraw")]
+    /// The walls file; `-` reads standard input. Without it, the --par file's
+    /// achWallsFile, else the `Wall data file` of --ssdraw.
+    #[arg(value_name = "FILE", required_unless_present_any = ["ssdraw", "par"])]
     pub file: Option<String>,
+    /// A pkdgrav run directory's .par file: the walls file (achWallsFile) and the
+    /// particles (achInFile) when not named here, each beside the .par file. A .par
+    /// file pkdgrav's default build refuses is refused, as `walls-sim run --par` refuses
+    /// it.
+    #[arg(long, value_name = "FILE")]
+    pub par: Option<String>,
     /// ssdraw's view: an ssdraw.par (read as ssdraw reads it) whose camera position,
     /// look-at point, sky vector, wall data file, wall time offset and aspect ratio the
     /// pictures take (--view, --up and --size win over it).
@@ -113,12 +119,22 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
-    let file = walls_file(args, ssdraw.as_ref())?;
+    let run_directory = args
+        .par
+        .as_deref()
+        .map(|p| run_directory(p, args))
+        .transpose()?;
+    let file = walls_file(args, run_directory.as_ref(), ssdraw.as_ref())?;
     let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
     let scene = &checked.scene;
+    // The .par file's particles when none are named.
+    let from_par = (run_directory.as_ref())
+        .filter(|_| args.particles.is_empty())
+        .and_then(|r| r.particles.clone());
     let inputs: Vec<PathBuf> = args
         .particles
         .iter()
+        .chain(&from_par)
         .chain(&args.trajectory)
         .cloned()
         .collect();
@@ -346,16 +362,48 @@ fn walls_time(checked: &Checked) -> f64 {
     checked.scene.time.filter(|t| t.is_finite()).unwrap_or(0.0)
 }
 
-/// The walls file: the command line's, else the `Wall data file` of --ssdraw, taken
-/// relative to the ssdraw.par's folder.
-fn walls_file(args: &PreviewArgs, ssdraw: Option<&SsdrawView>) -> Result<String, String> {
-    if let Some(f) = &args.file {
-        return Ok(f.clone());
+/// What a `.par` file names for the pictures: its walls file and its particles, each
+/// beside it.
+struct RunDirectory {
+    walls: Option<String>,
+    particles: Option<PathBuf>,
+}
+
+/// The run directory of the `.par` file at `par`, read as `walls-sim run --par` reads it
+/// (refused where pkdgrav's default build refuses it).
+fn run_directory(par: &str, args: &PreviewArgs) -> Result<RunDirectory, String> {
+    use walls_sim::config::{self, Flags, Inputs};
+    let flags = Flags {
+        inputs: Inputs {
+            par: Some(par.to_string()),
+            particles: (args.particles.first()).map(|p| p.to_string_lossy().into_owned()),
+            ..Inputs::default()
+        },
+        ..Flags::default()
+    };
+    let params = config::read_par(&flags).map_err(|e| e.to_string())?;
+    Ok(RunDirectory {
+        walls: config::walls_file(None, &flags, params.as_ref()),
+        particles: config::particle_file(&flags, params.as_ref()).map(PathBuf::from),
+    })
+}
+
+/// The walls file: the command line's, else the `.par` file's, else the `Wall data
+/// file` of --ssdraw, taken relative to the ssdraw.par's folder.
+fn walls_file(
+    args: &PreviewArgs,
+    run_directory: Option<&RunDirectory>,
+    ssdraw: Option<&SsdrawView>,
+) -> Result<String, String> {
+    if let Some(f) = (args.file.clone()).or_else(|| run_directory?.walls.clone()) {
+        return Ok(f);
     }
     let named = ssdraw
         .and_then(|s| s.walls_file.as_deref())
-        .ok_or_else(|| {
-            "no walls file: name one, or give an ssdraw.par that has a `Wall data file`".to_string()
+        .ok_or_else(|| match &args.par {
+            Some(par) => format!("no walls file: name one, or give {par} an achWallsFile line"),
+            None => "no walls file: name one, or give an ssdraw.par that has a `Wall data file`"
+                .to_string(),
         })?;
     let dir = args
         .ssdraw
