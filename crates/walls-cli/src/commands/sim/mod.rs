@@ -63,9 +63,14 @@ pub enum SimCommand {
     /// Print the resolved scene as JSON: every wall with the effective value of every
     /// token, in pkdgrav units.
     Scene {
-        /// The walls file; `-` reads standard input.
-        #[arg(value_name = "FILE")]
-        file: String,
+        /// The walls file; `-` reads standard input. Without it, the --par file's
+        /// achWallsFile.
+        #[arg(value_name = "FILE", required_unless_present = "par")]
+        file: Option<String>,
+        /// A pkdgrav run directory's .par file, whose achWallsFile (beside it) is the
+        /// walls file when FILE is not given; refused where `run --par` refuses it.
+        #[arg(long, value_name = "FILE")]
+        par: Option<String>,
         /// Also give each wall's `position` at this time (pkdgrav units).
         #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
         time: Option<f64>,
@@ -78,9 +83,27 @@ pub enum SimCommand {
 /// Runs the command `args` name; the exit status.
 pub fn dispatch(args: &SimArgs) -> i32 {
     match &args.command {
-        Some(SimCommand::Scene { file, time, mode }) => {
+        Some(SimCommand::Scene {
+            file,
+            par,
+            time,
+            mode,
+        }) => {
             warn_subnormal(time.map(|t| ("--time", t)));
-            scene::run(file, *time, *mode)
+            let file = match (file, par) {
+                (Some(file), _) => file.clone(),
+                (None, Some(par)) => match run_directory(par, None) {
+                    Ok(RunDirectory { walls: Some(w), .. }) => w,
+                    Ok(_) => {
+                        return error(format!(
+                            "no walls file: name one, or give {par} an achWallsFile line"
+                        ));
+                    }
+                    Err(e) => return error(e),
+                },
+                (None, None) => return error("no walls file: name one, or give --par"),
+            };
+            scene::run(&file, *time, *mode)
         }
         Some(SimCommand::Run(args)) => run::run(args),
         Some(SimCommand::Plan(args)) => plan::run(args),
@@ -89,6 +112,33 @@ pub fn dispatch(args: &SimArgs) -> i32 {
         // Only for arguments built in code: clap shows the help when no command is given.
         None => error("no command given: scene, run, plan, advise or preview"),
     }
+}
+
+/// What a run directory's `.par` file names: its walls file and its particles, each
+/// beside it.
+pub(super) struct RunDirectory {
+    pub walls: Option<String>,
+    pub particles: Option<std::path::PathBuf>,
+}
+
+/// The run directory of the `.par` file at `par`, read as `walls-sim run --par` reads it
+/// (refused where pkdgrav's default build refuses it); `particles`, when given on the
+/// command line, stands for its `achInFile`.
+pub(super) fn run_directory(par: &str, particles: Option<String>) -> Result<RunDirectory, String> {
+    use walls_sim::config::{self, Flags, Inputs};
+    let flags = Flags {
+        inputs: Inputs {
+            par: Some(par.to_string()),
+            particles,
+            ..Inputs::default()
+        },
+        ..Flags::default()
+    };
+    let params = config::read_par(&flags).map_err(|e| e.to_string())?;
+    Ok(RunDirectory {
+        walls: config::walls_file(None, &flags, params.as_ref()),
+        particles: config::particle_file(&flags, params.as_ref()).map(Into::into),
+    })
 }
 
 /// Warns about the options given with a subnormal value (pkdgrav would read them with

@@ -119,10 +119,12 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
-    let run_directory = args
-        .par
-        .as_deref()
-        .map(|p| run_directory(p, args))
+    let first = args
+        .particles
+        .first()
+        .map(|p| p.to_string_lossy().into_owned());
+    let run_directory = (args.par.as_deref())
+        .map(|p| super::run_directory(p, first))
         .transpose()?;
     let file = walls_file(args, run_directory.as_ref(), ssdraw.as_ref())?;
     let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
@@ -362,37 +364,11 @@ fn walls_time(checked: &Checked) -> f64 {
     checked.scene.time.filter(|t| t.is_finite()).unwrap_or(0.0)
 }
 
-/// What a `.par` file names for the pictures: its walls file and its particles, each
-/// beside it.
-struct RunDirectory {
-    walls: Option<String>,
-    particles: Option<PathBuf>,
-}
-
-/// The run directory of the `.par` file at `par`, read as `walls-sim run --par` reads it
-/// (refused where pkdgrav's default build refuses it).
-fn run_directory(par: &str, args: &PreviewArgs) -> Result<RunDirectory, String> {
-    use walls_sim::config::{self, Flags, Inputs};
-    let flags = Flags {
-        inputs: Inputs {
-            par: Some(par.to_string()),
-            particles: (args.particles.first()).map(|p| p.to_string_lossy().into_owned()),
-            ..Inputs::default()
-        },
-        ..Flags::default()
-    };
-    let params = config::read_par(&flags).map_err(|e| e.to_string())?;
-    Ok(RunDirectory {
-        walls: config::walls_file(None, &flags, params.as_ref()),
-        particles: config::particle_file(&flags, params.as_ref()).map(PathBuf::from),
-    })
-}
-
 /// The walls file: the command line's, else the `.par` file's, else the `Wall data
 /// file` of --ssdraw, taken relative to the ssdraw.par's folder.
 fn walls_file(
     args: &PreviewArgs,
-    run_directory: Option<&RunDirectory>,
+    run_directory: Option<&super::RunDirectory>,
     ssdraw: Option<&SsdrawView>,
 ) -> Result<String, String> {
     if let Some(f) = (args.file.clone()).or_else(|| run_directory?.walls.clone()) {
