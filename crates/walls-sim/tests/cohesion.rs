@@ -597,3 +597,31 @@ fn a_pair_of_two_colours_coheres_with_the_combined_coefficient() {
         end(&none)
     );
 }
+
+#[test]
+fn a_walls_cohesive_coefficient_of_minus_one_is_dcohesivecoeff_not_the_colour_table() {
+    use walls_sim::run::optional::OptionalPhysics;
+    // pkdgrav-physics §17: a wall's −1 (its default) is the global dCohesiveCoeff, never
+    // the particle's colour's coefficient.
+    let walls = scene("wall type plane\nwall type plane\n  cohesive_coeff 7e3\n");
+    let settings = Settings {
+        cohesion: Cohesion {
+            model: Model::Contact,
+            coefficient: 2e3,
+            colours: Some(Colours {
+                rule: Rule::Mean,
+                coefficients: vec![(3, 5e3)],
+            }),
+        },
+        ..pkdgrav("DEM DEM_ROTATION_DASHPOT DEM_COHESION", Integrator::Pkdgrav)
+    };
+    let mut p = ball([0.0, 0.0, 0.05], [0.0; 3]);
+    p.color = 3;
+    let states = vec![walls_sim::run::State::new(&p)];
+    let physics = OptionalPhysics::new(&walls, &states, &settings);
+    let mat = material(0.5);
+    let force = |w: usize| physics.wall(w, 0.1, None, &mat).cohesion;
+    let want = |c: f64| against_wall(Model::Contact, c, mat.beta_s, 0.1, None);
+    assert_eq!(force(0), want(2e3));
+    assert_eq!(force(1), want(7e3));
+}

@@ -41,7 +41,8 @@ pub fn default_two_layer(k_n: f64) -> TwoLayer {
 #[derive(Debug, Clone, Copy)]
 struct WallValues {
     model: Model,
-    /// The wall's own coefficient; `None`: the particle's.
+    /// The wall's own coefficient; `None` (its −1): the `.par` file's `dCohesiveCoeff`,
+    /// never the colour table (docs/pkdgrav-physics.md §17).
     coefficient: Option<f64>,
     layers: TwoLayer,
 }
@@ -146,18 +147,18 @@ impl OptionalPhysics {
         }
     }
 
-    /// What they add to the contact of particle `i` (radius `r`, the contact radius `a`
+    /// What they add to the contact of a particle (radius `r`, the contact radius `a`
     /// with `bUseContactRadius`) with wall `w`, whose material against particles is
-    /// `mat`.
+    /// `mat`: the wall's cohesion, whatever the particle's colour.
     #[inline]
-    pub fn wall(&self, w: usize, i: usize, r: f64, a: Option<f64>, mat: &Material) -> Optional {
+    pub fn wall(&self, w: usize, r: f64, a: Option<f64>, mat: &Material) -> Optional {
         if !self.any() {
             return Optional::default();
         }
         let values = &self.walls[w];
         let cohesion = match &self.cohesion {
-            Some(_) => {
-                let coefficient = values.coefficient.unwrap_or(self.coefficients[i]);
+            Some(c) => {
+                let coefficient = values.coefficient.unwrap_or(c.coefficient);
                 cohesion::against_wall(values.model, coefficient, mat.beta_s, r, a)
             }
             None => 0.0,

@@ -487,7 +487,7 @@ fn pkdgrav_wall_contact(
     };
     let extra = Optional {
         restitution: Some(walls.set.restitutions[w]),
-        ..walls.optional.wall(w, i, r, a, mat)
+        ..walls.optional.wall(w, r, a, mat)
     };
     let c = dashpot_contact_with(&dashpot, record, walls.closing.dt, mat, &extra);
     load.force += c.force;
