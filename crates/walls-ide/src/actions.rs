@@ -1,7 +1,7 @@
 //! Code actions: a quick fix for each diagnostic with a fix, and "fix all safe
 //! problems".
 
-use crate::{Analysis, Checked, fix_rounds};
+use crate::{Fixable, fix_rounds};
 use std::ops::Range;
 use walls_diagnostics::{Applicability, Edit};
 
@@ -10,7 +10,7 @@ use walls_diagnostics::{Applicability, Edit};
 pub enum ActionKind {
     /// Applies the fix of one diagnostic.
     QuickFix {
-        /// The diagnostic's index in [`Analysis::diagnostics`].
+        /// The diagnostic's index in the checked text's diagnostics.
         diagnostic: usize,
         /// Whether the fix is safe to apply unasked.
         preferred: bool,
@@ -33,15 +33,16 @@ pub struct Action {
 /// A quick fix for each diagnostic touching `range` that has one (the first
 /// `max_quick_fixes` of them), then "Fix all safe problems (N)" if any fix is safe: one
 /// edit of the text, however many fixes, made of the same rounds as `walls-lint --fix`'s
-/// ([`fix_rounds`]), each new text checked by `check`.
-pub fn code_actions(
-    analysis: &Analysis,
+/// ([`fix_rounds`]), each new text checked by `check`. `checked` is a walls file's
+/// [`crate::Checked`] or a `.par` file's [`crate::par::ParChecked`].
+pub fn code_actions<C: Fixable>(
+    checked: &C,
     range: Range<usize>,
     max_quick_fixes: usize,
-    check: &dyn Fn(String) -> Checked,
+    check: &dyn Fn(String) -> C,
 ) -> Vec<Action> {
-    let text = analysis.text();
-    let diagnostics = analysis.diagnostics();
+    let text = checked.text();
+    let diagnostics = checked.diagnostics();
     let mut actions = Vec::new();
     for (i, d) in diagnostics.iter().enumerate() {
         let Some(fix) = &d.fix else { continue };
@@ -60,13 +61,13 @@ pub fn code_actions(
             edits: fix.edits.clone(),
         });
     }
-    if let Some((fixed, count)) = fix_rounds(&analysis.checked, Applicability::Safe, check) {
+    if let Some((fixed, count)) = fix_rounds(checked, Applicability::Safe, check) {
         actions.push(Action {
             title: format!("Fix all safe problems ({count})"),
             kind: ActionKind::FixAll,
             edits: vec![Edit {
                 span: 0..text.len(),
-                replacement: fixed.text.to_string(),
+                replacement: fixed.text().to_string(),
             }],
         });
     }

@@ -161,7 +161,7 @@ fn code_actions() {
         let c = cursor(path, c);
         let mut out = String::new();
         let check = |text: String| walls_ide::check_text(text, &Options::default());
-        for action in walls_ide::code_actions(&a, c..c, usize::MAX, &check) {
+        for action in walls_ide::code_actions(&a.checked, c..c, usize::MAX, &check) {
             writeln!(out, "{} ({:?})", action.title, action.kind).unwrap();
             for e in &action.edits {
                 writeln!(out, "  {} -> {:?}", at(&a, &e.span), e.replacement).unwrap();

@@ -223,42 +223,59 @@ fn whole(a: &Analysis, new_text: String) -> TextEdit {
 /// and "fix all safe problems".
 pub fn code_actions(uri: &Uri, doc: &Document, r: Range) -> Vec<CodeActionOrCommand> {
     let a = &doc.analysis;
-    walls_ide::code_actions(a, byte_range(a, r), MAX_QUICK_FIXES, &|text| {
+    let actions = walls_ide::code_actions(&a.checked, byte_range(a, r), MAX_QUICK_FIXES, &|text| {
         doc.check.checked(text)
-    })
-    .into_iter()
-    .map(|action| {
-        let edits = action
-            .edits
-            .into_iter()
-            .map(|e| TextEdit::new(lsp_range(a, &e.span), e.replacement))
-            .collect();
-        let edit = Some(workspace_edit(uri, edits));
-        CodeActionOrCommand::CodeAction(match action.kind {
-            ActionKind::QuickFix {
-                diagnostic,
-                preferred,
-            } => CodeAction {
-                title: action.title,
-                kind: Some(CodeActionKind::QUICKFIX),
-                diagnostics: Some(vec![to_lsp(
-                    uri,
-                    (&a.lines, a.text()),
-                    &a.diagnostics()[diagnostic],
-                )]),
-                edit,
-                is_preferred: Some(preferred),
-                ..CodeAction::default()
-            },
-            ActionKind::FixAll => CodeAction {
-                title: action.title,
-                kind: Some(CodeActionKind::SOURCE_FIX_ALL),
-                edit,
-                ..CodeAction::default()
-            },
+    });
+    to_lsp_actions(uri, (&a.lines, a.text()), a.diagnostics(), actions)
+}
+
+/// [`code_actions`] of a `.par` document.
+pub fn par_code_actions(uri: &Uri, doc: &ParDocument, r: Range) -> Vec<CodeActionOrCommand> {
+    let (lines, text) = (&doc.lines, doc.text());
+    let bytes = offset(lines, text, r.start)..offset(lines, text, r.end);
+    let actions = walls_ide::code_actions(&doc.checked, bytes, MAX_QUICK_FIXES, &|text| {
+        doc.check.checked_par(text)
+    });
+    to_lsp_actions(uri, (lines, text), &doc.checked.diagnostics, actions)
+}
+
+/// `actions` on the text `(lines, text)` whose diagnostics are `diagnostics`, as LSP's.
+fn to_lsp_actions(
+    uri: &Uri,
+    (lines, text): (&Lines, &str),
+    diagnostics: &[walls_diagnostics::Diagnostic],
+    actions: Vec<walls_ide::Action>,
+) -> Vec<CodeActionOrCommand> {
+    actions
+        .into_iter()
+        .map(|action| {
+            let edits = action
+                .edits
+                .into_iter()
+                .map(|e| TextEdit::new(range(lines, text, &e.span), e.replacement))
+                .collect();
+            let edit = Some(workspace_edit(uri, edits));
+            CodeActionOrCommand::CodeAction(match action.kind {
+                ActionKind::QuickFix {
+                    diagnostic,
+                    preferred,
+                } => CodeAction {
+                    title: action.title,
+                    kind: Some(CodeActionKind::QUICKFIX),
+                    diagnostics: Some(vec![to_lsp(uri, (lines, text), &diagnostics[diagnostic])]),
+                    edit,
+                    is_preferred: Some(preferred),
+                    ..CodeAction::default()
+                },
+                ActionKind::FixAll => CodeAction {
+                    title: action.title,
+                    kind: Some(CodeActionKind::SOURCE_FIX_ALL),
+                    edit,
+                    ..CodeAction::default()
+                },
+            })
         })
-    })
-    .collect()
+        .collect()
 }
 
 fn workspace_edit(uri: &Uri, edits: Vec<TextEdit>) -> WorkspaceEdit {

@@ -403,8 +403,10 @@ impl LanguageServer for Backend {
 
     async fn code_action(&self, params: CodeActionParams) -> Result<Option<CodeActionResponse>> {
         let uri = params.text_document.uri.clone();
+        let range = params.range;
         Ok(self
-            .with_document(&uri, |doc| features::code_actions(&uri, doc, params.range))
+            .with_par_document(&uri, |doc| features::par_code_actions(&uri, doc, range))
+            .or_else(|| self.with_document(&uri, |doc| features::code_actions(&uri, doc, range)))
             .filter(|actions| !actions.is_empty()))
     }
 

@@ -953,6 +953,22 @@ async fn par_files_are_checked_hovered_and_completed_for_the_build() {
         .map(|i| i["label"].as_str().unwrap())
         .collect();
     assert_eq!(labels, ["iCohesionModel"]);
+    // Its fixes: a comment indented (safe) moved to the first column, a duplicate's
+    // overridden line deleted, both in "fix all".
+    c.change(&uri("run.par"), 3, "  # note\nnSteps = 1\nnSteps = 2\n")
+        .await;
+    let actions = c.actions(&uri("run.par"), (0, 0), (2, 0)).await;
+    assert_eq!(
+        titles(&actions),
+        [
+            "move the comment to the first column (P001)",
+            "delete the line pkdgrav overrides (P006)",
+            "Fix all safe problems (2)"
+        ]
+    );
+    let all = actions.as_array().unwrap().last().unwrap();
+    let edits = all["edit"]["changes"][uri("run.par")].as_array().unwrap();
+    assert_eq!(edits[0]["newText"], "# note\nnSteps = 2\n");
     // ssdraw.par is ssdraw's: not a pkdgrav .par.
     let published = c
         .open_at(&uri("ssdraw.par"), "Camera position 1 2 3\n")
