@@ -1,6 +1,7 @@
 //! A pkdgrav `.par` file in the tools: its one check for a build ([`walls_par::check`]),
-//! from its bytes as a walls file's are read (bytes that are not UTF-8 give the encoding
-//! error only, at the valid prefix), and the editor's features for it, functions of the
+//! from its bytes (pkdgrav reads bytes: a file that is not UTF-8 is checked with each
+//! such byte read as U+FFFD, and offers no fix), and the editor's features for it,
+//! functions of the
 //! text and a byte offset: [`par_hover`] (a key's type, default, build and walls-sim's
 //! use) and [`par_completion`] (the build's keys).
 
@@ -60,9 +61,11 @@ fn evaluator_use(key: &str) -> String {
 
 /// A key's documentation in Markdown: its type and default, the compile options that
 /// register it (and whether `build` does), and what walls-sim does with it.
-pub fn key_markdown(name: &str, build: &Build) -> Option<String> {
+fn key_markdown(name: &str, build: &Build) -> Option<String> {
     let registrations: Vec<_> = walls_par::keys::any(name).collect();
-    let first = registrations.first()?;
+    // The build's own registration where it makes one (a key registered twice has a
+    // type and default per condition).
+    let first = walls_par::keys::registered(name, build).or(registrations.first().copied())?;
     let mut md = format!("**`{name}`** ({}", first.kind.as_str());
     md.push_str(&format!(", default `{}`)\n\n", first.default));
     let conditions: Vec<&str> = registrations.iter().map(|k| k.condition).collect();

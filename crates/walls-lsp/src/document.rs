@@ -37,12 +37,11 @@ impl Document {
     }
 }
 
-/// Whether the document at `uri` is a pkdgrav parameter file: a `.par` path, but not
-/// `ssdraw.par` (ssdraw's own, which is no `key = value` file), as `walls-lint` decides.
+/// Whether the document at `uri` is a pkdgrav parameter file, by its path's last part
+/// ([`walls_par::is_par_file`], as `walls-lint` decides).
 pub fn is_par(uri: &tower_lsp_server::ls_types::Uri) -> bool {
     let path = uri.path().as_str();
-    let name = path.rsplit('/').next().unwrap_or(path);
-    name.ends_with(".par") && !name.eq_ignore_ascii_case("ssdraw.par")
+    walls_par::is_par_file(path.rsplit('/').next().unwrap_or(path))
 }
 
 /// One open `.par` file, checked.

@@ -207,6 +207,16 @@ impl Backend {
     /// Checks `text` as the document at `uri` in its language (a `.par` file or a walls
     /// file) and keeps it, in place of what the document was.
     fn keep(state: &mut State, uri: Uri, version: i32, text: String) {
+        // ssdraw's parameter file (a `*.par` association sends it) is neither language:
+        // no document, no diagnostics.
+        let path = uri.path().as_str();
+        if path
+            .rsplit('/')
+            .next()
+            .is_some_and(walls_par::is_ssdraw_par)
+        {
+            return;
+        }
         if is_par(&uri) {
             let check = Check::find(&uri, state.folder.as_deref(), &state.options);
             state

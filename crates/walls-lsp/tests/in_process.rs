@@ -969,9 +969,13 @@ async fn par_files_are_checked_hovered_and_completed_for_the_build() {
     let all = actions.as_array().unwrap().last().unwrap();
     let edits = all["edit"]["changes"][uri("run.par")].as_array().unwrap();
     assert_eq!(edits[0]["newText"], "# note\nnSteps = 2\n");
-    // ssdraw.par is ssdraw's: not a pkdgrav .par.
-    let published = c
-        .open_at(&uri("ssdraw.par"), "Camera position 1 2 3\n")
-        .await;
-    assert!(codes(&published).iter().all(|c| !c.starts_with('P')));
+    // ssdraw.par is ssdraw's, neither a pkdgrav .par nor a walls file: nothing is
+    // published for it (the next diagnostics are the walls file's opened after it).
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri("ssdraw.par"), "languageId": "walls", "version": 1, "text": "Camera position 1 2 3\n"}}),
+    )
+    .await;
+    let published = c.open_at(&uri("w.walls"), "wall type plane\n").await;
+    assert_eq!(published["uri"], uri("w.walls"));
 }

@@ -66,9 +66,9 @@ impl<'a> File<'a> {
             // errors only the first is reported (pkdgrav stops there; a 10 MB line is
             // one finding, not eighty thousand), what they set is kept.
             let mut rest = Vec::new();
-            for (k, read) in line.reads.iter().enumerate() {
+            for (k, piece) in line.reads.iter().enumerate() {
                 let out: &mut Vec<Diagnostic> = if k == 0 { &mut *out } else { &mut rest };
-                match &read.kind {
+                match &piece.kind {
                     Kind::Blank | Kind::Comment => {}
                     Kind::Error { problem, at } => {
                         rules::par_syntax::at_line(text, *problem, at.clone(), out);
@@ -86,6 +86,13 @@ impl<'a> File<'a> {
                                 read,
                                 ignored,
                             }) => {
+                                // What a NUL byte cut off the line is lost too.
+                                let cut = &text[value.end..piece.span.end];
+                                let ignored = if ignored.is_empty() && cut.starts_with('\0') {
+                                    cut.to_string()
+                                } else {
+                                    ignored
+                                };
                                 let read_span = value.start..value.start + read;
                                 rules::read_as::check(
                                     registration,
@@ -205,14 +212,18 @@ pub fn check_overridden(text: &str, build: &Build, overridden: &[&str]) -> Vec<D
         std::ptr::eq(d.code, &crate::codes::NOT_FINITE)
             || std::ptr::eq(d.code, &crate::codes::READ_AS)
     };
-    out.retain(|d| {
-        !(set_elsewhere(d)
-            && file.entries.iter().any(|e| {
-                overridden.contains(&e.key.name)
-                    && e.value_span.start <= d.span.start
-                    && d.span.end <= e.value_span.end
-            }))
-    });
+    if !overridden.is_empty() {
+        let spans: Vec<_> = (file.entries.iter())
+            .filter(|e| overridden.contains(&e.key.name))
+            .map(|e| e.value_span.clone())
+            .collect();
+        out.retain(|d| {
+            !(set_elsewhere(d)
+                && spans
+                    .iter()
+                    .any(|s| s.start <= d.span.start && d.span.end <= s.end))
+        });
+    }
     rules::unknown_key::no_rename_to_a_key_given(&file, &mut out);
     rules::duplicate_key::check(&file, &mut out);
     let stopped = rules::startup::check(&file, &mut out);

@@ -19,6 +19,18 @@ pub mod syntax;
 pub mod value;
 
 pub use check::check;
+
+/// Whether a file named `name` (its last path component) is a pkdgrav parameter file:
+/// `.par`, but not `ssdraw.par` in any case (ssdraw's own, labels and values, no
+/// `key = value`). walls-lint and the language server decide a file's language by it.
+pub fn is_par_file(name: &str) -> bool {
+    name.ends_with(".par") && !is_ssdraw_par(name)
+}
+
+/// Whether a file named `name` is ssdraw's parameter file, `ssdraw.par` in any case.
+pub fn is_ssdraw_par(name: &str) -> bool {
+    name.eq_ignore_ascii_case("ssdraw.par")
+}
 pub use options::{Build, UnknownOption};
 pub use startup::KT_PER_KN;
 pub use walls_diagnostics::{Diagnostic, Severity};

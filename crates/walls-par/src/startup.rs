@@ -2,12 +2,12 @@
 //! without a check that make the run something else than it says: one row a check
 //! (docs/pkdgrav-physics.md §15, §19, and docs/pkdgrav-startup-checks.md, whose row ids
 //! the rows keep: `A73` stops, `B38` warns, `C28` changes a value; `N…` are its "not
-//! checked at start-up" notes). [`crate::rules::startup`] reports them.
+//! checked at start-up" notes, and N5 physics §2's `bDoGravity`).
+//! [`crate::rules::startup`] reports them.
 //!
-//! The rows are those a `.par` file alone can show, in the granular builds (soft and
-//! hard spheres, walls, aggregates, springs); the checks on the walls file and the
-//! initial conditions, the gas-dynamics and sliding-patch builds' and a few that fire
-//! on every run whatever the file says (`B20`, `B59`) are not rows (docs/par-files.md).
+//! The rows are checks a `.par` file alone can show, chosen for soft-sphere walls builds
+//! first; the hard-sphere, aggregate and springs builds' are covered in part, and the
+//! rows left out are listed in docs/par-files.md ("Rows not in the table").
 
 use crate::check::File;
 
@@ -65,6 +65,12 @@ fn k_t(file: &File) -> f64 {
 /// A tangential constant with pkdgrav's −1 sentinel resolved against `k_n`.
 fn spring(k_t: f64, k_n: f64) -> f64 {
     if k_t == -1.0 { KT_PER_KN * k_n } else { k_t }
+}
+
+/// Whether the hard-sphere block of checks runs: `nSmooth` ≥ 1 in a walls build
+/// (startup_checks.md's legend).
+fn hard_block(file: &File) -> bool {
+    n(file, "nSmooth") >= 1.0
 }
 
 /// The two-layer normal constants as pkdgrav runs with them: both −1 are `dKn`.
@@ -176,8 +182,8 @@ pub const CHECKS: &[Check] = &[
         "A62",
         "COLLISIONS && !DEM && WALLS",
         Stops,
-        &["iOverlapOption", "bStrictOverlap"],
-        |f| n(f, "iOverlapOption") == 1.0 && n(f, "bStrictOverlap") == 0.0,
+        &["iOverlapOption", "bStrictOverlap", "nSmooth"],
+        |f| hard_block(f) && n(f, "iOverlapOption") == 1.0 && n(f, "bStrictOverlap") == 0.0,
         "pkdgrav stops at start-up: hard-sphere walls with the backstep overlap option (`iOverlapOption = 1`) need `bStrictOverlap = 1`",
     ),
     row(
@@ -467,16 +473,16 @@ pub const CHECKS: &[Check] = &[
         "B22",
         "COLLISIONS && !DEM",
         Warns,
-        &["iOverlapOption"],
-        |f| n(f, "iOverlapOption") == -1.0,
+        &["iOverlapOption", "nSmooth"],
+        |f| hard_block(f) && n(f, "iOverlapOption") == -1.0,
         "pkdgrav warns at start-up: overlaps are ignored (`iOverlapOption = -1`)",
     ),
     row(
         "B23",
         "COLLISIONS && !DEM",
         Warns,
-        &["iOverlapOption"],
-        |f| (1.0..=4.0).contains(&n(f, "iOverlapOption")),
+        &["iOverlapOption", "nSmooth"],
+        |f| hard_block(f) && (1.0..=4.0).contains(&n(f, "iOverlapOption")),
         "pkdgrav prints a long caution about its overlap handling (`iOverlapOption` 1 to 4) at start-up",
     ),
     row(

@@ -154,7 +154,10 @@ fn reads(text: &str, span: Range<usize>) -> Vec<Read> {
 
 /// What the read at `span` is.
 fn kind(text: &str, span: Range<usize>) -> Kind {
+    // A NUL byte ends the C string pkdgrav reads the line into.
     let b = &text.as_bytes()[span.clone()];
+    let b = &b[..b.iter().position(|&c| c == 0).unwrap_or(b.len())];
+    let span = span.start..span.start + b.len();
     let at = |k: usize| span.start + k;
     if b.iter().all(|&c| blank(c)) {
         return Kind::Blank;

@@ -63,12 +63,7 @@ pub const UNQUOTED: [&str; 4] = [
 pub fn read(key: &str, kind: Kind, text: &str) -> Result<Reading, Unreadable> {
     match kind {
         Kind::Str => {
-            // A NUL byte ends the C string pkdgrav reads the line into.
-            let nul = text.find('\0');
-            let end = text[..nul.unwrap_or(text.len())]
-                .find('#')
-                .or(nul)
-                .unwrap_or(text.len());
+            let end = text.find('#').unwrap_or(text.len());
             let s = text[..end].trim_end_matches([' ', '\t', '\r', '\x0b', '\x0c']);
             let s = if UNQUOTED.contains(&key) {
                 let s = s.strip_prefix('"').unwrap_or(s);
@@ -79,10 +74,7 @@ pub fn read(key: &str, kind: Kind, text: &str) -> Result<Reading, Unreadable> {
             Ok(Reading {
                 value: Value::Str(s.to_string()),
                 read: end,
-                ignored: match nul {
-                    Some(at) if at == end => text[at..].to_string(),
-                    _ => String::new(),
-                },
+                ignored: String::new(),
             })
         }
         Kind::Int | Kind::Bool => {
@@ -140,9 +132,15 @@ fn float_prefix(text: &str) -> Option<usize> {
         }
     }
     if lower.starts_with("0x") {
+        // Hex digits with at most one `.`.
+        let mut dot = false;
         let hex = rest[2..]
             .bytes()
-            .take_while(|c| c.is_ascii_hexdigit() || *c == b'.')
+            .take_while(|&c| {
+                let first_dot = c == b'.' && !dot;
+                dot |= c == b'.';
+                c.is_ascii_hexdigit() || first_dot
+            })
             .count();
         if hex == 0 {
             return None;
@@ -206,7 +204,10 @@ fn parse_c_double(text: &str) -> f64 {
             x += f64::from(c.to_digit(16).unwrap_or(0)) * scale;
             scale /= 16.0;
         }
-        x * 2f64.powi(exponent.clamp(-2000, 2000))
+        // Scaled in two halves, so that 2^-1074 (a power whose reciprocal no double
+        // holds) is reached.
+        let e = exponent.clamp(-2200, 2200);
+        x * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
     } else if body.to_ascii_lowercase().starts_with("nan") {
         f64::NAN
     } else {
@@ -255,6 +256,8 @@ mod tests {
         assert_eq!(double("0x1.8p"), (1.5, "p".into()));
         assert_eq!(double("0x1p3"), (8.0, String::new()));
         assert_eq!(double("-0x1p-3 # s"), (-0.125, String::new()));
+        assert_eq!(double("0x1p-1074").0, f64::from_bits(1));
+        assert_eq!(double("0x1.8.8"), (1.5, ".8".into()));
         assert!(double("1e400").0.is_infinite());
         assert!(double("-inf").0.is_infinite());
         assert!(double("nan").0.is_nan());

@@ -122,3 +122,44 @@ fn the_attack_review_s_breaks_stay_fixed() {
     );
     assert!(t.elapsed().as_secs() < 20, "{:?}", t.elapsed());
 }
+
+#[test]
+fn the_review_s_findings_stay_fixed() {
+    let build = Build::default();
+    let codes = |text: &str| -> Vec<&'static str> {
+        check(text, &build).iter().map(|d| d.code.id).collect()
+    };
+    // A NUL byte ends the line: what follows it, a `!` included, is not read.
+    let found = codes("dDelta = 1e-7\0 ! x\n");
+    assert!(
+        !found.contains(&"P001") && found.contains(&"P004"),
+        "{found:?}"
+    );
+    // A value pkdgrav cannot read makes no start-up row hold (A10 on `nDigits = yes`).
+    let found = check("nDigits = yes\n", &build);
+    assert!(
+        found.iter().all(|d| !d.message.contains("[A10]")),
+        "{found:#?}"
+    );
+    // The rest of a long line that is a comment loses nothing: no P002.
+    let line = format!("achOutName = {}#{}\n", "o".repeat(114), "c".repeat(20));
+    assert!(!codes(&line).contains(&"P002"));
+    // The hard-sphere rows hold only when pkdgrav runs their block (nSmooth ≥ 1).
+    let hs = Build::parse("NUMREC").unwrap();
+    let rows = |text: &str| -> Vec<String> {
+        check(text, &hs).iter().map(|d| d.message.clone()).collect()
+    };
+    assert!(
+        rows("iOverlapOption = -1\n")
+            .iter()
+            .any(|m| m.contains("[B22]"))
+    );
+    assert!(
+        !rows("iOverlapOption = -1\nnSmooth = 0\n")
+            .iter()
+            .any(|m| m.contains("[B22]"))
+    );
+    // Quotes kept where pkdgrav keeps them.
+    assert!(codes("achOutName = \"ss\"\n").contains(&"P004"));
+    assert!(!codes("achWallsFile = \"w.dat\"\n").contains(&"P004"));
+}

@@ -172,7 +172,9 @@ fn parameter_files() {
          dEpsN = 0.8\ndEpsT=1\ndKn = 1e5\ndMuS = 0.5\ndzUnifGrav = -9.8\nbWallsEdgeDetect = 0\n",
     )
     .unwrap();
-    assert_eq!(p.in_file.as_deref(), Some("ic.ss"));
+    // pkdgrav keeps `achInFile`'s quotes (physics §14: only the walls, cohesion,
+    // uniform-gravity and special-particles file names lose theirs), and so does the run.
+    assert_eq!(p.in_file.as_deref(), Some("\"ic.ss\""));
     assert_eq!(p.walls_file.as_deref(), Some("walls.dat"));
     assert_eq!(
         (p.dt, p.steps, p.eps_n, p.eps_t, p.k_n, p.mu_s),

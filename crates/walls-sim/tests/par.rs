@@ -140,7 +140,7 @@ fn lines_longer_than_pkdgrav_reads_are_errors() {
     );
     assert_eq!(
         read_par(&long).unwrap_err().to_string(),
-        "line 2: the line is 128 bytes long; pkdgrav reads .par lines in 128-byte chunks, so it would read the rest of the line as a line of its own and stop with a syntax error: keep lines (comments included) to 127 bytes"
+        "line 2: the line is 128 bytes long; pkdgrav reads .par lines 127 bytes at a time, so it would read the rest of the line as a line of its own and stop with a syntax error: keep lines (comments included) to 127 bytes"
     );
 }
 

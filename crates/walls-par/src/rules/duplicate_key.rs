@@ -46,11 +46,13 @@ pub(crate) fn check(file: &File, out: &mut Vec<Diagnostic>) {
         let Some(last) = file.given(entry.key.name) else {
             continue;
         };
-        // A line read whole (not the rest of a long one) can go whole.
-        let whole = file
-            .lines
-            .get(entry.line - 1)
-            .is_some_and(|l| l.reads.len() == 1);
+        // A line read whole (its rest, if any, blanks: a CRLF line of 127 bytes) can go
+        // whole.
+        let whole = file.lines.get(entry.line - 1).is_some_and(|l| {
+            l.reads[1..]
+                .iter()
+                .all(|r| r.kind == crate::syntax::Kind::Blank)
+        });
         let mut d = Diagnostic::warning(
             &DUPLICATE_KEY,
             entry.key_span.clone(),

@@ -47,8 +47,15 @@ pub(crate) fn check(text: &str, line: &Line, out: &mut Vec<Diagnostic>) {
     let [first, rest @ ..] = &line.reads[..] else {
         return;
     };
-    // A rest of blanks (the `\r` of a CRLF line of 127 bytes) is a blank line to pkdgrav.
-    if rest.iter().all(|r| r.kind == crate::syntax::Kind::Blank) {
+    // A rest of blanks (the `\r` of a CRLF line of 127 bytes), or one that starts with
+    // `#`, is a blank line or a comment to pkdgrav: nothing is lost.
+    let harmless = |r: &crate::syntax::Read| {
+        matches!(
+            r.kind,
+            crate::syntax::Kind::Blank | crate::syntax::Kind::Comment
+        )
+    };
+    if rest.iter().all(harmless) {
         return;
     }
     let bytes = line.span.len();

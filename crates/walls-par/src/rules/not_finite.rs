@@ -70,7 +70,12 @@ pub(crate) fn check_value(
 
 /// Whether the mantissa of `written` (before its exponent) has a digit other than 0.
 fn zero_digits_differ(written: &str) -> bool {
-    let mantissa = written.split(['e', 'E']).next().unwrap_or("");
+    let body = written.trim_start_matches(['-', '+']);
+    if let Some(hex) = body.strip_prefix("0x").or_else(|| body.strip_prefix("0X")) {
+        let mantissa = hex.split(['p', 'P']).next().unwrap_or("");
+        return mantissa.bytes().any(|b| b.is_ascii_hexdigit() && b != b'0');
+    }
+    let mantissa = body.split(['e', 'E']).next().unwrap_or("");
     mantissa.bytes().any(|b| matches!(b, b'1'..=b'9'))
 }
 

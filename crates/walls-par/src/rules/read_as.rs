@@ -52,6 +52,24 @@ pub(crate) fn check(
     span: Range<usize>,
     out: &mut Vec<Diagnostic>,
 ) {
+    if let Value::Str(s) = value
+        && s.len() >= 2
+        && s.starts_with('"')
+        && s.ends_with('"')
+        && !crate::value::UNQUOTED.contains(&key.name)
+    {
+        out.push(
+            Diagnostic::warning(
+                &READ_AS,
+                span.clone(),
+                format!(
+                    "pkdgrav keeps the quotes of `{}`: it reads {s}, quotes included (only the walls, cohesion, uniform-gravity and special-particles file names lose theirs)",
+                    key.name
+                ),
+            )
+            .with_help("write the value without quotes"),
+        );
+    }
     if ignored.is_empty() {
         return;
     }

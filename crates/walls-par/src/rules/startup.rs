@@ -123,8 +123,15 @@ Good:
 pub(crate) fn check(file: &File, out: &mut Vec<Diagnostic>) -> Vec<&'static str> {
     let warnings_on = file.real("bVWarnings").is_none_or(|x| x != 0.0);
     let mut keys = Vec::new();
+    // A row reading a value pkdgrav cannot read (refused at its line) says nothing.
+    let unreadable =
+        |c: &Check| (c.keys.iter()).any(|k| file.given(k).is_some_and(|e| e.value.is_none()));
     for c in CHECKS {
-        if !file.build.meets(c.build) || (c.verbose && !warnings_on) || !(c.holds)(file) {
+        if !file.build.meets(c.build)
+            || (c.verbose && !warnings_on)
+            || unreadable(c)
+            || !(c.holds)(file)
+        {
             continue;
         }
         keys.extend_from_slice(c.keys);

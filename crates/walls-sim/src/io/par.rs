@@ -270,12 +270,14 @@ impl<'a> Lines<'a> {
         let mut bangs = Vec::new();
         for (i, raw) in text.split('\n').enumerate() {
             let n = i + 1;
-            if raw.len() > LINE_LIMIT {
+            // A CRLF line's `\r` past the limit is a blank line to pkdgrav.
+            let content = raw.strip_suffix('\r').unwrap_or(raw);
+            if content.len() > LINE_LIMIT {
                 return Err(error(
                     format!("line {n}"),
                     format!(
-                        "the line is {} bytes long; pkdgrav reads .par lines in 128-byte chunks, so it would read the rest of the line as a line of its own and stop with a syntax error: keep lines (comments included) to {LINE_LIMIT} bytes",
-                        raw.len()
+                        "the line is {} bytes long; pkdgrav reads .par lines {LINE_LIMIT} bytes at a time, so it would read the rest of the line as a line of its own and stop with a syntax error: keep lines (comments included) to {LINE_LIMIT} bytes",
+                        content.len()
                     ),
                 ));
             }
@@ -297,7 +299,15 @@ impl<'a> Lines<'a> {
                     format!("`{line}` is not `name = value`"),
                 ));
             };
-            let (name, value) = (name.trim(), value.trim().trim_matches('"'));
+            // Quotes are the value's, but the four file names' one leading and one
+            // trailing `"` (docs/pkdgrav-physics.md §14).
+            let (name, value) = (name.trim(), value.trim());
+            let value = if walls_par::value::UNQUOTED.contains(&name) {
+                let v = value.strip_prefix('"').unwrap_or(value);
+                v.strip_suffix('"').unwrap_or(v)
+            } else {
+                value
+            };
             by_key.insert(name, Line { n, value });
             order.push((n, name));
         }
@@ -461,7 +471,15 @@ fn beyond_int(key: &str, text: &str) -> String {
 /// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the
 /// others into its warnings ([`KEYS`]).
 pub fn read_par(text: &str) -> Result<Params, InputError> {
-    let lines = Lines::split(text)?;
+    read_par_overridden(text, &[])
+}
+
+/// [`read_par`] for a run whose command line sets the keys `overridden`: the file's lines
+/// of them are not read (nor judged), as if the file left them out.
+pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, InputError> {
+    let mut lines = Lines::split(text)?;
+    lines.by_key.retain(|k, _| !overridden.contains(k));
+    lines.order.retain(|(_, k)| !overridden.contains(k));
     // Every real the file gives pkdgrav (a `d…` key it knows, followed or not), by the
     // tools' rule for numbers: overflow and underflow are errors, a subnormal is read and
     // warned about.
@@ -759,7 +777,8 @@ pub fn read_file_for(
         let message = format!("{}{help} [{}]{more}", first.message, first.code.id);
         return Err(FileError::input(path, error(at, message)));
     }
-    let mut params = read_par(&text).map_err(|e| FileError::input(path, e))?;
+    let mut params =
+        read_par_overridden(&text, overridden).map_err(|e| FileError::input(path, e))?;
     params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
     Ok(params)
 }

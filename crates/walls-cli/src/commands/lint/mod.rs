@@ -194,12 +194,11 @@ impl From<walls_ide::par::ParChecked> for Report {
     }
 }
 
-/// Whether `path` names a pkdgrav parameter file: `.par`, but not `ssdraw.par`.
+/// Whether `path` names a pkdgrav parameter file ([`walls_par::is_par_file`]).
 pub(super) fn is_pkdgrav_par(path: &std::path::Path) -> bool {
-    path.extension().is_some_and(|e| e == "par")
-        && !path
-            .file_name()
-            .is_some_and(|n| n.eq_ignore_ascii_case("ssdraw.par"))
+    (path.file_name())
+        .and_then(|n| n.to_str())
+        .is_some_and(walls_par::is_par_file)
 }
 
 /// One checked file: the text the diagnostics refer to, or the I/O error.

@@ -65,12 +65,20 @@ pub enum SimCommand {
     Scene {
         /// The walls file; `-` reads standard input. Without it, the --par file's
         /// achWallsFile.
-        #[arg(value_name = "FILE", required_unless_present = "par")]
+        #[arg(
+            value_name = "FILE",
+            required_unless_present = "par",
+            conflicts_with = "par"
+        )]
         file: Option<String>,
         /// A pkdgrav run directory's .par file, whose achWallsFile (beside it) is the
         /// walls file when FILE is not given; refused where `run --par` refuses it.
         #[arg(long, value_name = "FILE")]
         par: Option<String>,
+        /// The pkdgrav build the --par file is read for, as `run --pkdgrav-build` takes
+        /// it (default pkdgrav's own).
+        #[arg(long = "pkdgrav-build", value_name = "OPTIONS", value_parser = walls_sim::cli::build, requires = "par")]
+        pkdgrav_build: Option<walls_sim::build::Build>,
         /// Also give each wall's `position` at this time (pkdgrav units).
         #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
         time: Option<f64>,
@@ -86,13 +94,14 @@ pub fn dispatch(args: &SimArgs) -> i32 {
         Some(SimCommand::Scene {
             file,
             par,
+            pkdgrav_build,
             time,
             mode,
         }) => {
             warn_subnormal(time.map(|t| ("--time", t)));
             let file = match (file, par) {
                 (Some(file), _) => file.clone(),
-                (None, Some(par)) => match run_directory(par, None) {
+                (None, Some(par)) => match run_directory(par, None, pkdgrav_build.clone()) {
                     Ok(RunDirectory { walls: Some(w), .. }) => w,
                     Ok(_) => {
                         return error(format!(
@@ -122,14 +131,19 @@ pub(super) struct RunDirectory {
 }
 
 /// The run directory of the `.par` file at `par`, read as `walls-sim run --par` reads it
-/// (refused where pkdgrav's default build refuses it); `particles`, when given on the
-/// command line, stands for its `achInFile`.
-pub(super) fn run_directory(par: &str, particles: Option<String>) -> Result<RunDirectory, String> {
+/// (refused where pkdgrav's `build`, else its default build, refuses it); `particles`,
+/// when given on the command line, stands for its `achInFile`.
+pub(super) fn run_directory(
+    par: &str,
+    particles: Option<String>,
+    build: Option<walls_sim::build::Build>,
+) -> Result<RunDirectory, String> {
     use walls_sim::config::{self, Flags, Inputs};
     let flags = Flags {
         inputs: Inputs {
             par: Some(par.to_string()),
             particles,
+            build,
             ..Inputs::default()
         },
         ..Flags::default()

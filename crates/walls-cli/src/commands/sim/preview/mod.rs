@@ -29,6 +29,10 @@ pub struct PreviewArgs {
     /// it.
     #[arg(long, value_name = "FILE")]
     pub par: Option<String>,
+    /// The pkdgrav build the --par file is read for, as `run --pkdgrav-build` takes it
+    /// (default pkdgrav's own).
+    #[arg(long = "pkdgrav-build", value_name = "OPTIONS", value_parser = walls_sim::cli::build, requires = "par")]
+    pub pkdgrav_build: Option<walls_sim::build::Build>,
     /// ssdraw's view: an ssdraw.par (read as ssdraw reads it) whose camera position,
     /// look-at point, sky vector, wall data file, wall time offset and aspect ratio the
     /// pictures take (--view, --up and --size win over it).
@@ -124,7 +128,7 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         .first()
         .map(|p| p.to_string_lossy().into_owned());
     let run_directory = (args.par.as_deref())
-        .map(|p| super::run_directory(p, first))
+        .map(|p| super::run_directory(p, first, args.pkdgrav_build.clone()))
         .transpose()?;
     let file = walls_file(args, run_directory.as_ref(), ssdraw.as_ref())?;
     let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
