@@ -238,8 +238,9 @@ impl Walk<'_> {
         }
         if !looks_like_walls(&real) {
             let message = format!(
-                "{at}: not a walls file (it does not begin with `wall`, `defaults`, a unit \
-                 or `time`): not checked"
+                "{at}: not a walls file (it does not begin with `wall` or `defaults` and a \
+                 keyword or a type, or a unit or `time` and a number): not checked; name it on \
+                 the command line to check it"
             );
             return Err((error(message, line), None));
         }
