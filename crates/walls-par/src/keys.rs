@@ -124,19 +124,8 @@ pub fn any(name: &str) -> impl Iterator<Item = &'static Key> + '_ {
 /// The key `build` registers nearest to `name`, if one is near enough to be a slip: the
 /// same letters in another case, or a few letters off.
 pub fn nearest(name: &str, build: &Build) -> Option<&'static str> {
-    let lower = name.to_ascii_lowercase();
-    let budget = (name.len() / 4).max(1);
-    all()
-        .iter()
-        .filter(|k| k.name.len().abs_diff(name.len()) <= budget)
-        .filter(|k| build.meets(k.condition))
-        .map(|k| {
-            let d = strsim::damerau_levenshtein(&k.name.to_ascii_lowercase(), &lower);
-            (d, k.name)
-        })
-        .filter(|&(d, _)| d <= budget)
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, k)| k)
+    let registered = all().iter().filter(|k| build.meets(k.condition));
+    crate::nearest(name, registered.map(|k| k.name))
 }
 
 #[cfg(test)]

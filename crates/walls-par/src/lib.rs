@@ -20,6 +20,27 @@ pub mod value;
 
 pub use check::check;
 
+/// The name of `candidates` nearest to `name`, if one is near enough to be a slip: the
+/// same letters in another case, or a quarter of them off (at least one). The one
+/// "did you mean" of `.par` keys and build options.
+pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let lower = name.to_ascii_lowercase();
+    let budget = (name.len() / 4).max(1);
+    candidates
+        .into_iter()
+        // No edit distance within the budget between names whose lengths differ more.
+        .filter(|c| c.len().abs_diff(name.len()) <= budget)
+        .map(|c| {
+            (
+                strsim::damerau_levenshtein(&c.to_ascii_lowercase(), &lower),
+                c,
+            )
+        })
+        .filter(|&(d, _)| d <= budget)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
 /// Whether a file named `name` (its last path component) is a pkdgrav parameter file:
 /// `.par`, but not `ssdraw.par` in any case (ssdraw's own, labels and values, no
 /// `key = value`). walls-lint and the language server decide a file's language by it.

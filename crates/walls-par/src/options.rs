@@ -158,13 +158,7 @@ impl Build {
 
 /// The option nearest to `name`: the same letters in another case, or a few off.
 fn nearest(name: &str) -> Option<&'static str> {
-    let upper = name.to_ascii_uppercase();
-    OPTIONS
-        .iter()
-        .map(|&o| (strsim::damerau_levenshtein(o, &upper), o))
-        .filter(|&(d, _)| d <= (name.len() / 4).max(1))
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, o)| o)
+    crate::nearest(name, OPTIONS.iter().copied())
 }
 
 /// A build with every option but `SLIDING_PATCH`, for the tables' tests.

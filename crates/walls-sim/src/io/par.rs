@@ -189,18 +189,7 @@ pub const MAX_DIGITS: usize = 20;
 /// The known key nearest to the unknown `key`, if one is near enough to be a slip: the
 /// same letters in another case, or a few letters off.
 pub fn suggestion(key: &str) -> Option<&'static str> {
-    let lower = key.to_ascii_lowercase();
-    let budget = (key.len() / 4).max(1);
-    KEYS.iter()
-        .map(|&(k, _)| {
-            (
-                strsim::damerau_levenshtein(&k.to_ascii_lowercase(), &lower),
-                k,
-            )
-        })
-        .filter(|&(d, _)| d <= budget)
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, k)| k)
+    walls_par::nearest(key, KEYS.iter().map(|&(k, _)| k))
 }
 
 /// The range a run parameter must lie in, whether it comes from a `.par` file or the
