@@ -88,6 +88,8 @@ impl Tool {
     pub const MESH: Tool = Tool::writer("walls-mesh");
     /// `walls-sim run`, writing a run's outputs.
     pub const RUN: Tool = Tool::writer("walls-sim run");
+    /// `walls-sim export`, writing a pkdgrav run directory.
+    pub const EXPORT: Tool = Tool::writer("walls-sim export");
     /// `walls-sim preview`, writing pictures.
     pub const PREVIEW: Tool = Tool::writer("walls-sim preview");
 

@@ -3,7 +3,8 @@
 //! their types and defaults (§18, [`keys`]), and what it checks, warns about and
 //! changes when it starts (§19, [`startup`]); and what walls-sim does with each key
 //! ([`evaluator`]). [`check`] turns a file into diagnostics (`P…` codes, [`codes`]),
-//! which walls-lint and the language server report as they report a walls file's.
+//! which walls-lint and the language server report as they report a walls file's;
+//! [`write`] writes a file pkdgrav reads as meant.
 //!
 //! The build is a set of compile options ([`Build`]); the default is pkdgrav's default
 //! soft-sphere build with walls ([`options::DEFAULT`]).
@@ -17,6 +18,7 @@ pub mod rules;
 pub mod startup;
 pub mod syntax;
 pub mod value;
+pub mod write;
 
 pub use check::check;
 

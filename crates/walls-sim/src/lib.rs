@@ -14,7 +14,8 @@
 //!   checks, and the outcome; [`warning`]: what a run (and reading its inputs) warns
 //!   about, as coded data;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
-//!   for the real pkdgrav run;
+//!   for the real pkdgrav run; [`export`]: the run as a pkdgrav run directory's `.par`
+//!   file and README;
 //! * with the `clap` feature, the settings' types are command-line values, and `cli`
 //!   holds the value parsers their options share.
 
@@ -27,6 +28,7 @@ pub mod cli;
 pub mod config;
 pub mod contact;
 pub mod dynamics;
+pub mod export;
 pub mod io;
 mod permute;
 pub mod report;

@@ -24,6 +24,14 @@ pub enum Model {
 }
 
 impl Model {
+    /// The model's number as pkdgrav numbers them (`iCohesionModel`).
+    pub fn number(self) -> i64 {
+        match self {
+            Model::Contact => 0,
+            Model::Bridge => 1,
+        }
+    }
+
     /// The model numbered `n` (0 or 1) as pkdgrav numbers them.
     pub fn from_number(n: i64) -> Option<Model> {
         match n {

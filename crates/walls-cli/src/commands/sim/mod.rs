@@ -1,5 +1,5 @@
 //! `walls-sim`'s command line ([`SimArgs`], run by [`dispatch`]) and its commands, one
-//! module each: [`scene`], [`run`], [`plan`], [`advise`] and [`preview`]; and what they
+//! module each: [`scene`], [`run`], [`plan`], [`advise`], [`preview`] and [`export`]; and what they
 //! share: reading the walls file, and the exit statuses. The value parsers of numbers
 //! with a range are walls-sim's ([`walls_sim::cli`]), as are `run`'s and `plan`'s
 //! options ([`walls_sim::config::Flags`]).
@@ -9,6 +9,7 @@
 //! 2 is a usage or I/O error, or input a run cannot use.
 
 pub mod advise;
+pub mod export;
 pub mod outputs;
 pub mod plan;
 pub mod preview;
@@ -57,6 +58,10 @@ pub enum SimCommand {
     /// Suggest the spring constants and timestep (dKn, dKt, dDelta) for the real
     /// pkdgrav run from the particles' size, mass and speed, and print the .par lines.
     Advise(Box<AdviseArgs>),
+    /// Write the run (a walls file, particles and run options, or a --par run directory
+    /// with options over it) as a pkdgrav run directory: ss.par with every key the run
+    /// depends on, walls.dat, initial.ss and a README naming the build and the commands.
+    Export(Box<export::ExportArgs>),
     /// Draw the walls (and particles) at a time, or their motion over a span: SVG
     /// (the default), POV-Ray, VTK or an interactive HTML page.
     Preview(Box<PreviewArgs>),
@@ -118,8 +123,9 @@ pub fn dispatch(args: &SimArgs) -> i32 {
         Some(SimCommand::Plan(args)) => plan::run(args),
         Some(SimCommand::Preview(args)) => preview::run(args),
         Some(SimCommand::Advise(args)) => advise::run(args),
+        Some(SimCommand::Export(args)) => export::run(args),
         // Only for arguments built in code: clap shows the help when no command is given.
-        None => error("no command given: scene, run, plan, advise or preview"),
+        None => error("no command given: scene, run, plan, advise, preview or export"),
     }
 }
 
@@ -180,10 +186,14 @@ fn exit_status(errors: usize) -> i32 {
 
 /// Reads and checks the walls file at `path` in `mode`, with its number of errors;
 /// when it has some, says so, and that the command goes on `doing` ("running",
-/// "drawing") what could be resolved. A length or speed whose squares overflow (C121)
+/// "drawing") what could be resolved (`None`: the caller refuses the file, and says so). A length or speed whose squares overflow (C121)
 /// stays in the resolved scene, and a run or picture of it would compute infinities
 /// and NaN: such a file is refused.
-fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, usize), String> {
+fn read_walls(
+    path: &str,
+    mode: ContactModel,
+    doing: Option<&str>,
+) -> Result<(Checked, usize), String> {
     let options = Options {
         mode,
         ..Options::default()
@@ -219,10 +229,12 @@ fn read_walls(path: &str, mode: ContactModel, doing: &str) -> Result<(Checked, u
             ContactModel::Ssdem => "ssdem",
             ContactModel::Hsdem => "hsdem",
         };
-        crate::errln!(
-            "walls-sim: {path}: {} error(s) for a {mode} run (`walls-lint --mode {mode} {path}` shows them); {doing} what could be resolved",
-            errors.len()
-        );
+        if let Some(doing) = doing {
+            crate::errln!(
+                "walls-sim: {path}: {} error(s) for a {mode} run (`walls-lint --mode {mode} {path}` shows them); {doing} what could be resolved",
+                errors.len()
+            );
+        }
     }
     Ok((checked, errors.len()))
 }

@@ -7,7 +7,7 @@ use super::{error, exit_status};
 
 /// Prints the plan of the run `args` describe; the exit status.
 pub fn run(args: &RunArgs) -> i32 {
-    let prepared = match prepare(args) {
+    let prepared = match prepare(args, Some("running")) {
         Ok(p) => p,
         Err(e) => return error(e),
     };

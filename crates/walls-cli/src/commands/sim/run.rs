@@ -65,6 +65,10 @@ pub fn run(args: &RunArgs) -> i32 {
 pub struct Prepared {
     /// The walls of the file, checked in the run's mode and decoded.
     pub walls: Vec<Wall>,
+    /// The walls file's text.
+    pub walls_text: std::sync::Arc<str>,
+    /// The `.par` file read, if any.
+    pub par: Option<walls_sim::io::par::Params>,
     /// The particles.
     pub particles: Vec<Particle>,
     /// The settings, from the options, the `.par` file and the defaults.
@@ -86,8 +90,10 @@ pub struct Prepared {
 
 /// Reads and checks everything a run needs: the `.par` file (its warnings go to
 /// standard error), the walls file (the argument, else the `.par` file's; checked in the
-/// run's mode), the particles, and the settings from options, `.par` and defaults.
-pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
+/// run's mode), the particles, and the settings from options, `.par` and defaults. A
+/// walls file with errors is said to be `doing` ("running") what could be resolved;
+/// `None` says nothing of it (the caller refuses it).
+pub fn prepare(args: &RunArgs, doing: Option<&str>) -> Result<Prepared, String> {
     use walls_sim::config;
     let flags = Flags {
         inputs: args.inputs.clone(),
@@ -109,7 +115,7 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
                 None => "no walls file: give FILE, or --par with an achWallsFile line".to_string(),
             },
         )?;
-    let (checked, errors) = read_walls(&file, flags.build().contact_model(), "running")?;
+    let (checked, errors) = read_walls(&file, flags.build().contact_model(), doing)?;
     let walls = decode(&checked.scene);
     let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
     let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
@@ -133,6 +139,8 @@ pub fn prepare(args: &RunArgs) -> Result<Prepared, String> {
     .collect();
     Ok(Prepared {
         walls,
+        walls_text: checked.text,
+        par,
         particles: run.particles,
         settings: run.settings,
         errors,
@@ -158,7 +166,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         readout,
         numbers,
         ..
-    } = prepare(args)?;
+    } = prepare(args, Some("running"))?;
     let scene = &walls[..];
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
     let output =

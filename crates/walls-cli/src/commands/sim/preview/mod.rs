@@ -131,7 +131,7 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         .map(|p| super::run_directory(p, first, args.pkdgrav_build.clone()))
         .transpose()?;
     let file = walls_file(args, run_directory.as_ref(), ssdraw.as_ref())?;
-    let (checked, errors) = read_walls(&file, ContactModel::Ssdem, "drawing")?;
+    let (checked, errors) = read_walls(&file, ContactModel::Ssdem, Some("drawing"))?;
     let scene = &checked.scene;
     // The .par file's particles when none are named.
     let from_par = (run_directory.as_ref())

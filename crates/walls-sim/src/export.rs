@@ -1,0 +1,489 @@
+//! A run as a pkdgrav run directory (`walls-sim export`): the `.par` file's settings that
+//! make pkdgrav run what walls-sim runs, each with where its value came from, and the
+//! directory's README naming the build and the commands. walls-cli writes the files.
+//!
+//! Every value the run depends on is written, with the exact digits that read back as
+//! the run's double: the timestep and the last step (the end time counted in steps),
+//! the outputs, the particles' material, gravity, the contact switches, cohesion and
+//! two-layer constants in the builds that have them, and the keys walls-sim follows at
+//! one value only where pkdgrav's default differs ([`walls_par::evaluator::Use::Only`]:
+//! `iForceOverrideOption = 2`, `iCheckInterval = 0`, `bDoSelfGravity = 0`). The other
+//! lines of a `.par` file the run came from are copied as they were, after them.
+//! What pkdgrav has no key for (`--no-particle-contacts`, no particles) is refused.
+
+use crate::config::{self, Flags, Outputs};
+use crate::run::Settings;
+use walls_par::check::File;
+use walls_par::evaluator::{self, Use};
+use walls_par::write::{Section, Setting, Value};
+
+/// The names of the run directory's files, as the `.par` file names them.
+#[derive(Debug, Clone, Copy)]
+pub struct Names<'a> {
+    /// The `.par` file.
+    pub par: &'a str,
+    /// The walls file (`achWallsFile`).
+    pub walls: &'a str,
+    /// The initial conditions (`achInFile`).
+    pub particles: &'a str,
+    /// The cohesion file (`achCohesionFile`), when the run reads one.
+    pub cohesion: Option<&'a str>,
+}
+
+/// The `.par` file a run came from: its name, and its lines read for the build.
+pub struct Source<'a> {
+    /// Its name, as the comments show it (the last part of its path: the comments do
+    /// not carry the folders of the machine it was exported on).
+    pub path: &'a str,
+    /// Its lines.
+    pub file: &'a File<'a>,
+}
+
+/// What the exported `.par` file says, and what it is for.
+pub struct Export {
+    /// The file's text.
+    pub par: String,
+    /// The build pkdgrav must be compiled with.
+    pub build: walls_par::Build,
+    /// The number of the last step (`nSteps`).
+    pub last_step: u64,
+}
+
+/// The `.par` file of the run that `flags`, `source` and the defaults settled as
+/// `settings` (with `outputs`), for the directory whose files are `names`; an error
+/// saying what pkdgrav cannot be told.
+pub fn par_file(
+    flags: &Flags,
+    source: Option<&Source>,
+    settings: &Settings,
+    outputs: &Outputs,
+    names: &Names,
+) -> Result<Export, String> {
+    let build = walls_par::Build::parse(&settings.build.names())
+        .map_err(|e| format!("the build's option {} is not pkdgrav's", e.name))?;
+    if !settings.particle_contacts {
+        return Err(
+            "--no-particle-contacts has no pkdgrav key: pkdgrav's particles always meet each other; leave it out to export"
+                .into(),
+        );
+    }
+    let last_step = settings.end_step();
+    let mut written = Written {
+        source,
+        build: &build,
+        sections: Vec::new(),
+    };
+    written.section("the files (beside this one)");
+    written.text("achInFile", names.particles, "the initial conditions");
+    written.text("achWallsFile", names.walls, "the walls file");
+    written.text(
+        "achOutName",
+        &outputs.ss.base,
+        "the outputs' names, NAME.STEP (pkdgrav's default is pkdgrav)",
+    );
+    written.int(
+        "nDigits",
+        outputs.ss.digits as i64,
+        None,
+        "pkdgrav's default",
+    );
+    if let Some(file) = names.cohesion {
+        written.text(
+            "achCohesionFile",
+            file,
+            "the cohesion coefficients by colour",
+        );
+    }
+
+    written.section("the steps");
+    written.real(
+        "dDelta",
+        settings.dt,
+        flag(flags.inputs.dt, "--dt"),
+        &dt_default(settings),
+    );
+    let steps_from = flags.inputs.t_end.map(|t| {
+        format!(
+            "--t-end {} in steps of dDelta (the last ends at or after it)",
+            walls_par::write::real(t)
+        )
+    });
+    written.int(
+        "nSteps",
+        i64::try_from(last_step).unwrap_or(i64::MAX),
+        steps_from,
+        "walls-sim's default end time (three free falls over the scene) in steps of dDelta",
+    );
+    if settings.start_step != 0 || written.given("iStartStep") {
+        written.int(
+            "iStartStep",
+            i64::try_from(settings.start_step).unwrap_or(i64::MAX),
+            None,
+            "pkdgrav's default",
+        );
+    }
+    written.int(
+        "iOutInterval",
+        i64::try_from(outputs.every).unwrap_or(i64::MAX),
+        flags.counts.every.map(|n| format!("--every {n}")),
+        &format!(
+            "walls-sim's default, an output every {} steps",
+            config::EVERY
+        ),
+    );
+
+    written.section("the particles' material");
+    let m = &settings.material;
+    let material_default = if source.is_some() {
+        "pkdgrav's default"
+    } else {
+        "walls-sim's default"
+    };
+    let given = &flags.inputs;
+    written.real(
+        "dEpsN",
+        m.eps_n,
+        flag(given.eps_n, "--epsn"),
+        material_default,
+    );
+    written.real(
+        "dEpsT",
+        m.eps_t,
+        flag(given.eps_t, "--epst"),
+        material_default,
+    );
+    written.real(
+        "dKn",
+        m.k_n,
+        flag(given.k_n, "--k-n"),
+        "walls-sim's default, from the particles' size and speed and the scene (docs/evaluator.md)",
+    );
+    // pkdgrav's −1 is 2/7 of dKn, computed as the run computed it.
+    let k_t = if m.k_t.to_bits() == (walls_par::KT_PER_KN * m.k_n).to_bits() {
+        -1.0
+    } else {
+        m.k_t
+    };
+    written.real(
+        "dKt",
+        k_t,
+        flag(given.k_t, "--k-t"),
+        "2/7 of dKn, pkdgrav's default (-1)",
+    );
+    written.real("dMuS", m.mu_s, flag(given.mu_s, "--mu-s"), material_default);
+    written.real("dMuR", m.mu_r, flag(given.mu_r, "--mu-r"), material_default);
+    written.real("dMuT", m.mu_t, flag(given.mu_t, "--mu-t"), material_default);
+    written.real("dBetaS", m.beta_s, None, "pkdgrav's default");
+
+    written.section("forces and contacts");
+    let gravity_from = given.gravity.as_ref().map(|_| "--gravity".to_string());
+    let gravity_default = if source.is_none() && flags.inputs.particles.is_none() {
+        "walls-sim's default for its own particles"
+    } else {
+        "pkdgrav's default"
+    };
+    for (key, g) in ["dxUnifGrav", "dyUnifGrav", "dzUnifGrav"]
+        .into_iter()
+        .zip(settings.gravity.iter())
+    {
+        written.real(key, *g, gravity_from.clone(), gravity_default);
+    }
+    written.flag_key(
+        "bDoGravity",
+        settings.forces,
+        None,
+        "pkdgrav's default: forces are evaluated",
+    );
+    written.flag_key(
+        "bWallsEdgeDetect",
+        settings.edges,
+        flags.inputs.no_edges.then(|| "--no-edges".to_string()),
+        "pkdgrav's default",
+    );
+    written.flag_key(
+        "bUseContactRadius",
+        settings.contact_radius,
+        None,
+        "pkdgrav's default",
+    );
+    written.flag_key(
+        "bUseLegacyRoll",
+        settings.legacy_roll,
+        None,
+        "pkdgrav's default",
+    );
+    written.real(
+        "dAccCrit",
+        settings.acc_crit,
+        None,
+        "pkdgrav's default: off",
+    );
+    if build.has("DEM_COHESION") {
+        written.int(
+            "iCohesionModel",
+            settings.cohesion.model.number(),
+            None,
+            "pkdgrav's default",
+        );
+        written.real(
+            "dCohesiveCoeff",
+            settings.cohesion.coefficient,
+            None,
+            "pkdgrav's default",
+        );
+    }
+    if let Some(t) = settings.two_layer.filter(|_| build.has("DEM_TWOLAYERS")) {
+        for (key, x) in [
+            ("dInnerOverlapBndry", t.boundary),
+            ("dKnOuter", t.k_n_outer),
+            ("dKtOuter", t.k_t_outer),
+            ("dKnInner", t.k_n_inner),
+            ("dKtInner", t.k_t_inner),
+        ] {
+            written.real(key, x, None, "pkdgrav's default");
+        }
+    }
+
+    written.section("what walls-sim runs as pkdgrav does at one value only");
+    for &(key, u) in evaluator::KEYS {
+        if let Use::Only {
+            value,
+            default,
+            why,
+        } = u
+            && (value != default || written.says_otherwise(key, value))
+        {
+            written.only(key, value, default, why);
+        }
+    }
+    if build.has("DEM") && !written.given("iOutcomes") {
+        written.int(
+            "iOutcomes",
+            0,
+            None,
+            "a DEM build ignores it, and warns at start-up unless it is 0 (B37; pkdgrav's default is 2)",
+        );
+    }
+    if let Some(source) = source {
+        written.copy(source);
+    }
+    let header = format!(
+        "pkdgrav parameters of a run exported by walls-sim {}: {} steps of {} from t = {}. \
+         Build: {} (README.md). Each key says where its value came from; \
+         pkdgrav reads at most 127 bytes a line and refuses an exclamation mark anywhere.",
+        env!("CARGO_PKG_VERSION"),
+        last_step.saturating_sub(settings.start_step),
+        walls_par::write::real(settings.dt),
+        walls_par::write::real(settings.t_start()),
+        build.names(),
+    );
+    let par = walls_par::write::render(&header, &written.sections, &build)?;
+    Ok(Export {
+        par,
+        build,
+        last_step,
+    })
+}
+
+/// `Some(flag)` when the command line gave `value`.
+fn flag<T>(value: Option<T>, flag: &str) -> Option<String> {
+    value.map(|_| flag.to_string())
+}
+
+/// Where a timestep of walls-sim's own came from.
+fn dt_default(settings: &Settings) -> String {
+    let rule = match settings.method() {
+        crate::run::ContactModel::Ssdem => {
+            "pi*sqrt(m/(2 dKn))/100 for the lightest particle, at most what moves anything 2 % of the smallest radius"
+        }
+        crate::run::ContactModel::Hsdem => "what moves anything at most 2 % of the smallest radius",
+    };
+    format!(
+        "walls-sim's default timestep: {rule}, shortened so that whole steps end on the end time"
+    )
+}
+
+/// The settings written so far, and what they are written from.
+struct Written<'a> {
+    source: Option<&'a Source<'a>>,
+    build: &'a walls_par::Build,
+    sections: Vec<Section>,
+}
+
+impl Written<'_> {
+    /// Starts a section headed `heading`.
+    fn section(&mut self, heading: &str) {
+        self.sections.push(Section {
+            heading: heading.to_uppercase(),
+            ..Section::default()
+        });
+    }
+
+    /// Whether the source `.par` file gives `key`.
+    fn given(&self, key: &str) -> bool {
+        self.source.is_some_and(|s| s.file.given(key).is_some())
+    }
+
+    /// Whether the source `.par` file gives `key` a value other than `value` (the line
+    /// pkdgrav follows, the last).
+    fn says_otherwise(&self, key: &str, value: f64) -> bool {
+        self.source
+            .and_then(|s| s.file.given(key))
+            .is_some_and(|entry| entry.value.as_ref().and_then(|v| v.real()) != Some(value))
+    }
+
+    /// Where a value came from: the command line's `flag`, else the source's line of
+    /// `key`, else `default`.
+    fn origin(&self, key: &str, flag: Option<String>, default: &str) -> String {
+        if let Some(flag) = flag {
+            return format!("{key}: from {flag}");
+        }
+        if let Some((source, entry)) = self.source.and_then(|s| Some((s, s.file.given(key)?))) {
+            return format!("{key}: from {} line {}", source.path, entry.line);
+        }
+        format!("{key}: {default}")
+    }
+
+    /// Adds `key = value` (when the build registers `key`: a key it lacks changes
+    /// nothing pkdgrav or the run does) with its origin.
+    fn push(&mut self, key: &'static str, value: Value, comment: String) {
+        if walls_par::keys::registered(key, self.build).is_none() {
+            return;
+        }
+        let section = self
+            .sections
+            .last_mut()
+            .expect("a section is started first");
+        section.settings.push(Setting {
+            key,
+            value,
+            comment,
+        });
+    }
+
+    fn real(&mut self, key: &'static str, x: f64, flag: Option<String>, default: &str) {
+        let comment = self.origin(key, flag, default);
+        self.push(key, Value::Real(x), comment);
+    }
+
+    fn int(&mut self, key: &'static str, n: i64, flag: Option<String>, default: &str) {
+        let comment = self.origin(key, flag, default);
+        self.push(key, Value::Int(n), comment);
+    }
+
+    fn flag_key(&mut self, key: &'static str, on: bool, flag: Option<String>, default: &str) {
+        let comment = self.origin(key, flag, default);
+        self.push(key, Value::Bool(on), comment);
+    }
+
+    fn text(&mut self, key: &'static str, text: &str, what: &str) {
+        self.push(key, Value::Text(text.to_string()), format!("{key}: {what}"));
+    }
+
+    /// A key walls-sim follows at `value` only, pkdgrav's default being `default`.
+    fn only(&mut self, key: &'static str, value: f64, default: f64, why: &str) {
+        let Some(registered) = walls_par::keys::registered(key, self.build) else {
+            return;
+        };
+        let said = self
+            .source
+            .filter(|_| self.says_otherwise(key, value))
+            .and_then(|s| Some((s.path, s.file.given(key)?)))
+            .map(|(path, entry)| format!(" ({path} line {} said otherwise)", entry.line))
+            .unwrap_or_default();
+        let comment = format!(
+            "{key}: pkdgrav's default is {}; {why}{said}",
+            walls_par::write::real(default)
+        );
+        let value = match registered.kind {
+            walls_par::keys::Kind::Double => Value::Real(value),
+            walls_par::keys::Kind::Bool => Value::Bool(value != 0.0),
+            _ => Value::Int(value as i64),
+        };
+        self.push(key, value, comment);
+    }
+
+    /// The source's lines that set keys not written above, as they were (the last of
+    /// each key, which is the one pkdgrav follows).
+    fn copy(&mut self, source: &Source) {
+        let written: Vec<&str> = self
+            .sections
+            .iter()
+            .flat_map(|s| s.settings.iter().map(|s| s.key))
+            .collect();
+        let file = source.file;
+        let mut copied = Vec::new();
+        for entry in &file.entries {
+            let key = entry.key.name;
+            if written.contains(&key)
+                || crate::io::par::PATH_KEYS.contains(&key)
+                || !file.wins(entry)
+            {
+                continue;
+            }
+            let line = file.text[entry.line_span.clone()].trim_end().to_string();
+            let what = match evaluator::use_of(key) {
+                Some(Use::NotYet(why)) => format!(" (walls-sim does not model it: {why})"),
+                _ => String::new(),
+            };
+            let why = format!("{key}: from {} line {}{what}", source.path, entry.line);
+            copied.push((line, why));
+        }
+        if !copied.is_empty() {
+            self.sections.push(Section {
+                heading: format!("THE OTHER KEYS OF {}", source.path),
+                settings: Vec::new(),
+                copied,
+            });
+        }
+    }
+}
+
+/// The run directory's README: what is in it, the build pkdgrav needs, and the commands
+/// that check it, run it here, run it with pkdgrav (serial and MPI) and bring the outputs
+/// back.
+pub fn readme(export: &Export, names: &Names, particles: usize, every: u64) -> String {
+    let Names {
+        par,
+        walls,
+        particles: ss,
+        cohesion,
+    } = *names;
+    let cohesion = cohesion
+        .map(|c| format!("* `{c}`: the cohesion coefficients by colour.\n"))
+        .unwrap_or_default();
+    let build = export.build.names();
+    let last = export.last_step;
+    let outputs = if every == 0 {
+        format!("the last step's, `ss.{last}`")
+    } else {
+        format!("every {every} steps and the last, step {last}")
+    };
+    format!(
+        "# A pkdgrav run directory\n\n\
+Exported by `walls-sim export` (walls {version}).\n\n\
+* `{par}`: pkdgrav's parameters; each key says where its value came from.\n\
+* `{walls}`: the walls file.\n\
+* `{ss}`: the initial conditions, {particles} particle(s), in pkdgrav's `.ss` format.\n\
+{cohesion}\n\
+## The build\n\n\
+Compile pkdgrav with the options\n\n    {build}\n\n\
+A build without one of them refuses `{par}` at start-up or runs other physics;\n\
+`walls-lint --pkdgrav-build \"OPTIONS\" .` checks the directory for another build.\n\n\
+## Check, run here, run on the cluster\n\n\
+```sh\n\
+walls-lint .                                   # what pkdgrav would refuse: nothing\n\
+walls-sim run --par {par} --pkdgrav-build \"{build}\" --out here --ss-output\n\
+pkdgrav {par}                                  # serial\n\
+mpirun -np 8 pkdgrav {par}                     # MPI: as many ranks as the job has cores\n\
+```\n\n\
+(`pkdgrav` is the program your build makes.) pkdgrav writes its outputs, named by\n\
+`achOutName` and `nDigits`, {outputs}, in the folder it runs in.\n\n\
+## Bring the outputs back\n\n\
+```sh\n\
+walls-sim preview {walls} --particles . --out movie.html\n\
+```\n\n\
+draws the `.ss` series of this folder as a movie (docs/preview.md).\n",
+        version = env!("CARGO_PKG_VERSION"),
+    )
+}
