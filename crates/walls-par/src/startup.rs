@@ -5,9 +5,9 @@
 //! checked at start-up" notes, and N5 physics §2's `bDoGravity`).
 //! [`crate::rules::startup`] reports them.
 //!
-//! The rows are checks a `.par` file alone can show, chosen for soft-sphere walls builds
-//! first; the hard-sphere, aggregate and springs builds' are covered in part, and the
-//! rows left out are listed in docs/par-files.md ("Rows not in the table").
+//! The rows are the checks a `.par` file alone can show, of the walls builds: soft- and
+//! hard-sphere, aggregates and springs; the rows left out are listed in
+//! docs/par-files.md ("Rows not in the table").
 
 use crate::check::File;
 
@@ -83,6 +83,29 @@ fn layers(file: &File) -> (f64, f64) {
     }
 }
 
+/// pkdgrav's hard-sphere outcomes, the bits of `iOutcomes` (startup_checks.md A43).
+const MERGE: i64 = 1;
+/// See [`MERGE`].
+const BOUNCE: i64 = 2;
+/// See [`MERGE`].
+const FRAG: i64 = 4;
+
+/// Whether `iOutcomes` as pkdgrav runs with it has `outcome`.
+fn has(file: &File, outcome: i64) -> bool {
+    let o = n(file, "iOutcomes");
+    o.is_finite() && (o as i64) & outcome != 0
+}
+
+/// Whether `x` is in (0, 1], as pkdgrav's restitution checks want.
+fn unit(x: f64) -> bool {
+    x > 0.0 && x <= 1.0
+}
+
+/// Whether `x` is in [−1, 1], as pkdgrav's tangential restitution checks want.
+fn signed_unit(x: f64) -> bool {
+    (-1.0..=1.0).contains(&x)
+}
+
 const fn row(
     id: &'static str,
     build: &'static str,
@@ -155,6 +178,14 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav stops at start-up: the opening angle `dTheta` must be 0 or more",
     ),
     row(
+        "A13",
+        "!CHANGESOFT",
+        Stops,
+        &["bPhysicalSoft", "bVariableSoft"],
+        |f| n(f, "bPhysicalSoft") != 0.0 || n(f, "bVariableSoft") != 0.0,
+        "pkdgrav stops at start-up: `bPhysicalSoft` and `bVariableSoft` need the CHANGESOFT compile option",
+    ),
+    row(
         "A15",
         "always",
         Stops,
@@ -171,6 +202,14 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav stops at start-up: heliocentric frames need `bDoGravity`",
     ),
     row(
+        "A35",
+        "COLLISIONS",
+        Stops,
+        &["dCentMass"],
+        |f| n(f, "dCentMass") < 0.0,
+        "pkdgrav aborts at start-up: `dCentMass` must be 0 or more",
+    ),
+    row(
         "A36",
         "COLLISIONS && WALLS",
         Stops,
@@ -179,12 +218,282 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav aborts at start-up: a walls build cannot use `bFandG`",
     ),
     row(
+        "A41",
+        "COLLISIONS",
+        Stops,
+        &["bFindRejects", "nSmooth"],
+        |f| n(f, "bFindRejects") != 0.0 && n(f, "nSmooth") < 2.0,
+        "pkdgrav stops at start-up: the search for rejects (`bFindRejects`) needs `nSmooth` of 2 or more",
+    ),
+    row(
+        "A42",
+        "COLLISIONS",
+        Stops,
+        &["iCollLogOption"],
+        |f| ![0.0, 1.0, 2.0].contains(&n(f, "iCollLogOption")),
+        "pkdgrav stops at start-up: `iCollLogOption` must be 0, 1 or 2",
+    ),
+    row(
+        "A43",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOutcomes", "nSmooth"],
+        |f| hard_block(f) && !has(f, MERGE | BOUNCE | FRAG),
+        "pkdgrav stops at start-up: hard-sphere collisions need an outcome in `iOutcomes` (1 merge, 2 bounce, 4 fragment)",
+    ),
+    row(
+        "A44",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOutcomes", "bDoSelfGravity", "nSmooth"],
+        |f| {
+            hard_block(f) && has(f, MERGE) && has(f, BOUNCE | FRAG) && n(f, "bDoSelfGravity") == 0.0
+        },
+        "pkdgrav stops at start-up: merging with another outcome (conditional merging) needs `bDoSelfGravity`",
+    ),
+    row(
+        "A45",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dDensity", "iOutcomes", "nSmooth"],
+        |f| hard_block(f) && has(f, MERGE) && n(f, "dDensity") < 0.0,
+        "pkdgrav stops at start-up: the merged density `dDensity` must be 0 or more",
+    ),
+    row(
+        "A46",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iDensityAltCol", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, MERGE)
+                && (n(f, "iDensityAltCol") < 0.0 || n(f, "iDensityAltCol") == 3.0)
+        },
+        "pkdgrav stops at start-up: `iDensityAltCol` must be 0 or more and not 3 (the planetesimal colour)",
+    ),
+    row(
+        "A47",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dDensityAltVal", "iDensityAltCol", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, MERGE)
+                && n(f, "iDensityAltCol") > 0.0
+                && n(f, "dDensityAltVal") <= 0.0
+        },
+        "pkdgrav stops at start-up: an alternate-density colour needs `dDensityAltVal` above 0",
+    ),
+    row(
+        "A48",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dEpsN", "iEpsNOption", "iOutcomes", "nSmooth"],
+        |f| hard_block(f) && has(f, BOUNCE) && n(f, "iEpsNOption") == 0.0 && !unit(n(f, "dEpsN")),
+        "pkdgrav stops at start-up: bouncing with a constant restitution needs `dEpsN` in (0, 1]",
+    ),
+    row(
+        "A49",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dEpsNCoef", "iEpsNOption", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "iEpsNOption") == 1.0
+                && n(f, "dEpsNCoef") <= 0.0
+        },
+        "pkdgrav stops at start-up: the power-law restitution (`iEpsNOption = 1`) needs `dEpsNCoef` above 0",
+    ),
+    row(
+        "A50",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dEpsNVStar", "iEpsNOption", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "iEpsNOption") == 3.0
+                && n(f, "dEpsNVStar") < 0.0
+        },
+        "pkdgrav stops at start-up: `iEpsNOption = 3` needs `dEpsNVStar` of 0 or more",
+    ),
+    row(
+        "A51",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iEpsNOption", "iOutcomes", "nSmooth"],
+        |f| hard_block(f) && has(f, BOUNCE) && !(0.0..=3.0).contains(&n(f, "iEpsNOption")),
+        "pkdgrav stops at start-up: `iEpsNOption` must be 0 to 3",
+    ),
+    row(
+        "A52",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dEpsNMin", "iEpsNOption", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f) && has(f, BOUNCE) && n(f, "iEpsNOption") != 0.0 && !unit(n(f, "dEpsNMin"))
+        },
+        "pkdgrav stops at start-up: a variable restitution needs `dEpsNMin` in (0, 1]",
+    ),
+    row(
+        "A53",
+        "COLLISIONS && !DEM",
+        Stops,
+        &[
+            "dSlideLimit",
+            "dCollapseLimit",
+            "dCrushLimit",
+            "iOutcomes",
+            "nSmooth",
+        ],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && ["dSlideLimit", "dCollapseLimit", "dCrushLimit"]
+                    .iter()
+                    .any(|k| n(f, k) < 0.0)
+        },
+        "pkdgrav stops at start-up: `dSlideLimit`, `dCollapseLimit` and `dCrushLimit` must be 0 or more",
+    ),
+    row(
+        "A54",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dSlideEpsN", "dSlideLimit", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "dSlideLimit") > 0.0
+                && !unit(n(f, "dSlideEpsN"))
+        },
+        "pkdgrav stops at start-up: sliding (`dSlideLimit` above 0) needs `dSlideEpsN` in (0, 1]",
+    ),
+    row(
+        "A55",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dSlideEpsT", "dSlideLimit", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "dSlideLimit") > 0.0
+                && !signed_unit(n(f, "dSlideEpsT"))
+        },
+        "pkdgrav stops at start-up: sliding (`dSlideLimit` above 0) needs `dSlideEpsT` in [−1, 1]",
+    ),
+    row(
+        "A56",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dCrushEpsN", "dCrushLimit", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "dCrushLimit") != 0.0
+                && !unit(n(f, "dCrushEpsN"))
+        },
+        "pkdgrav stops at start-up: crushing (`dCrushLimit` not 0) needs `dCrushEpsN` in (0, 1]",
+    ),
+    row(
+        "A57",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dCrushEpsT", "dCrushLimit", "iOutcomes", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && has(f, BOUNCE)
+                && n(f, "dCrushLimit") != 0.0
+                && !signed_unit(n(f, "dCrushEpsT"))
+        },
+        "pkdgrav stops at start-up: crushing (`dCrushLimit` not 0) needs `dCrushEpsT` in [−1, 1]",
+    ),
+    row(
+        "A58",
+        "COLLISIONS && !DEM && !AGGS && !SPRINGS",
+        Stops,
+        &["iOutcomes", "nSmooth"],
+        |f| hard_block(f) && has(f, FRAG),
+        "pkdgrav stops at start-up: fragmentation (`iOutcomes` with 4) needs an AGGS or SPRINGS build",
+    ),
+    row(
+        "A59",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOverlapOption", "nSmooth"],
+        |f| hard_block(f) && !(-1.0..=4.0).contains(&n(f, "iOverlapOption")),
+        "pkdgrav stops at start-up: `iOverlapOption` must be −1 to 4",
+    ),
+    row(
+        "A60",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOverlapOption", "bDoSelfGravity", "nSmooth"],
+        |f| hard_block(f) && n(f, "iOverlapOption") == 3.0 && n(f, "bDoSelfGravity") == 0.0,
+        "pkdgrav stops at start-up: repelling overlaps (`iOverlapOption = 3`) needs `bDoSelfGravity`",
+    ),
+    row(
+        "A61",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOverlapOption", "iOutcomes", "nSmooth"],
+        |f| hard_block(f) && n(f, "iOverlapOption") == 4.0 && !has(f, MERGE),
+        "pkdgrav stops at start-up: merging overlaps (`iOverlapOption = 4`) needs the merge outcome (1) in `iOutcomes`",
+    ),
+    row(
         "A62",
         "COLLISIONS && !DEM && WALLS",
         Stops,
         &["iOverlapOption", "bStrictOverlap", "nSmooth"],
         |f| hard_block(f) && n(f, "iOverlapOption") == 1.0 && n(f, "bStrictOverlap") == 0.0,
         "pkdgrav stops at start-up: hard-sphere walls with the backstep overlap option (`iOverlapOption = 1`) need `bStrictOverlap = 1`",
+    ),
+    row(
+        "A63",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dAdjPosLimit", "iOverlapOption", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && n(f, "iOverlapOption") == 2.0
+                && !(n(f, "dAdjPosLimit") > 0.0 && n(f, "dAdjPosLimit") < 1.0)
+        },
+        "pkdgrav stops at start-up: adjusting positions (`iOverlapOption = 2`) needs `dAdjPosLimit` in (0, 1); its default is 0",
+    ),
+    row(
+        "A64",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["dRepelFac", "iOverlapOption", "nSmooth"],
+        |f| hard_block(f) && n(f, "iOverlapOption") == 3.0 && n(f, "dRepelFac") <= 0.0,
+        "pkdgrav stops at start-up: repelling overlaps (`iOverlapOption = 3`) needs `dRepelFac` above 0; its default is 0",
+    ),
+    row(
+        "A65",
+        "COLLISIONS && !DEM",
+        Stops,
+        &["iOverlapOption", "nSmooth"],
+        |f| !hard_block(f) && n(f, "iOverlapOption") == 3.0,
+        "pkdgrav stops at start-up: repelling overlaps (`iOverlapOption = 3`) with collisions off (`nSmooth` below 1)",
+    ),
+    row(
+        "A67",
+        "AGGS",
+        Stops,
+        &["iOutcomes"],
+        |f| has(f, FRAG) && !has(f, BOUNCE),
+        "pkdgrav stops at start-up: fragmentation needs the bounce outcome (2) in `iOutcomes`",
+    ),
+    row(
+        "A68",
+        "AGGS",
+        Stops,
+        &["dFragLimit", "dMergeLimit", "iOutcomes"],
+        |f| {
+            let (frag, merge) = (n(f, "dFragLimit"), n(f, "dMergeLimit"));
+            has(f, FRAG) && has(f, MERGE) && frag * merge > 0.0 && frag.abs() < merge.abs()
+        },
+        "pkdgrav stops at start-up: with fragmentation and merging, `dFragLimit` must not be below `dMergeLimit` in size",
     ),
     row(
         "A72",
@@ -236,6 +545,78 @@ pub const CHECKS: &[Check] = &[
         &["iCheckInterval"],
         |f| n(f, "iCheckInterval") > 0.0,
         "pkdgrav stops at start-up: a SPRINGS build cannot restart from checkpoints (`iCheckInterval` must be 0)",
+    ),
+    row(
+        "A78",
+        "SPRINGS",
+        Stops,
+        &["iOutcomes"],
+        |f| has(f, MERGE),
+        "pkdgrav stops at start-up: a SPRINGS build cannot merge (`iOutcomes` with 1)",
+    ),
+    row(
+        "A79",
+        "SPRINGS",
+        Stops,
+        &["iOutcomes"],
+        |f| !has(f, BOUNCE),
+        "pkdgrav stops at start-up: a SPRINGS build needs the bounce outcome (2) in `iOutcomes`",
+    ),
+    row(
+        "A80",
+        "SPRINGS",
+        Stops,
+        &["dMeanYoungsModulus"],
+        |f| n(f, "dMeanYoungsModulus") < 0.0,
+        "pkdgrav stops at start-up: `dMeanYoungsModulus` must be 0 or more",
+    ),
+    row(
+        "A81",
+        "SPRINGS",
+        Stops,
+        &["dMeanStrainLimit"],
+        |f| n(f, "dMeanStrainLimit") < 0.0,
+        "pkdgrav stops at start-up: `dMeanStrainLimit` must be 0 or more",
+    ),
+    row(
+        "A82",
+        "SPRINGS",
+        Stops,
+        &["dMeanStrainLimit", "dMaxStrainLimit"],
+        |f| n(f, "dMeanStrainLimit") > n(f, "dMaxStrainLimit"),
+        "pkdgrav stops at start-up: `dMeanStrainLimit` must not be above `dMaxStrainLimit`",
+    ),
+    row(
+        "A83",
+        "SPRINGS",
+        Stops,
+        &["dLinkageLength"],
+        |f| n(f, "dLinkageLength") <= 0.0,
+        "pkdgrav stops at start-up: `dLinkageLength` must be above 0",
+    ),
+    row(
+        "A84",
+        "SPRINGS",
+        Stops,
+        &["dZeroStrainLength"],
+        |f| n(f, "dZeroStrainLength") < 0.0,
+        "pkdgrav stops at start-up: `dZeroStrainLength` must be 0 or more",
+    ),
+    row(
+        "A85",
+        "SPRINGS",
+        Stops,
+        &["dPorosityFactor"],
+        |f| !unit(n(f, "dPorosityFactor")),
+        "pkdgrav stops at start-up: `dPorosityFactor` must be in (0, 1]",
+    ),
+    row(
+        "A86",
+        "SPRINGS",
+        Stops,
+        &["nSmooth"],
+        |f| n(f, "nSmooth") > 32.0,
+        "pkdgrav stops at start-up: a SPRINGS build takes at most 32 neighbours (`nSmooth`); the default 64 is too many",
     ),
     row(
         "A87",
@@ -398,6 +779,22 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav stops at start-up: every two-layer spring constant must be above 0 once its −1 is resolved (both normal constants −1 are `dKn`; a tangential −1 is 2/7 of its normal constant; one normal constant alone left at −1 stays −1)",
     ),
     row(
+        "A120",
+        "COLLISIONS",
+        Stops,
+        &["nSuperCool"],
+        |f| n(f, "nSuperCool") != 0.0,
+        "pkdgrav aborts at start-up: `nSuperCool` must be 0 in a collisions build",
+    ),
+    row(
+        "A126",
+        "COLLISIONS",
+        Stops,
+        &["bFindRejects"],
+        |f| n(f, "bFindRejects") != 0.0,
+        "pkdgrav stops after its search for overlapping initial conditions (`bFindRejects`) and runs no step: status 1 when it finds some (it writes a rejects file), 0 otherwise",
+    ),
+    row(
         "N1",
         "DEM",
         Stops,
@@ -437,6 +834,22 @@ pub const CHECKS: &[Check] = &[
         |f| n(f, "bDoSelfGravity") != 0.0 && n(f, "bDoGravity") == 0.0,
         "pkdgrav warns at start-up: `bDoSelfGravity` may need `bDoGravity`",
     ),
+    row(
+        "B7",
+        "always",
+        Warns,
+        &["bCannonical", "bComove"],
+        |f| n(f, "bComove") == 0.0 && n(f, "bCannonical") == 0.0,
+        "pkdgrav warns at start-up and sets `bCannonical` back to 1: without comoving coordinates (`bComove = 0`) it is always 1",
+    ),
+    row(
+        "B8",
+        "always",
+        Warns,
+        &["bPhysicalSoft", "bComove"],
+        |f| n(f, "bComove") == 0.0 && n(f, "bPhysicalSoft") != 0.0,
+        "pkdgrav warns at start-up and sets `bPhysicalSoft` back to 0: without comoving coordinates (`bComove = 0`) it is always 0",
+    ),
     verbose(row(
         "B9",
         "always",
@@ -470,6 +883,40 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav warns at start-up: with `nSmooth` below 1 collision detection is off",
     )),
     row(
+        "B19",
+        "COLLISIONS && !DEM",
+        Warns,
+        &[
+            "dMergeLimit",
+            "dDensity",
+            "iDensityAltCol",
+            "dDensityAltVal",
+            "iOutcomes",
+            "nSmooth",
+        ],
+        |f| {
+            hard_block(f)
+                && !has(f, MERGE)
+                && [
+                    "dMergeLimit",
+                    "dDensity",
+                    "iDensityAltCol",
+                    "dDensityAltVal",
+                ]
+                .iter()
+                .any(|k| n(f, k) != 0.0)
+        },
+        "pkdgrav warns at start-up that the merge parameters are ignored without the merge outcome; `dMergeLimit` defaults to 1, so set it to 0 to be rid of the warning",
+    ),
+    row(
+        "B21",
+        "COLLISIONS && !DEM",
+        Warns,
+        &["dFragLimit", "iOutcomes", "nSmooth"],
+        |f| hard_block(f) && !has(f, FRAG) && n(f, "dFragLimit") != 0.0,
+        "pkdgrav warns at start-up that `dFragLimit` is ignored without the fragmentation outcome (4)",
+    ),
+    row(
         "B22",
         "COLLISIONS && !DEM",
         Warns,
@@ -486,12 +933,55 @@ pub const CHECKS: &[Check] = &[
         "pkdgrav prints a long caution about its overlap handling (`iOverlapOption` 1 to 4) at start-up",
     ),
     row(
+        "B24",
+        "COLLISIONS && !DEM",
+        Warns,
+        &["dBackstepLimit", "iOverlapOption", "dDelta", "nSmooth"],
+        |f| {
+            hard_block(f)
+                && n(f, "iOverlapOption") == 1.0
+                && (n(f, "dBackstepLimit") == 0.0 || n(f, "dBackstepLimit") > n(f, "dDelta"))
+        },
+        "pkdgrav warns at start-up that the backstep limit exceeds `dDelta` (its default 0 means no limit)",
+    ),
+    row(
+        "B25",
+        "COLLISIONS && !DEM",
+        Warns,
+        &[
+            "dBackstepLimit",
+            "dAdjPosLimit",
+            "dRepelFac",
+            "iOverlapOption",
+            "nSmooth",
+        ],
+        |f| {
+            hard_block(f)
+                && [
+                    ("dBackstepLimit", 1.0),
+                    ("dAdjPosLimit", 2.0),
+                    ("dRepelFac", 3.0),
+                ]
+                .iter()
+                .any(|&(k, option)| n(f, k) != 0.0 && n(f, "iOverlapOption") != option)
+        },
+        "pkdgrav warns at start-up that `dBackstepLimit`, `dAdjPosLimit` or `dRepelFac` is ignored without its overlap option (`iOverlapOption` 1, 2 or 3)",
+    ),
+    row(
         "B26",
         "COLLISIONS && AGGS",
         Warns,
         &["bDoGravity"],
         |f| n(f, "bDoGravity") == 0.0,
         "pkdgrav warns at start-up: aggregates' accelerations and torques expect `bDoGravity`",
+    ),
+    row(
+        "B27",
+        "AGGS",
+        Warns,
+        &["dFragLimit", "dMergeLimit", "iOutcomes"],
+        |f| has(f, FRAG) && has(f, MERGE) && n(f, "dFragLimit") * n(f, "dMergeLimit") < 0.0,
+        "pkdgrav warns at start-up that `dFragLimit` and `dMergeLimit` have opposite signs (one in escape speeds, the other in physical units)",
     ),
     row(
         "B28",
