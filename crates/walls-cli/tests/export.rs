@@ -124,7 +124,7 @@ fn an_export_runs_as_the_direct_run_and_lints_clean() {
     assert!(export.status.success(), "{}", stderr(&export));
     assert!(
         stderr(&export).contains(
-            "to job: ss.par, walls.dat, initial.ss, README.md (build: COLLISIONS DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT WALLS)"
+            "to job: ss.par, walls.dat, initial.ss, README.md, walls.toml (build: COLLISIONS DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT WALLS)"
         ),
         "{}",
         stderr(&export)
@@ -159,6 +159,8 @@ fn an_export_runs_as_the_direct_run_and_lints_clean() {
         ("iForceOverrideOption", "2", "pkdgrav's default is 0"),
         ("iCheckInterval", "0", "pkdgrav's default is 10"),
         ("bDoSelfGravity", "0", "pkdgrav's default is 1"),
+        ("iOutcomes", "0", "a DEM build ignores it"),
+        ("dExtraStore", "1", "small runs on several ranks"),
         ("achInFile", "initial.ss", "the initial conditions"),
     ] {
         let at = lines
@@ -247,6 +249,66 @@ fn a_run_directory_exports_as_itself() {
     }
 }
 
+/// Hard-sphere and cohesion run directories export as themselves too; the directory's
+/// `walls.toml` names its build, so that `walls-lint DIR` checks for it.
+#[test]
+fn other_builds_export_as_themselves() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (scene, build) in [
+        ("hs_moving", "NUMREC"),
+        (
+            "cohesion",
+            "DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT DEM_COHESION",
+        ),
+    ] {
+        let par = golden(scene).join("params.par");
+        let par = par.to_str().unwrap();
+        let job = d.join(scene);
+        let job = job.to_str().unwrap();
+        let out = sim(
+            d,
+            &[
+                "export",
+                "--par",
+                par,
+                "--pkdgrav-build",
+                build,
+                "--out",
+                job,
+            ],
+        );
+        assert!(out.status.success(), "{scene}: {}", stderr(&out));
+        let lint = Command::new(env!("CARGO_BIN_EXE_walls-lint"))
+            .arg(job)
+            .output()
+            .unwrap();
+        assert!(
+            lint.status.success() && stderr(&lint).contains("0 errors, 0 warnings"),
+            "{scene}: {}",
+            stderr(&lint)
+        );
+        let written = std::fs::read_to_string(d.join(scene).join("ss.par")).unwrap();
+        if build == "NUMREC" {
+            // No DEM: no DEM-only key, and the merge limit that silences B19.
+            assert!(!written.contains("iForceOverrideOption"), "{written}");
+            assert!(
+                written.contains("\ndMergeLimit              = 0\n"),
+                "{written}"
+            );
+        }
+        let mut runs = Vec::new();
+        for (name, par) in [("a", par.to_string()), ("b", format!("{job}/ss.par"))] {
+            let out_dir = d.join(format!("{scene}-{name}"));
+            let args = ["run", "--par", &par, "--pkdgrav-build", build, "--out"];
+            let out = sim(d, &[&args[..], &[out_dir.to_str().unwrap()]].concat());
+            assert!(out.status.success(), "{scene} {name}: {}", stderr(&out));
+            runs.push(std::fs::read(out_dir.join("particles.csv")).unwrap());
+        }
+        assert_eq!(runs[0], runs[1], "{scene}");
+    }
+}
+
 #[test]
 fn what_pkdgrav_cannot_be_told_is_refused_with_nothing_written() {
     let dir = tempfile::tempdir().unwrap();
@@ -254,6 +316,16 @@ fn what_pkdgrav_cannot_be_told_is_refused_with_nothing_written() {
     std::fs::write(d.join("cup.walls"), CUP).unwrap();
     std::fs::write(d.join("bad.walls"), "wall type plane\n  radius -1\n").unwrap();
     std::fs::write(d.join("balls.csv"), cup_particles()).unwrap();
+    std::fs::write(
+        d.join("late.par"),
+        "achInFile = balls.csv\ndDelta = 1e-5\niStartStep = 200\nnSteps = 300\niForceOverrideOption = 2\niCheckInterval = 0\n",
+    )
+    .unwrap();
+    std::fs::write(
+        d.join("latin1.par"),
+        b"iForceOverrideOption = 2\nachOutName = d\xe9j\xe0\niCheckInterval = 0\n",
+    )
+    .unwrap();
     for (args, status, says) in [
         (
             &[
@@ -282,6 +354,22 @@ fn what_pkdgrav_cannot_be_told_is_refused_with_nothing_written() {
             ][..],
             2,
             "pkdgrav counts steps in an int (nSteps at most 2147483647)",
+        ),
+        (
+            &["cup.walls", "--par", "late.par", "--t-end", "1e-3"][..],
+            2,
+            "the run takes no step: it starts at t = 2e-3 (step 200)",
+        ),
+        (
+            &[
+                "cup.walls",
+                "--par",
+                "latin1.par",
+                "--particles",
+                "balls.csv",
+            ][..],
+            2,
+            "latin1.par: line 2 is not UTF-8 text",
         ),
         (
             &["bad.walls", "--particles", "balls.csv"][..],

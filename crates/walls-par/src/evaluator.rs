@@ -72,6 +72,9 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iDEMStatsInterval", Use::NoEffect),
     ("dTangentialSpringDrag", Use::NoEffect),
     ("iMaxRung", Use::NoEffect),
+    // The merge limit of hard-sphere collisions, of no effect without the merge outcome
+    // (the evaluator only bounces, `iOutcomes = 2`).
+    ("dMergeLimit", Use::NoEffect),
     ("iCohesionModel", Use::Read),
     ("dCohesiveCoeff", Use::Read),
     ("achCohesionFile", Use::Read),

@@ -47,6 +47,10 @@ pub struct Export {
     pub build: walls_par::Build,
     /// The number of the last step (`nSteps`).
     pub last_step: u64,
+    /// What the user should know: the source's lines copied that name files the export
+    /// does not carry, or whose physics walls-sim does not follow; a folder of
+    /// `achOutName` not kept.
+    pub warnings: Vec<String>,
 }
 
 /// The `.par` file of the run that `flags`, `source` and the defaults settled as
@@ -69,6 +73,7 @@ pub fn par_file(
     }
     let last_step = settings.end_step();
     let mut written = Written {
+        warnings: Vec::new(),
         source,
         build: &build,
         sections: Vec::new(),
@@ -81,6 +86,13 @@ pub fn par_file(
         &outputs.ss.base,
         "the outputs' names, NAME.STEP (pkdgrav's default is pkdgrav)",
     );
+    if let Some(w) = &outputs.ss_warning {
+        written.append_to_last(&format!("; {w}"));
+        written.warnings.push(w.replace(
+            "the .ss outputs are written in --out as",
+            "the outputs are named",
+        ));
+    }
     written.int(
         "nDigits",
         outputs.ss.digits as i64,
@@ -108,12 +120,17 @@ pub fn par_file(
             walls_par::write::real(t)
         )
     });
+    let ends = format!(
+        "; the run ends at t = nSteps*dDelta = {}",
+        walls_par::write::real(last_step as f64 * settings.dt)
+    );
     written.int(
         "nSteps",
         i64::try_from(last_step).unwrap_or(i64::MAX),
         steps_from,
         "walls-sim's default end time (three free falls over the scene) in steps of dDelta",
     );
+    written.append_to_last(&ends);
     if settings.start_step != 0 || written.given("iStartStep") {
         written.int(
             "iStartStep",
@@ -221,7 +238,7 @@ pub fn par_file(
     if build.has("DEM_COHESION") {
         written.int(
             "iCohesionModel",
-            settings.cohesion.model.number(),
+            settings.cohesion.model.code(),
             None,
             "pkdgrav's default",
         );
@@ -252,18 +269,38 @@ pub fn par_file(
             why,
         } = u
             && (value != default || written.says_otherwise(key, value))
+            && (build.has("DEM") || !DEM_ONLY.contains(&key))
+            && !(build.has("DEM") && key == "iOutcomes")
         {
             written.only(key, value, default, why);
         }
     }
-    if build.has("DEM") && !written.given("iOutcomes") {
-        written.int(
+    if build.has("DEM") {
+        written.only(
             "iOutcomes",
-            0,
-            None,
-            "a DEM build ignores it, and warns at start-up unless it is 0 (B37; pkdgrav's default is 2)",
+            0.0,
+            2.0,
+            "a DEM build ignores it, and warns at start-up unless it is 0 (B37)",
+        );
+    } else {
+        written.only(
+            "dMergeLimit",
+            0.0,
+            1.0,
+            "without the merge outcome pkdgrav ignores it, and warns at start-up unless it is 0 (B19)",
         );
     }
+    written.section("for pkdgrav's MPI build");
+    let extra = source
+        .and_then(|s| s.file.given("dExtraStore"))
+        .and_then(|e| e.value.as_ref()?.real())
+        .unwrap_or(1.0);
+    written.real(
+        "dExtraStore",
+        extra,
+        None,
+        "room for small runs on several ranks: with pkdgrav's default 0.1 a few hundred particles on two ranks abort at start-up (docs/pkdgrav-physics.md §19)",
+    );
     if let Some(source) = source {
         written.copy(source);
     }
@@ -278,12 +315,19 @@ pub fn par_file(
         build.names(),
     );
     let par = walls_par::write::render(&header, &written.sections, &build)?;
+    let warnings = written.warnings;
     Ok(Export {
         par,
         build,
         last_step,
+        warnings,
     })
 }
+
+/// The keys walls-sim follows at one value only that only a DEM build needs at that value
+/// (A75: `iForceOverrideOption = 2` stops a build without DEM or SPRINGS; checkpoints are
+/// refused only by DEM builds).
+const DEM_ONLY: [&str; 2] = ["iForceOverrideOption", "iCheckInterval"];
 
 /// `Some(flag)` when the command line gave `value`.
 fn flag<T>(value: Option<T>, flag: &str) -> Option<String> {
@@ -305,6 +349,7 @@ fn dt_default(settings: &Settings) -> String {
 
 /// The settings written so far, and what they are written from.
 struct Written<'a> {
+    warnings: Vec<String>,
     source: Option<&'a Source<'a>>,
     build: &'a walls_par::Build,
     sections: Vec<Section>,
@@ -342,6 +387,13 @@ impl Written<'_> {
             return format!("{key}: from {} line {}", source.path, entry.line);
         }
         format!("{key}: {default}")
+    }
+
+    /// Adds `more` to the comment of the setting written last.
+    fn append_to_last(&mut self, more: &str) {
+        if let Some(s) = self.sections.last_mut().and_then(|s| s.settings.last_mut()) {
+            s.comment.push_str(more);
+        }
     }
 
     /// Adds `key = value` (when the build registers `key`: a key it lacks changes
@@ -409,7 +461,8 @@ impl Written<'_> {
         let written: Vec<&str> = self
             .sections
             .iter()
-            .flat_map(|s| s.settings.iter().map(|s| s.key))
+            .flat_map(|section| &section.settings)
+            .map(|s| s.key)
             .collect();
         let file = source.file;
         let mut copied = Vec::new();
@@ -422,11 +475,29 @@ impl Written<'_> {
                 continue;
             }
             let line = file.text[entry.line_span.clone()].trim_end().to_string();
+            let at = format!("{} line {}", source.path, entry.line);
             let what = match evaluator::use_of(key) {
                 Some(Use::NotYet(why)) => format!(" (walls-sim does not model it: {why})"),
-                _ => String::new(),
+                Some(_) => String::new(),
+                None => {
+                    self.warnings.push(format!(
+                        "{at}: `{key}` is copied, and walls-sim does not follow it: pkdgrav's run may differ from walls-sim's"
+                    ));
+                    " (walls-sim does not follow it: pkdgrav's run may differ from walls-sim's)"
+                        .to_string()
+                }
             };
-            let why = format!("{key}: from {} line {}{what}", source.path, entry.line);
+            let names_file = entry.key.kind == walls_par::keys::Kind::Str
+                && matches!(&entry.value, Some(walls_par::value::Value::Str(t)) if !t.is_empty());
+            let what = if names_file {
+                self.warnings.push(format!(
+                    "{at}: `{key}` names a file or folder, which the export does not copy: put it beside ss.par"
+                ));
+                format!("{what} (it names a file or folder, which the export does not copy)")
+            } else {
+                what
+            };
+            let why = format!("{key}: from {at}{what}");
             copied.push((line, why));
         }
         if !copied.is_empty() {
@@ -441,8 +512,8 @@ impl Written<'_> {
 
 /// The run directory's README: what is in it, the build pkdgrav needs, and the commands
 /// that check it, run it here, run it with pkdgrav (serial and MPI) and bring the outputs
-/// back.
-pub fn readme(export: &Export, names: &Names, particles: usize, every: u64) -> String {
+/// back. `outputs` names and spaces pkdgrav's outputs.
+pub fn readme(export: &Export, names: &Names, particles: usize, outputs: &Outputs) -> String {
     let Names {
         par,
         walls,
@@ -454,10 +525,23 @@ pub fn readme(export: &Export, names: &Names, particles: usize, every: u64) -> S
         .unwrap_or_default();
     let build = export.build.names();
     let last = export.last_step;
-    let outputs = if every == 0 {
-        format!("the last step's, `ss.{last}`")
+    let name =
+        |step: u64| crate::io::particles::ss_file_name(&outputs.ss.base, outputs.ss.digits, step);
+    let written = if outputs.every == 0 {
+        format!("the last step's, `{}`", name(last))
     } else {
-        format!("every {every} steps and the last, step {last}")
+        format!(
+            "every {} steps and after the last, `{}` to `{}`",
+            outputs.every,
+            name(outputs.every.min(last)),
+            name(last)
+        )
+    };
+    let default = export.build == walls_par::Build::default();
+    let flag = if default {
+        String::new()
+    } else {
+        format!(" --pkdgrav-build \"{build}\"")
     };
     format!(
         "# A pkdgrav run directory\n\n\
@@ -465,25 +549,35 @@ Exported by `walls-sim export` (walls {version}).\n\n\
 * `{par}`: pkdgrav's parameters; each key says where its value came from.\n\
 * `{walls}`: the walls file.\n\
 * `{ss}`: the initial conditions, {particles} particle(s), in pkdgrav's `.ss` format.\n\
-{cohesion}\n\
+{cohesion}\
+* `walls.toml`: the build, for `walls-lint` and the editor.\n\n\
 ## The build\n\n\
 Compile pkdgrav with the options\n\n    {build}\n\n\
-A build without one of them refuses `{par}` at start-up or runs other physics;\n\
-`walls-lint --pkdgrav-build \"OPTIONS\" .` checks the directory for another build.\n\n\
+A build without one of them refuses `{par}` at start-up or runs other physics.\n\n\
 ## Check, run here, run on the cluster\n\n\
 ```sh\n\
-walls-lint .                                   # what pkdgrav would refuse: nothing\n\
-walls-sim run --par {par} --pkdgrav-build \"{build}\" --out here --ss-output\n\
-pkdgrav {par}                                  # serial\n\
-mpirun -np 8 pkdgrav {par}                     # MPI: as many ranks as the job has cores\n\
+walls-lint .            # what pkdgrav would refuse or warn about (the build: walls.toml)\n\
+walls-sim run --par {par}{flag} --out here --ss-output\n\
+pkdgrav {par}           # serial\n\
+mpirun -np 8 pkdgrav {par}\n\
 ```\n\n\
-(`pkdgrav` is the program your build makes.) pkdgrav writes its outputs, named by\n\
-`achOutName` and `nDigits`, {outputs}, in the folder it runs in.\n\n\
+`pkdgrav` is the program your build makes; with MPI, as many ranks as the job has\n\
+cores (`dExtraStore` in `{par}` leaves the room small runs need on several ranks).\n\
+pkdgrav writes its outputs in the folder it runs in, {written}.\n\n\
 ## Bring the outputs back\n\n\
 ```sh\n\
 walls-sim preview {walls} --particles . --out movie.html\n\
 ```\n\n\
 draws the `.ss` series of this folder as a movie (docs/preview.md).\n",
         version = env!("CARGO_PKG_VERSION"),
+    )
+}
+
+/// The run directory's settings file: its build, which `walls-lint` and the editor check
+/// the `.par` file for (docs/configuration.md).
+pub fn settings_file(export: &Export) -> String {
+    format!(
+        "# The pkdgrav build this run directory is for (walls-sim export).\n[run]\npkdgrav-build = \"{}\"\n",
+        export.build.names()
     )
 }

@@ -24,8 +24,8 @@ pub enum Model {
 }
 
 impl Model {
-    /// The model's number as pkdgrav numbers them (`iCohesionModel`).
-    pub fn number(self) -> i64 {
+    /// The model's code as pkdgrav numbers them (`iCohesionModel`).
+    pub fn code(self) -> i64 {
         match self {
             Model::Contact => 0,
             Model::Bridge => 1,

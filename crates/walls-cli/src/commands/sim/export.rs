@@ -1,9 +1,9 @@
 //! `walls-sim export`: writes a run (a walls file, particles and the run's options, or a
 //! `.par` file with options over it) as a pkdgrav run directory: `ss.par`, `walls.dat`,
-//! `initial.ss`, the cohesion file if the run reads one, and `README.md`. The settings
-//! are `run`'s ([`super::run::prepare`]); what the `.par` file says is
-//! [`walls_sim::export`]'s; every file is planned (and refused if it must be) before any
-//! is written.
+//! `initial.ss`, the cohesion file if the run reads one, `README.md` and `walls.toml` (the
+//! build, for walls-lint). The settings are `run`'s ([`super::run::prepare`]); what the
+//! `.par` file says is [`walls_sim::export`]'s; every file is planned (and refused if it
+//! must be) before any is written, and all are written before any takes its name.
 
 use super::error;
 use super::run::{Prepared, RunArgs, prepare};
@@ -26,7 +26,7 @@ pub struct ExportArgs {
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub every: Option<u64>,
     /// The run directory to write (made if missing): ss.par, walls.dat, initial.ss,
-    /// README.md (and cohesion.txt when the run reads a cohesion file).
+    /// README.md, walls.toml (and cohesion.txt when the run reads a cohesion file).
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
     /// Replace the files of an earlier export in DIR (regular files the export does not
@@ -94,6 +94,14 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
         );
     }
     let steps = settings.end_step().saturating_sub(settings.start_step);
+    if steps == 0 {
+        return Err(format!(
+            "the run takes no step: it starts at t = {:e} (step {}) and ends at t = {:e}; pkdgrav would run none and write nothing: give a later --t-end",
+            settings.t_start(),
+            settings.start_step,
+            settings.t_end
+        ));
+    }
     if settings.end_step() > i32::MAX as u64 {
         return Err(format!(
             "the run would take {steps} steps of {:e} to t = {:e}, and pkdgrav counts steps in an int (nSteps at most {}): give a longer --dt or a shorter --t-end",
@@ -108,7 +116,13 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
     let source_text = match &flags.inputs.par {
         Some(path) => {
             let bytes = crate::input::read(path).bytes?;
-            Some((path.as_str(), String::from_utf8_lossy(&bytes).into_owned()))
+            // Lines are copied as text: a byte that is not UTF-8 would change in the copy.
+            let text = String::from_utf8(bytes).map_err(|e| {
+                let at = e.utf8_error().valid_up_to();
+                let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();
+                format!("{path}: line {line} is not UTF-8 text: the export copies the file's lines as text, and would change it")
+            })?;
+            Some((path.as_str(), text))
         }
         None => None,
     };
@@ -152,7 +166,11 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
         walls.push('\n');
     }
     let ss = walls_sim::io::particles::write_ss(settings.t_start(), particles);
-    let readme = walls_sim::export::readme(&exported, &names, particles.len(), outputs.every);
+    for w in &exported.warnings {
+        crate::errln!("walls-sim: warning: {w}");
+    }
+    let readme = walls_sim::export::readme(&exported, &names, particles.len(), outputs);
+    let settings_file = walls_sim::export::settings_file(&exported);
     let cohesion_bytes = match &cohesion {
         Some(path) => Some(std::fs::read(path).map_err(|e| format!("cannot read {path}: {e}"))?),
         None => None,
@@ -162,6 +180,7 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
         (names.walls, walls.as_bytes()),
         (names.particles, &ss),
         ("README.md", readme.as_bytes()),
+        ("walls.toml", settings_file.as_bytes()),
     ];
     if let Some(bytes) = &cohesion_bytes {
         files.push((COHESION, bytes));
@@ -182,7 +201,8 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
 
 /// Writes `files` in the folder `out` (made if missing), each planned first: nothing is
 /// written if one of them may not be (it exists without `force`, or is an input, a link,
-/// not a regular file).
+/// not a regular file). Each is written whole to a new file without a name first, and
+/// they take their names only when all are written: a full disk leaves what was there.
 fn write_all(
     out: &Path,
     force: bool,
@@ -206,17 +226,25 @@ fn write_all(
             .map_err(|e| message(name, &e))?;
         targets.push(target);
     }
-    let mut written = Vec::new();
-    for ((name, bytes), target) in files.iter().zip(&targets) {
-        if let Err(e) = target.write(bytes) {
-            let done = if written.is_empty() {
+    let mut streams = Vec::new();
+    for ((_, bytes), target) in files.iter().zip(&targets) {
+        let mut stream = target.stream().map_err(|e| target.message(&e))?;
+        std::io::Write::write_all(&mut stream, bytes)
+            .and_then(|()| std::io::Write::flush(&mut stream))
+            .map_err(|e| target.message(&e.into()))?;
+        streams.push(stream);
+    }
+    let mut placed = Vec::new();
+    for ((name, _), (stream, target)) in files.iter().zip(streams.into_iter().zip(&targets)) {
+        if let Err(e) = stream.finish() {
+            let done = if placed.is_empty() {
                 String::new()
             } else {
-                format!(" ({} written before it)", written.join(", "))
+                format!(" ({} written before it)", placed.join(", "))
             };
-            return Err(format!("{}{done}", target.message(&e)));
+            return Err(format!("{}{done}", target.message(&e.into())));
         }
-        written.push(*name);
+        placed.push(*name);
     }
     Ok(())
 }
