@@ -122,3 +122,33 @@ impl std::fmt::Display for FileError {
 }
 
 impl std::error::Error for FileError {}
+
+/// The most characters of a file's text a message quotes.
+const EXCERPT: usize = 60;
+
+/// `text`, a value of an input file, as a message quotes it: whole when short, else its
+/// first [`EXCERPT`] characters and how long it is (a 10 MB number is not echoed).
+pub(crate) fn excerpt(text: &str) -> String {
+    match text.char_indices().nth(EXCERPT) {
+        None => text.to_string(),
+        Some((cut, _)) => format!("{}… ({} characters)", &text[..cut], text.chars().count()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ten_megabyte_value_is_quoted_in_sixty_characters() {
+        assert_eq!(excerpt("0.5"), "0.5");
+        let long = format!("0.{}1", "0".repeat(10_000_000));
+        let error = particles::read_csv(&format!(
+            "mass,radius,x,y,z,vx,vy,vz\n{long},1,0,0,0,0,0,0\n"
+        ))
+        .unwrap_err()
+        .to_string();
+        assert!(error.len() < 300, "{} bytes", error.len());
+        assert!(error.contains("… (10000003 characters)"), "{error}");
+    }
+}

@@ -67,7 +67,10 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
         .iter()
         .find(|h| !REQUIRED.contains(&h.as_str()) && !OPTIONAL.contains(&h.as_str()))
     {
-        return Err(error("line 1", format!("unknown column `{extra}`")));
+        return Err(error(
+            "line 1",
+            format!("unknown column `{}`", super::excerpt(extra)),
+        ));
     }
     // Each column's place in a row, found once (`wx`, `wy`, `wz` and `color` may be
     // absent).
@@ -96,8 +99,10 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
             };
             let text = field(i);
             let field = text.trim();
-            super::number(field, || format!("{}: `{name}`", line()), &mut warnings)
-                .map_err(|why| error(line(), format!("`{name}` is `{field}`, {why}")))
+            super::number(field, || format!("{}: `{name}`", line()), &mut warnings).map_err(|why| {
+                let field = super::excerpt(field);
+                error(line(), format!("`{name}` is `{field}`, {why}"))
+            })
         };
         let particle = Particle {
             mass: number(mass)?,
@@ -110,6 +115,7 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
                     let text = field(i);
                     let field = text.trim();
                     field.parse::<i32>().map_err(|_| {
+                        let field = super::excerpt(field);
                         error(line(), format!("`color` is `{field}`, not an integer"))
                     })?
                 }
