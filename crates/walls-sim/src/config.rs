@@ -213,6 +213,18 @@ impl Flags {
     }
 }
 
+/// pkdgrav's overlap levels as the `.par` file sets them (`dMinorFrac`, `dMajorFrac`,
+/// `dErrorFrac`), its defaults for those it leaves out.
+fn overlap_levels(par: Option<&Params>) -> crate::run::OverlapLevels {
+    let given = par.map_or([None; 3], |p| p.overlap_fracs);
+    let default = crate::run::OverlapLevels::default();
+    crate::run::OverlapLevels {
+        minor: given[0].unwrap_or(default.minor),
+        major: given[1].unwrap_or(default.major),
+        error: given[2].unwrap_or(default.error),
+    }
+}
+
 /// Steps between outputs when neither `--every` nor the `.par` file says.
 pub const EVERY: u64 = 100;
 
@@ -543,6 +555,7 @@ pub fn resolve(
         legacy_roll: par.and_then(|p| p.legacy_roll).unwrap_or(false),
         forces,
         acc_crit: par.and_then(|p| p.acc_crit).unwrap_or(0.0),
+        overlap_levels: overlap_levels(par),
         stepping: flags.stepping.oscillation,
         integrator: flags.stepping.integrator,
         sliding: flags.stepping.sliding,

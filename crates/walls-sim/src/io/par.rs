@@ -83,6 +83,10 @@ pub struct Params {
     /// `dAccCrit`: below it, small motions are zeroed (docs/pkdgrav-physics.md §1.7; 0,
     /// the default, turns it off).
     pub acc_crit: Option<f64>,
+    /// `dMinorFrac`, `dMajorFrac`, `dErrorFrac`: pkdgrav's overlap levels
+    /// (docs/pkdgrav-physics.md §15), each `None` where the file leaves it at pkdgrav's
+    /// default (0.03, 0.15, 0.5); together, with the defaults, 0 ≤ minor ≤ major ≤ error.
+    pub overlap_fracs: [Option<f64>; 3],
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
     pub two_layer: Option<TwoLayer>,
@@ -655,6 +659,7 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
         legacy_roll: lines.switch("bUseLegacyRoll")?,
         do_gravity: lines.switch("bDoGravity")?,
         acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
+        overlap_fracs: overlap_fracs(&lines)?,
         two_layer,
         cohesion_model,
         cohesive_coeff: lines.checked("dCohesiveCoeff", Rule::Any)?,
@@ -667,6 +672,42 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
             .collect(),
         subnormals,
     })
+}
+
+/// The overlap levels' keys, in order, with pkdgrav's defaults.
+pub const OVERLAP_KEYS: [(&str, f64); 3] = [
+    ("dMinorFrac", 0.03),
+    ("dMajorFrac", 0.15),
+    ("dErrorFrac", 0.5),
+];
+
+/// `dMinorFrac`, `dMajorFrac`, `dErrorFrac` as the file gives them: each 0 or more,
+/// and, with pkdgrav's defaults for those it leaves out, in order (pkdgrav stops at
+/// start-up otherwise, docs/pkdgrav-physics.md §15).
+fn overlap_fracs(lines: &Lines) -> Result<[Option<f64>; 3], InputError> {
+    let mut given = [None; 3];
+    for (k, (key, _)) in OVERLAP_KEYS.iter().enumerate() {
+        given[k] = lines.checked(key, Rule::NonNegative)?;
+    }
+    for k in 0..2 {
+        let value = |k: usize| given[k].unwrap_or(OVERLAP_KEYS[k].1);
+        if value(k) > value(k + 1) {
+            let (low, high) = (OVERLAP_KEYS[k].0, OVERLAP_KEYS[k + 1].0);
+            let at = lines
+                .line(high)
+                .max(lines.line(low))
+                .map_or_else(String::new, |n| format!("line {n}"));
+            return Err(error(
+                at,
+                format!(
+                    "`{low}` is {} and `{high}` {}: pkdgrav stops at start-up unless 0 ≤ dMinorFrac ≤ dMajorFrac ≤ dErrorFrac (its defaults 0.03, 0.15, 0.5)",
+                    value(k),
+                    value(k + 1)
+                ),
+            ));
+        }
+    }
+    Ok(given)
 }
 
 /// The two-layer constants when the file gives any, resolved against `k_n` (`dKn`) as

@@ -429,6 +429,7 @@ impl<'a> SoftStepper<'a> {
             events: self.journal.events,
             assemblies,
             pair_contacts: self.journal.pair_contacts,
+            overlaps: self.journal.overlaps.counts,
             energy: (self.initial, last),
             warnings: self.journal.warnings,
             stopped,
