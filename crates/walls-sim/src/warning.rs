@@ -11,12 +11,15 @@
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
-//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores;
+//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores,
+//!   an assembly's rotation integrator at its minimum substep or failing;
 //! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow;
-//! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run;
+//! * `W6xx`, aggregates: members the run does not follow, what stops an aggregate run,
+//!   an aggregate's rotation integrator at its minimum substep or failing;
 //! * `W7xx`, the run's inputs: numbers pkdgrav reads, but not as written.
 
 use crate::contact::hsdem::COLLISION_CAP;
+use crate::dynamics::euler_rigid::Failure;
 use std::fmt;
 use walls_keywords::WallType;
 
@@ -50,6 +53,25 @@ impl fmt::Display for Overlapping {
         match self {
             Overlapping::Particles(i, j) => write!(f, "particles {i} and {j}"),
             Overlapping::Wall { particle, wall } => write!(f, "particle {particle}, wall {wall}"),
+        }
+    }
+}
+
+/// A body that turns as a whole, whose rotation the adaptive integrator steps
+/// (docs/pkdgrav-physics.md §9.3, §10, §17).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rigid {
+    /// A reactive assembly of walls, by its `assembly` number.
+    Assembly(i64),
+    /// An aggregate of particles, by its number (−1 − org_idx).
+    Aggregate(u32),
+}
+
+impl fmt::Display for Rigid {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Rigid::Assembly(n) => write!(f, "reactive assembly {n}"),
+            Rigid::Aggregate(n) => write!(f, "aggregate {n}"),
         }
     }
 }
@@ -208,6 +230,26 @@ pub enum Warning {
         /// The assemblies' numbers.
         assemblies: Vec<i64>,
     },
+    /// W403 (a reactive assembly) or W604 (an aggregate): the adaptive integrator of a
+    /// rigid body's rotation reached its minimum substep, 0.001·dt, for the first time
+    /// in the run: pkdgrav warns and goes on, and so does the run.
+    StepFloor {
+        /// The body.
+        body: Rigid,
+        /// The time at the end of the step.
+        t: f64,
+    },
+    /// W404 (a reactive assembly) or W605 (an aggregate): the adaptive integrator of a
+    /// rigid body's rotation failed (more than 10,000 substeps, or a substep too small to
+    /// move the clock): pkdgrav exits with status 1, and the run stops.
+    StepFailed {
+        /// The body.
+        body: Rigid,
+        /// How it failed.
+        failure: Failure,
+        /// The time at the end of the step.
+        t: f64,
+    },
     /// W501: walls set cohesion tokens (`cohesion_model`, `cohesive_coeff`) that the run
     /// does not follow (a build without `DEM_COHESION`, or not pkdgrav's integrator).
     CohesionTokensIgnored {
@@ -311,6 +353,22 @@ impl Warning {
             Warning::RestitutionAt99 { .. } => "W302",
             Warning::CollisionCap { .. } => "W303",
             Warning::ImmovableAssemblies { .. } => "W401",
+            Warning::StepFloor {
+                body: Rigid::Assembly(_),
+                ..
+            } => "W403",
+            Warning::StepFailed {
+                body: Rigid::Assembly(_),
+                ..
+            } => "W404",
+            Warning::StepFloor {
+                body: Rigid::Aggregate(_),
+                ..
+            } => "W604",
+            Warning::StepFailed {
+                body: Rigid::Aggregate(_),
+                ..
+            } => "W605",
             Warning::CohesionTokensIgnored { .. } => "W501",
             Warning::TwoLayerTokensIgnored { .. } => "W502",
             Warning::MassesIgnored { .. } => "W402",
@@ -433,6 +491,14 @@ impl fmt::Display for Warning {
             Warning::ImmovableAssemblies { assemblies } => write!(
                 f,
                 "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
+            ),
+            Warning::StepFloor { body, t } => write!(
+                f,
+                "the adaptive (Cash–Karp) integrator of {body}'s rotation reached its minimum substep, 0.001·dt (t = {t}): there it takes substeps whatever their error, above its accuracy of 1e-6; pkdgrav warns and goes on, and so does the run (warned of once); a smaller timestep keeps the rotation accurate"
+            ),
+            Warning::StepFailed { body, failure, t } => write!(
+                f,
+                "the adaptive (Cash–Karp) integrator of {body}'s rotation failed in the step ending at t = {t}: {failure}; pkdgrav exits with status 1; the run stops"
             ),
             Warning::CohesionTokensIgnored {
                 walls,
@@ -567,6 +633,24 @@ mod tests {
             },
             Warning::ImmovableAssemblies {
                 assemblies: vec![1],
+            },
+            Warning::StepFloor {
+                body: Rigid::Assembly(0),
+                t: 0.5,
+            },
+            Warning::StepFailed {
+                body: Rigid::Assembly(0),
+                failure: Failure::TooManySteps,
+                t: 0.5,
+            },
+            Warning::StepFloor {
+                body: Rigid::Aggregate(2),
+                t: 0.5,
+            },
+            Warning::StepFailed {
+                body: Rigid::Aggregate(2),
+                failure: Failure::Underflow,
+                t: 0.5,
             },
             Warning::CohesionTokensIgnored {
                 walls: vec![1],

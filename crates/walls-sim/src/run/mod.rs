@@ -369,6 +369,10 @@ pub enum Stop {
     SingleMemberAggregate,
     /// A member of an aggregate at a sticky or death wall, where pkdgrav aborts.
     AggregateHeld,
+    /// A rigid body's adaptive integrator (a reactive assembly's or an aggregate's
+    /// rotation) failed: more than 10,000 substeps, or a substep too small to move the
+    /// clock, where pkdgrav exits (W404).
+    Integration,
     /// A particle's position, velocity or spin became infinite or NaN (the particle's
     /// index): the numbers outgrew what a double holds.
     NotFinite(usize),
@@ -390,6 +394,7 @@ impl Stop {
             Stop::Overlap => "overlap",
             Stop::SingleMemberAggregate => "single-member-aggregate",
             Stop::AggregateHeld => "aggregate-held",
+            Stop::Integration => "integration",
             Stop::NotFinite(_) | Stop::AssemblyNotFinite(_) => "not-finite",
             Stop::Interrupted => "interrupted",
             Stop::Timestep => "timestep",
@@ -410,6 +415,10 @@ impl std::fmt::Display for Stop {
             Stop::AggregateHeld => write!(
                 f,
                 "a member of an aggregate at a sticky or death wall, where pkdgrav aborts"
+            ),
+            Stop::Integration => write!(
+                f,
+                "the adaptive integrator of a rigid body's rotation failed, where pkdgrav exits"
             ),
             Stop::NotFinite(i) => write!(
                 f,
@@ -571,6 +580,7 @@ pub fn run_watched(
             Warning::OverlapStop { .. } => Some(Stop::Overlap),
             Warning::SingleMemberAggregate { .. } => Some(Stop::SingleMemberAggregate),
             Warning::AggregateHeld { .. } => Some(Stop::AggregateHeld),
+            Warning::StepFailed { .. } => Some(Stop::Integration),
             _ => None,
         });
     }
