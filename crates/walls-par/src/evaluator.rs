@@ -59,7 +59,7 @@ pub const KEYS: &[(&str, Use)] = &[
     ("achOutName", Use::Read),
     ("nDigits", Use::Read),
     ("iLogInterval", Use::NoEffect),
-    ("iRedOutInterval", Use::NoEffect),
+    ("iRedOutInterval", Use::Read),
     ("bVWarnings", Use::NoEffect),
     ("bVStart", Use::NoEffect),
     ("bVDetails", Use::NoEffect),

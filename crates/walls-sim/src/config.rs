@@ -234,6 +234,10 @@ pub struct Outputs {
     /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
     /// [`EVERY`]; 0 (`iOutInterval = 0`) for none but the last step's.
     pub every: u64,
+    /// The `.par` file's `iRedOutInterval` when above 0: pkdgrav's reduced outputs, at the
+    /// start step and every so many steps after it, where it writes its reactive-wall
+    /// lines (docs/pkdgrav-physics.md §10); `None`: those lines come at the output steps.
+    pub reduced: Option<u64>,
     /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
     pub ss: SsNames,
     /// Why `achOutName`'s folder part is not followed, when it has one.
@@ -259,6 +263,7 @@ pub fn outputs(flags: &Flags, par: Option<&Params>) -> Outputs {
             .every
             .or_else(|| par?.out_interval)
             .unwrap_or(EVERY),
+        reduced: par.and_then(|p| p.red_out_interval).filter(|&n| n > 0),
         ss: SsNames {
             base,
             digits: par.and_then(|p| p.digits).unwrap_or(5),

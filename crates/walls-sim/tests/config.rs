@@ -469,3 +469,16 @@ fn the_overlap_levels_come_from_the_par_file_else_pkdgrav_s_defaults() {
         walls_sim::run::OverlapLevels::default()
     );
 }
+
+#[test]
+fn wallsreact_lines_follow_ired_out_interval_when_above_0() {
+    let flags = Flags::default();
+    let with = |n: Option<u64>| Params {
+        red_out_interval: n,
+        ..par()
+    };
+    let reduced = |p: Params| walls_sim::config::outputs(&flags, Some(&p)).reduced;
+    assert_eq!(reduced(with(Some(20))), Some(20));
+    assert_eq!(reduced(with(Some(0))), None);
+    assert_eq!(reduced(with(None)), None);
+}

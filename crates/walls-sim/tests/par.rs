@@ -278,3 +278,15 @@ dErrorFrac = 0.3
         "line 1: `dMinorFrac` is `-0.1`; it must be 0 or more"
     );
 }
+
+#[test]
+fn the_reduced_output_interval_is_read_as_a_count() {
+    let p = read_par(&format!("{QUIET}iRedOutInterval = 20\n")).unwrap();
+    assert_eq!(p.red_out_interval, Some(20));
+    assert_eq!(p.warnings, vec![]);
+    assert_eq!(read_par(QUIET).unwrap().red_out_interval, None);
+    assert_eq!(
+        read_par("iRedOutInterval = 2e3\n").unwrap_err().to_string(),
+        "line 1: `iRedOutInterval` is `2e3`; it must be a whole number, 0 or more"
+    );
+}

@@ -48,6 +48,10 @@ pub struct Params {
     pub start_step: Option<u64>,
     /// `iOutInterval`: outputs at the steps that are multiples of it, and at the last.
     pub out_interval: Option<u64>,
+    /// `iRedOutInterval`: pkdgrav's reduced outputs, at `iStartStep` and every so many
+    /// steps after it (0, the default: none), where it writes its reactive-wall lines
+    /// (docs/pkdgrav-physics.md §10).
+    pub red_out_interval: Option<u64>,
     /// `dEpsN`, `dEpsT`: the particles' coefficients of restitution.
     pub eps_n: Option<f64>,
     /// See `eps_n`.
@@ -185,7 +189,13 @@ impl std::fmt::Display for ParWarning {
 
 /// The integer keys the run reads as counts: a value that is not a whole number is an
 /// error ([`Lines::count`]), not pkdgrav's `%d` reading.
-const COUNTS: [&str; 4] = ["nSteps", "iStartStep", "iOutInterval", "nDigits"];
+const COUNTS: [&str; 5] = [
+    "nSteps",
+    "iStartStep",
+    "iOutInterval",
+    "iRedOutInterval",
+    "nDigits",
+];
 
 /// The most digits `nDigits` may ask for: a 64-bit step number has at most 20.
 pub const MAX_DIGITS: usize = 20;
@@ -639,6 +649,7 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
         steps: lines.count("nSteps")?,
         start_step: lines.count("iStartStep")?,
         out_interval: lines.count("iOutInterval")?,
+        red_out_interval: lines.count("iRedOutInterval")?,
         eps_n: lines.checked("dEpsN", Rule::Restitution)?,
         eps_t: lines.checked("dEpsT", Rule::Tangential)?,
         k_n,
