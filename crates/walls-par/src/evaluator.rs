@@ -26,7 +26,6 @@ pub enum Use {
 }
 
 const DEM_ONLY_2: &str = "pkdgrav's DEM builds need 2; the evaluator runs as if it were 2";
-const LEVELS: &str = "the evaluator warns and stops at pkdgrav's default overlap levels (3 %, 15 %, 50 % of the radius)";
 const HARD_OPTION: &str = "pkdgrav's hard-sphere overlap, slide, collapse and crush options are not modelled yet (DEM builds ignore them)";
 
 /// Every `.par` key of pkdgrav's wall runs (docs/pkdgrav-physics.md §3–4), and a few
@@ -60,7 +59,7 @@ pub const KEYS: &[(&str, Use)] = &[
     ("achOutName", Use::Read),
     ("nDigits", Use::Read),
     ("iLogInterval", Use::NoEffect),
-    ("iRedOutInterval", Use::NoEffect),
+    ("iRedOutInterval", Use::Read),
     ("bVWarnings", Use::NoEffect),
     ("bVStart", Use::NoEffect),
     ("bVDetails", Use::NoEffect),
@@ -141,30 +140,9 @@ pub const KEYS: &[(&str, Use)] = &[
         },
     ),
     ("dAccCrit", Use::Read),
-    (
-        "dMinorFrac",
-        Use::Only {
-            value: 0.03,
-            default: 0.03,
-            why: LEVELS,
-        },
-    ),
-    (
-        "dMajorFrac",
-        Use::Only {
-            value: 0.15,
-            default: 0.15,
-            why: LEVELS,
-        },
-    ),
-    (
-        "dErrorFrac",
-        Use::Only {
-            value: 0.5,
-            default: 0.5,
-            why: LEVELS,
-        },
-    ),
+    ("dMinorFrac", Use::Read),
+    ("dMajorFrac", Use::Read),
+    ("dErrorFrac", Use::Read),
     ("bUseContactRadius", Use::Read),
     ("bUseLegacyRoll", Use::Read),
     (

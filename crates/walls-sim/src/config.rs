@@ -213,6 +213,18 @@ impl Flags {
     }
 }
 
+/// pkdgrav's overlap levels as the `.par` file sets them (`dMinorFrac`, `dMajorFrac`,
+/// `dErrorFrac`), its defaults for those it leaves out.
+fn overlap_levels(par: Option<&Params>) -> crate::run::OverlapLevels {
+    let given = par.map_or([None; 3], |p| p.overlap_fracs);
+    let default = crate::run::OverlapLevels::default();
+    crate::run::OverlapLevels {
+        minor: given[0].unwrap_or(default.minor),
+        major: given[1].unwrap_or(default.major),
+        error: given[2].unwrap_or(default.error),
+    }
+}
+
 /// Steps between outputs when neither `--every` nor the `.par` file says.
 pub const EVERY: u64 = 100;
 
@@ -222,6 +234,10 @@ pub struct Outputs {
     /// Steps between outputs: `--every`, else the `.par` file's `iOutInterval`, else
     /// [`EVERY`]; 0 (`iOutInterval = 0`) for none but the last step's.
     pub every: u64,
+    /// The `.par` file's `iRedOutInterval` when above 0: pkdgrav's reduced outputs, at the
+    /// start step and every so many steps after it, where it writes its reactive-wall
+    /// lines (docs/pkdgrav-physics.md §10); `None`: those lines come at the output steps.
+    pub reduced: Option<u64>,
     /// The `.ss` outputs' base name and digits (`achOutName`'s last part, `nDigits`).
     pub ss: SsNames,
     /// Why `achOutName`'s folder part is not followed, when it has one.
@@ -247,6 +263,7 @@ pub fn outputs(flags: &Flags, par: Option<&Params>) -> Outputs {
             .every
             .or_else(|| par?.out_interval)
             .unwrap_or(EVERY),
+        reduced: par.and_then(|p| p.red_out_interval).filter(|&n| n > 0),
         ss: SsNames {
             base,
             digits: par.and_then(|p| p.digits).unwrap_or(5),
@@ -402,7 +419,7 @@ pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, 
 /// The cohesion file to read: the `.par` file's `achCohesionFile`, taken relative to the
 /// `.par` file's folder.
 pub fn cohesion_file(flags: &Flags, par: Option<&Params>) -> Option<String> {
-    beside_par(flags, par?.cohesion_file.as_deref()?)
+    beside_par(flags, par?.cohesion.file.as_deref()?)
 }
 
 /// `name`, a path written in the `.par` file, as a path from here: relative to the
@@ -524,10 +541,10 @@ pub fn resolve(
     };
     let cohesion = crate::contact::cohesion::Cohesion {
         model: par
-            .and_then(|p| p.cohesion_model)
+            .and_then(|p| p.cohesion.model)
             .and_then(crate::contact::cohesion::Model::from_number)
             .unwrap_or_default(),
-        coefficient: from_par(|p| p.cohesive_coeff).unwrap_or(0.0),
+        coefficient: from_par(|p| p.cohesion.coefficient).unwrap_or(0.0),
         colours: None,
     };
     let two_layer = par.and_then(|p| p.two_layer);
@@ -543,6 +560,7 @@ pub fn resolve(
         legacy_roll: par.and_then(|p| p.legacy_roll).unwrap_or(false),
         forces,
         acc_crit: par.and_then(|p| p.acc_crit).unwrap_or(0.0),
+        overlap_levels: overlap_levels(par),
         stepping: flags.stepping.oscillation,
         integrator: flags.stepping.integrator,
         sliding: flags.stepping.sliding,

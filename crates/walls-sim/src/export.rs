@@ -139,6 +139,14 @@ pub fn par_file(
             "pkdgrav's default",
         );
     }
+    if let Some(n) = outputs.reduced {
+        written.int(
+            "iRedOutInterval",
+            i64::try_from(n).unwrap_or(i64::MAX),
+            None,
+            "pkdgrav's default",
+        );
+    }
     written.int(
         "iOutInterval",
         i64::try_from(outputs.every).unwrap_or(i64::MAX),
@@ -235,6 +243,19 @@ pub fn par_file(
         None,
         "pkdgrav's default: off",
     );
+    let levels = &settings.overlap_levels;
+    for (key, level) in [
+        ("dMinorFrac", levels.minor),
+        ("dMajorFrac", levels.major),
+        ("dErrorFrac", levels.error),
+    ] {
+        written.real(
+            key,
+            level,
+            None,
+            "pkdgrav's default overlap level, a fraction of the radius",
+        );
+    }
     if build.has("DEM_COHESION") {
         written.int(
             "iCohesionModel",

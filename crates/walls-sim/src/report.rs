@@ -2,7 +2,9 @@
 //! (`walls-sim run --json`, in pkdgrav units; a [`Report`] serialised as it is written)
 //! and its one-line summary for people (its times in the units a [`Readout`] shows).
 
-use crate::run::{ContactModel, Event, EventKind, Outcome, Planning, Settings, State, Warning};
+use crate::run::{
+    ContactModel, Event, EventKind, LevelCounts, Outcome, Planning, Settings, State, Warning,
+};
 use serde::{Serialize, Serializer};
 use walls_geometry::Particle;
 use walls_geometry::Wall;
@@ -28,7 +30,8 @@ pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec
 }
 
 /// The outcome as `walls-sim run --json` writes it: the time and steps, each particle's
-/// state, the wall events, the particle contacts, the energy, the parts of the model used,
+/// state, the wall events, the particle contacts, the overlap events past pkdgrav's
+/// levels (`overlaps`: `pairs` and `walls`, each `minor`, `major`, `error`), the energy, the parts of the model used,
 /// the pkdgrav build, the warnings, why the run stopped early (`stopped`: null when it ran
 /// to its end; `"output"` when its outputs could not be written), and, when the run wrote
 /// some, its output files (`outputs`) and, after a failed write, what failed and where the
@@ -47,6 +50,7 @@ pub struct Report<'a> {
     output_error: Option<OutputError<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     outputs: Option<&'a [String]>,
+    overlaps: Overlaps,
     pair_contacts: u64,
     particles: Each<'a, State, StateView>,
     steps: u64,
@@ -69,6 +73,10 @@ impl<'a> Report<'a> {
             model,
             output_error: None,
             outputs: None,
+            overlaps: Overlaps {
+                pairs: Levels::new(&out.overlaps.pairs),
+                walls: Levels::new(&out.overlaps.walls),
+            },
             pair_contacts: out.pair_contacts,
             particles: Each(&out.particles, StateView::new),
             steps: out.steps,
@@ -123,6 +131,32 @@ struct Energy {
     #[serde(rename = "final")]
     final_: f64,
     initial: f64,
+}
+
+/// The overlap events past pkdgrav's levels (`dMinorFrac`, `dMajorFrac`, `dErrorFrac`),
+/// for pairs and for walls, as pkdgrav counts them.
+#[derive(Serialize)]
+struct Overlaps {
+    pairs: Levels,
+    walls: Levels,
+}
+
+/// The events at each level.
+#[derive(Serialize)]
+struct Levels {
+    error: u64,
+    major: u64,
+    minor: u64,
+}
+
+impl Levels {
+    fn new(c: &LevelCounts) -> Levels {
+        Levels {
+            error: c.error,
+            major: c.major,
+            minor: c.minor,
+        }
+    }
 }
 
 /// One wall event.
@@ -195,9 +229,10 @@ impl<T: std::fmt::Display> Serialize for Shown<'_, T> {
 }
 
 /// One line for people: the time reached and the timestep (as `readout` shows times),
-/// the steps, the particles, the events, the contacts and the energy.
+/// the steps, the particles, the events, the contacts and the energy; and, when some
+/// overlap passed one of pkdgrav's levels, how many did at each, for pairs and walls.
 pub fn summary(settings: &Settings, out: &Outcome, readout: &Readout) -> String {
-    format!(
+    let mut line = format!(
         "t = {} after {} steps of {}: {} particles ({} alive), {} wall events, {} particle contacts, energy {:.6e} → {:.6e}",
         readout.time(out.t),
         out.steps,
@@ -208,5 +243,14 @@ pub fn summary(settings: &Settings, out: &Outcome, readout: &Readout) -> String 
         out.pair_contacts,
         out.energy.0,
         out.energy.1
-    )
+    );
+    if !out.overlaps.is_empty() {
+        let levels = |c: &LevelCounts| format!("{}/{}/{}", c.minor, c.major, c.error);
+        line.push_str(&format!(
+            "; overlaps past pkdgrav's levels (minor/major/error): pairs {}, walls {}",
+            levels(&out.overlaps.pairs),
+            levels(&out.overlaps.walls)
+        ));
+    }
+    line
 }

@@ -5,18 +5,21 @@
 //! do):
 //!
 //! * `W1xx`, contacts during a soft-sphere run: overlaps past pkdgrav's levels and the
-//!   50 % stop, crowded wall contacts, a particle too fast for its timestep, a contact
+//!   stop past `dErrorFrac`, crowded wall contacts, a particle too fast for its timestep, a contact
 //!   that gained energy;
 //! * `W2xx`, checks before a soft-sphere run (the stability checks): the timestep
 //!   against the stiffest contact, and walls that move too far in a step;
 //! * `W3xx`, the hard-sphere run: walls its code does not support, restitution left at
 //!   99, the collision cap;
-//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores;
+//! * `W4xx`, reactive walls: assemblies that cannot turn, wall masses a build ignores,
+//!   an assembly's rotation integrator at its minimum substep or failing;
 //! * `W5xx`, pkdgrav's optional builds: walls-file tokens the run does not follow;
-//! * `W6xx`, aggregates: members the run does not follow, and what stops an aggregate run;
+//! * `W6xx`, aggregates: members the run does not follow, what stops an aggregate run,
+//!   an aggregate's rotation integrator at its minimum substep or failing;
 //! * `W7xx`, the run's inputs: numbers pkdgrav reads, but not as written.
 
 use crate::contact::hsdem::COLLISION_CAP;
+use crate::dynamics::euler_rigid::Failure;
 use std::fmt;
 use walls_keywords::WallType;
 
@@ -34,11 +37,41 @@ pub enum Overlapping {
     },
 }
 
+impl Overlapping {
+    /// The radius pkdgrav measures the overlap against (docs/pkdgrav-physics.md §15), as
+    /// the warnings say it: the smaller of a pair's, the particle's against a wall.
+    pub fn radius(&self) -> &'static str {
+        match self {
+            Overlapping::Particles(..) => "of the smaller radius",
+            Overlapping::Wall { .. } => "of the particle's radius",
+        }
+    }
+}
+
 impl fmt::Display for Overlapping {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Overlapping::Particles(i, j) => write!(f, "particles {i} and {j}"),
             Overlapping::Wall { particle, wall } => write!(f, "particle {particle}, wall {wall}"),
+        }
+    }
+}
+
+/// A body that turns as a whole, whose rotation the adaptive integrator steps
+/// (docs/pkdgrav-physics.md §9.3, §10, §17).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rigid {
+    /// A reactive assembly of walls, by its `assembly` number.
+    Assembly(i64),
+    /// An aggregate of particles, by its number (−1 − org_idx).
+    Aggregate(u32),
+}
+
+impl fmt::Display for Rigid {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Rigid::Assembly(n) => write!(f, "reactive assembly {n}"),
+            Rigid::Aggregate(n) => write!(f, "aggregate {n}"),
         }
     }
 }
@@ -72,28 +105,38 @@ impl fmt::Display for Stiffest {
 /// One warning of a run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Warning {
-    /// W101: the first overlap above 3 % of a radius (pkdgrav's minor level).
-    OverlapAbove3 {
-        /// The overlap as a fraction of the smaller radius.
+    /// W101: the first overlap past pkdgrav's minor level, `dMinorFrac` of the radius
+    /// (the smaller radius of a pair, the particle's against a wall), and not past the
+    /// major one.
+    OverlapMinor {
+        /// The overlap as a fraction of the radius.
         fraction: f64,
+        /// `dMinorFrac`.
+        level: f64,
         /// What overlaps.
         what: Overlapping,
         /// When.
         t: f64,
     },
-    /// W102: the first overlap above 15 % of a radius (pkdgrav's major level).
-    OverlapAbove15 {
-        /// The overlap as a fraction of the smaller radius.
+    /// W102: the first overlap past pkdgrav's major level, `dMajorFrac` of the radius,
+    /// and not past the error one.
+    OverlapMajor {
+        /// The overlap as a fraction of the radius.
         fraction: f64,
+        /// `dMajorFrac`.
+        level: f64,
         /// What overlaps.
         what: Overlapping,
         /// When.
         t: f64,
     },
-    /// W103: an overlap above 50 % of a radius: pkdgrav aborts, and the run stops.
+    /// W103: an overlap past pkdgrav's error level, `dErrorFrac` of the radius: pkdgrav
+    /// aborts, and the run stops.
     OverlapStop {
-        /// The overlap as a fraction of the smaller radius.
+        /// The overlap as a fraction of the radius.
         fraction: f64,
+        /// `dErrorFrac`.
+        level: f64,
         /// What overlaps.
         what: Overlapping,
         /// When.
@@ -187,6 +230,26 @@ pub enum Warning {
         /// The assemblies' numbers.
         assemblies: Vec<i64>,
     },
+    /// W403 (a reactive assembly) or W604 (an aggregate): the adaptive integrator of a
+    /// rigid body's rotation reached its minimum substep, 0.001·dt, for the first time
+    /// in the run: pkdgrav warns and goes on, and so does the run.
+    StepFloor {
+        /// The body.
+        body: Rigid,
+        /// The time at the end of the step.
+        t: f64,
+    },
+    /// W404 (a reactive assembly) or W605 (an aggregate): the adaptive integrator of a
+    /// rigid body's rotation failed (more than 10,000 substeps, or a substep too small to
+    /// move the clock): pkdgrav exits with status 1, and the run stops.
+    StepFailed {
+        /// The body.
+        body: Rigid,
+        /// How it failed.
+        failure: Failure,
+        /// The time at the end of the step.
+        t: f64,
+    },
     /// W501: walls set cohesion tokens (`cohesion_model`, `cohesive_coeff`) that the run
     /// does not follow (a build without `DEM_COHESION`, or not pkdgrav's integrator).
     CohesionTokensIgnored {
@@ -277,8 +340,8 @@ impl Warning {
     /// The warning's stable code.
     pub fn code(&self) -> &'static str {
         match self {
-            Warning::OverlapAbove3 { .. } => "W101",
-            Warning::OverlapAbove15 { .. } => "W102",
+            Warning::OverlapMinor { .. } => "W101",
+            Warning::OverlapMajor { .. } => "W102",
             Warning::OverlapStop { .. } => "W103",
             Warning::Crowded { .. } => "W104",
             Warning::TooFast { .. } => "W105",
@@ -290,6 +353,22 @@ impl Warning {
             Warning::RestitutionAt99 { .. } => "W302",
             Warning::CollisionCap { .. } => "W303",
             Warning::ImmovableAssemblies { .. } => "W401",
+            Warning::StepFloor {
+                body: Rigid::Assembly(_),
+                ..
+            } => "W403",
+            Warning::StepFailed {
+                body: Rigid::Assembly(_),
+                ..
+            } => "W404",
+            Warning::StepFloor {
+                body: Rigid::Aggregate(_),
+                ..
+            } => "W604",
+            Warning::StepFailed {
+                body: Rigid::Aggregate(_),
+                ..
+            } => "W605",
             Warning::CohesionTokensIgnored { .. } => "W501",
             Warning::TwoLayerTokensIgnored { .. } => "W502",
             Warning::MassesIgnored { .. } => "W402",
@@ -306,20 +385,41 @@ impl Warning {
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Warning::OverlapAbove3 { fraction, what, t } => write!(
+            Warning::OverlapMinor {
+                fraction,
+                level,
+                what,
+                t,
+            } => write!(
                 f,
-                "overlap of {:.1}% of the radius ({what}, t = {t}): more than 3%",
-                fraction * 100.0
+                "overlap of {:.1}% {} ({what}, t = {t}): above dMinorFrac = {level} {}; pkdgrav prints such an overlap only when its count of them (pairs and walls apart, every level) is 1 or a multiple of 1,000,000: the run warns of the first and counts them all",
+                fraction * 100.0,
+                what.radius(),
+                what.radius(),
             ),
-            Warning::OverlapAbove15 { fraction, what, t } => write!(
+            Warning::OverlapMajor {
+                fraction,
+                level,
+                what,
+                t,
+            } => write!(
                 f,
-                "overlap of {:.1}% of the radius ({what}, t = {t}): more than 15%",
-                fraction * 100.0
+                "overlap of {:.1}% {} ({what}, t = {t}): above dMajorFrac = {level} {}; pkdgrav prints every such overlap: the run warns of the first and counts them all",
+                fraction * 100.0,
+                what.radius(),
+                what.radius(),
             ),
-            Warning::OverlapStop { fraction, what, t } => write!(
+            Warning::OverlapStop {
+                fraction,
+                level,
+                what,
+                t,
+            } => write!(
                 f,
-                "overlap of {:.1}% of the radius ({what}, t = {t}): pkdgrav aborts above 50%; the run stops",
-                fraction * 100.0
+                "overlap of {:.1}% {} ({what}, t = {t}): above dErrorFrac = {level} {}, where pkdgrav prints it and aborts; the run stops",
+                fraction * 100.0,
+                what.radius(),
+                what.radius(),
             ),
             Warning::Crowded { particle, walls, t } => write!(
                 f,
@@ -392,6 +492,14 @@ impl fmt::Display for Warning {
                 f,
                 "assemblies {assemblies:?} have a principal moment of inertia that is not above 0 (ixj-vec, iyj-vec, izj-vec): they stay where they are"
             ),
+            Warning::StepFloor { body, t } => write!(
+                f,
+                "the adaptive (Cash–Karp) integrator of {body}'s rotation reached its minimum substep, 0.001·dt (t = {t}): there it takes substeps whatever their error, above its accuracy of 1e-6; pkdgrav warns and goes on, and so does the run (warned of once); a smaller timestep keeps the rotation accurate"
+            ),
+            Warning::StepFailed { body, failure, t } => write!(
+                f,
+                "the adaptive (Cash–Karp) integrator of {body}'s rotation failed in the step ending at t = {t}: {failure}; pkdgrav exits with status 1; the run stops"
+            ),
             Warning::CohesionTokensIgnored {
                 walls,
                 tokens,
@@ -463,18 +571,21 @@ mod tests {
         };
         let stiffest = Stiffest::Pairs { k_n: 1e5 };
         vec![
-            Warning::OverlapAbove3 {
+            Warning::OverlapMinor {
                 fraction: 0.04,
+                level: 0.03,
                 what,
                 t: 0.1,
             },
-            Warning::OverlapAbove15 {
+            Warning::OverlapMajor {
                 fraction: 0.2,
+                level: 0.15,
                 what,
                 t: 0.1,
             },
             Warning::OverlapStop {
                 fraction: 0.6,
+                level: 0.5,
                 what,
                 t: 0.1,
             },
@@ -522,6 +633,24 @@ mod tests {
             },
             Warning::ImmovableAssemblies {
                 assemblies: vec![1],
+            },
+            Warning::StepFloor {
+                body: Rigid::Assembly(0),
+                t: 0.5,
+            },
+            Warning::StepFailed {
+                body: Rigid::Assembly(0),
+                failure: Failure::TooManySteps,
+                t: 0.5,
+            },
+            Warning::StepFloor {
+                body: Rigid::Aggregate(2),
+                t: 0.5,
+            },
+            Warning::StepFailed {
+                body: Rigid::Aggregate(2),
+                failure: Failure::Underflow,
+                t: 0.5,
             },
             Warning::CohesionTokensIgnored {
                 walls: vec![1],
@@ -581,20 +710,37 @@ mod tests {
     }
 
     #[test]
-    fn overlap_levels_print_as_before() {
-        // The levels were printed as `{:.0}` of 0.03·100 and 0.15·100.
-        assert_eq!(format!("{:.0}", 0.03 * 100.0), "3");
-        assert_eq!(format!("{:.0}", 0.15 * 100.0), "15");
-        let w = Warning::OverlapAbove15 {
+    fn overlap_warnings_name_the_level_and_its_key() {
+        let w = Warning::OverlapMajor {
             fraction: 0.2,
+            level: 0.15,
             what: Overlapping::Particles(1, 2),
             t: 0.5,
         };
         assert_eq!(
             w.to_string(),
-            "overlap of 20.0% of the radius (particles 1 and 2, t = 0.5): more than 15%"
+            "overlap of 20.0% of the smaller radius (particles 1 and 2, t = 0.5): above dMajorFrac = 0.15 of the smaller radius; pkdgrav prints every such overlap: the run warns of the first and counts them all"
         );
         assert_eq!(w.code(), "W102");
+        let w = Warning::OverlapMinor {
+            fraction: 0.04,
+            level: 0.03,
+            what: Overlapping::Wall {
+                particle: 0,
+                wall: 3,
+            },
+            t: 1.0,
+        };
+        assert!(w.to_string().starts_with(
+            "overlap of 4.0% of the particle's radius (particle 0, wall 3, t = 1): above dMinorFrac = 0.03 of the particle's radius; pkdgrav prints such an overlap only when its count of them (pairs and walls apart, every level) is 1 or a multiple of 1,000,000"
+        ));
+        let w = Warning::OverlapStop {
+            fraction: 0.3,
+            level: 0.25,
+            what: Overlapping::Particles(0, 1),
+            t: 0.0,
+        };
+        assert!(w.to_string().contains("above dErrorFrac = 0.25 of the smaller radius, where pkdgrav prints it and aborts; the run stops"));
     }
 
     #[test]

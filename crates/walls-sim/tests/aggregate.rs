@@ -410,3 +410,32 @@ fn an_aggregate_striking_a_free_sphere_keeps_the_momentum() {
     );
     assert_eq!(out.particles[1].particle.spin, spin);
 }
+
+#[test]
+fn an_aggregate_turning_too_far_in_a_step_reaches_the_minimum_substep_and_goes_on() {
+    // The lumpy body tumbling at ~2000 rad per unit time with steps of 0.1: 200 rad a
+    // step, 0.2 rad a substep at the minimum of 0.001·dt, coarser than Cash–Karp's
+    // 10⁻⁶ allows. pkdgrav warns and goes on (docs/pkdgrav-physics.md §17): W604 once,
+    // every step taken.
+    let omega = Vec3::new(1500.0, -500.0, 1000.0);
+    let particles = lumpy(omega, Vec3::zeros());
+    let s = settings(AGGS, 0.1, 3, [0.0; 3], 0.0);
+    let (out, seen) = run_all(&[], particles, &s);
+    assert_eq!((out.stopped, out.steps, seen.len()), (None, 3, 3));
+    let floors: Vec<_> = out.warnings.iter().filter(|w| w.code() == "W604").collect();
+    assert_eq!(floors.len(), 1, "{:?}", out.warnings);
+    assert_eq!(
+        floors[0],
+        &Warning::StepFloor {
+            body: walls_sim::warning::Rigid::Aggregate(0),
+            t: 0.1
+        }
+    );
+    // At a hundredth of the spin, no step comes near the minimum.
+    let (out, _) = run_all(&[], lumpy(omega / 100.0, Vec3::zeros()), &s);
+    assert!(
+        out.warnings.iter().all(|w| w.code() != "W604"),
+        "{:?}",
+        out.warnings
+    );
+}

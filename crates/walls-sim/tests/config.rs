@@ -449,3 +449,36 @@ fn a_par_file_pkdgrav_refuses_is_refused_unless_the_command_line_sets_the_key() 
         "{e}"
     );
 }
+
+#[test]
+fn the_overlap_levels_come_from_the_par_file_else_pkdgrav_s_defaults() {
+    let flags = Flags::default();
+    let given = Params {
+        overlap_fracs: [None, Some(0.1), Some(0.25)],
+        ..par()
+    };
+    let run = resolve(&flags, Some(&given), &scene(FLOOR), Some(ball())).unwrap();
+    let levels = run.settings.overlap_levels;
+    assert_eq!(
+        (levels.minor, levels.major, levels.error),
+        (0.03, 0.1, 0.25)
+    );
+    let run = resolve(&flags, None, &scene(FLOOR), Some(ball())).unwrap();
+    assert_eq!(
+        run.settings.overlap_levels,
+        walls_sim::run::OverlapLevels::default()
+    );
+}
+
+#[test]
+fn wallsreact_lines_follow_ired_out_interval_when_above_0() {
+    let flags = Flags::default();
+    let with = |n: Option<u64>| Params {
+        red_out_interval: n,
+        ..par()
+    };
+    let reduced = |p: Params| walls_sim::config::outputs(&flags, Some(&p)).reduced;
+    assert_eq!(reduced(with(Some(20))), Some(20));
+    assert_eq!(reduced(with(Some(0))), None);
+    assert_eq!(reduced(with(None)), None);
+}

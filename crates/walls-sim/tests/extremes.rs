@@ -161,7 +161,7 @@ fn par_switches_read_as_pkdgrav_reads_integers() {
     let p = read_par("bWallsEdgeDetect = 0.5\nbDoGravity = 1e3\niCohesionModel = 1.9\n").unwrap();
     assert_eq!(p.edge_detect, Some(false));
     assert_eq!(p.do_gravity, Some(true));
-    assert_eq!(p.cohesion_model, Some(1));
+    assert_eq!(p.cohesion.model, Some(1));
     let says: Vec<String> = p.warnings.iter().map(ToString::to_string).collect();
     assert!(says[0].starts_with(
         "line 1: `bWallsEdgeDetect`: `0.5` is not a whole number: pkdgrav reads it with C's %d as 0; the run does the same (write 0)"

@@ -184,7 +184,7 @@ fn unknown_keys_warn_with_a_suggestion() {
 #[test]
 fn values_and_keys_the_evaluator_does_not_model_warn() {
     // `dBetaS` and `bUseContactRadius` are modelled (the rolling and twisting of
-    // Integrator::Pkdgrav): no warning. `bDoGravity = 0` is followed (no forces at all),
+    // Integrator::Pkdgrav), and so is `dErrorFrac` (the overlap levels): no warning. `bDoGravity = 0` is followed (no forces at all),
     // with a warning that says what it means.
     let text = format!(
         "{QUIET}bDoGravity = 0\ndBetaS = 0.6\ndErrorFrac = 0.4\ndCohesiveCoeff = 0\nbUseContactRadius = 1\ndSlideLimit = 0.1\nnSmooth = 16\n"
@@ -193,7 +193,6 @@ fn values_and_keys_the_evaluator_does_not_model_warn() {
         warned(&text),
         [
             (Some(5), "bDoGravity".to_string()),
-            (Some(7), "dErrorFrac".into()),
             (Some(10), "dSlideLimit".into()),
         ]
     );
@@ -248,5 +247,46 @@ fn a_key_given_twice_takes_the_later_line_and_warns() {
             key: "dDelta".into(),
             message: "given again on line 6, which wins (as in pkdgrav)".into(),
         }]
+    );
+}
+
+#[test]
+fn the_overlap_levels_are_read_and_must_be_in_order() {
+    let p = read_par(&format!(
+        "{QUIET}dMinorFrac = 0.01
+dErrorFrac = 0.3
+"
+    ))
+    .unwrap();
+    assert_eq!(p.overlap_fracs, [Some(0.01), None, Some(0.3)]);
+    assert_eq!(p.warnings, vec![]);
+    assert_eq!(read_par(QUIET).unwrap().overlap_fracs, [None; 3]);
+    // pkdgrav's defaults count: a minor level above 0.15 needs a major level too.
+    assert_eq!(
+        read_par("dMinorFrac = 0.2\n").unwrap_err().to_string(),
+        "line 1: `dMinorFrac` is 0.2 and `dMajorFrac` 0.15: pkdgrav stops at start-up unless 0 ≤ dMinorFrac ≤ dMajorFrac ≤ dErrorFrac (its defaults 0.03, 0.15, 0.5)"
+    );
+    assert!(read_par("dMinorFrac = 0.2\ndMajorFrac = 0.2\n").is_ok());
+    assert_eq!(
+        read_par("dMajorFrac = 0.3\ndErrorFrac = 0.25\n")
+            .unwrap_err()
+            .to_string(),
+        "line 2: `dMajorFrac` is 0.3 and `dErrorFrac` 0.25: pkdgrav stops at start-up unless 0 ≤ dMinorFrac ≤ dMajorFrac ≤ dErrorFrac (its defaults 0.03, 0.15, 0.5)"
+    );
+    assert_eq!(
+        read_par("dMinorFrac = -0.1\n").unwrap_err().to_string(),
+        "line 1: `dMinorFrac` is `-0.1`; it must be 0 or more"
+    );
+}
+
+#[test]
+fn the_reduced_output_interval_is_read_as_a_count() {
+    let p = read_par(&format!("{QUIET}iRedOutInterval = 20\n")).unwrap();
+    assert_eq!(p.red_out_interval, Some(20));
+    assert_eq!(p.warnings, vec![]);
+    assert_eq!(read_par(QUIET).unwrap().red_out_interval, None);
+    assert_eq!(
+        read_par("iRedOutInterval = 2e3\n").unwrap_err().to_string(),
+        "line 1: `iRedOutInterval` is `2e3`; it must be a whole number, 0 or more"
     );
 }

@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_sim::run::{
-    ContactModel, EventKind, Integrator, ParticleMaterial, Settings, Warning, default_dt, run,
+    ContactModel, EventKind, Integrator, ParticleMaterial, Settings, default_dt, run,
 };
 
 use walls_test_support::{ball as particle, scene};
@@ -204,27 +204,6 @@ fn off_a_triangles_vertex_along_the_line_to_the_centre() {
     );
     let v = out.particles[0].particle.vel;
     assert!((v.normalize() - dir).norm() < 1e-6, "leaves along {v:?}");
-}
-
-#[test]
-fn overlaps_beyond_pkdgrav_limits_warn_and_stop() {
-    // Soft springs and a fast particle: 3 % and 15 % warnings, then the 50 % stop.
-    let ps = vec![particle([0.0, 0.0, 0.5], [0.0, 0.0, -10.0])];
-    let mut s = settings(&ps, 0.9, 1.0, [0.0; 3]);
-    s.material.k_n = 1e3;
-    s.dt = default_dt(&ps, 1e3);
-    let out = run(&scene("wall type plane\n"), ps, &s);
-    assert_eq!(out.warnings.len(), 3, "{:?}", out.warnings);
-    assert!(matches!(out.warnings[0], Warning::OverlapAbove3 { .. }));
-    assert!(matches!(out.warnings[1], Warning::OverlapAbove15 { .. }));
-    assert!(matches!(out.warnings[2], Warning::OverlapStop { .. }));
-    assert!(
-        out.warnings[2]
-            .to_string()
-            .contains("pkdgrav aborts above 50%")
-    );
-    assert_eq!(out.warnings[2].code(), "W103");
-    assert!(out.t < 1.0);
 }
 
 #[test]

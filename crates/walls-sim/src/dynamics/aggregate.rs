@@ -201,8 +201,9 @@ impl Aggregate {
 
     /// The drift over `dt`: the rotation by Euler's equations under the held body-frame
     /// torque (adaptive Cash–Karp), Λ's rows renormalised, the centre moved with its
-    /// velocity. Returns the substeps taken.
-    pub fn advance(&mut self, dt: f64) -> u32 {
+    /// velocity. Returns what the rotation's integration cost, whether it reached the
+    /// minimum step and whether it failed ([`euler_rigid::Cost`]).
+    pub fn advance(&mut self, dt: f64) -> euler_rigid::Cost {
         let mut rot = Rotation {
             omega: self.omega,
             axes: [0, 1, 2].map(|c| self.axes.column(c).into_owned()),
@@ -218,7 +219,7 @@ impl Aggregate {
             row *= scale;
         }
         self.com += self.vel * dt;
-        cost.accepted
+        cost
     }
 
     /// The body-frame angular acceleration by Euler's equations with the held torque.

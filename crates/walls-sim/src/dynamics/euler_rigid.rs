@@ -27,10 +27,15 @@
 //! - `rkqs`: one Cash–Karp step (`rkck`); errmax = maxᵢ |errᵢ/yscalᵢ| / tolerance; while
 //!   errmax > 1, h ← sign(h)·max(0.9|h|·errmax^−¼, 0.1|h|) and retry; on success the next
 //!   h is 0.9·h·errmax^−⅕ when errmax > 1.89·10⁻⁴, else 5h.
-//! - pkdgrav's tolerance is 10⁻⁶ and its minimum step 10⁻³·dt. Numerical Recipes stops
-//!   with an error when the next step would be that small; here the step is held at the
-//!   minimum instead (and a step at the minimum is taken whatever its error), so a run
-//!   always finishes.
+//! - pkdgrav's tolerance is 10⁻⁶ and its minimum step 10⁻³·dt (docs/pkdgrav-physics.md
+//!   §17). Numerical Recipes stops with an error when the next step would be that small;
+//!   pkdgrav only warns and goes on. Here the step is held at the minimum (and a step at
+//!   the minimum is taken whatever its error), and [`Cost::floor`] says the minimum was
+//!   reached, for the run's warning.
+//! - pkdgrav exits (status 1) on a step underflow (a step too small to move the clock) or
+//!   after more than [`MAX_STEPS`] steps: [`Cost::failure`] says so, the rotation is left
+//!   where the last step took it, and the run stops. With the minimum step of 10⁻³·dt
+//!   neither can happen to finite numbers (at most about 1,000 steps are taken).
 //!
 //! For pkdgrav's reactive walls one step of the order of the particles' contact time is
 //! a rotation of well under a degree, and one Cash–Karp step of dt is accepted.
@@ -46,14 +51,41 @@ pub const TOLERANCE: f64 = 1e-6;
 pub const MIN_STEP_FRACTION: f64 = 1e-3;
 /// The floor added to each scale (pkdgrav's `TINY`).
 pub const TINY: f64 = 1e-15;
+/// The most steps one integration takes (Numerical Recipes' and pkdgrav's `MAXSTP`).
+pub const MAX_STEPS: u32 = 10_000;
 
-/// What an integration cost.
+/// What an integration cost, and whether it reached the minimum step or failed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Cost {
     /// Cash–Karp steps accepted.
     pub accepted: u32,
     /// Cash–Karp steps rejected and retried smaller.
     pub rejected: u32,
+    /// Whether the minimum step was reached: a step (or a retry) the accuracy asked to
+    /// be smaller was held at the minimum, or a step at the minimum was taken with its
+    /// error above the tolerance (pkdgrav warns, and goes on).
+    pub floor: bool,
+    /// Why the integration did not reach the step's end, where pkdgrav exits.
+    pub failure: Option<Failure>,
+}
+
+/// Why an adaptive integration could not finish a step: where pkdgrav exits with status
+/// 1 (docs/pkdgrav-physics.md §17).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Failure {
+    /// A step too small to move the clock (Numerical Recipes' "stepsize underflow").
+    Underflow,
+    /// More than [`MAX_STEPS`] steps.
+    TooManySteps,
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Failure::Underflow => f.write_str("a substep too small to move the clock (underflow)"),
+            Failure::TooManySteps => write!(f, "more than {MAX_STEPS} substeps"),
+        }
+    }
 }
 
 /// Advances `rot` (body ω and space axes) over `dt` by Euler's equations with principal
@@ -71,19 +103,44 @@ pub fn integrate_with(
     dt: f64,
     tolerance: f64,
 ) -> Cost {
+    let limits = Limits {
+        tolerance,
+        min_step_fraction: MIN_STEP_FRACTION,
+        max_steps: MAX_STEPS,
+    };
+    integrate_within(rot, inertia, torque_body, dt, limits)
+}
+
+/// An integration's accuracy and bounds: pkdgrav's are [`TOLERANCE`],
+/// [`MIN_STEP_FRACTION`] and [`MAX_STEPS`].
+#[derive(Debug, Clone, Copy)]
+struct Limits {
+    tolerance: f64,
+    min_step_fraction: f64,
+    max_steps: u32,
+}
+
+/// [`integrate`] within `limits`.
+fn integrate_within(
+    rot: &mut Rotation,
+    inertia: &Vec3,
+    torque_body: &Vec3,
+    dt: f64,
+    limits: Limits,
+) -> Cost {
     let mut cost = Cost::default();
     if dt == 0.0 {
         return cost;
     }
+    let tolerance = limits.tolerance;
     let f = |y: &State| derivative(y, inertia, torque_body);
     let (x1, x2) = (0.0, dt);
-    let h_min = MIN_STEP_FRACTION * dt.abs();
+    let h_min = limits.min_step_fraction * dt.abs();
     let mut y = rot.packed();
     let mut x = x1;
     let mut h = dt;
-    // Numerical Recipes' odeint allows 10000 steps; more cannot happen with a minimum
-    // step of dt/1000, but the bound keeps a non-finite state from looping.
-    for _ in 0..10_000 {
+    let mut done = false;
+    for _ in 0..limits.max_steps {
         let dydx = f(&y);
         let mut yscal = State::zeros();
         for i in 0..12 {
@@ -104,6 +161,7 @@ pub fn integrate_with(
             let at_minimum = hh.abs() <= h_min;
             if errmax <= 1.0 || at_minimum || !errmax.is_finite() {
                 cost.accepted += 1;
+                cost.floor |= errmax > 1.0 && errmax.is_finite();
                 let next = if errmax > 1.89e-4 {
                     0.9 * hh * errmax.powf(-0.2)
                 } else {
@@ -120,18 +178,28 @@ pub fn integrate_with(
             };
             if hh.abs() < h_min {
                 hh = h_min * dt.signum();
+                cost.floor = true;
             }
         };
+        if x + hh == x {
+            cost.failure = Some(Failure::Underflow);
+            break;
+        }
         x += hh;
         y = y_new;
         if (x - x2) * (x2 - x1) >= 0.0 {
+            done = true;
             break;
         }
         h = if h_next.abs() <= h_min {
+            cost.floor = true;
             h_min * dt.signum()
         } else {
             h_next
         };
+    }
+    if !done && cost.failure.is_none() {
+        cost.failure = Some(Failure::TooManySteps);
     }
     rot.unpack(&y);
     cost
@@ -225,5 +293,43 @@ mod tests {
         // The body turns by ½·α·t² = 0.25 rad about z.
         let angle = rot.axes[0].y.atan2(rot.axes[0].x);
         assert!((angle - 0.25).abs() < 1e-6, "{angle}");
+    }
+
+    /// A body tumbling about no principal axis, and its moments.
+    fn tumbling() -> (Rotation, Vec3) {
+        (
+            Rotation::new(Vec3::new(1.0, 2.0, 3.0)),
+            Vec3::new(1.0, 2.0, 3.0),
+        )
+    }
+
+    #[test]
+    fn a_step_of_many_turns_reaches_the_minimum_step_and_goes_on() {
+        // 200 rad/s for a step of 1: at dt/1000 a turn of 0.2 rad, too coarse for 10⁻⁶.
+        let (mut rot, inertia) = tumbling();
+        rot.omega *= 60.0;
+        let cost = integrate(&mut rot, &inertia, &Vec3::zeros(), 1.0);
+        assert!(cost.floor, "{cost:?}");
+        assert_eq!(cost.failure, None);
+        // Most of them held at the minimum: about a thousand steps.
+        assert!((900..=1100).contains(&cost.accepted), "{cost:?}");
+        // A slow one does not.
+        let (mut rot, inertia) = tumbling();
+        let cost = integrate(&mut rot, &inertia, &Vec3::zeros(), 0.01);
+        assert!(!cost.floor && cost.failure.is_none(), "{cost:?}");
+    }
+
+    #[test]
+    fn more_steps_than_allowed_fail_and_leave_the_rotation_where_the_last_took_it() {
+        let (mut rot, inertia) = tumbling();
+        let limits = Limits {
+            tolerance: TOLERANCE,
+            min_step_fraction: MIN_STEP_FRACTION,
+            max_steps: 3,
+        };
+        let cost = integrate_within(&mut rot, &inertia, &Vec3::zeros(), 1.0, limits);
+        assert_eq!(cost.failure, Some(Failure::TooManySteps));
+        assert_eq!(cost.accepted, 3);
+        assert!(rot.omega != Vec3::new(1.0, 2.0, 3.0));
     }
 }

@@ -149,17 +149,18 @@ impl Assembly {
     /// held fixed ([`crate::dynamics::euler_rigid`]); then each wall turns about the
     /// centre of gravity by three successive right-handed rotations, about the new p̂₁,
     /// p̂₂ and p̂₃ by ω₁·dt, ω₂·dt and ω₃·dt (the new ω). Only for an assembly that
-    /// follows pkdgrav.
-    pub fn move_pkdgrav(&mut self, dt: f64) {
+    /// follows pkdgrav. Returns what the rotation's integration cost, whether it reached
+    /// the minimum step and whether it failed ([`crate::dynamics::euler_rigid::Cost`]).
+    pub fn move_pkdgrav(&mut self, dt: f64) -> crate::dynamics::euler_rigid::Cost {
         let travel = self.velocity * dt;
         self.cog += travel;
         let Some(placed) = self.placed.as_mut() else {
-            return;
+            return Default::default();
         };
         for shape in placed.iter_mut() {
             *shape = shape.at(shape.origin() + travel);
         }
-        crate::dynamics::euler_rigid::integrate(
+        let cost = crate::dynamics::euler_rigid::integrate(
             &mut self.rotation,
             &self.inertia,
             &self.torque_body,
@@ -177,6 +178,7 @@ impl Assembly {
                 *shape = shape.turned(origin, &turn);
             }
         }
+        cost
     }
 
     /// The body-frame torque from the space-frame torque summed at a force evaluation,

@@ -10,7 +10,10 @@
 //!   integrated by the embedded Dormand–Prince 5(4) pair with an adaptive substep:
 //!   relative accuracy 10⁻⁶ (on the norm of ω, scaled like Numerical Recipes' `rkqs` by
 //!   |ω| + h|ω̇|, and on the unit axes), first substep dt, minimum substep 10⁻³·dt (a
-//!   substep that small is accepted whatever its error). It conserves neither 2E nor |L|
+//!   substep that small is accepted whatever its error, and [`Steps::floor`] says the
+//!   minimum was reached); a substep too small to move the clock, or more than
+//!   [`MAX_STEPS`] substeps, end the step where it is ([`Steps::failure`]), as pkdgrav's
+//!   integrator exits there (docs/pkdgrav-physics.md §17). It conserves neither 2E nor |L|
 //!   exactly: both drift, slowly, at the accuracy asked for.
 //! - [`RotationIntegrator::LieSplitting`], symplectic and Lie–Poisson: half a kick of the
 //!   world angular momentum, L += τ·dt/2; the free body split into its three exact
@@ -28,6 +31,7 @@
 //! their truncation error and are corrected nearly every step. The body-frame ω is left as
 //! it is: the splitting carries the body components of L, turned with the axes.
 
+pub use crate::dynamics::euler_rigid::{Failure, MAX_STEPS};
 use nalgebra::{Matrix3, SVector, Vector3};
 
 type Vec3 = Vector3<f64>;
@@ -123,6 +127,11 @@ pub struct Steps {
     pub evaluations: u32,
     /// Whether the axes were re-orthonormalised after the step.
     pub reorthonormalised: bool,
+    /// [`RotationIntegrator::AdaptiveRk`]: whether the minimum substep was reached (a
+    /// substep the accuracy asked to be smaller held at the minimum).
+    pub floor: bool,
+    /// [`RotationIntegrator::AdaptiveRk`]: why the step did not reach its end.
+    pub failure: Option<Failure>,
 }
 
 /// pkdgrav's relative accuracy for the rotation.
@@ -189,7 +198,16 @@ pub fn step_rk(
         let at_minimum = h.abs() <= h_min * (1.0 + 1e-12)
             || h.abs() < remaining.abs() * 1e-12
             || !ratio.is_finite();
+        if t + h == t {
+            steps.failure = Some(Failure::Underflow);
+            break;
+        }
         if ratio <= 1.0 || at_minimum {
+            steps.floor |= ratio > 1.0 && ratio.is_finite();
+            if steps.substeps == MAX_STEPS {
+                steps.failure = Some(Failure::TooManySteps);
+                break;
+            }
             t += h;
             y = y_new;
             k1 = k7;
@@ -206,6 +224,8 @@ pub fn step_rk(
         }
         if h.abs() < h_min {
             h = h_min * dt.signum();
+            // (Not for the step's last substep, cut short to end on dt.)
+            steps.floor |= (dt - t) * dt.signum() > 0.0;
         }
     }
     rot.unpack(&y);
@@ -238,6 +258,8 @@ fn step_splitting(rot: &mut Rotation, inertia: &Vec3, torque_world: &Vec3, dt: f
         rejected: 0,
         evaluations: 5,
         reorthonormalised,
+        floor: false,
+        failure: None,
     }
 }
 

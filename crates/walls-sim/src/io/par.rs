@@ -48,6 +48,10 @@ pub struct Params {
     pub start_step: Option<u64>,
     /// `iOutInterval`: outputs at the steps that are multiples of it, and at the last.
     pub out_interval: Option<u64>,
+    /// `iRedOutInterval`: pkdgrav's reduced outputs, at `iStartStep` and every so many
+    /// steps after it (0, the default: none), where it writes its reactive-wall lines
+    /// (docs/pkdgrav-physics.md §10).
+    pub red_out_interval: Option<u64>,
     /// `dEpsN`, `dEpsT`: the particles' coefficients of restitution.
     pub eps_n: Option<f64>,
     /// See `eps_n`.
@@ -83,16 +87,15 @@ pub struct Params {
     /// `dAccCrit`: below it, small motions are zeroed (docs/pkdgrav-physics.md §1.7; 0,
     /// the default, turns it off).
     pub acc_crit: Option<f64>,
+    /// `dMinorFrac`, `dMajorFrac`, `dErrorFrac`: pkdgrav's overlap levels
+    /// (docs/pkdgrav-physics.md §15), each `None` where the file leaves it at pkdgrav's
+    /// default (0.03, 0.15, 0.5); together, with the defaults, 0 ≤ minor ≤ major ≤ error.
+    pub overlap_fracs: [Option<f64>; 3],
     /// The two-layer contact constants (`DEM_TWOLAYERS`), resolved, when the file gives
     /// any of them.
     pub two_layer: Option<TwoLayer>,
-    /// `iCohesionModel` (`DEM_COHESION`): 0 microscopic contact, 1 granular bridge.
-    pub cohesion_model: Option<i64>,
-    /// `dCohesiveCoeff` (`DEM_COHESION`), in raw pkdgrav units of stress.
-    pub cohesive_coeff: Option<f64>,
-    /// `achCohesionFile` (`DEM_COHESION`): the per-colour coefficients, relative to the
-    /// `.par` file's folder; `None` when absent or empty.
-    pub cohesion_file: Option<String>,
+    /// Cohesion's keys (`DEM_COHESION`).
+    pub cohesion: CohesionKeys,
     /// The lines of keys that only a build with an optional compile option follows
     /// (cohesion's, two-layer contacts'), in line order: `config` warns about those the
     /// run's build lacks.
@@ -133,6 +136,18 @@ pub struct TwoLayer {
     pub k_n_inner: f64,
     /// `dKtInner`.
     pub k_t_inner: f64,
+}
+
+/// Cohesion's keys (`DEM_COHESION`), each `None` where the file leaves it out.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CohesionKeys {
+    /// `iCohesionModel`: 0 microscopic contact, 1 granular bridge.
+    pub model: Option<i64>,
+    /// `dCohesiveCoeff`, in raw pkdgrav units of stress.
+    pub coefficient: Option<f64>,
+    /// `achCohesionFile`: the per-colour coefficients, relative to the `.par` file's
+    /// folder; `None` when absent or empty.
+    pub file: Option<String>,
 }
 
 /// A `.par` line whose key only a pkdgrav build with `option` follows.
@@ -181,7 +196,13 @@ impl std::fmt::Display for ParWarning {
 
 /// The integer keys the run reads as counts: a value that is not a whole number is an
 /// error ([`Lines::count`]), not pkdgrav's `%d` reading.
-const COUNTS: [&str; 4] = ["nSteps", "iStartStep", "iOutInterval", "nDigits"];
+const COUNTS: [&str; 5] = [
+    "nSteps",
+    "iStartStep",
+    "iOutInterval",
+    "iRedOutInterval",
+    "nDigits",
+];
 
 /// The most digits `nDigits` may ask for: a 64-bit step number has at most 20.
 pub const MAX_DIGITS: usize = 20;
@@ -635,6 +656,7 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
         steps: lines.count("nSteps")?,
         start_step: lines.count("iStartStep")?,
         out_interval: lines.count("iOutInterval")?,
+        red_out_interval: lines.count("iRedOutInterval")?,
         eps_n: lines.checked("dEpsN", Rule::Restitution)?,
         eps_t: lines.checked("dEpsT", Rule::Tangential)?,
         k_n,
@@ -655,10 +677,13 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
         legacy_roll: lines.switch("bUseLegacyRoll")?,
         do_gravity: lines.switch("bDoGravity")?,
         acc_crit: lines.checked("dAccCrit", Rule::NonNegative)?,
+        overlap_fracs: overlap_fracs(&lines)?,
         two_layer,
-        cohesion_model,
-        cohesive_coeff: lines.checked("dCohesiveCoeff", Rule::Any)?,
-        cohesion_file: lines.text("achCohesionFile").filter(|f| !f.is_empty()),
+        cohesion: CohesionKeys {
+            model: cohesion_model,
+            coefficient: lines.checked("dCohesiveCoeff", Rule::Any)?,
+            file: lines.text("achCohesionFile").filter(|f| !f.is_empty()),
+        },
         optional_keys,
         warnings,
         path_lines: PATH_KEYS
@@ -667,6 +692,42 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
             .collect(),
         subnormals,
     })
+}
+
+/// The overlap levels' keys, in order, with pkdgrav's defaults.
+pub const OVERLAP_KEYS: [(&str, f64); 3] = [
+    ("dMinorFrac", 0.03),
+    ("dMajorFrac", 0.15),
+    ("dErrorFrac", 0.5),
+];
+
+/// `dMinorFrac`, `dMajorFrac`, `dErrorFrac` as the file gives them: each 0 or more,
+/// and, with pkdgrav's defaults for those it leaves out, in order (pkdgrav stops at
+/// start-up otherwise, docs/pkdgrav-physics.md §15).
+fn overlap_fracs(lines: &Lines) -> Result<[Option<f64>; 3], InputError> {
+    let mut given = [None; 3];
+    for (k, (key, _)) in OVERLAP_KEYS.iter().enumerate() {
+        given[k] = lines.checked(key, Rule::NonNegative)?;
+    }
+    for k in 0..2 {
+        let value = |k: usize| given[k].unwrap_or(OVERLAP_KEYS[k].1);
+        if value(k) > value(k + 1) {
+            let (low, high) = (OVERLAP_KEYS[k].0, OVERLAP_KEYS[k + 1].0);
+            let at = lines
+                .line(high)
+                .max(lines.line(low))
+                .map_or_else(String::new, |n| format!("line {n}"));
+            return Err(error(
+                at,
+                format!(
+                    "`{low}` is {} and `{high}` {}: pkdgrav stops at start-up unless 0 ≤ dMinorFrac ≤ dMajorFrac ≤ dErrorFrac (its defaults 0.03, 0.15, 0.5)",
+                    value(k),
+                    value(k + 1)
+                ),
+            ));
+        }
+    }
+    Ok(given)
 }
 
 /// The two-layer constants when the file gives any, resolved against `k_n` (`dKn`) as

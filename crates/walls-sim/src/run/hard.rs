@@ -672,6 +672,7 @@ impl<'a> HardStepper<'a> {
             events: self.events,
             assemblies: Vec::new(),
             pair_contacts: self.pair_contacts,
+            overlaps: Default::default(),
             energy: (self.initial, last),
             warnings: self.warnings,
             stopped,

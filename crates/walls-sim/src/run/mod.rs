@@ -143,6 +143,10 @@ pub struct Settings {
     /// stopped (and likewise its spin, with the thresholds over and times its radius); 0
     /// turns it off.
     pub acc_crit: f64,
+    /// SSDEM: pkdgrav's overlap levels (`dMinorFrac`, `dMajorFrac`, `dErrorFrac`,
+    /// docs/pkdgrav-physics.md §15): overlaps past them are counted and warned of, and
+    /// past the error level the run stops, as pkdgrav aborts.
+    pub overlap_levels: OverlapLevels,
     /// Cohesion's `.par` values (docs/pkdgrav-physics.md §7): followed when the build has
     /// `DEM_COHESION` and the integrator is [`Integrator::Pkdgrav`].
     pub cohesion: crate::contact::cohesion::Cohesion,
@@ -206,6 +210,7 @@ impl Settings {
             legacy_roll: false,
             forces: true,
             acc_crit: 0.0,
+            overlap_levels: OverlapLevels::default(),
             cohesion: crate::contact::cohesion::Cohesion::default(),
             two_layer: None,
             sliding: crate::contact::ssdem::Sliding::Reset,
@@ -224,28 +229,29 @@ impl Settings {
     }
 
     /// The number of the run's last step: `last_step`, else the first whose time
-    /// reaches `t_end` (up to a billionth of the count: round-off, not a step);
-    /// `u64::MAX` when t_end/dt is not a finite number (NaN or beyond a double), which
-    /// `config` refuses with the options that made it.
+    /// reaches `t_end` (up to [`round_off`]: a count a billionth above a whole number,
+    /// never more than a thousandth of a step, is that number); `u64::MAX` when t_end/dt
+    /// is not a finite number (NaN or beyond a double), which `config` refuses with the
+    /// options that made it.
     pub fn end_step(&self) -> u64 {
         match self.last_step {
             Some(last) => last,
             None => {
                 let x = self.t_end / self.dt;
                 if !x.is_finite() {
-                    // (inf − 1e-9·inf is NaN, which `max(0.0)` would make 0 steps.)
+                    // (inf − round-off of inf is NaN, which `max(0.0)` would make 0 steps.)
                     return u64::MAX;
                 }
-                (x - 1e-9 * x.max(1.0)).ceil().max(0.0) as u64
+                (x - round_off(x)).ceil().max(0.0) as u64
             }
         }
     }
 
     /// Whether a run of time (no `last_step`) ends exactly on `t_end`: whether `t_end`
-    /// is a whole number of steps (to a billionth of the count).
+    /// is a whole number of steps (to [`round_off`]).
     fn ends_on_t_end(&self) -> bool {
         let x = self.t_end / self.dt;
-        (self.end_step() as f64 - x).abs() <= 1e-9 * x.max(1.0)
+        (self.end_step() as f64 - x).abs() <= round_off(x)
     }
 
     /// The time after step number `step`: `step`·`dt`, the start time plus whole steps
@@ -344,6 +350,9 @@ pub struct Outcome {
     pub assemblies: Vec<crate::dynamics::reactive::Assembly>,
     /// Particle–particle contacts that began (SSDEM) or collisions (HSDEM).
     pub pair_contacts: u64,
+    /// SSDEM: the overlap events past pkdgrav's levels ([`Settings::overlap_levels`]),
+    /// for pairs and for walls, as pkdgrav counts them.
+    pub overlaps: OverlapCounts,
     /// Kinetic (with spin) plus gravitational energy at the start and the end.
     pub energy: (f64, f64),
     /// Warnings, in the order they arose; each prints as pkdgrav users read it.
@@ -355,12 +364,16 @@ pub struct Outcome {
 /// Why a run stopped before its last step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stop {
-    /// An overlap above half a radius, where pkdgrav aborts (W103).
+    /// An overlap past `dErrorFrac` of the radius, where pkdgrav aborts (W103).
     Overlap,
     /// An aggregate of a single member, where pkdgrav aborts.
     SingleMemberAggregate,
     /// A member of an aggregate at a sticky or death wall, where pkdgrav aborts.
     AggregateHeld,
+    /// A rigid body's adaptive integrator (a reactive assembly's or an aggregate's
+    /// rotation) failed: more than 10,000 substeps, or a substep too small to move the
+    /// clock, where pkdgrav exits (W404).
+    Integration,
     /// A particle's position, velocity or spin became infinite or NaN (the particle's
     /// index): the numbers outgrew what a double holds.
     NotFinite(usize),
@@ -382,6 +395,7 @@ impl Stop {
             Stop::Overlap => "overlap",
             Stop::SingleMemberAggregate => "single-member-aggregate",
             Stop::AggregateHeld => "aggregate-held",
+            Stop::Integration => "integration",
             Stop::NotFinite(_) | Stop::AssemblyNotFinite(_) => "not-finite",
             Stop::Interrupted => "interrupted",
             Stop::Timestep => "timestep",
@@ -392,13 +406,20 @@ impl Stop {
 impl std::fmt::Display for Stop {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Stop::Overlap => write!(f, "an overlap above half a radius, where pkdgrav aborts"),
+            Stop::Overlap => write!(
+                f,
+                "an overlap above dErrorFrac of the radius, where pkdgrav aborts"
+            ),
             Stop::SingleMemberAggregate => {
                 write!(f, "an aggregate of a single member, where pkdgrav aborts")
             }
             Stop::AggregateHeld => write!(
                 f,
                 "a member of an aggregate at a sticky or death wall, where pkdgrav aborts"
+            ),
+            Stop::Integration => write!(
+                f,
+                "the adaptive integrator of a rigid body's rotation failed, where pkdgrav exits"
             ),
             Stop::NotFinite(i) => write!(
                 f,
@@ -511,6 +532,7 @@ pub fn run_watched(
             events: Vec::new(),
             assemblies: Vec::new(),
             pair_contacts: 0,
+            overlaps: OverlapCounts::default(),
             energy: (e, e),
             warnings: Vec::new(),
             stopped: Some(Stop::Timestep),
@@ -559,6 +581,7 @@ pub fn run_watched(
             Warning::OverlapStop { .. } => Some(Stop::Overlap),
             Warning::SingleMemberAggregate { .. } => Some(Stop::SingleMemberAggregate),
             Warning::AggregateHeld { .. } => Some(Stop::AggregateHeld),
+            Warning::StepFailed { .. } => Some(Stop::Integration),
             _ => None,
         });
     }
@@ -772,30 +795,133 @@ fn carry(s: &mut State, now: &WallNow, dt: f64) {
     s.particle.spin = now.spin;
 }
 
-/// pkdgrav's overlap warnings: the first overlap above 3 % and above 15 % of a radius.
+/// pkdgrav's overlap levels (`dMinorFrac`, `dMajorFrac`, `dErrorFrac`,
+/// docs/pkdgrav-physics.md §15), as fractions of a radius: the smaller radius of a pair,
+/// the particle's against a wall. An overlap x is past a level when x > level·radius
+/// (strictly); past `error`, pkdgrav aborts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OverlapLevels {
+    /// `dMinorFrac` (pkdgrav's default 0.03).
+    pub minor: f64,
+    /// `dMajorFrac` (pkdgrav's default 0.15).
+    pub major: f64,
+    /// `dErrorFrac` (pkdgrav's default 0.5): past it pkdgrav aborts, and the run stops.
+    pub error: f64,
+}
+
+impl Default for OverlapLevels {
+    /// pkdgrav's defaults: 0.03, 0.15, 0.5.
+    fn default() -> Self {
+        OverlapLevels {
+            minor: 0.03,
+            major: 0.15,
+            error: 0.5,
+        }
+    }
+}
+
+impl OverlapLevels {
+    /// The worst level an overlap of `fraction` of the radius is past, checked from the
+    /// worst down with a strict `>` as pkdgrav does; `None` below (or at) the minor one.
+    pub fn level_of(&self, fraction: f64) -> Option<OverlapLevel> {
+        if fraction > self.error {
+            Some(OverlapLevel::Error)
+        } else if fraction > self.major {
+            Some(OverlapLevel::Major)
+        } else if fraction > self.minor {
+            Some(OverlapLevel::Minor)
+        } else {
+            None
+        }
+    }
+}
+
+/// One of pkdgrav's overlap levels ([`OverlapLevels`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OverlapLevel {
+    /// Past `dMinorFrac`, not past `dMajorFrac`.
+    Minor,
+    /// Past `dMajorFrac`, not past `dErrorFrac`.
+    Major,
+    /// Past `dErrorFrac`: pkdgrav aborts.
+    Error,
+}
+
+/// How many overlap events a run met at each of pkdgrav's levels, each event counted at
+/// the worst level it is past (once per force evaluation per pair, or per particle and
+/// wall).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct LevelCounts {
+    /// Past `dMinorFrac` only.
+    pub minor: u64,
+    /// Past `dMajorFrac`, not `dErrorFrac`.
+    pub major: u64,
+    /// Past `dErrorFrac` (at most one: the run stops there).
+    pub error: u64,
+}
+
+impl LevelCounts {
+    /// Every event, whatever its level: pkdgrav's counter, which decides whether it
+    /// prints a minor event (at 1 and every 1,000,000th).
+    pub fn total(&self) -> u64 {
+        self.minor + self.major + self.error
+    }
+
+    fn add(&mut self, level: OverlapLevel) {
+        *match level {
+            OverlapLevel::Minor => &mut self.minor,
+            OverlapLevel::Major => &mut self.major,
+            OverlapLevel::Error => &mut self.error,
+        } += 1;
+    }
+}
+
+/// The overlap events of a run, counted apart for particle pairs and for particles
+/// against walls, as pkdgrav keeps one counter for each (docs/pkdgrav-physics.md §15).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct OverlapCounts {
+    /// Particle–particle overlaps.
+    pub pairs: LevelCounts,
+    /// Particle–wall overlaps.
+    pub walls: LevelCounts,
+}
+
+impl OverlapCounts {
+    /// Whether no overlap passed a level.
+    pub fn is_empty(&self) -> bool {
+        self.pairs.total() == 0 && self.walls.total() == 0
+    }
+}
+
+/// pkdgrav's overlap checks as the run keeps them: every event past a level counted
+/// ([`OverlapCounts`]), the first of each warning level warned of (W101, W102), and an
+/// event past the error level warned of (W103), where the run stops.
 #[derive(Default)]
 struct OverlapWarnings {
+    levels: OverlapLevels,
     warned: [bool; 2],
+    counts: OverlapCounts,
 }
 
 impl OverlapWarnings {
-    /// The overlap (a fraction of the smaller radius) at or below which
-    /// [`OverlapWarnings::check`] now does nothing: the lowest level not yet warned of,
-    /// or pkdgrav's abort once both have been.
-    pub(crate) fn quiet_up_to(&self) -> f64 {
-        (Self::LEVELS.iter().zip(self.warned))
-            .filter(|(_, warned)| !warned)
-            .fold(Self::ABORT, |quiet, (level, _)| quiet.min(*level))
+    /// The checks at `levels`.
+    fn new(levels: OverlapLevels) -> OverlapWarnings {
+        OverlapWarnings {
+            levels,
+            ..OverlapWarnings::default()
+        }
     }
 
-    /// The overlaps, as fractions of the radius, that pkdgrav warns of (once each).
-    const LEVELS: [f64; 2] = [0.03, 0.15];
+    /// The overlap (a fraction of the radius) at or below which
+    /// [`OverlapWarnings::check`] does nothing: `dMinorFrac`, as every event past it
+    /// counts.
+    pub(crate) fn quiet_up_to(&self) -> f64 {
+        self.levels.minor
+    }
 
-    /// The overlap, as a fraction of the radius, above which pkdgrav aborts.
-    const ABORT: f64 = 0.5;
-
-    /// Notes an overlap of `fraction` of the radius between `what` at time `t`; true
-    /// when it is above 50 %, where pkdgrav aborts.
+    /// Notes an overlap of `fraction` of the radius between `what` at time `t`: counted
+    /// at its level, warned of if it is the first at a warning level, or past the error
+    /// level; true then, where pkdgrav aborts.
     fn check(
         &mut self,
         fraction: f64,
@@ -803,19 +929,68 @@ impl OverlapWarnings {
         t: f64,
         warnings: &mut Vec<Warning>,
     ) -> bool {
-        for (k, level) in Self::LEVELS.iter().enumerate() {
-            if fraction > *level && !self.warned[k] {
-                self.warned[k] = true;
-                warnings.push(if k == 0 {
-                    Warning::OverlapAbove3 { fraction, what, t }
-                } else {
-                    Warning::OverlapAbove15 { fraction, what, t }
+        let Some(level) = self.levels.level_of(fraction) else {
+            return false;
+        };
+        match what {
+            Overlapping::Particles(..) => self.counts.pairs.add(level),
+            Overlapping::Wall { .. } => self.counts.walls.add(level),
+        }
+        let levels = self.levels;
+        match level {
+            OverlapLevel::Minor if !self.warned[0] => {
+                self.warned[0] = true;
+                warnings.push(Warning::OverlapMinor {
+                    fraction,
+                    level: levels.minor,
+                    what,
+                    t,
                 });
             }
+            OverlapLevel::Major if !self.warned[1] => {
+                self.warned[1] = true;
+                warnings.push(Warning::OverlapMajor {
+                    fraction,
+                    level: levels.major,
+                    what,
+                    t,
+                });
+            }
+            OverlapLevel::Error => warnings.push(Warning::OverlapStop {
+                fraction,
+                level: levels.error,
+                what,
+                t,
+            }),
+            _ => {}
         }
-        if fraction > Self::ABORT {
-            warnings.push(Warning::OverlapStop { fraction, what, t });
+        level == OverlapLevel::Error
+    }
+}
+
+/// How far from a whole number a count of steps t_end/dt may be and still be that number:
+/// a billionth of it (the round-off of the quotient), but never more than a thousandth of
+/// a step (a billion steps are not one fewer).
+fn round_off(count: f64) -> f64 {
+    (1e-9 * count.max(1.0)).min(1e-3)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_billion_steps_are_a_billion() {
+        let material = crate::config::pkdgrav_material(1.0);
+        for (dt, t_end, steps) in [
+            (1e-17, 1e-8, 1_000_000_000),
+            (0.1, 0.3, 3),
+            (0.1, 0.35, 4),
+            (1e-3, 1.0000000001, 1000),
+            (1e-6, 7.0, 7_000_000),
+        ] {
+            let s = Settings::new(dt, t_end, material);
+            assert_eq!(s.end_step(), steps, "{t_end}/{dt}");
         }
-        fraction > Self::ABORT
     }
 }

@@ -13,7 +13,9 @@
 //! each output step ([`RunOutputs::record`]) every file's rows are written and sent to the
 //! files, the `.ss` file is written whole, and only then is the step marked whole in each;
 //! after a failed write ([`RunOutputs::rollback`]) every file is cut back to the last step
-//! marked, so that all end at the same whole output step, and nothing is removed.
+//! marked, so that all end at the same whole output step, and nothing is removed. The
+//! WALLSREACT lines come at the output steps, or, when the `.par` file sets
+//! `iRedOutInterval`, at pkdgrav's reduced outputs instead ([`Due`]).
 
 use std::path::{Path, PathBuf};
 use walls_geometry::{Particle, Wall};
@@ -24,6 +26,16 @@ use walls_sim::io::particles::{ss_file_name, write_ss_output};
 use walls_sim::io::trajectory::{PARTICLES_FILE, Trajectory, WALLS_FILE};
 use walls_sim::io::wallsreact::{DATA_FILE, ReactiveOutput, VIZ_FILE};
 use walls_sim::run::State;
+
+/// What an output step writes: the trajectory (and the `.ss` file), the WALLSREACT lines,
+/// or both.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Due {
+    /// The trajectory's rows and the `.ss` file (an output step).
+    pub trajectory: bool,
+    /// The WALLSREACT lines (an output step, or pkdgrav's reduced output).
+    pub reactive: bool,
+}
 
 /// Why the outputs could not be written at an output step.
 #[derive(Debug)]
@@ -159,32 +171,43 @@ impl RunOutputs {
 
     /// Writes the particles as the run starts with them (all alive), and the walls, at
     /// `step`, time `t`, to the trajectory (pkdgrav writes no `.ss` output before its
-    /// first step).
+    /// first step); and, given the `assemblies` as the walls file sets them, their
+    /// WALLSREACT lines (pkdgrav's reduced output at the start step).
     pub fn record_start(
         &mut self,
         step: u64,
         t: f64,
         particles: &[Particle],
         scene: &[Wall],
+        assemblies: Option<&[Assembly]>,
     ) -> Result<(), Failure> {
-        let written = self.trajectory.record_start(step, t, particles, scene);
+        let written = match (self.reactive.as_mut(), assemblies) {
+            (Some(out), Some(assemblies)) => out.record_assemblies(step, scene, assemblies),
+            _ => Ok(()),
+        }
+        .and_then(|()| self.trajectory.record_start(step, t, particles, scene));
         self.close_step(step, t, written, None)
     }
 
-    /// Writes output step `step`, time `t`: the reactive assemblies, the trajectory's rows
-    /// and the `.ss` file, then marks the step whole in every file.
+    /// Writes output step `step`, time `t`, as `due`: the reactive assemblies' lines, the
+    /// trajectory's rows and the `.ss` file, then marks the step whole in every file.
     pub fn record(
         &mut self,
-        step: u64,
-        t: f64,
+        (step, t): (u64, f64),
         states: &[State],
         scene: &[Wall],
         assemblies: &[Assembly],
+        due: Due,
     ) -> Result<(), Failure> {
-        let written = (self.reactive.as_mut())
-            .map_or(Ok(()), |out| out.record_assemblies(step, scene, assemblies))
-            .and_then(|()| self.trajectory.record(step, t, states, scene, assemblies));
-        self.close_step(step, t, written, Some(states))
+        let written = match self.reactive.as_mut() {
+            Some(out) if due.reactive => out.record_assemblies(step, scene, assemblies),
+            _ => Ok(()),
+        };
+        let written = written.and_then(|()| match due.trajectory {
+            true => self.trajectory.record(step, t, states, scene, assemblies),
+            false => Ok(()),
+        });
+        self.close_step(step, t, written, due.trajectory.then_some(states))
     }
 
     /// After the rows of `step` were `written` (or not): sends them to the files, writes

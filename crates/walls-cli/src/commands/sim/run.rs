@@ -3,7 +3,7 @@
 //! the trajectory and pkdgrav's reactive-wall files. The settings come from
 //! [`walls_sim::config`]; the report from [`walls_sim::report`].
 
-use super::outputs::{Failure, RunOutputs};
+use super::outputs::{Due, Failure, RunOutputs};
 use super::{error, exit_status, read_walls};
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -161,7 +161,9 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         particles,
         settings,
         errors,
-        outputs: Outputs { every, ss, .. },
+        outputs: Outputs {
+            every, ss, reduced, ..
+        },
         inputs,
         readout,
         numbers,
@@ -171,6 +173,17 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
     // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
     let output =
         |step: u64| (every > 0 && step.is_multiple_of(every)) || Some(step) == settings.last_step;
+    let first = settings.start_step;
+    // The WALLSREACT lines at the output steps, or, when the `.par` file sets
+    // `iRedOutInterval`, at pkdgrav's reduced outputs: the start step and every
+    // `iRedOutInterval` steps after it (docs/pkdgrav-physics.md §10).
+    let due = |step: u64| Due {
+        trajectory: output(step),
+        reactive: match reduced {
+            Some(n) => (step - first).is_multiple_of(n),
+            None => output(step),
+        },
+    };
     // pkdgrav's reactive-wall files, beside the trajectory, when the run has assemblies
     // (a build with DEM_WALLS_REACT; without it the masses are ignored, W402): appended
     // to as pkdgrav does, unless --fresh.
@@ -187,15 +200,23 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         )?),
         None => None,
     };
-    let first = settings.start_step;
     let progress = progress_bar(match settings.last_step {
         Some(last) => last.saturating_sub(first),
         None => settings.end_step().saturating_sub(first),
     });
     let mut failure: Option<Failure> = None;
     if let Some(out) = &mut files {
+        // The assemblies as the walls file sets them, for pkdgrav's reduced output at
+        // the start step.
+        let start = reduced.map(|_| walls_sim::dynamics::reactive::assemblies(scene));
         failure = out
-            .record_start(first, settings.t_start(), &particles, scene)
+            .record_start(
+                first,
+                settings.t_start(),
+                &particles,
+                scene,
+                start.as_deref(),
+            )
             .err();
     }
     // Ctrl-C (or SIGTERM, SIGHUP) stops the run after the step it is in, so that every
@@ -217,12 +238,14 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
             }
             // Without `--out` there is nothing to write, and the particles are not looked
             // at (looking gives the kicks owed: a pass over them).
-            let Some(out) = files.as_mut().filter(|_| output(step) && failure.is_none()) else {
+            let due = due(step);
+            let wanted = (due.trajectory || (due.reactive && reactive)) && failure.is_none();
+            let Some(out) = files.as_mut().filter(|_| wanted) else {
                 return;
             };
             // Only now are the particles looked at (`Snapshot`).
             let (states, assemblies) = snapshot.look();
-            failure = out.record(step, t, states, scene, assemblies).err();
+            failure = out.record((step, t), states, scene, assemblies, due).err();
             write_failed.store(failure.is_some(), Ordering::Relaxed);
         },
         &|| write_failed.load(Ordering::Relaxed) || walls_output::interrupt::stop_requested(),

@@ -114,14 +114,24 @@ struct WarnedOnce {
     crowd: bool,
     fast: bool,
     gain: bool,
+    /// A rigid body's adaptive integrator reached its minimum step.
+    floor: bool,
 }
 
 /// Whether a run goes on after a step.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Flow {
     Continue,
-    /// An overlap past pkdgrav's abort.
+    /// Where pkdgrav aborts or exits: an overlap past `dErrorFrac`, an aggregate member
+    /// held by a wall, a rigid body's adaptive integrator failing.
     Stop,
+}
+
+impl Flow {
+    /// [`Flow::Stop`] if either says so.
+    fn and(self, other: Flow) -> Flow {
+        if self == Flow::Stop { self } else { other }
+    }
 }
 
 /// What a run has seen so far: its events, the pair contacts begun, its warnings, and
@@ -331,6 +341,7 @@ impl<'a> SoftStepper<'a> {
             broad,
             rigid,
             deferred,
+            journal,
             clock,
             ..
         } = self;
@@ -345,11 +356,15 @@ impl<'a> SoftStepper<'a> {
         } else {
             drift::kick_drift::<false>(bodies, deferred, broad, walls, rules);
         }
-        rigid::move_aggregates(rigid, &mut bodies.states, rules);
+        let t = clock.t;
+        let moved = rigid::move_aggregates(rigid, &mut bodies.states, journal, rules, t);
         if rules.kicks.pkdgrav_levers {
             carry_stuck(&mut bodies.states, broad, walls, rules);
         }
-        rigid::move_assemblies(rigid, walls, rules);
+        // pkdgrav exits in the drift when a rigid body's integrator fails.
+        if moved.and(rigid::move_assemblies(rigid, walls, journal, rules, t)) == Flow::Stop {
+            return Flow::Stop;
+        }
         let particles = (bodies.states.as_slice(), &bodies.numbering);
         near::update_lists(
             &mut broad.candidates,
@@ -429,6 +444,7 @@ impl<'a> SoftStepper<'a> {
             events: self.journal.events,
             assemblies,
             pair_contacts: self.journal.pair_contacts,
+            overlaps: self.journal.overlaps.counts,
             energy: (self.initial, last),
             warnings: self.journal.warnings,
             stopped,

@@ -3,23 +3,63 @@
 //! loads gathered and the closing kick) and the reactive assemblies of walls (their
 //! kicks and drift, their walls placed, the particles' reactions summed).
 
-use super::{Bodies, Rigid, Rules, State, Vec3, WallNow, WallPass, WallSet};
+use super::{Bodies, Flow, Journal, Rigid, Rules, State, Vec3, WallNow, WallPass, WallSet};
+use crate::dynamics::euler_rigid::Failure;
 use crate::dynamics::reactive::Assembly;
 use crate::dynamics::rigid::RotationIntegrator;
+use crate::warning::{Rigid as Body, Warning};
 use walls_geometry::Wall;
 
 /// pkdgrav's aggregates (docs/pkdgrav-physics.md §9.3): the opening half kick of each
 /// centre, the drift (the rotation by Euler's equations, the centre with its half-step
-/// velocity), and the members placed where it has taken them.
-pub(super) fn move_aggregates(rigid: &mut Rigid, states: &mut [State], rules: &Rules) {
+/// velocity), and the members placed where it has taken them. The rotation's adaptive
+/// integrator reaching its minimum step is warned of (once a run); its failing stops the
+/// run ([`Flow::Stop`]), as pkdgrav exits (docs/pkdgrav-physics.md §17). `t` is the time
+/// at the step's end.
+pub(super) fn move_aggregates(
+    rigid: &mut Rigid,
+    states: &mut [State],
+    journal: &mut Journal,
+    rules: &Rules,
+    t: f64,
+) -> Flow {
     let Some(aggs) = rigid.aggregates.as_mut() else {
-        return;
+        return Flow::Continue;
     };
     let dt = rules.settings.dt;
+    let mut flow = Flow::Continue;
     for a in &mut aggs.list {
         a.kick(0.5 * dt);
-        a.advance(dt);
+        let cost = a.advance(dt);
         a.place(states, dt);
+        let body = Body::Aggregate(a.number);
+        flow = flow.and(note_integration(journal, body, cost.floor, cost.failure, t));
+    }
+    flow
+}
+
+/// The warnings of one rigid body's adaptive integration over a step ending at `t`:
+/// the first time a body's reaches its minimum step, and any failure, which stops the
+/// run.
+fn note_integration(
+    journal: &mut Journal,
+    body: Body,
+    floor: bool,
+    failure: Option<Failure>,
+    t: f64,
+) -> Flow {
+    if floor && !journal.once.floor {
+        journal.once.floor = true;
+        journal.warnings.push(Warning::StepFloor { body, t });
+    }
+    match failure {
+        Some(failure) => {
+            journal
+                .warnings
+                .push(Warning::StepFailed { body, failure, t });
+            Flow::Stop
+        }
+        None => Flow::Continue,
     }
 }
 
@@ -43,28 +83,46 @@ pub(super) fn gather_aggregates(rigid: &mut Rigid, bodies: &Bodies, rules: &Rule
 /// force and torque, its drift, and its free rotation over the step (kick-drift-kick as
 /// for the particles); its walls are placed where it has taken them. With
 /// [`super::Integrator::Pkdgrav`], pkdgrav's: the opening half kick of the velocity
-/// alone, then [`Assembly::move_pkdgrav`] (docs/pkdgrav-physics.md §10).
-pub(super) fn move_assemblies(rigid: &mut Rigid, walls: &mut WallSet, rules: &Rules) {
+/// alone, then [`Assembly::move_pkdgrav`] (docs/pkdgrav-physics.md §10). The rotation's
+/// adaptive integrator is watched as the aggregates' is ([`move_aggregates`]).
+pub(super) fn move_assemblies(
+    rigid: &mut Rigid,
+    walls: &mut WallSet,
+    journal: &mut Journal,
+    rules: &Rules,
+    t: f64,
+) -> Flow {
     let (g, dt) = (rules.settings.gravity, rules.settings.dt);
+    let mut flow = Flow::Continue;
     for a in rigid.assemblies.iter_mut() {
+        let body = Body::Assembly(a.number);
         if a.is_pkdgrav() {
             a.velocity += (a.force / a.mass + g) * (dt / 2.0);
-            a.move_pkdgrav(dt);
+            let cost = a.move_pkdgrav(dt);
+            flow = flow.and(note_integration(journal, body, cost.floor, cost.failure, t));
             continue;
         }
         a.velocity += (a.force / a.mass + g) * (dt / 2.0);
         a.cog += a.velocity * dt;
         a.kick(dt / 2.0);
         let inertia = a.inertia;
-        crate::dynamics::rigid::step(
+        let steps = crate::dynamics::rigid::step(
             &mut a.rotation,
             &inertia,
             &Vec3::zeros(),
             dt,
             RotationIntegrator::AdaptiveRk,
         );
+        flow = flow.and(note_integration(
+            journal,
+            body,
+            steps.floor,
+            steps.failure,
+            t,
+        ));
     }
     place_assemblies(&rigid.assemblies, walls, rules.scene);
+    flow
 }
 
 /// Each assembly's walls placed where it has taken them, and its centre of gravity

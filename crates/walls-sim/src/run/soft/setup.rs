@@ -88,7 +88,7 @@ impl<'a> SoftStepper<'a> {
                 events: Vec::new(),
                 pair_contacts: 0,
                 warnings,
-                overlaps: OverlapWarnings::default(),
+                overlaps: OverlapWarnings::new(settings.overlap_levels),
                 once: WarnedOnce::default(),
             },
             clock: Clock {

@@ -74,6 +74,9 @@ pub(super) struct Walls<'a> {
     optional: &'a OptionalPhysics,
     /// pkdgrav's aggregates, if any (for their members' rolling pseudo-forces).
     aggregates: Option<&'a Aggregates>,
+    /// The overlap (a fraction of the particle's radius) past which a wall contact is
+    /// one of pkdgrav's overlap events: `dMinorFrac`.
+    minor: f64,
     /// The time at the step's end.
     t: f64,
     /// Which particle of the file each place holds: an event names the file's.
@@ -84,8 +87,9 @@ pub(super) struct Walls<'a> {
 #[derive(Default)]
 pub(super) struct ParticleStep {
     pub(super) events: Vec<Event>,
-    /// The deepest overlap, as a fraction of the radius, and its wall.
-    pub(super) deepest: Option<(f64, usize)>,
+    /// The overlaps past `dMinorFrac` (as fractions of the particle's radius) and their
+    /// walls, in the walls' order: pkdgrav's overlap events (docs/pkdgrav-physics.md §15).
+    pub(super) past: Vec<(f64, usize)>,
     pub(super) touching: usize,
     /// Radii moved in the step, when more than one: it may skip through a wall.
     pub(super) too_fast: Option<f64>,
@@ -100,7 +104,7 @@ impl ParticleStep {
     /// Whether there is nothing to note (the particle touched no wall and is well).
     pub(super) fn is_empty(&self) -> bool {
         self.events.is_empty()
-            && self.deepest.is_none()
+            && self.past.is_empty()
             && self.touching == 0
             && self.too_fast.is_none()
             && self.reactions.is_empty()
@@ -293,8 +297,9 @@ pub(super) fn touch_walls(
         }
         let wall_v = wall.point_velocity(&near.point);
         out.touching += 1;
-        if out.deepest.is_none_or(|(f, _)| overlap / r > f) {
-            out.deepest = Some((overlap / r, w));
+        // A death wall removes the particle before pkdgrav looks at the overlap (§15).
+        if overlap / r > walls.minor && walls.set.materials[w].eps_n >= 0.0 {
+            out.past.push((overlap / r, w));
         }
         let vel = s.particle.vel + s.acc * (dt * walls.kicks.predict);
         let spin = if walls.kicks.predict_all != 0.0 {
@@ -632,6 +637,7 @@ pub(super) fn wall_contacts(
         },
         optional: &rules.optional,
         aggregates: rigid.aggregates.as_ref(),
+        minor: settings.overlap_levels.minor,
         t,
         numbering: &bodies.numbering,
     };
@@ -726,7 +732,7 @@ pub(super) fn note_wall_contacts(
     let mut stop = rigid.aggregates.is_some() && aggregates_held(wall_pass, journal, bodies, t);
     for (place, report) in wall_pass.reports.iter_mut().flatten() {
         let (place, i) = (*place, bodies.numbering.file(*place));
-        if let Some((fraction, w)) = report.deepest {
+        for &(fraction, w) in &report.past {
             stop |= journal.overlaps.check(
                 fraction,
                 Overlapping::Wall {
