@@ -13,6 +13,9 @@
 //! * [`run`]: the plan, the defaults, the soft- and hard-sphere steppers, stability
 //!   checks, and the outcome; [`warning`]: what a run (and reading its inputs) warns
 //!   about, as coded data;
+//! * [`precheck`]: a run directory checked before the job (`R…` codes): initial
+//!   overlaps, particles outside their container, steps per contact, fast walls, tokens
+//!   the build lacks, outputs;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
 //!   for the real pkdgrav run;
 //! * with the `clap` feature, the settings' types are command-line values, and `cli`
@@ -29,6 +32,7 @@ pub mod contact;
 pub mod dynamics;
 pub mod io;
 mod permute;
+pub mod precheck;
 pub mod report;
 pub mod run;
 pub mod warning;

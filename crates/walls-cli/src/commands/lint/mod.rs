@@ -15,6 +15,7 @@
 //! win over them.
 
 mod fix;
+mod run;
 mod walk;
 
 pub use fix::fix_text;
@@ -209,6 +210,9 @@ struct Linted {
     deny_warnings: bool,
     /// The settings' ignores of codes it has errors of: they are reported anyway.
     ignored_errors: Vec<String>,
+    /// A `.par` file's run directory, checked before the job ([`run`]): the findings in
+    /// its other files and the I/O errors.
+    run: Option<run::RunChecked>,
 }
 
 impl Linted {
@@ -219,6 +223,7 @@ impl Linted {
             outcome,
             deny_warnings: false,
             ignored_errors: Vec::new(),
+            run: None,
         }
     }
 }
@@ -260,8 +265,17 @@ pub fn run(args: &LintArgs) -> i32 {
     let (checked, fixes): (Vec<Linted>, Vec<fix::FileFixes>) = targets
         .files
         .par_iter()
-        .map(|p| lint(p, args, &resolver, fixing))
+        .map(|p| {
+            lint(
+                p,
+                targets.walked.get(p).map(|r| r.as_path()),
+                args,
+                &resolver,
+                fixing,
+            )
+        })
         .unzip();
+    let (checked, run_errors) = with_runs(checked);
     for c in &checked {
         for e in &c.ignored_errors {
             crate::errln!("walls-lint: warning: {e}");
@@ -277,6 +291,13 @@ pub fn run(args: &LintArgs) -> i32 {
                 line: None,
             });
         }
+    }
+    for (path, error, line) in &run_errors {
+        unreadable.push(Unreadable {
+            path,
+            error,
+            line: *line,
+        });
     }
     for e in &targets.errors {
         unreadable.push(Unreadable {
@@ -349,10 +370,12 @@ pub fn run(args: &LintArgs) -> i32 {
 }
 
 /// Checks one file with its settings, the flags winning over them; with `fixing`, applies
-/// its fixes first (`fix.rs`). Diagnostics of ignored codes are dropped after every check,
+/// its fixes first (`fix.rs`). A `.par` file's run directory is checked too ([`run`]):
+/// inside `walked`, the folder whose walk found it, or its own folder when named. Diagnostics of ignored codes are dropped after every check,
 /// so their fixes are never applied either.
 fn lint(
     path: &str,
+    walked: Option<&std::path::Path>,
     args: &LintArgs,
     resolver: &Resolver,
     fixing: Option<fix::Fixing>,
@@ -396,6 +419,18 @@ fn lint(
             (Linted::new(read.name, outcome), fix::FileFixes::default())
         }
     };
+    // A `.par` file's run directory is checked before the job.
+    if let (Language::Par(build), Ok((text, diagnostics))) = (&language, &mut linted.outcome) {
+        let mut found = run::check(path, walked, text, build);
+        diagnostics.append(&mut found.par);
+        keep(diagnostics);
+        diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+        for f in &mut found.files {
+            let file = absolute_file(&f.name);
+            set.filter(file.as_deref(), &mut f.diagnostics);
+        }
+        linted.run = Some(found);
+    }
     // The errors of ignored codes are kept; filtering again names the settings that
     // asked for them to be ignored.
     if let Ok((_, diagnostics)) = &mut linted.outcome {
@@ -408,6 +443,39 @@ fn lint(
     }
     linted.deny_warnings = args.deny_warnings || set.deny_warnings.unwrap_or(false);
     (linted, fixes)
+}
+
+/// A run directory's I/O error: the `.par`, the error, the `.par`'s line.
+type RunError = (String, String, Option<usize>);
+
+/// The checked files with the findings of the `.par` files' run directories added to the
+/// reports of the files they are in (a file not checked itself gets a report of its
+/// own), and the run directories' I/O errors: (the `.par`, the error, its line).
+fn with_runs(mut checked: Vec<Linted>) -> (Vec<Linted>, Vec<RunError>) {
+    let mut errors = Vec::new();
+    let mut files = Vec::new();
+    for c in &mut checked {
+        if let Some(found) = c.run.take() {
+            for (error, line) in found.errors {
+                errors.push((c.name.clone(), error, line));
+            }
+            files.extend(found.files);
+        }
+    }
+    for f in files {
+        let same = checked
+            .iter()
+            .position(|c| std::fs::canonicalize(&c.name).is_ok_and(|real| real == f.real));
+        match same.map(|i| &mut checked[i].outcome) {
+            Some(Ok((_, diagnostics))) => {
+                diagnostics.extend(f.diagnostics);
+                diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+            }
+            Some(Err(_)) => {}
+            None => checked.push(Linted::new(f.name, Ok((f.text, f.diagnostics)))),
+        }
+    }
+    (checked, errors)
 }
 
 /// `--pkdgrav-build`'s value: pkdgrav's compile options.
