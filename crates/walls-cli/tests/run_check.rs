@@ -346,3 +346,69 @@ fn explain_knows_the_run_codes() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("R001 (initial-pair-overlap): "), "{text}");
 }
+
+/// The build a golden `params.par` names in its first comment lines, as
+/// `--pkdgrav-build` takes it.
+fn build_of(text: &str) -> String {
+    let header: Vec<&str> = text.lines().take_while(|l| l.starts_with('#')).collect();
+    let at = (header.iter())
+        .position(|l| l.contains("compile options:"))
+        .expect("a build line");
+    let mut words = Vec::new();
+    for line in &header[at..(at + 2).min(header.len())] {
+        let line = line.split("compile options:").last().unwrap();
+        let line = line.split('(').next().unwrap();
+        for w in line.split_whitespace() {
+            if walls_par::options::OPTIONS.contains(&w) {
+                words.push(w);
+            }
+        }
+    }
+    words.join(" ")
+}
+
+#[test]
+fn golden_run_directories_pkdgrav_ran_have_no_run_error() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../walls-sim/tests/golden");
+    let mut dirs: Vec<_> = std::fs::read_dir(&root)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.join("params.par").exists())
+        .collect();
+    dirs.sort();
+    assert_eq!(dirs.len(), 30);
+    let mut found = Vec::new();
+    for dir in &dirs {
+        let text = std::fs::read_to_string(dir.join("params.par")).unwrap();
+        let out = lint(
+            dir,
+            &[
+                "--format",
+                "json",
+                "--pkdgrav-build",
+                &build_of(&text),
+                "params.par",
+            ],
+        );
+        assert_eq!(out.status.code(), Some(0), "{}: {out:?}", dir.display());
+        let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+        for f in report["files"].as_array().unwrap() {
+            for d in f["diagnostics"].as_array().unwrap() {
+                let code = d["code"].as_str().unwrap();
+                if code.starts_with('R') {
+                    let name = dir.file_name().unwrap().to_string_lossy().to_string();
+                    found.push((name, code.to_string(), d["severity"].to_string()));
+                }
+            }
+        }
+    }
+    // pkdgrav's own soft_sphere_cube timestep: 6.8 steps a contact for the aggregate.
+    assert_eq!(
+        found,
+        [(
+            "agg_cube".to_string(),
+            "R004".to_string(),
+            "\"warning\"".to_string()
+        )]
+    );
+}

@@ -283,8 +283,32 @@ fn few_steps_per_contact_at_d_delta() {
         (file, span, severity),
         ("par", value..value + 4, Severity::Warning)
     );
-    assert!(message.starts_with("dDelta = 1e-3 gives 7.02 steps per contact for the stiffest contact, two particles as light as particle 0 (m = 1e0) with dKn = 1e5; fewer than 10"), "{message}");
+    assert!(message.starts_with("dDelta = 1e-3 gives 7.02 steps per contact for the stiffest contact, two bodies as light as particle 0 (m = 1e0) with dKn = 1e5; fewer than 10"), "{message}");
     assert!(all(&findings(&example(code, "Good"), NONE, &ps, &build)).is_empty());
+    // With AGGS, an aggregate of two members moves its whole mass: √2 more steps, and
+    // no pair of members meets.
+    let aggs = Build::parse("AGGS DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT").unwrap();
+    let members = [
+        Particle {
+            index: -1,
+            ..heavy(0.0, 0)
+        },
+        Particle {
+            index: -1,
+            ..heavy(1.5, 1)
+        },
+    ];
+    let walls = format!("{PLANE}  k_n 1e5\n");
+    let f = findings(&par, &walls, &members, &aggs);
+    // 14 steps a contact against the wall (a particle alone would have 9.9).
+    assert!(f.par.is_empty(), "{:?}", f.par);
+    let few = par.replace("1e-3", "3e-3");
+    let f = findings(&few, &walls, &members, &aggs);
+    assert!(
+        f.par[0].message.starts_with("dDelta = 3e-3 gives 4.68 steps per contact for the stiffest contact, aggregate 0 (particle 0's, m = 2e0) against wall 0"),
+        "{}",
+        f.par[0].message
+    );
 }
 
 #[test]

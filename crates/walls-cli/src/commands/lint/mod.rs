@@ -3,7 +3,8 @@
 //!
 //! A file is checked in its language ([`Language`]): a `.par` file (but `ssdraw.par`,
 //! ssdraw's own) as pkdgrav's reader and the `--pkdgrav-build` build see it
-//! ([`walls_par`]), anything else as a walls file.
+//! ([`walls_par`]), with its run directory before the job ([`run`]), anything else as a
+//! walls file.
 //!
 //! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
 //! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
@@ -38,7 +39,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it.\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it, and with its walls file and initial conditions (achInFile, a .ss file) before the job: overlaps, steps per contact, wall speeds, outputs (R codes; the files it names are read only inside the folder named).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.

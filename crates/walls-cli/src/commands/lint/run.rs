@@ -85,18 +85,22 @@ pub(super) fn check(
             }
         }
     };
-    let walls = read("achWallsFile", &mut out);
-    let ss = read("achInFile", &mut out);
+    let mut walls = read("achWallsFile", &mut out);
+    let mut ss = read("achInFile", &mut out);
     // The walls file's scene, as walls-lint checks it.
-    let checked = walls
-        .as_ref()
-        .map(|w| walls_ide::check_bytes(w.bytes.clone(), &walls_model::Options::default()));
-    // The particles: a `.ss` file that does not read is an I/O error where it stops.
-    let particles = ss
-        .as_ref()
-        .and_then(|s| match walls_sim::io::particles::read_ss(&s.bytes) {
+    let checked = (walls.as_mut()).map(|w| {
+        walls_ide::check_bytes(
+            std::mem::take(&mut w.bytes),
+            &walls_model::Options::default(),
+        )
+    });
+    // The particles: a `.ss` file that does not read is an I/O error where it stops. Its
+    // bytes go once read (a 10⁶-particle file is 96 MB).
+    let particles = ss.as_mut().and_then(|s| {
+        let bytes = std::mem::take(&mut s.bytes);
+        match walls_sim::io::particles::read_ss(&bytes) {
             Ok((_, read)) => {
-                let record = if s.bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]) {
+                let record = if bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]) {
                     96
                 } else {
                     28
@@ -115,7 +119,8 @@ pub(super) fn check(
                 ));
                 None
             }
-        });
+        }
+    });
     // Its walls decoded, and where each wall and each of its tokens is.
     let decoded = checked.as_ref().map(|c| {
         let places: Vec<WallPlace> = (c.scene.walls.iter())

@@ -58,11 +58,28 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
     if !(dt > 0.0 && dt.is_finite() && k_n >= 0.0 && k_n.is_finite()) {
         return;
     }
+    // The mass a contact moves: the particle's, or with AGGS its aggregate's (members
+    // move as one body, docs/pkdgrav-physics.md §9).
+    let aggs = cx.run.par.build.has("AGGS");
+    let mut aggregates: std::collections::HashMap<i32, f64> = std::collections::HashMap::new();
+    if aggs {
+        for p in ss.particles.iter().filter(|p| p.index < 0) {
+            *aggregates.entry(p.index).or_default() += p.mass;
+        }
+    }
+    let body = |p: &walls_geometry::Particle| match aggregates.get(&p.index) {
+        Some(m) if aggs && p.index < 0 => *m,
+        _ => p.mass,
+    };
     let Some((k, lightest)) = (ss.particles.iter().enumerate())
-        .map(|(k, p)| (k, p.mass))
+        .map(|(k, p)| (k, body(p)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
     else {
         return;
+    };
+    let who = match ss.particles[k].index {
+        i if aggs && i < 0 => format!("aggregate {} (particle {k}'s, m = {lightest:e})", -1 - i),
+        _ => format!("particle {k} (m = {lightest:e})"),
     };
     // The stiffest contact, as ω = √(k/μ), with what it is.
     let mut stiffest: Option<(f64, String)> = None;
@@ -78,7 +95,7 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
     if ss.particles.len() > 1 && !one_aggregate {
         consider(
             (2.0 * k_n / lightest).sqrt(),
-            format!("two particles as light as particle {k} (m = {lightest:e}) with dKn = {k_n:e}"),
+            format!("two bodies as light as {who} with dKn = {k_n:e}"),
         );
     }
     for (w, wall) in cx.walls.iter().enumerate() {
@@ -89,10 +106,7 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         };
         consider(
             (k_w / lightest).sqrt(),
-            format!(
-                "particle {k} (m = {lightest:e}) against {} (k_n = {k_w:e})",
-                cx.wall_name(w)
-            ),
+            format!("{who} against {} (k_n = {k_w:e})", cx.wall_name(w)),
         );
     }
     let Some((omega, what)) = stiffest else {
