@@ -412,3 +412,24 @@ fn golden_run_directories_pkdgrav_ran_have_no_run_error() {
         )]
     );
 }
+
+#[test]
+fn two_par_files_of_one_run_directory_report_its_findings_once() {
+    let dir = run_dir();
+    std::fs::copy(
+        dir.path().join("run/params.par"),
+        dir.path().join("run/again.par"),
+    )
+    .unwrap();
+    let out = lint(dir.path(), &["--format", "json", "run"]);
+    let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let ss: Vec<_> = (report["files"].as_array().unwrap().iter())
+        .filter(|f| f["path"] == "run/particles.ss")
+        .collect();
+    assert_eq!(ss.len(), 1, "{report:#}");
+    assert_eq!(
+        ss[0]["diagnostics"].as_array().unwrap().len(),
+        2,
+        "{report:#}"
+    );
+}

@@ -463,17 +463,29 @@ fn with_runs(mut checked: Vec<Linted>) -> (Vec<Linted>, Vec<RunError>) {
             files.extend(found.files);
         }
     }
+    // Each checked file by its real path, once (a tree of many run directories stays
+    // linear).
+    let mut index: std::collections::HashMap<std::path::PathBuf, usize> = if files.is_empty() {
+        Default::default()
+    } else {
+        (checked.iter().enumerate())
+            .filter_map(|(i, c)| Some((std::fs::canonicalize(&c.name).ok()?, i)))
+            .collect()
+    };
     for f in files {
-        let same = checked
-            .iter()
-            .position(|c| std::fs::canonicalize(&c.name).is_ok_and(|real| real == f.real));
+        let same = index.get(&f.real).copied();
         match same.map(|i| &mut checked[i].outcome) {
             Some(Ok((_, diagnostics))) => {
                 diagnostics.extend(f.diagnostics);
                 diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+                // Two `.par` files of one run directory find the same things in it.
+                diagnostics.dedup();
             }
             Some(Err(_)) => {}
-            None => checked.push(Linted::new(f.name, Ok((f.text, f.diagnostics)))),
+            None => {
+                index.insert(f.real, checked.len());
+                checked.push(Linted::new(f.name, Ok((f.text, f.diagnostics))));
+            }
         }
     }
     (checked, errors)
