@@ -434,6 +434,42 @@ fn many_findings_are_capped_with_a_count() {
 }
 
 #[test]
+fn a_huge_particle_is_measured_to_each_other_not_binned_with_them() {
+    let code = &rules::pair_overlap::PAIR_OVERLAP;
+    let par = example(code, "Bad");
+    // 20,000 small particles apart on a line, one huge sphere over the first ten (a
+    // grid as big as it would make every pair of small ones a candidate), and two small
+    // ones overlapping far along.
+    let mut ps: Vec<Particle> = (0..20_000)
+        .map(|k| at(1.0, 3.0 * k as f64, 0.0, 0.0, k))
+        .collect();
+    ps[19_999] = at(1.0, 3.0 * 19_998.0 + 1.8, 0.0, 0.0, 19_999);
+    ps.push(at(1e4, 0.0, 0.0, 1e4 + 0.9, 20_000));
+    let f = findings(&par, NONE, &ps, &Build::default());
+    let pairs: Vec<_> = (f.particles.iter())
+        .map(|d| {
+            (
+                d.record.unwrap().index,
+                d.labels[0].message.clone(),
+                d.severity,
+            )
+        })
+        .collect();
+    // The huge one's overlaps, measured here one by one: those above 3 % of 1.
+    let huge = &ps[20_000];
+    let expected = (0..20_000)
+        .filter(|&k| 1e4 + 1.0 - (ps[k].pos - huge.pos).norm() > 0.03)
+        .count();
+    assert!(expected > 5, "{expected}");
+    assert_eq!(pairs.len(), expected + 1, "{pairs:?}");
+    assert_eq!(pairs[0], (0, "particle 20000".to_string(), Severity::Info));
+    assert!(
+        pairs.contains(&(19_998, "particle 19999".to_string(), Severity::Warning)),
+        "{pairs:?}"
+    );
+}
+
+#[test]
 fn records_give_their_particle_back() {
     assert_eq!(particle_of(15, 96), None);
     assert_eq!(particle_of(16, 96), Some(0));

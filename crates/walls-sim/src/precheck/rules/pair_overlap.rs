@@ -55,11 +55,7 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
     let levels = Levels::of(cx.run.par);
     let aggs = cx.run.par.build.has("AGGS");
     let ps = ss.particles;
-    let positions: Vec<_> = ps.iter().map(|p| p.pos).collect();
-    let grid = CellGrid::new(&positions, &cx.radii);
-    drop(positions);
-    let mut found: Vec<(walls_diagnostics::Severity, u32, u32, f64)> = grid
-        .par_pairs()
+    let mut found: Vec<(walls_diagnostics::Severity, u32, u32, f64)> = candidates(ps, &cx.radii)
         .into_par_iter()
         .filter_map(|(i, j)| {
             let (i, j) = (i.min(j), i.max(j));
@@ -100,6 +96,46 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         .collect();
     out.particles
         .extend(capped(diagnostics, &PAIR_OVERLAP, "overlapping pairs"));
+}
+
+/// A particle bigger than this many times the median radius is not binned: the grid's
+/// cells are as big as its largest sphere, and one huge particle (a hostile `.ss`) would
+/// put every other in one cell, every pair of them a candidate.
+const BIG: f64 = 4.0;
+
+/// The most distances the big particles are measured to the others one by one; beyond,
+/// they go in the grid with the others (correct, slower).
+const ONE_BY_ONE: usize = 500_000_000;
+
+/// The pairs of `particles` (with `radii`) whose spheres may overlap, each once, lower
+/// index first: from the cell grid of the particles of ordinary size, and each big
+/// particle against every other.
+fn candidates(particles: &[walls_geometry::Particle], radii: &[f64]) -> Vec<(u32, u32)> {
+    let n = particles.len();
+    let mut sorted = radii.to_vec();
+    let median = *sorted.select_nth_unstable_by(n / 2, f64::total_cmp).1;
+    drop(sorted);
+    let big = |i: usize| radii[i] > BIG * median;
+    let bigs: Vec<usize> = (0..n).filter(|&i| big(i)).collect();
+    let split = !bigs.is_empty() && bigs.len().saturating_mul(n) <= ONE_BY_ONE;
+    let grid = CellGrid::from_fn(n, |i| {
+        (!split || !big(i)).then(|| (particles[i].pos, radii[i]))
+    });
+    let mut pairs = grid.par_pairs();
+    drop(grid);
+    if split {
+        let near: Vec<(u32, u32)> = (bigs.par_iter())
+            .flat_map_iter(|&b| {
+                let (p, r) = (particles[b].pos, radii[b]);
+                (0..n)
+                    .filter(move |&j| j != b && !(big(j) && j < b))
+                    .filter(move |&j| (particles[j].pos - p).norm() < r + radii[j])
+                    .map(move |j| (b.min(j) as u32, b.max(j) as u32))
+            })
+            .collect();
+        pairs.extend(near);
+    }
+    pairs
 }
 
 /// What to do about an overlap of `severity`'s level.
