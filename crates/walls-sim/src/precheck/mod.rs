@@ -224,15 +224,17 @@ impl<'a> Context<'a> {
     }
 }
 
-/// Keeps the first [`MAX_REPORTED`] of `found` (sorted as wanted) and adds one info of
-/// `code` at the first left out, saying how many more there are.
+/// The first [`MAX_REPORTED`] of `found` (sorted as wanted; the caller builds no more
+/// than one past them), and one info of `code` at the first left out, saying how many
+/// more of the `total` there are.
 pub(crate) fn capped(
     mut found: Vec<Diagnostic>,
+    total: usize,
     code: &'static walls_diagnostics::Code,
     what: &str,
 ) -> Vec<Diagnostic> {
-    if found.len() > MAX_REPORTED {
-        let rest = found.len() - MAX_REPORTED;
+    if total > MAX_REPORTED && found.len() > MAX_REPORTED {
+        let rest = total - MAX_REPORTED;
         let at = found[MAX_REPORTED].span.clone();
         let record = found[MAX_REPORTED].record;
         found.truncate(MAX_REPORTED);

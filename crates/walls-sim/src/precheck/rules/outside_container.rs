@@ -106,8 +106,10 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         }
     }
     found.sort_by_key(|d| d.span.start);
+    let total = found.len();
     out.particles.extend(capped(
         found,
+        total,
         &OUTSIDE_CONTAINER,
         "particles outside containers",
     ));

@@ -74,6 +74,9 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         })
         .collect();
     found.sort_by_key(|a| (a.0, a.1, a.2));
+    // Only the first are built: at 10⁶ overlaps, a diagnostic each would take a GB.
+    let total = found.len();
+    found.truncate(crate::precheck::MAX_REPORTED + 1);
     let diagnostics = found
         .into_iter()
         .map(|(severity, i, j, fraction)| {
@@ -94,8 +97,12 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
             .with_help(help(severity))
         })
         .collect();
-    out.particles
-        .extend(capped(diagnostics, &PAIR_OVERLAP, "overlapping pairs"));
+    out.particles.extend(capped(
+        diagnostics,
+        total,
+        &PAIR_OVERLAP,
+        "overlapping pairs",
+    ));
 }
 
 /// A particle bigger than this many times the median radius is not binned: the grid's

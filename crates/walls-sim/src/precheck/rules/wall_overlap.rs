@@ -90,6 +90,9 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         })
         .collect();
     found.sort_by_key(|a| (a.0, a.1));
+    // Only the first are built: at 10⁶ overlaps, a diagnostic each would take a GB.
+    let total = found.len();
+    found.truncate(crate::precheck::MAX_REPORTED + 1);
     let diagnostics = found
         .into_iter()
         .map(|(severity, k, w, fraction)| {
@@ -111,6 +114,7 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
         .collect();
     out.particles.extend(capped(
         diagnostics,
+        total,
         &WALL_OVERLAP,
         "particles overlapping walls",
     ));
