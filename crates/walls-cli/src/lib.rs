@@ -2,8 +2,9 @@
 //! ([`entry`]), their commands ([`commands`]), and what they share: printing that never
 //! panics ([`console`]), reading inputs (files or standard input), a run's outputs as a movie's frames ([`movie`]), the memory
 //! pages a run asks for ([`pages`]) and the contact model that `--mode` takes. The whole
-//! check of one file and the registry of diagnostic codes that `--explain` and SARIF read
-//! are `walls-ide`'s, re-exported here for the tools; every file the tools write goes
+//! check of one file and the registry of diagnostic codes are `walls-ide`'s, re-exported
+//! here for the tools, with the run directory's `R…` codes ([`all_codes`]) that `--explain`
+//! and SARIF read; every file the tools write goes
 //! through `walls-output`, the one writer, which also removes what a signal leaves.
 
 #![deny(clippy::print_stdout, clippy::print_stderr)]
@@ -15,7 +16,20 @@ pub mod input;
 pub mod movie;
 pub mod pages;
 
-pub use walls_ide::{Checked, all_codes, check_bytes, find_code};
+pub use walls_ide::{Checked, check_bytes};
+
+/// Every diagnostic code the tools can emit, in code order: `walls-ide`'s registry (the
+/// codes of one file: walls files and `.par` files), then the `R…` codes of a run
+/// directory checked before the job ([`walls_sim::precheck`]), which only `walls-lint`
+/// emits.
+pub fn all_codes() -> impl Iterator<Item = &'static walls_diagnostics::Code> {
+    walls_ide::all_codes().chain(walls_sim::precheck::rules::ALL.iter().copied())
+}
+
+/// Finds a code by its id (`R001`, any case) or its name (`initial-pair-overlap`).
+pub fn find_code(query: &str) -> Option<&'static walls_diagnostics::Code> {
+    all_codes().find(|c| c.id.eq_ignore_ascii_case(query) || c.name.eq_ignore_ascii_case(query))
+}
 
 /// `--mode` and `--method`: the contact model a file is for (one type from the keyword
 /// table down to the run).

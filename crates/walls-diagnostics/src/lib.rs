@@ -59,6 +59,24 @@ pub struct Code {
     pub explanation: &'static str,
 }
 
+/// A place in a binary file that has no lines: one of its records, such as particle 17 of
+/// a pkdgrav `.ss` file. A diagnostic there keeps the record's bytes as its span; every
+/// renderer shows the record (`particle 17`) where a text file's place would be its line
+/// and column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Record {
+    /// What the file's records are, singular: `particle`.
+    pub kind: &'static str,
+    /// The record's index in the file, from 0.
+    pub index: usize,
+}
+
+impl std::fmt::Display for Record {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} {}", self.kind, self.index)
+    }
+}
+
 /// A secondary span with a note, such as "the vector starts here".
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Label {
@@ -124,6 +142,9 @@ pub struct Diagnostic {
     pub help: Option<String>,
     /// An automatic repair, when one exists.
     pub fix: Option<Fix>,
+    /// In a binary file, the record it is about (its span is the record's bytes): shown
+    /// in place of a line and column.
+    pub record: Option<Record>,
 }
 
 impl Diagnostic {
@@ -152,6 +173,7 @@ impl Diagnostic {
             labels: Vec::new(),
             help: None,
             fix: None,
+            record: None,
         }
     }
 
@@ -161,6 +183,12 @@ impl Diagnostic {
             span,
             message: message.into(),
         });
+        self
+    }
+
+    /// Places it at a record of a binary file (its span the record's bytes).
+    pub fn in_record(mut self, kind: &'static str, index: usize) -> Self {
+        self.record = Some(Record { kind, index });
         self
     }
 

@@ -37,4 +37,4 @@ pub use mesh::Mesh;
 pub use motion::{Motion, Oscillation, OscillationStepping};
 pub use particle::Particle;
 pub use shape::{Feature, Hit, Nearest, Shape};
-pub use wall::{Appearance, Reactive, Wall, decode};
+pub use wall::{Appearance, Reactive, Wall, decode, token_spans};

@@ -187,6 +187,15 @@ impl Wall {
     }
 }
 
+/// Where each token that set something for `wall` is written, by the token's name: the
+/// span of its values (in the wall's own block or a `defaults` block), for reports that
+/// point at a token of a decoded wall (a run directory's check before the job).
+pub fn token_spans(wall: &walls_model::Wall) -> Vec<(&'static str, std::ops::Range<usize>)> {
+    (wall.settings.iter())
+        .filter_map(|(k, s)| Some((k.name(), s.source.span()?)))
+        .collect()
+}
+
 /// Every wall of `scene`, decoded, in file order.
 pub fn decode(scene: &Scene) -> Vec<Wall> {
     scene.walls.iter().map(Wall::decode).collect()

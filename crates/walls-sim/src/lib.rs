@@ -13,6 +13,9 @@
 //! * [`run`]: the plan, the defaults, the soft- and hard-sphere steppers, stability
 //!   checks, and the outcome; [`warning`]: what a run (and reading its inputs) warns
 //!   about, as coded data;
+//! * [`precheck`]: a run directory checked before the job (`R…` codes): initial
+//!   overlaps, particles outside their container, steps per contact, fast walls, tokens
+//!   the build lacks, outputs;
 //! * [`report`]: the outcome as pkdgrav users read it; [`advise`]: k_n and the timestep
 //!   for the real pkdgrav run; [`export`]: the run as a pkdgrav run directory's `.par`
 //!   file and README;
@@ -31,6 +34,7 @@ pub mod dynamics;
 pub mod export;
 pub mod io;
 mod permute;
+pub mod precheck;
 pub mod report;
 pub mod run;
 pub mod warning;

@@ -31,6 +31,18 @@ pub fn github(
                 Severity::Warning => "warning",
                 Severity::Info => "notice",
             };
+            let title = format!("walls-lint ({})", d.code.id);
+            // At a record of a binary file: no line, the record before the message.
+            if let Some(record) = d.record {
+                writeln!(
+                    out,
+                    "::{command} file={},title={}::{}",
+                    escape_property(file.path),
+                    escape_property(&title),
+                    escape_data(&format!("{record}: {}", message_with_help(d)))
+                )?;
+                continue;
+            }
             let r = Region::of(&index, file.source, &d.span);
             let mut props = format!("file={},line={}", escape_property(file.path), r.line);
             if r.line == r.end_line {
@@ -40,7 +52,6 @@ pub fn github(
             if r.line == r.end_line {
                 props.push_str(&format!(",endColumn={}", r.end_column));
             }
-            let title = format!("walls-lint ({})", d.code.id);
             props.push_str(&format!(",title={}", escape_property(&title)));
             writeln!(
                 out,

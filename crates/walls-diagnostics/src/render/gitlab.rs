@@ -60,15 +60,24 @@ impl Serialize for Issues<'_> {
         let mut seq = serializer.serialize_seq(None)?;
         // How many issues each path has had so far with each check and text; a path
         // given twice (standard input, say) goes on counting.
-        let mut seen: HashMap<String, HashMap<(&str, &str), usize>> = HashMap::new();
+        let mut seen: HashMap<String, HashMap<(&str, Cow<str>), usize>> = HashMap::new();
         for file in self.files {
             let path = report_path(file.path);
             let index = LineIndex::new(file.source);
             let seen = seen.entry(path.to_string()).or_default();
             for d in file.diagnostics {
-                let text = covered_text(file.source, d);
+                // At a record of a binary file, the record stands for the text.
+                let text = match d.record {
+                    Some(r) => Cow::Owned(r.to_string()),
+                    None => Cow::Borrowed(covered_text(file.source, d)),
+                };
+                let issue = issue(&index, file.source, &path, d, &text, 0);
                 let occurrence = seen.entry((d.code.id, text)).or_default();
-                seq.serialize_element(&issue(&index, file.source, &path, d, text, *occurrence))?;
+                let fingerprint = fingerprint(&path, d.code.id, &issue.text, *occurrence);
+                seq.serialize_element(&Issue {
+                    fingerprint,
+                    ..issue.issue
+                })?;
                 *occurrence += 1;
             }
         }
@@ -77,7 +86,7 @@ impl Serialize for Issues<'_> {
             let occurrence = seen
                 .entry(path.to_string())
                 .or_default()
-                .entry((UNREADABLE, u.error))
+                .entry((UNREADABLE, Cow::Borrowed(u.error)))
                 .or_default();
             seq.serialize_element(&Issue {
                 description: Cow::Borrowed(u.error),
@@ -121,6 +130,14 @@ struct Lines {
     end: usize,
 }
 
+/// An issue with the text its fingerprint is of.
+struct Found<'a> {
+    issue: Issue<'a>,
+    text: String,
+}
+
+/// The issue of `d`; at a record of a binary file, its description begins with the
+/// record (`particle 17: …`) and its lines are 1.
 fn issue<'a>(
     index: &LineIndex,
     source: &str,
@@ -128,10 +145,14 @@ fn issue<'a>(
     d: &'a Diagnostic,
     text: &str,
     occurrence: usize,
-) -> Issue<'a> {
+) -> Found<'a> {
     let r = Region::of(index, source, &d.span);
-    Issue {
-        description: message_with_help(d),
+    let description = match d.record {
+        Some(record) => Cow::Owned(format!("{record}: {}", message_with_help(d))),
+        None => message_with_help(d),
+    };
+    let issue = Issue {
+        description,
         check_name: d.code.id,
         fingerprint: fingerprint(path, d.code.id, text, occurrence),
         severity: match d.severity {
@@ -146,6 +167,10 @@ fn issue<'a>(
                 end: r.end_line,
             },
         },
+    };
+    Found {
+        issue,
+        text: text.to_string(),
     }
 }
 

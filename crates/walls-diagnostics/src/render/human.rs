@@ -54,6 +54,10 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
         source: Source::from(&*drawn),
     };
     for d in file.diagnostics {
+        if let Some(record) = d.record {
+            write_record(out, &path, d, record, color)?;
+            continue;
+        }
         let labels = labels(file.source, d);
         let lines: Vec<(usize, usize)> = labels
             .iter()
@@ -80,6 +84,45 @@ pub fn human(out: &mut dyn Write, file: &FileReport, color: bool) -> io::Result<
         }
     }
     Ok(())
+}
+
+/// A diagnostic at a record of a binary file (a `.ss` file's particle), in ariadne's
+/// frame: the header, the path with the record where a text's `line:column` would be,
+/// each label's message (it names its own record), then help and fix note.
+fn write_record(
+    out: &mut dyn Write,
+    path: &str,
+    d: &Diagnostic,
+    record: crate::Record,
+    color: bool,
+) -> io::Result<()> {
+    use ariadne::Fmt;
+    let (kind, kind_color) = match d.severity {
+        Severity::Error => ("Error", Color::Red),
+        Severity::Warning => ("Warning", Color::Yellow),
+        Severity::Info => ("Advice", Color::Fixed(147)),
+    };
+    let header = format!("[{}] {kind}:", d.code.id);
+    let header = if color {
+        header.fg(kind_color).to_string()
+    } else {
+        header
+    };
+    writeln!(out, "{header} {}", escape(&d.message))?;
+    writeln!(out, "   ╭─[ {path}: {record} ]")?;
+    for label in &d.labels {
+        writeln!(out, "   │ ")?;
+        writeln!(out, "   │ ─ {}", escape(&label.message))?;
+    }
+    if let Some(help) = &d.help {
+        writeln!(out, "   │ ")?;
+        writeln!(out, "   │ Help: {}", escape(help))?;
+    }
+    if let Some(fix) = &d.fix {
+        writeln!(out, "   │ ")?;
+        writeln!(out, "   │ Note: fix: {}", escape(&fix.message))?;
+    }
+    writeln!(out, "───╯")
 }
 
 /// The text ariadne is given: `source` with every hazard replaced by as many spaces as it

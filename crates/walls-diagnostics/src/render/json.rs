@@ -133,10 +133,20 @@ struct Item<'a> {
     column: usize,
     end_line: usize,
     end_column: usize,
+    /// At a record of a binary file: `{"kind": "particle", "index": 17}` (the line and
+    /// column are then 1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    record: Option<JsonRecord>,
     #[serde(skip_serializing_if = "Option::is_none")]
     help: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     fix: Option<JsonFix<'a>>,
+}
+
+#[derive(Serialize)]
+struct JsonRecord {
+    kind: &'static str,
+    index: usize,
 }
 
 #[derive(Serialize)]
@@ -171,6 +181,10 @@ fn item<'a>(index: &LineIndex, source: &str, d: &'a Diagnostic) -> Item<'a> {
         column: r.column,
         end_line: r.end_line,
         end_column: r.end_column,
+        record: d.record.map(|r| JsonRecord {
+            kind: r.kind,
+            index: r.index,
+        }),
         help: d.help.as_deref(),
         fix: d.fix.as_ref().map(|f| fix(index, source, f)),
     }

@@ -253,7 +253,7 @@ impl<'a> Ctx<'a> {
 
     fn region(&self, span: &Range<usize>) -> SarifRegion {
         let r = Region::of(self.index, self.source, span);
-        SarifRegion {
+        SarifRegion::Lines {
             end_column: r.end_column,
             end_line: r.end_line,
             start_column: r.column,
@@ -261,10 +261,19 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    fn physical_location(&self, span: &Range<usize>) -> PhysicalLocation<'a> {
+    /// The location of `span`: lines and columns, or, for a diagnostic at a record of a
+    /// binary file (`bytes`), the span's bytes as they are.
+    fn physical_location(&self, span: &Range<usize>, bytes: bool) -> PhysicalLocation<'a> {
         PhysicalLocation {
             artifact_location: self.artifact_location(),
-            region: self.region(span),
+            region: if bytes {
+                SarifRegion::Bytes {
+                    byte_offset: span.start,
+                    byte_length: span.end.saturating_sub(span.start),
+                }
+            } else {
+                self.region(span)
+            },
         }
     }
 }
@@ -276,14 +285,23 @@ struct ArtifactLocation<'a> {
     uri: &'a str,
 }
 
-/// 1-based lines and code-point columns, `endColumn` exclusive.
+/// 1-based lines and code-point columns, `endColumn` exclusive; or, in a binary file
+/// (a record of a `.ss` file), a byte offset and length.
 #[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct SarifRegion {
-    end_column: usize,
-    end_line: usize,
-    start_column: usize,
-    start_line: usize,
+#[serde(untagged)]
+enum SarifRegion {
+    #[serde(rename_all = "camelCase")]
+    Lines {
+        end_column: usize,
+        end_line: usize,
+        start_column: usize,
+        start_line: usize,
+    },
+    #[serde(rename_all = "camelCase")]
+    Bytes {
+        byte_length: usize,
+        byte_offset: usize,
+    },
 }
 
 #[derive(Serialize)]
@@ -293,11 +311,21 @@ struct PhysicalLocation<'a> {
     region: SarifRegion,
 }
 
-/// An entry of a result's `locations`.
+/// An entry of a result's `locations`; at a record of a binary file, the record as a
+/// logical location too (`particle 17`).
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
 struct Location<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    logical_locations: Option<[LogicalLocation; 1]>,
     physical_location: PhysicalLocation<'a>,
+}
+
+/// A record of a binary file, named: `{"name": "particle 17", "kind": "element"}`.
+#[derive(Serialize)]
+struct LogicalLocation {
+    kind: &'static str,
+    name: String,
 }
 
 /// One result: a diagnostic.
@@ -320,6 +348,8 @@ struct SarifResult<'a> {
 struct RelatedLocations<'a> {
     ctx: &'a Ctx<'a>,
     labels: &'a [Label],
+    /// The diagnostic is at a record of a binary file: its labels' spans are bytes.
+    bytes: bool,
 }
 
 impl Serialize for RelatedLocations<'_> {
@@ -331,7 +361,7 @@ impl Serialize for RelatedLocations<'_> {
                 .map(|(id, l)| RelatedLocation {
                     id,
                     message: Text::from(l.message.as_str()),
-                    physical_location: self.ctx.physical_location(&l.span),
+                    physical_location: self.ctx.physical_location(&l.span, self.bytes),
                 }),
         )
     }
@@ -402,7 +432,13 @@ fn result<'a>(ctx: &'a Ctx<'a>, d: &'a Diagnostic, rules: &[&'static Code]) -> S
         fixes,
         level,
         locations: [Location {
-            physical_location: ctx.physical_location(&d.span),
+            logical_locations: d.record.map(|r| {
+                [LogicalLocation {
+                    kind: "element",
+                    name: r.to_string(),
+                }]
+            }),
+            physical_location: ctx.physical_location(&d.span, d.record.is_some()),
         }],
         message: Text {
             text: message_with_help(d),
@@ -410,6 +446,7 @@ fn result<'a>(ctx: &'a Ctx<'a>, d: &'a Diagnostic, rules: &[&'static Code]) -> S
         related_locations: (!d.labels.is_empty()).then_some(RelatedLocations {
             ctx,
             labels: &d.labels,
+            bytes: d.record.is_some(),
         }),
         rule_id: d.code.id,
         // A handful of rules: a scan is cheaper than building a map.

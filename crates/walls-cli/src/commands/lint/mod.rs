@@ -3,7 +3,8 @@
 //!
 //! A file is checked in its language ([`Language`]): a `.par` file (but `ssdraw.par`,
 //! ssdraw's own) as pkdgrav's reader and the `--pkdgrav-build` build see it
-//! ([`walls_par`]), anything else as a walls file.
+//! ([`walls_par`]), with its run directory before the job ([`run`]), anything else as a
+//! walls file.
 //!
 //! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
 //! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
@@ -15,6 +16,7 @@
 //! win over them.
 
 mod fix;
+mod run;
 mod walk;
 
 pub use fix::fix_text;
@@ -37,7 +39,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it.\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it, and with its walls file and initial conditions (achInFile, a .ss file) before the job: overlaps, steps per contact, wall speeds, outputs (R codes; the files it names are read only inside the folder named).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -209,6 +211,9 @@ struct Linted {
     deny_warnings: bool,
     /// The settings' ignores of codes it has errors of: they are reported anyway.
     ignored_errors: Vec<String>,
+    /// A `.par` file's run directory, checked before the job ([`run`]): the findings in
+    /// its other files and the I/O errors.
+    run: Option<run::RunChecked>,
 }
 
 impl Linted {
@@ -219,6 +224,7 @@ impl Linted {
             outcome,
             deny_warnings: false,
             ignored_errors: Vec::new(),
+            run: None,
         }
     }
 }
@@ -260,8 +266,17 @@ pub fn run(args: &LintArgs) -> i32 {
     let (checked, fixes): (Vec<Linted>, Vec<fix::FileFixes>) = targets
         .files
         .par_iter()
-        .map(|p| lint(p, args, &resolver, fixing))
+        .map(|p| {
+            lint(
+                p,
+                targets.walked.get(p).map(|r| r.as_path()),
+                args,
+                &resolver,
+                fixing,
+            )
+        })
         .unzip();
+    let (checked, run_errors) = with_runs(checked);
     for c in &checked {
         for e in &c.ignored_errors {
             crate::errln!("walls-lint: warning: {e}");
@@ -277,6 +292,13 @@ pub fn run(args: &LintArgs) -> i32 {
                 line: None,
             });
         }
+    }
+    for (path, error, line) in &run_errors {
+        unreadable.push(Unreadable {
+            path,
+            error,
+            line: *line,
+        });
     }
     for e in &targets.errors {
         unreadable.push(Unreadable {
@@ -349,10 +371,12 @@ pub fn run(args: &LintArgs) -> i32 {
 }
 
 /// Checks one file with its settings, the flags winning over them; with `fixing`, applies
-/// its fixes first (`fix.rs`). Diagnostics of ignored codes are dropped after every check,
+/// its fixes first (`fix.rs`). A `.par` file's run directory is checked too ([`run`]):
+/// inside `walked`, the folder whose walk found it, or its own folder when named. Diagnostics of ignored codes are dropped after every check,
 /// so their fixes are never applied either.
 fn lint(
     path: &str,
+    walked: Option<&std::path::Path>,
     args: &LintArgs,
     resolver: &Resolver,
     fixing: Option<fix::Fixing>,
@@ -396,6 +420,18 @@ fn lint(
             (Linted::new(read.name, outcome), fix::FileFixes::default())
         }
     };
+    // A `.par` file's run directory is checked before the job.
+    if let (Language::Par(build), Ok((text, diagnostics))) = (&language, &mut linted.outcome) {
+        let mut found = run::check(path, walked, text, build);
+        diagnostics.append(&mut found.par);
+        keep(diagnostics);
+        diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+        for f in &mut found.files {
+            let file = absolute_file(&f.name);
+            set.filter(file.as_deref(), &mut f.diagnostics);
+        }
+        linted.run = Some(found);
+    }
     // The errors of ignored codes are kept; filtering again names the settings that
     // asked for them to be ignored.
     if let Ok((_, diagnostics)) = &mut linted.outcome {
@@ -408,6 +444,51 @@ fn lint(
     }
     linted.deny_warnings = args.deny_warnings || set.deny_warnings.unwrap_or(false);
     (linted, fixes)
+}
+
+/// A run directory's I/O error: the `.par`, the error, the `.par`'s line.
+type RunError = (String, String, Option<usize>);
+
+/// The checked files with the findings of the `.par` files' run directories added to the
+/// reports of the files they are in (a file not checked itself gets a report of its
+/// own), and the run directories' I/O errors: (the `.par`, the error, its line).
+fn with_runs(mut checked: Vec<Linted>) -> (Vec<Linted>, Vec<RunError>) {
+    let mut errors = Vec::new();
+    let mut files = Vec::new();
+    for c in &mut checked {
+        if let Some(found) = c.run.take() {
+            for (error, line) in found.errors {
+                errors.push((c.name.clone(), error, line));
+            }
+            files.extend(found.files);
+        }
+    }
+    // Each checked file by its real path, once (a tree of many run directories stays
+    // linear).
+    let mut index: std::collections::HashMap<std::path::PathBuf, usize> = if files.is_empty() {
+        Default::default()
+    } else {
+        (checked.iter().enumerate())
+            .filter_map(|(i, c)| Some((std::fs::canonicalize(&c.name).ok()?, i)))
+            .collect()
+    };
+    for f in files {
+        let same = index.get(&f.real).copied();
+        match same.map(|i| &mut checked[i].outcome) {
+            Some(Ok((_, diagnostics))) => {
+                diagnostics.extend(f.diagnostics);
+                diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+                // Two `.par` files of one run directory find the same things in it.
+                diagnostics.dedup();
+            }
+            Some(Err(_)) => {}
+            None => {
+                index.insert(f.real, checked.len());
+                checked.push(Linted::new(f.name, Ok((f.text, f.diagnostics))));
+            }
+        }
+    }
+    (checked, errors)
 }
 
 /// `--pkdgrav-build`'s value: pkdgrav's compile options.

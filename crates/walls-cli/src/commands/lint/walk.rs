@@ -28,6 +28,9 @@ pub(super) struct Targets {
     /// Problems to report as I/O errors: a folder with no walls file, a `.par` that
     /// cannot be read or names a file that is not followed.
     pub errors: Vec<TargetError>,
+    /// The folder walked that found each `.par` file a walk found (as shown): its run
+    /// directory's files are read inside that folder ([`super::run`]).
+    pub walked: std::collections::HashMap<String, PathBuf>,
 }
 
 /// A problem with a path of the command line, or a file found walking a folder.
@@ -166,6 +169,11 @@ impl Walk<'_> {
             if super::is_pkdgrav_par(path) && !includes.matched(path, false).is_whitelist() {
                 add(path.to_path_buf(), seen, targets);
                 found += 1;
+            }
+            if super::is_pkdgrav_par(path) {
+                (targets.walked)
+                    .entry(path.display().to_string())
+                    .or_insert_with(|| root.to_path_buf());
             }
             if path.extension().is_some_and(|e| e == "par") {
                 match self.named_walls_file(file, &path.display().to_string(), &listed) {

@@ -1,0 +1,75 @@
+//! R005 `wall-too-fast-for-particles`: a wall that moves more than a tenth of the smallest particle's
+//! radius in one step (or one jump of its `step`), the evaluator's W203 rule: a contact
+//! can then start deep, or be stepped over.
+
+use crate::precheck::{Context, Findings};
+use walls_diagnostics::{Code, Diagnostic};
+
+/// The most of the smallest radius a wall may move in a step: the evaluator's W203
+/// (`run/stability.rs`, docs/stability.md: speed × step ≪ particle size).
+pub const WALL_TRAVEL_FRACTION: f64 = 0.1;
+
+/// A wall too fast for the particles.
+pub static WALL_TOO_FAST: Code = Code {
+    id: "R005",
+    name: "wall-too-fast-for-particles",
+    summary: "a wall moves more than a tenth of the smallest particle radius in one step",
+    explanation: concat!(
+        "pkdgrav moves a wall by its speed times its `step` (a `step` of 0 is `dDelta`) and
+then looks for contacts: a wall that moves more than a tenth of the smallest radius in one
+jump starts its contacts deep, and a thin particle can be stepped over. `walls-lint`
+takes the wall's fastest speed (translation, oscillation, rotation at its rim) and the
+smallest particle of the initial conditions, as the evaluator's W203 does.
+
+Bad (`walls.dat`: a plane with `velocity 0 0 1000`; `ss.ic`: particles of radius 1):
+```par\n",
+        run_par!(),
+        "dDelta               = 1e-3
+nSteps               = 1000
+dKn                  = 1e5
+```
+
+Good (a step a thousand times shorter):
+```par\n",
+        run_par!(),
+        "dDelta               = 1e-6
+nSteps               = 1000
+dKn                  = 1e5
+```
+"
+    ),
+};
+
+/// Warns at each wall that moves too far in a step.
+pub(crate) fn check(cx: &Context, out: &mut Findings) {
+    if cx.particles().is_none() {
+        return;
+    }
+    let Some((dt, _)) = cx.par_value("dDelta") else {
+        return;
+    };
+    let Some((k, smallest)) =
+        (cx.radii.iter().copied().enumerate()).min_by(|a, b| a.1.total_cmp(&b.1))
+    else {
+        return;
+    };
+    for (w, wall) in cx.walls.iter().enumerate() {
+        let speed = wall.motion.top_speed();
+        let interval = wall.motion.step.max(dt);
+        let travel = speed * interval;
+        if !(travel.is_finite() && travel > WALL_TRAVEL_FRACTION * smallest) {
+            continue;
+        }
+        out.walls.push(
+            Diagnostic::warning(
+                &WALL_TOO_FAST,
+                cx.wall_span(w),
+                format!(
+                    "{} moves up to {travel:e} in one step ({speed:e} × {interval:e}), more than a tenth of the smallest particle's radius {smallest:e} (particle {k}): contacts start deep or are stepped over",
+                    cx.wall_name(w)
+                ),
+            )
+            .with_help("shorten dDelta (or the wall's step), or slow the wall"),
+        );
+    }
+}
