@@ -22,7 +22,7 @@ pub mod optional;
 pub mod plan;
 mod pool;
 mod soft;
-mod stability;
+pub mod stability;
 
 pub use crate::bodies::State;
 pub use crate::contact::hsdem::COLLISION_CAP;

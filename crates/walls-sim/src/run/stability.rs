@@ -19,6 +19,11 @@ pub(super) fn rebound_error(omega: f64, dt: f64) -> f64 {
     REBOUND_ERROR_TIMES_STEPS * omega * dt / std::f64::consts::PI
 }
 
+/// The most of the smallest radius a wall may move in a step (or one jump of its `step`)
+/// before W203 (and walls-lint's R005) warns: speed × step ≪ particle size
+/// (docs/stability.md).
+pub const WALL_TRAVEL_FRACTION: f64 = 0.1;
+
 /// Warnings about a soft-sphere run of `states` against `scene` before it starts.
 pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Settings) -> Vec<Warning> {
     let mut out = Vec::new();
@@ -61,7 +66,7 @@ pub(super) fn soft_warnings(scene: &[Wall], states: &[State], settings: &Setting
                 limit,
                 stiffest: what,
             });
-        } else if steps < 10.0 {
+        } else if steps < crate::advise::MIN_STEPS_PER_CONTACT {
             out.push(Warning::FewStepsPerContact {
                 steps,
                 error_percent: 100.0 * rebound_error(omega, dt),
@@ -87,7 +92,7 @@ fn wall_speed_warning(scene: &[Wall], states: &[State], dt: f64) -> Option<Warni
         let speed = wall.motion.top_speed();
         let interval = wall.motion.step.max(dt);
         let travel = speed * interval;
-        (travel > 0.1 * smallest).then_some(Warning::WallTooFast {
+        (travel > WALL_TRAVEL_FRACTION * smallest).then_some(Warning::WallTooFast {
             wall: w,
             travel,
             smallest,

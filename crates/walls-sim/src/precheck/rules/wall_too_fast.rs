@@ -3,11 +3,8 @@
 //! can then start deep, or be stepped over.
 
 use crate::precheck::{Context, Findings};
+use crate::run::stability::WALL_TRAVEL_FRACTION;
 use walls_diagnostics::{Code, Diagnostic};
-
-/// The most of the smallest radius a wall may move in a step: the evaluator's W203
-/// (`run/stability.rs`, docs/stability.md: speed × step ≪ particle size).
-pub const WALL_TRAVEL_FRACTION: f64 = 0.1;
 
 /// A wall too fast for the particles.
 pub static WALL_TOO_FAST: Code = Code {
