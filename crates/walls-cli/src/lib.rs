@@ -19,12 +19,9 @@ pub mod pages;
 pub use walls_ide::{Checked, check_bytes};
 
 /// Every diagnostic code the tools can emit, in code order: `walls-ide`'s registry (the
-/// codes of one file: walls files and `.par` files), then the `R…` codes of a run
-/// directory checked before the job ([`walls_sim::precheck`]), which only `walls-lint`
-/// emits.
-pub fn all_codes() -> impl Iterator<Item = &'static walls_diagnostics::Code> {
-    walls_ide::all_codes().chain(walls_sim::precheck::rules::ALL.iter().copied())
-}
+/// codes of walls files and `.par` files, and the `R…` codes of a run directory checked
+/// before the job, [`walls_sim::precheck`], which only `walls-lint` emits).
+pub use walls_ide::all_codes;
 
 /// Finds a code by its id (`R001`, any case) or its name (`initial-pair-overlap`).
 pub fn find_code(query: &str) -> Option<&'static walls_diagnostics::Code> {

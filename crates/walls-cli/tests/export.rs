@@ -459,3 +459,50 @@ fn every_file_is_planned_before_any_is_written() {
     let out = export("first", true);
     assert!(out.status.success(), "{}", stderr(&out));
 }
+
+/// The run directory's check (R…) is silenced as any code is: by the settings file's
+/// `ignore`. The golden `agg_cube` runs at pkdgrav's own timestep, under 10 steps per
+/// contact for its aggregate (R004), and with the particles' rolling friction that
+/// pkdgrav zeroes with aggregates (P009, B31).
+#[test]
+fn run_directory_findings_are_ignored_as_any_code() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let par = golden("agg_cube").join("params.par");
+    let build = "DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT AGGS";
+    let out = sim(
+        d,
+        &[
+            "export",
+            "--par",
+            par.to_str().unwrap(),
+            "--pkdgrav-build",
+            build,
+            "--out",
+            "job",
+        ],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let lint = || {
+        Command::new(env!("CARGO_BIN_EXE_walls-lint"))
+            .arg(d.join("job"))
+            .output()
+            .unwrap()
+    };
+    let before = stderr(&lint());
+    assert!(
+        before.contains("[R004]") && before.contains("0 errors, 2 warnings"),
+        "{before}"
+    );
+    let settings = d.join("job/walls.toml");
+    let mut text = std::fs::read_to_string(&settings).unwrap();
+    text.push_str("[lint]\nignore = [\"R004\", \"par-pkdgrav-warns\"]\n");
+    std::fs::write(&settings, text).unwrap();
+    let after = lint();
+    assert!(after.status.success(), "{}", stderr(&after));
+    assert!(
+        stderr(&after).contains("0 errors, 0 warnings"),
+        "{}",
+        stderr(&after)
+    );
+}

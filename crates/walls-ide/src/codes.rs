@@ -10,6 +10,7 @@ pub fn all_codes() -> impl Iterator<Item = &'static Code> {
         .chain(walls_model::codes::ALL)
         .chain(crate::suppress::ALL)
         .chain(walls_par::codes::ALL)
+        .chain(walls_par::run_codes::ALL)
         .copied()
 }
 

@@ -15,6 +15,7 @@ pub mod evaluator;
 pub mod keys;
 pub mod options;
 pub mod rules;
+pub mod run_codes;
 pub mod startup;
 pub mod syntax;
 pub mod value;

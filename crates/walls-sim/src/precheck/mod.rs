@@ -149,21 +149,29 @@ pub(crate) struct Context<'a> {
 
 impl<'a> Context<'a> {
     fn new(run: &'a Run<'a>) -> Self {
+        // pkdgrav's t₀, where it places the walls before the first force evaluation
+        // (docs/pkdgrav-physics.md §3, §5): `iStartStep`·`dDelta`.
+        let t0 = match (run.par.real("iStartStep"), run.par.real("dDelta")) {
+            (Some(step), Some(dt)) if (step * dt).is_finite() => step * dt,
+            _ => 0.0,
+        };
         let walls = run.walls.as_ref().map_or_else(Vec::new, |w| {
             (w.walls.iter())
                 .map(|wall| {
                     let mut wall = wall.clone();
-                    wall.shape = wall.shape.at(wall.origin_at_start());
+                    wall.shape = wall.shape.at(wall.motion.position_or_origin(t0));
                     wall
                 })
                 .collect()
         });
         let lines = run.walls.as_ref().map(|w| LineIndex::new(w.text));
+        // Any `dSoft` the file gives replaces every radius, 0 and below too (P010); a
+        // radius of 0 or less overlaps nothing.
         let soft = run
             .par
             .given("dSoft")
             .and_then(|_| run.par.real("dSoft"))
-            .filter(|s| s.is_finite() && *s > 0.0);
+            .filter(|s| s.is_finite());
         let radii = run.particles.as_ref().map_or_else(Vec::new, |p| {
             p.particles
                 .iter()

@@ -476,3 +476,61 @@ fn records_give_their_particle_back() {
     assert_eq!(particle_of(16 + 96 * 17 + 95, 96), Some(17));
     assert_eq!(particle_of(16 + 28 * 3, 28), Some(3));
 }
+
+/// The attack's findings: many coincident particles are counted in bounded memory; many
+/// big ones are found on their own grid; walls stand where they are at pkdgrav's t₀;
+/// a `dSoft` of 0 or less overlaps nothing.
+#[test]
+fn the_attack_s_breaks_stay_fixed() {
+    let code = &rules::pair_overlap::PAIR_OVERLAP;
+    let par = example(code, "Bad");
+    let build = Build::default();
+    // 3,000 particles at one point: 4,498,500 overlapping pairs, 100 reported.
+    let same: Vec<Particle> = (0..3000).map(|k| at(1.0, 0.0, 0.0, 0.0, k)).collect();
+    let f = findings(&par, NONE, &same, &build);
+    assert_eq!(f.particles.len(), super::MAX_REPORTED + 1);
+    assert_eq!(
+        f.particles.last().unwrap().message,
+        "4498400 more overlapping pairs (the first 100 are reported)"
+    );
+    // 20,000 on a line, 600 big ones far apart (each over none): no finding, at once.
+    let mut many: Vec<Particle> = (0..20_000)
+        .map(|k| at(1.0, 3.0 * k as f64, 0.0, 0.0, k))
+        .collect();
+    many.extend((0..600).map(|k| at(1e4, 1e7 * (k + 1) as f64, 1e7, 0.0, 20_000 + k)));
+    // And one big one over particle 0.
+    many.push(at(1e4, 0.0, 0.0, 1e4 + 0.9, 20_600));
+    let started = std::time::Instant::now();
+    let f = findings(&par, NONE, &many, &build);
+    assert!(started.elapsed().as_secs() < 20, "{:?}", started.elapsed());
+    assert!(!f.particles.is_empty());
+    assert!(
+        f.particles
+            .iter()
+            .all(|d| d.labels[0].message == "particle 20600")
+    );
+    // A plane moving up at 1 from z = 0, and iStartStep·dDelta = 1: at t₀ it is at
+    // z = 1, 60 % into a particle at z = 1.4.
+    let moving = "wall\n  type plane\n  origin 0 0 0\n  orient 0 0 1\n  velocity 0 0 1\n";
+    let wall_par = format!(
+        "{}dDelta               = 1e-3\niStartStep           = 1000\nnSteps               = 2000\n",
+        example(&rules::wall_overlap::WALL_OVERLAP, "Good")
+    );
+    let lone = [at(1.0, 0.0, 0.0, 1.4, 0)];
+    let f = findings(&wall_par, moving, &lone, &build);
+    assert_eq!(f.particles.len(), 1, "{:?}", all(&f));
+    assert!(
+        f.particles[0].message.contains("by 60 %"),
+        "{}",
+        f.particles[0].message
+    );
+    // dSoft = 0 and below: no sphere to overlap.
+    let ps = [at(1.0, 0.0, 0.0, 0.0, 0), at(1.0, 0.9, 0.0, 0.0, 1)];
+    for soft in ["0", "-0.5"] {
+        let par = format!("{par}dSoft                = {soft}\n");
+        assert!(
+            findings(&par, NONE, &ps, &build).particles.is_empty(),
+            "dSoft {soft}"
+        );
+    }
+}

@@ -98,15 +98,28 @@ pub(super) fn check(
     // bytes go once read (a 10⁶-particle file is 96 MB).
     let particles = ss.as_mut().and_then(|s| {
         let bytes = std::mem::take(&mut s.bytes);
-        match walls_sim::io::particles::read_ss(&bytes) {
-            Ok((_, read)) => {
-                let record = if bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]) {
-                    96
-                } else {
-                    28
-                };
-                Some((read.particles, record))
+        let standard = bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]);
+        // pkdgrav starts only from standard records at a time of 0 or later (startup
+        // rows A119, A124): anything else stops it, as a file it cannot read.
+        let read = walls_sim::io::particles::read_ss(&bytes).and_then(|(time, read)| {
+            if !standard {
+                Err(walls_sim::io::InputError {
+                    at: "byte 12".into(),
+                    message: "reduced records (magic number -10101): pkdgrav starts only from a standard .ss file (magic -1), and aborts on this one".into(),
+                })
+            } else if time < 0.0 {
+                Err(walls_sim::io::InputError {
+                    at: "byte 0".into(),
+                    message: format!(
+                        "the header's time is {time}: pkdgrav aborts at start-up on a negative time"
+                    ),
+                })
+            } else {
+                Ok(read)
             }
+        });
+        match read {
+            Ok(read) => Some((read.particles, 96)),
             Err(e) => {
                 let line = file.given("achInFile").map(|e| e.line);
                 let at = match line {

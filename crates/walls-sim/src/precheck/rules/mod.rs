@@ -1,23 +1,7 @@
-//! The checks of a run directory, one code a file (`R…`): each file holds its code's
-//! `Code`, with the explanation and the bad and good examples, and its check. An
-//! example is a `.par` file of a run directory whose walls file and particles the line
-//! before it describes; the tests of [`super`] build each and check it.
-
-/// The `.par` lines every code's example shares: a run directory pkdgrav's default
-/// build runs without a word (the `.par`'s own check finds nothing in it); the examples
-/// add the lines they are about.
-macro_rules! run_par {
-    () => {
-        "achInFile            = ss.ic
-achWallsFile         = walls.dat
-iOutInterval         = 100
-iForceOverrideOption = 2
-iOutcomes            = 0
-bDoSelfGravity       = 0
-iCheckInterval       = 0
-"
-    };
-}
+//! The checks of a run directory, one code a file (`R…`): each file holds its check;
+//! its code (the `Code`, with the explanation and the bad and good examples) is in
+//! walls-par's `run_codes`, of the same name, below the registry. The tests of
+//! [`super`] build each example and check it.
 
 pub mod build_lacks;
 pub mod few_steps;
@@ -28,19 +12,10 @@ pub mod wall_overlap;
 pub mod wall_too_fast;
 pub mod wide_steps;
 
-use walls_diagnostics::{Code, Severity};
+use walls_diagnostics::Severity;
 
 /// Every `R…` code, in code order.
-pub static ALL: &[&Code] = &[
-    &pair_overlap::PAIR_OVERLAP,
-    &wall_overlap::WALL_OVERLAP,
-    &outside_container::OUTSIDE_CONTAINER,
-    &few_steps::FEW_STEPS,
-    &wall_too_fast::WALL_TOO_FAST,
-    &build_lacks::BUILD_LACKS,
-    &no_output::NO_OUTPUT,
-    &wide_steps::WIDE_STEPS,
-];
+pub use walls_par::run_codes::ALL;
 
 /// pkdgrav's overlap levels for a run (`dMinorFrac`, `dMajorFrac`, `dErrorFrac`, the
 /// defaults of [`crate::advise::OVERLAP_LEVELS`] where the `.par` leaves them).

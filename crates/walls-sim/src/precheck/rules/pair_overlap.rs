@@ -11,40 +11,9 @@ use super::{Levels, consequence};
 use crate::broad::grid::CellGrid;
 use crate::precheck::{Context, Findings, capped, percent};
 use rayon::prelude::*;
-use walls_diagnostics::{Code, Diagnostic};
+use walls_diagnostics::Diagnostic;
 
-/// Two particles that overlap at the start.
-pub static PAIR_OVERLAP: Code = Code {
-    id: "R001",
-    name: "initial-pair-overlap",
-    summary: "two particles of the initial conditions overlap beyond pkdgrav's dMinorFrac, dMajorFrac or dErrorFrac",
-    explanation: concat!(
-        "pkdgrav checks every touching pair at its first force evaluation, at step 0: an
-overlap x = r₁ + r₂ − d above `dErrorFrac` (default 0.5) of the smaller radius aborts the
-run at once, with nothing written; above `dMajorFrac` (0.15) it warns, above `dMinorFrac`
-(0.03) it counts a minor overlap. `walls-lint` reports the pair at the first particle
-(its record in the `.ss` file, particles numbered from 0 in file order) and names the
-other: an error, a warning or an info by the level reached. Members of one aggregate
-(`AGGS`) and two stuck particles do not interact and are skipped.
-
-Bad (`ss.ic`: two particles of radius 1, their centres 0.9 apart):
-```par\n",
-        run_par!(),
-        "dDelta               = 1e-7
-nSteps               = 1000
-dKn                  = 1e5
-```
-
-Good (the centres 2 apart, or `dErrorFrac` raised above the overlap):
-```par\n",
-        run_par!(),
-        "dDelta               = 1e-7
-nSteps               = 1000
-dKn                  = 1e5
-```
-"
-    ),
-};
+pub use walls_par::run_codes::pair_overlap::PAIR_OVERLAP;
 
 /// Reports the pairs that overlap beyond a level.
 pub(crate) fn check(cx: &Context, out: &mut Findings) {
@@ -55,28 +24,29 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
     let levels = Levels::of(cx.run.par);
     let aggs = cx.run.par.build.has("AGGS");
     let ps = ss.particles;
-    let mut found: Vec<(walls_diagnostics::Severity, u32, u32, f64)> = candidates(ps, &cx.radii)
-        .into_par_iter()
-        .filter_map(|(i, j)| {
-            let (i, j) = (i.min(j), i.max(j));
-            let (a, b) = (&ps[i as usize], &ps[j as usize]);
-            if aggs && a.index < 0 && a.index == b.index {
-                return None;
-            }
-            if a.color < 0 && b.color < 0 {
-                return None;
-            }
-            let (ra, rb) = (cx.radii[i as usize], cx.radii[j as usize]);
-            let x = ra + rb - (a.pos - b.pos).norm();
-            let fraction = x / ra.min(rb);
-            let (severity, ..) = levels.of_overlap(fraction)?;
-            Some((severity, i, j, fraction))
-        })
-        .collect();
-    found.sort_by_key(|a| (a.0, a.1, a.2));
-    // Only the first are built: at 10⁶ overlaps, a diagnostic each would take a GB.
-    let total = found.len();
-    found.truncate(crate::precheck::MAX_REPORTED + 1);
+    let radii = &cx.radii;
+    let judge = |i: usize, j: usize| -> Option<Found> {
+        let (i, j) = (i.min(j), i.max(j));
+        let (a, b) = (&ps[i], &ps[j]);
+        if aggs && a.index < 0 && a.index == b.index {
+            return None;
+        }
+        if a.color < 0 && b.color < 0 {
+            return None;
+        }
+        let (ra, rb) = (radii[i], radii[j]);
+        if ra.min(rb) <= 0.0 {
+            // pkdgrav's x > frac·min(r) never holds for a radius of 0 or less (`dSoft`).
+            return None;
+        }
+        let x = ra + rb - (a.pos - b.pos).norm();
+        let fraction = x / ra.min(rb);
+        let (severity, ..) = levels.of_overlap(fraction)?;
+        Some((severity, i as u32, j as u32, fraction))
+    };
+    // Only the first are kept, however many pairs overlap (10⁴ particles at one point
+    // are 5·10⁷ overlapping pairs): a count, and the first places in report order.
+    let (total, found) = overlapping(ps, radii, &judge);
     let diagnostics = found
         .into_iter()
         .map(|(severity, i, j, fraction)| {
@@ -105,44 +75,134 @@ pub(crate) fn check(cx: &Context, out: &mut Findings) {
     ));
 }
 
+/// An overlap found: its severity, the pair (lower index first) and its fraction.
+type Found = (walls_diagnostics::Severity, u32, u32, f64);
+
+/// How many of the found overlaps are kept: the reported ones and the first beyond.
+const KEPT: usize = crate::precheck::MAX_REPORTED + 1;
+
+/// The found overlaps kept while counting: at most [`KEPT`] of them, the first in report
+/// order (severity, then the pair).
+#[derive(Default)]
+struct Kept {
+    count: usize,
+    first: Vec<Found>,
+}
+
+impl Kept {
+    fn push(&mut self, found: Found) {
+        self.count += 1;
+        self.first.push(found);
+        if self.first.len() >= 4 * KEPT {
+            self.trim();
+        }
+    }
+
+    fn trim(&mut self) {
+        self.first.sort_by_key(|a| (a.0, a.1, a.2));
+        self.first.truncate(KEPT);
+    }
+
+    fn merge(mut self, other: Kept) -> Kept {
+        self.count += other.count;
+        self.first.extend(other.first);
+        self.trim();
+        self
+    }
+}
+
 /// A particle bigger than this many times the median radius is not binned: the grid's
 /// cells are as big as its largest sphere, and one huge particle (a hostile `.ss`) would
-/// put every other in one cell, every pair of them a candidate.
+/// put every other in one cell, every pair of them a candidate. The big ones are found
+/// on a grid of their own, with cells as big as the biggest.
 const BIG: f64 = 4.0;
 
-/// The most distances the big particles are measured to the others one by one; beyond,
-/// they go in the grid with the others (correct, slower).
-const ONE_BY_ONE: usize = 500_000_000;
-
-/// The pairs of `particles` (with `radii`) whose spheres may overlap, each once, lower
-/// index first: from the cell grid of the particles of ordinary size, and each big
-/// particle against every other.
-fn candidates(particles: &[walls_geometry::Particle], radii: &[f64]) -> Vec<(u32, u32)> {
+/// The overlapping pairs of `particles` (with `radii`) that `judge` finds: how many, and
+/// the first [`KEPT`] in report order. The particles of ordinary size meet on the cell
+/// grid; each big one meets the others on a coarse grid of the big ones.
+fn overlapping(
+    particles: &[walls_geometry::Particle],
+    radii: &[f64],
+    judge: &(impl Fn(usize, usize) -> Option<Found> + Sync),
+) -> (usize, Vec<Found>) {
     let n = particles.len();
     let mut sorted = radii.to_vec();
     let median = *sorted.select_nth_unstable_by(n / 2, f64::total_cmp).1;
     drop(sorted);
-    let big = |i: usize| radii[i] > BIG * median;
-    let bigs: Vec<usize> = (0..n).filter(|&i| big(i)).collect();
-    let split = !bigs.is_empty() && bigs.len().saturating_mul(n) <= ONE_BY_ONE;
+    // A radius of 0 or less (`dSoft`) overlaps nothing, and is left out.
+    let big = |i: usize| radii[i] > 0.0 && radii[i] > BIG * median;
     let grid = CellGrid::from_fn(n, |i| {
-        (!split || !big(i)).then(|| (particles[i].pos, radii[i]))
+        (radii[i] > 0.0 && !big(i)).then(|| (particles[i].pos, radii[i]))
     });
-    let mut pairs = grid.par_pairs();
+    let cells = grid.cell_count();
+    let size = cells.div_ceil(256).max(1);
+    let mut kept = (0..cells.div_ceil(size))
+        .into_par_iter()
+        .map(|c| {
+            let mut kept = Kept::default();
+            grid.for_each_pair_in(c * size..((c + 1) * size).min(cells), |i, j| {
+                if let Some(f) = judge(i, j) {
+                    kept.push(f);
+                }
+            });
+            kept
+        })
+        .reduce(Kept::default, Kept::merge);
     drop(grid);
-    if split {
-        let near: Vec<(u32, u32)> = (bigs.par_iter())
-            .flat_map_iter(|&b| {
-                let (p, r) = (particles[b].pos, radii[b]);
-                (0..n)
-                    .filter(move |&j| j != b && !(big(j) && j < b))
-                    .filter(move |&j| (particles[j].pos - p).norm() < r + radii[j])
-                    .map(move |j| (b.min(j) as u32, b.max(j) as u32))
-            })
-            .collect();
-        pairs.extend(near);
+    let bigs: Vec<usize> = (0..n).filter(|&i| big(i)).collect();
+    if !bigs.is_empty() {
+        kept = kept.merge(with_bigs(particles, radii, &bigs, &big, judge));
     }
-    pairs
+    kept.trim();
+    (kept.count, kept.first)
+}
+
+/// The overlaps of the big particles `bigs` (each against every particle, once a pair),
+/// found on a hash grid of the big ones whose cells are twice the biggest radius: a
+/// particle looks in the 27 cells around its own.
+fn with_bigs(
+    particles: &[walls_geometry::Particle],
+    radii: &[f64],
+    bigs: &[usize],
+    big: &(impl Fn(usize) -> bool + Sync),
+    judge: &(impl Fn(usize, usize) -> Option<Found> + Sync),
+) -> Kept {
+    let biggest = bigs.iter().map(|&b| radii[b]).fold(0.0, f64::max);
+    let cell = 2.0 * biggest;
+    let key = |p: &nalgebra::Vector3<f64>| p.map(|x| (x / cell).floor() as i64).into();
+    let mut grid: std::collections::HashMap<[i64; 3], Vec<usize>> =
+        std::collections::HashMap::new();
+    for &b in bigs {
+        grid.entry(key(&particles[b].pos)).or_default().push(b);
+    }
+    (0..particles.len())
+        .into_par_iter()
+        .filter(|&j| radii[j] > 0.0)
+        .fold(Kept::default, |mut kept, j| {
+            let k: [i64; 3] = key(&particles[j].pos);
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    for dz in -1..=1 {
+                        let at = [
+                            k[0].saturating_add(dx),
+                            k[1].saturating_add(dy),
+                            k[2].saturating_add(dz),
+                        ];
+                        for &b in grid.get(&at).map_or(&[][..], Vec::as_slice) {
+                            // A pair of two big ones is met from its higher index only.
+                            if b == j || (big(j) && b > j) {
+                                continue;
+                            }
+                            if let Some(f) = judge(b, j) {
+                                kept.push(f);
+                            }
+                        }
+                    }
+                }
+            }
+            kept
+        })
+        .reduce(Kept::default, Kept::merge)
 }
 
 /// What to do about an overlap of `severity`'s level.

@@ -3,38 +3,9 @@
 //! `achOutName.%0<nDigits>d`).
 
 use crate::precheck::{Context, Findings};
-use walls_diagnostics::{Code, Diagnostic};
+use walls_diagnostics::Diagnostic;
 
-/// Step numbers wider than `nDigits`.
-pub static WIDE_STEPS: Code = Code {
-    id: "R008",
-    name: "step-wider-than-ndigits",
-    summary: "nSteps has more digits than nDigits: the output names grow wider and stop sorting in step order",
-    explanation: concat!(
-        "pkdgrav names a full output `achOutName.%0<nDigits>d`, its step number padded with
-zeros to `nDigits` digits (default 5). A step number with more digits is written whole:
-`ss.99999` is followed by `ss.100000`, which sorts before it, and scripts that expect one
-width (`ss.?????`) miss the later outputs.
-
-Bad:
-```par\n",
-        run_par!(),
-        "dDelta               = 1e-7
-nSteps               = 200000
-dKn                  = 1e5
-```
-
-Good:
-```par\n",
-        run_par!(),
-        "dDelta               = 1e-7
-nSteps               = 200000
-nDigits              = 6
-dKn                  = 1e5
-```
-"
-    ),
-};
+pub use walls_par::run_codes::wide_steps::WIDE_STEPS;
 
 /// Warns when the last step needs more digits than `nDigits`.
 pub(crate) fn check(cx: &Context, out: &mut Findings) {
