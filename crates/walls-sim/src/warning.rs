@@ -315,8 +315,29 @@ pub enum Warning {
         /// The member's index in the input.
         particle: usize,
     },
-    /// W603: a member of an aggregate reached a sticky or death wall: pkdgrav asserts
-    /// that aggregates cannot stick, and the run stops.
+    /// W606: a death wall deleted a member of an aggregate: pkdgrav deletes the member
+    /// alone and warns that mass is not conserved; the aggregate keeps its mass and shape
+    /// (docs/pkdgrav-physics.md §17).
+    MemberDeleted {
+        /// The member's index in the input.
+        particle: usize,
+        /// The aggregate's number (−1 − org_idx).
+        aggregate: u32,
+        /// The death wall.
+        wall: usize,
+        /// When.
+        t: f64,
+    },
+    /// W607: death walls deleted every member of an aggregate: pkdgrav fails an
+    /// assertion, and the run stops.
+    AggregateDeleted {
+        /// The aggregate's number (−1 − org_idx).
+        aggregate: u32,
+        /// When.
+        t: f64,
+    },
+    /// W603: a member of an aggregate reached a sticky wall: pkdgrav asserts that
+    /// aggregates cannot stick, and the run stops.
     AggregateHeld {
         /// The member's index in the input.
         particle: usize,
@@ -377,6 +398,8 @@ impl Warning {
             Warning::AggregatesIgnored { .. } => "W601",
             Warning::SingleMemberAggregate { .. } => "W602",
             Warning::AggregateHeld { .. } => "W603",
+            Warning::MemberDeleted { .. } => "W606",
+            Warning::AggregateDeleted { .. } => "W607",
             Warning::SubnormalInput { .. } => "W701",
         }
     }
@@ -548,7 +571,20 @@ impl fmt::Display for Warning {
             ),
             Warning::AggregateHeld { particle, wall, t } => write!(
                 f,
-                "particle {particle}, a member of an aggregate, reached sticky or death wall {wall} (t = {t}): pkdgrav asserts that aggregates cannot stick; the run stops"
+                "particle {particle}, a member of an aggregate, reached sticky wall {wall} (t = {t}): pkdgrav asserts that aggregates cannot stick; the run stops"
+            ),
+            Warning::MemberDeleted {
+                particle,
+                aggregate,
+                wall,
+                t,
+            } => write!(
+                f,
+                "death wall {wall} deleted particle {particle}, a member of aggregate {aggregate} (t = {t}): pkdgrav deletes the member alone and warns that mass is not conserved; the aggregate keeps its mass and shape, moved by the members left"
+            ),
+            Warning::AggregateDeleted { aggregate, t } => write!(
+                f,
+                "death walls deleted every member of aggregate {aggregate} (t = {t}): pkdgrav fails an assertion; the run stops"
             ),
             Warning::SubnormalInput { at, value } => write!(
                 f,
@@ -684,6 +720,16 @@ mod tests {
             Warning::AggregateHeld {
                 particle: 0,
                 wall: 1,
+                t: 0.5,
+            },
+            Warning::MemberDeleted {
+                particle: 0,
+                aggregate: 0,
+                wall: 1,
+                t: 0.5,
+            },
+            Warning::AggregateDeleted {
+                aggregate: 0,
                 t: 0.5,
             },
             Warning::SubnormalInput {

@@ -376,6 +376,37 @@ fn an_aggregate_reaching_a_sticky_wall_stops_the_run() {
 }
 
 #[test]
+fn a_death_wall_deletes_a_member_alone_and_the_last_stops_the_run() {
+    // pkdgrav deletes the member alone, warns that mass is not conserved, and keeps the
+    // aggregate's mass and shape; deleting every member fails an assertion (§17). A
+    // death wall at x = 0.3 (facing −x) that only the outer member reaches, a floor
+    // far below.
+    let wall = scene("wall type plane origin 0.3 0 0 orient -1 0 0 epsn -1\n");
+    let ps = vec![
+        sphere(0.1, [0.0, 0.0, 1.0], [0.5, 0.0, 0.0], [0.0; 3], -1),
+        sphere(0.1, [0.15, 0.0, 1.0], [0.5, 0.0, 0.0], [0.0; 3], -1),
+        sphere(0.1, [0.15, 0.15, 1.0], [0.5, 0.0, 0.0], [0.0; 3], -1),
+    ];
+    let out = walls_sim::run::run(&wall, ps.clone(), &settings(AGGS, 1e-3, 200, [0.0; 3], 0.0));
+    assert_eq!(out.steps, 200, "{:?}", out.warnings);
+    let deleted: Vec<_> = (out.warnings.iter())
+        .filter(|w| w.code() == "W606")
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(deleted.len(), 2, "{:?}", out.warnings);
+    assert!(deleted[0].contains("death wall 0 deleted particle 1, a member of aggregate 0"));
+    assert!(out.particles[0].alive && !out.particles[1].alive && !out.particles[2].alive);
+    // The member left moves on at the aggregate's speed (no force on it).
+    assert!((out.particles[0].particle.vel.x - 0.5).abs() < 1e-12);
+    // Every member at the wall: the run stops when the last goes.
+    let out = walls_sim::run::run(&wall, ps, &settings(AGGS, 1e-3, 2000, [0.0; 3], 0.0));
+    assert!(out.steps < 2000);
+    let last = out.warnings.last().unwrap();
+    assert_eq!(last.code(), "W607", "{:?}", out.warnings);
+    assert!(last.to_string().contains("every member of aggregate 0"));
+}
+
+#[test]
 fn an_aggregate_striking_a_free_sphere_keeps_the_momentum() {
     // A two-sphere aggregate moving along x strikes a free sphere off its centre line:
     // the pair force moves the aggregate's centre and turns it, and once they have

@@ -269,6 +269,11 @@ impl Aggregate {
         let mut torque = Vec3::zeros();
         for &i in &self.members {
             let s = &states[i];
+            // A member a death wall deleted pulls no more; the aggregate keeps its mass
+            // (docs/pkdgrav-physics.md §17).
+            if !s.alive {
+                continue;
+            }
             let m = s.particle.mass;
             let (force, own) = load(i);
             let a = g + (force - g * m) / m;

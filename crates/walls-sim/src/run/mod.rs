@@ -368,7 +368,8 @@ pub enum Stop {
     Overlap,
     /// An aggregate of a single member, where pkdgrav aborts.
     SingleMemberAggregate,
-    /// A member of an aggregate at a sticky or death wall, where pkdgrav aborts.
+    /// A member of an aggregate at a sticky wall, or an aggregate's last member deleted
+    /// by a death wall, where pkdgrav aborts.
     AggregateHeld,
     /// A rigid body's adaptive integrator (a reactive assembly's or an aggregate's
     /// rotation) failed: more than 10,000 substeps, or a substep too small to move the
@@ -415,7 +416,7 @@ impl std::fmt::Display for Stop {
             }
             Stop::AggregateHeld => write!(
                 f,
-                "a member of an aggregate at a sticky or death wall, where pkdgrav aborts"
+                "a member of an aggregate at a sticky wall, or an aggregate's last member deleted by a death wall, where pkdgrav aborts"
             ),
             Stop::Integration => write!(
                 f,
@@ -580,7 +581,9 @@ pub fn run_watched(
         outcome.stopped = outcome.warnings.iter().find_map(|w| match w {
             Warning::OverlapStop { .. } => Some(Stop::Overlap),
             Warning::SingleMemberAggregate { .. } => Some(Stop::SingleMemberAggregate),
-            Warning::AggregateHeld { .. } => Some(Stop::AggregateHeld),
+            Warning::AggregateHeld { .. } | Warning::AggregateDeleted { .. } => {
+                Some(Stop::AggregateHeld)
+            }
             Warning::StepFailed { .. } => Some(Stop::Integration),
             _ => None,
         });

@@ -387,10 +387,11 @@ fn walls_to_visit(
     }
 }
 
-/// A death wall (`eps_n` < 0) removes particle `i`; a sticky wall (0) holds it where it
-/// touched, moving and spinning with the wall (docs/pkdgrav-physics.md §6). An
-/// aggregate's member neither sticks nor dies (pkdgrav asserts, docs/pkdgrav-physics.md
-/// §9.5): the event alone, and `note_wall_contacts` stops the run. The event, at time
+/// A death wall (`eps_n` < 0) removes particle `i`, an aggregate's member too (its
+/// aggregate keeps its mass and shape, docs/pkdgrav-physics.md §17); a sticky wall (0)
+/// holds it where it touched, moving and spinning with the wall (§6). An aggregate's
+/// member does not stick (pkdgrav asserts, §9.5): the event alone, and
+/// `note_wall_contacts` stops the run. The event, at time
 /// `t`, of a contact that began at normal speed `vn_in` (`i`: the particle's number in
 /// the file).
 #[inline(always)]
@@ -408,14 +409,12 @@ fn hold(
     } else {
         EventKind::Stick
     };
-    if !s.member {
-        if kind == EventKind::Remove {
-            s.alive = false;
-        } else {
-            s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
-            s.particle.vel = wall_v;
-            s.particle.spin = wall.spin;
-        }
+    if kind == EventKind::Remove {
+        s.alive = false;
+    } else if !s.member {
+        s.stuck_to = Some(Box::new((w, s.particle.pos - wall.origin)));
+        s.particle.vel = wall_v;
+        s.particle.spin = wall.spin;
     }
     Event {
         t,
@@ -729,7 +728,8 @@ pub(super) fn note_wall_contacts(
     rules: &Rules,
     t: f64,
 ) -> Flow {
-    let mut stop = rigid.aggregates.is_some() && aggregates_held(wall_pass, journal, bodies, t);
+    let mut stop = (rigid.aggregates.as_ref())
+        .is_some_and(|aggs| aggregates_held(wall_pass, journal, bodies, aggs, t));
     for (place, report) in wall_pass.reports.iter_mut().flatten() {
         let (place, i) = (*place, bodies.numbering.file(*place));
         for &(fraction, w) in &report.past {
@@ -796,33 +796,59 @@ pub(super) fn note_wall_contacts(
     if stop { Flow::Stop } else { Flow::Continue }
 }
 
-/// Whether an aggregate's member reached a sticky or death wall this step (pkdgrav
-/// asserts, docs/pkdgrav-physics.md §9.5): the warning, in place of the event.
+/// Whether an aggregate's member reached a sticky wall this step (pkdgrav asserts,
+/// docs/pkdgrav-physics.md §9.5: the warning, in place of the event), or death walls
+/// deleted an aggregate's last member (it asserts, §17). A member a death wall deletes
+/// is warned about (pkdgrav's "mass not conserved"), and its event kept.
 pub(super) fn aggregates_held(
     wall_pass: &mut WallPass,
     journal: &mut Journal,
     bodies: &Bodies,
+    aggregates: &Aggregates,
     t: f64,
 ) -> bool {
     let mut held = false;
+    let mut emptied = Vec::new();
     for (place, report) in wall_pass.reports.iter_mut().flatten() {
         if !bodies.states[*place].member {
             continue;
         }
         let i = bodies.numbering.file(*place);
+        let Some(a) = aggregates.of[*place] else {
+            continue;
+        };
+        let aggregate = &aggregates.list[a as usize];
         for e in &report.events {
-            if matches!(e.kind, EventKind::Stick | EventKind::Remove) {
-                journal.warnings.push(Warning::AggregateHeld {
-                    particle: i,
-                    wall: e.wall,
-                    t,
-                });
-                held = true;
+            match e.kind {
+                EventKind::Stick => {
+                    journal.warnings.push(Warning::AggregateHeld {
+                        particle: i,
+                        wall: e.wall,
+                        t,
+                    });
+                    held = true;
+                }
+                EventKind::Remove => {
+                    journal.warnings.push(Warning::MemberDeleted {
+                        particle: i,
+                        aggregate: aggregate.number,
+                        wall: e.wall,
+                        t,
+                    });
+                    let gone = (aggregate.members.iter()).all(|&m| !bodies.states[m].alive);
+                    if gone && !emptied.contains(&a) {
+                        emptied.push(a);
+                        journal.warnings.push(Warning::AggregateDeleted {
+                            aggregate: aggregate.number,
+                            t,
+                        });
+                        held = true;
+                    }
+                }
+                _ => {}
             }
         }
-        report
-            .events
-            .retain(|e| !matches!(e.kind, EventKind::Stick | EventKind::Remove));
+        report.events.retain(|e| e.kind != EventKind::Stick);
     }
     held
 }
