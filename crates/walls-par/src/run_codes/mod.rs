@@ -23,6 +23,7 @@ iCheckInterval       = 0
 
 pub mod build_lacks;
 pub mod few_steps;
+pub mod initial_conditions;
 pub mod no_output;
 pub mod outside_container;
 pub mod pair_overlap;
@@ -42,4 +43,5 @@ pub static ALL: &[&Code] = &[
     &build_lacks::BUILD_LACKS,
     &no_output::NO_OUTPUT,
     &wide_steps::WIDE_STEPS,
+    &initial_conditions::INITIAL_CONDITIONS,
 ];

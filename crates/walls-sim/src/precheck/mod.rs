@@ -87,6 +87,8 @@ pub struct SsFile<'a> {
     pub particles: &'a [Particle],
     /// The bytes of one record: 96 (standard) or 28 (reduced).
     pub record: usize,
+    /// The time in its header.
+    pub time: f64,
 }
 
 impl SsFile<'_> {
@@ -126,6 +128,7 @@ pub fn check(run: &Run) -> Findings {
     rules::build_lacks::check(&context, &mut out);
     rules::no_output::check(&context, &mut out);
     rules::wide_steps::check(&context, &mut out);
+    rules::initial_conditions::check(&context, &mut out);
     for list in [&mut out.par, &mut out.walls, &mut out.particles] {
         list.sort_by_key(|d| (d.span.start, d.span.end, d.code.id));
     }

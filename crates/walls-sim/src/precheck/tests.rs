@@ -23,8 +23,20 @@ fn at(r: f64, x: f64, y: f64, z: f64, k: usize) -> Particle {
     Particle::at_rest(r, Vector3::new(x, y, z), k)
 }
 
-/// The findings of the run directory of `par`, `walls` and `particles`, for `build`.
+/// The findings of the run directory of `par`, `walls` and `particles` (at time 0), for
+/// `build`.
 fn findings(par: &str, walls: &str, particles: &[Particle], build: &Build) -> Findings {
+    findings_at(par, walls, particles, build, 0.0)
+}
+
+/// [`findings`] with the `.ss` header's `time`.
+fn findings_at(
+    par: &str,
+    walls: &str,
+    particles: &[Particle],
+    build: &Build,
+    time: f64,
+) -> Findings {
     let file = walls_par::check::File::read(par, build, &mut Vec::new());
     let parse = walls_syntax::parse(walls);
     let (scene, _) = walls_model::resolve(&parse.tree, walls_model::ContactModel::Ssdem);
@@ -47,6 +59,7 @@ fn findings(par: &str, walls: &str, particles: &[Particle], build: &Build) -> Fi
             name: "ss.ic",
             particles,
             record: 96,
+            time,
         }),
     };
     check(&run)
@@ -95,7 +108,7 @@ fn every_code_is_listed_once_in_order() {
     assert_eq!(
         ids,
         [
-            "R001", "R002", "R003", "R004", "R005", "R006", "R007", "R008"
+            "R001", "R002", "R003", "R004", "R005", "R006", "R007", "R008", "R009"
         ]
     );
 }
@@ -167,8 +180,10 @@ fn members_of_one_aggregate_and_stuck_pairs_are_skipped() {
             .len(),
         1
     );
+    // (Two aggregates of one member each are also R009 errors, A127.)
     let two = [member(0.0, 0), member(0.9, 1)];
-    assert_eq!(findings(&par, NONE, &two, &aggs).particles.len(), 1);
+    let pairs = findings(&par, NONE, &two, &aggs).particles;
+    assert_eq!(pairs.iter().filter(|d| d.code.id == "R001").count(), 1);
     let stuck = |x: f64| Particle {
         color: -1,
         ..at(1.0, x, 0.0, 0.0, 0)
@@ -349,7 +364,10 @@ fn no_step_and_only_the_last_step() {
     let code = &rules::no_output::NO_OUTPUT;
     let par = example(code, "Bad");
     let ps = [at(1.0, 0.0, 0.0, 5.0, 0)];
-    let (file, span, severity, message) = one(&findings(&par, NONE, &ps, &Build::default()), code);
+    // The `.ss` written at iStartStep·dDelta, as pkdgrav wants it (else R009).
+    let t0 = 1000.0 * 1e-7;
+    let (file, span, severity, message) =
+        one(&findings_at(&par, NONE, &ps, &Build::default(), t0), code);
     let value = par.find("1000\niStartStep").unwrap();
     assert_eq!(
         (file, span, severity),
@@ -360,11 +378,12 @@ fn no_step_and_only_the_last_step() {
         "nSteps = 1000 is not above iStartStep = 1000: pkdgrav runs no step and writes no output (it exits with status 0)"
     );
     assert!(
-        all(&findings(
+        all(&findings_at(
             &example(code, "Good"),
             NONE,
             &ps,
-            &Build::default()
+            &Build::default(),
+            t0
         ))
         .is_empty()
     );
@@ -533,4 +552,59 @@ fn the_attack_s_breaks_stay_fixed() {
             "dSoft {soft}"
         );
     }
+}
+
+#[test]
+fn the_initial_conditions_as_pkdgrav_checks_them_at_start_up() {
+    let code = &rules::initial_conditions::INITIAL_CONDITIONS;
+    let build = Build::default();
+    let ps = [at(1.0, 0.0, 0.0, 0.0, 0), at(1.0, 5.0, 0.0, 0.0, 1)];
+    let bad = example(code, "Bad");
+    // Written at t = 0.001 for a run of step 0: reset to 0 (B45).
+    let (file, span, severity, message) = one(&findings_at(&bad, NONE, &ps, &build, 1e-3), code);
+    assert_eq!((file, span, severity), ("par", 0..0, Severity::Warning));
+    assert!(message.contains("(B45)"), "{message}");
+    // Continued from step 100, its time written as 100·dDelta: nothing.
+    let good = example(code, "Good");
+    let f = findings_at(&good, NONE, &ps, &build, 100.0 * 1e-5);
+    assert!(
+        all(&f).iter().all(|(_, d)| d.code.id != code.id),
+        "{:?}",
+        all(&f)
+    );
+    // A time of 0 for step 100 (B44), and another time (B46), at `iStartStep`.
+    let (_, span, _, message) = one(&findings_at(&good, NONE, &ps, &build, 0.0), code);
+    let value = good.find("iStartStep           = 100").unwrap() + 23;
+    assert_eq!(span, value..value + 3);
+    assert!(message.contains("(B44)"), "{message}");
+    let (_, _, _, message) = one(&findings_at(&good, NONE, &ps, &build, 2e-3), code);
+    assert!(message.contains("(B46)"), "{message}");
+    // An aggregate of one particle stops an AGGS build (A127), at that particle.
+    let aggs = Build::parse("DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT AGGS").unwrap();
+    let mut members = vec![
+        at(1.0, 0.0, 0.0, 0.0, 0),
+        at(1.0, 10.0, 0.0, 0.0, 1),
+        at(1.0, 11.5, 0.0, 0.0, 2),
+    ];
+    members[0].index = -1;
+    members[1].index = -2;
+    members[2].index = -2;
+    let f = findings(
+        &good.replace("iStartStep           = 100\n", ""),
+        NONE,
+        &members,
+        &aggs,
+    );
+    let (file, span, severity, message) = one(&f, code);
+    assert_eq!((file, span, severity), ("ss", record(0), Severity::Error));
+    assert_eq!(
+        message,
+        "particle 0 is the only member of aggregate 0 (org_idx -1): pkdgrav stops at start-up (exit status 1) on an aggregate of one particle"
+    );
+    assert!(
+        findings(&good, NONE, &members, &build)
+            .particles
+            .iter()
+            .all(|d| d.code.id != code.id)
+    );
 }

@@ -115,11 +115,11 @@ pub(super) fn check(
                     ),
                 })
             } else {
-                Ok(read)
+                Ok((read, time))
             }
         });
         match read {
-            Ok(read) => Some((read.particles, 96)),
+            Ok((read, time)) => Some((read.particles, time)),
             Err(e) => {
                 let line = file.given("achInFile").map(|e| e.line);
                 let at = match line {
@@ -154,14 +154,14 @@ pub(super) fn check(
                 places,
             },
         ),
-        particles: ss
-            .as_ref()
-            .zip(particles.as_ref())
-            .map(|(s, (ps, record))| walls_sim::precheck::SsFile {
+        particles: ss.as_ref().zip(particles.as_ref()).map(|(s, (ps, time))| {
+            walls_sim::precheck::SsFile {
                 name: &s.shown,
                 particles: ps,
-                record: *record,
-            }),
+                record: 96,
+                time: *time,
+            }
+        }),
     };
     let found = walls_sim::precheck::check(&run);
     out.par = found.par;

@@ -5,6 +5,7 @@
 
 pub mod build_lacks;
 pub mod few_steps;
+pub mod initial_conditions;
 pub mod no_output;
 pub mod outside_container;
 pub mod pair_overlap;
