@@ -240,6 +240,25 @@ fn a_run_directory_exports_as_itself() {
         let out = sim(d, args);
         assert!(out.status.success(), "{name}: {}", stderr(&out));
     }
+    // A folder in achOutName is not kept, and the user is told.
+    let text = std::fs::read_to_string(par).unwrap();
+    let moved = text.replace("achOutName               = ss", "achOutName = out/ss");
+    for file in ["walls.dat", "particles.ss"] {
+        std::fs::copy(golden("disk").join(file), d.join(file)).unwrap();
+    }
+    std::fs::write(d.join("moved.par"), moved).unwrap();
+    let out = sim(d, &["export", "--par", "moved.par", "--out", "moved"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("warning: moved.par line 8 names `out/ss`: its folder is not kept, the outputs are named ss.NNNNN beside ss.par"),
+        "{}",
+        stderr(&out)
+    );
+    let written = std::fs::read_to_string(d.join("moved/ss.par")).unwrap();
+    assert!(
+        written.contains("\nachOutName               = ss\n"),
+        "{written}"
+    );
     for file in ["particles.csv", "walls.csv"] {
         assert_eq!(
             std::fs::read(d.join("a").join(file)).unwrap(),

@@ -86,12 +86,19 @@ pub fn par_file(
         &outputs.ss.base,
         "the outputs' names, NAME.STEP (pkdgrav's default is pkdgrav)",
     );
-    if let Some(w) = &outputs.ss_warning {
-        written.append_to_last(&format!("; {w}"));
-        written.warnings.push(w.replace(
-            "the .ss outputs are written in --out as",
-            "the outputs are named",
-        ));
+    // A folder in the source's `achOutName` is not kept: the outputs go beside `ss.par`.
+    if let (Some(_), Some(source)) = (&outputs.ss_warning, source)
+        && let Some(entry) = source.file.given("achOutName")
+    {
+        let said = format!(
+            "{} line {} names `{}`: its folder is not kept, the outputs are named {}.NNNNN beside ss.par",
+            source.path,
+            entry.line,
+            source.file.string("achOutName").unwrap_or_default(),
+            outputs.ss.base
+        );
+        written.append_to_last(&format!("; {said}"));
+        written.warnings.push(said);
     }
     written.int(
         "nDigits",
