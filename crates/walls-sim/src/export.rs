@@ -364,14 +364,15 @@ fn flag<T>(value: Option<T>, flag: &str) -> Option<String> {
 
 /// Where a timestep of walls-sim's own came from.
 fn dt_default(settings: &Settings) -> String {
+    let travel = 100.0 * crate::run::defaults::TRAVEL_PER_STEP;
     let rule = match settings.method() {
-        crate::run::ContactModel::Ssdem => {
-            "pi*sqrt(m/(2 dKn))/100 for the lightest particle, at most what moves anything 2 % of the smallest radius"
+        crate::run::ContactModel::Ssdem => "pi*sqrt(m/(2 dKn))/100 for the lightest particle",
+        crate::run::ContactModel::Hsdem => {
+            "a step's straight path within 0.1 % of the smallest radius of the parabola (without gravity a hundredth of the run)"
         }
-        crate::run::ContactModel::Hsdem => "what moves anything at most 2 % of the smallest radius",
     };
     format!(
-        "walls-sim's default timestep: {rule}, shortened so that whole steps end on the end time"
+        "walls-sim's default timestep: {rule}, at most what moves anything {travel} % of the smallest radius, shortened so that whole steps end on the end time"
     )
 }
 

@@ -10,10 +10,10 @@
 //!   left at its default);
 //! * in the walls file, at the `wall` keyword or the token;
 //! * in the `.ss` file, at a particle: the span is the byte range of its record (16 bytes
-//!   of header, then 96 bytes a standard record, 28 a reduced one), the diagnostic's
+//!   of header, then 96 bytes a record), and the diagnostic's
 //!   [`walls_diagnostics::Record`] names it (`particle 17`, which every output format
-//!   shows in place of a line and column), and [`particle_of`] gives it back from a byte. Particles are numbered from 0 in file
-//!   order, as pkdgrav's own overlap messages and `iOrder` number them.
+//!   shows in place of a line and column). Particles are numbered from 0 in file order,
+//!   as pkdgrav's own overlap messages and `iOrder` number them.
 //!
 //! The rules, one a file in [`rules`]:
 //!
@@ -46,6 +46,9 @@ pub const MAX_REPORTED: usize = 100;
 
 /// The bytes of a `.ss` file's header.
 pub const SS_HEADER: usize = 16;
+
+/// The bytes of a particle's standard record (pkdgrav starts from no other).
+pub const SS_RECORD: usize = 96;
 
 /// A run directory's inputs, each as far as it could be read.
 pub struct Run<'a> {
@@ -85,8 +88,6 @@ pub struct SsFile<'a> {
     pub name: &'a str,
     /// The particles, in file order.
     pub particles: &'a [Particle],
-    /// The bytes of one record: 96 (standard) or 28 (reduced).
-    pub record: usize,
     /// The time in its header.
     pub time: f64,
 }
@@ -94,15 +95,9 @@ pub struct SsFile<'a> {
 impl SsFile<'_> {
     /// The byte range of particle `k`'s record.
     pub fn span(&self, k: usize) -> Range<usize> {
-        let start = SS_HEADER + self.record * k;
-        start..start + self.record
+        let start = SS_HEADER + SS_RECORD * k;
+        start..start + SS_RECORD
     }
-}
-
-/// The particle whose record of `record` bytes holds byte `offset` of a `.ss` file;
-/// `None` in the header.
-pub fn particle_of(offset: usize, record: usize) -> Option<usize> {
-    (offset >= SS_HEADER && record > 0).then(|| (offset - SS_HEADER) / record)
 }
 
 /// The findings, by the file each is in, each list sorted by place.

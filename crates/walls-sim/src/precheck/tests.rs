@@ -3,7 +3,7 @@
 //! stated, the good one nothing.
 
 use super::rules::{self, ALL};
-use super::{Findings, Run, SsFile, WallPlace, WallsFile, check, particle_of};
+use super::{Findings, Run, SsFile, WallPlace, WallsFile, check};
 use nalgebra::Vector3;
 use walls_diagnostics::{Code, Diagnostic, Severity};
 use walls_geometry::Particle;
@@ -58,7 +58,6 @@ fn findings_at(
         particles: Some(SsFile {
             name: "ss.ic",
             particles,
-            record: 96,
             time,
         }),
     };
@@ -486,14 +485,6 @@ fn a_huge_particle_is_measured_to_each_other_not_binned_with_them() {
         pairs.contains(&(19_998, "particle 19999".to_string(), Severity::Warning)),
         "{pairs:?}"
     );
-}
-
-#[test]
-fn records_give_their_particle_back() {
-    assert_eq!(particle_of(15, 96), None);
-    assert_eq!(particle_of(16, 96), Some(0));
-    assert_eq!(particle_of(16 + 96 * 17 + 95, 96), Some(17));
-    assert_eq!(particle_of(16 + 28 * 3, 28), Some(3));
 }
 
 /// The attack's findings: many coincident particles are counted in bounded memory; many

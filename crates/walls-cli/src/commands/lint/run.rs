@@ -158,7 +158,6 @@ pub(super) fn check(
             walls_sim::precheck::SsFile {
                 name: &s.shown,
                 particles: ps,
-                record: 96,
                 time: *time,
             }
         }),
