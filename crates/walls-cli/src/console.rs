@@ -21,7 +21,7 @@
 //!   annotations, pictures and files: the bytes as they are, through [`out_data`] or the
 //!   commands' own writers (the JSON and annotation renderers escape in their own way).
 //!
-//! [`color_stderr`] decides whether to colour standard error: on a terminal, or anywhere
+//! [`color_stderr`] and [`color_stdout`] decide whether to colour a stream: on a terminal, or anywhere
 //! when `CLICOLOR_FORCE` is set to anything but `0` (<https://bixense.com/clicolors/>, as
 //! clap's own messages do); never when `NO_COLOR` is set to a non-empty value
 //! (<https://no-color.org>), which wins.
@@ -92,6 +92,16 @@ fn escaped(args: Arguments<'_>) -> String {
 pub fn color_stderr() -> bool {
     color_with(
         std::io::stderr().is_terminal(),
+        std::env::var_os("NO_COLOR").as_deref(),
+        std::env::var_os("CLICOLOR_FORCE").as_deref(),
+    )
+}
+
+/// Whether to colour standard output, where `walls-lint` writes its findings: as
+/// [`color_stderr`], for standard output.
+pub fn color_stdout() -> bool {
+    color_with(
+        std::io::stdout().is_terminal(),
         std::env::var_os("NO_COLOR").as_deref(),
         std::env::var_os("CLICOLOR_FORCE").as_deref(),
     )

@@ -192,12 +192,9 @@ fn an_export_runs_as_the_direct_run_and_lints_clean() {
         .arg(d.join("job"))
         .output()
         .unwrap();
-    assert!(lint.status.success(), "{}", stderr(&lint));
-    assert!(
-        stderr(&lint).contains("0 errors, 0 warnings"),
-        "{}",
-        stderr(&lint)
-    );
+    let findings = String::from_utf8_lossy(&lint.stdout);
+    assert!(lint.status.success(), "{findings}{}", stderr(&lint));
+    assert!(findings.contains("0 errors, 0 warnings"), "{findings}");
 
     let direct = sim(
         d,
@@ -302,9 +299,10 @@ fn other_builds_export_as_themselves() {
             .arg(job)
             .output()
             .unwrap();
+        let findings = String::from_utf8_lossy(&lint.stdout);
         assert!(
-            lint.status.success() && stderr(&lint).contains("0 errors, 0 warnings"),
-            "{scene}: {}",
+            lint.status.success() && findings.contains("0 errors, 0 warnings"),
+            "{scene}: {findings}{}",
             stderr(&lint)
         );
         let written = std::fs::read_to_string(d.join(scene).join("ss.par")).unwrap();
@@ -508,7 +506,7 @@ fn run_directory_findings_are_ignored_as_any_code() {
             .output()
             .unwrap()
     };
-    let before = stderr(&lint());
+    let before = String::from_utf8_lossy(&lint().stdout).into_owned();
     assert!(
         before.contains("[R004]") && before.contains("0 errors, 2 warnings"),
         "{before}"
@@ -518,10 +516,7 @@ fn run_directory_findings_are_ignored_as_any_code() {
     text.push_str("[lint]\nignore = [\"R004\", \"par-pkdgrav-warns\"]\n");
     std::fs::write(&settings, text).unwrap();
     let after = lint();
-    assert!(after.status.success(), "{}", stderr(&after));
-    assert!(
-        stderr(&after).contains("0 errors, 0 warnings"),
-        "{}",
-        stderr(&after)
-    );
+    let findings = String::from_utf8_lossy(&after.stdout);
+    assert!(after.status.success(), "{findings}{}", stderr(&after));
+    assert!(findings.contains("0 errors, 0 warnings"), "{findings}");
 }

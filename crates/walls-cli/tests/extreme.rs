@@ -2,7 +2,7 @@
 //! in place, walls-sim scene/run/plan/advise/preview) over a table of extreme values in
 //! walls files, particle files and options (1e-300, 1e300, 1e308, -1e308, 1e-400, 1e999,
 //! nan, inf, -0, 0, huge counts, empty files), each killed after a time limit: the exit
-//! status must be 0, 1 or 2 and standard error must not say "panicked"; a number no
+//! status must be 0, 1 or 2 and what it prints must not say "panicked"; a number no
 //! double holds (1e-400, 1e999, nan, inf) in a particle file, an option or a `.par`
 //! file's real must be refused with exit 2 and an error naming it where it is. Then the
 //! interrupt of a run writing its outputs (whole rows, exit 1, `"stopped":
@@ -43,22 +43,26 @@ fn bin(name: &str) -> PathBuf {
 }
 
 /// Runs `args` (the binary first) in `dir`, killed after [`LIMIT`]; its exit status
-/// and standard error, or why it failed the test.
+/// and what it printed (standard output, where `walls-lint` writes its findings, then
+/// standard error), or why it failed the test.
 fn run_in(dir: &Path, args: &[String]) -> Result<(i32, String), String> {
     let mut child = Command::new(bin(&args[0]))
         .args(&args[1..])
         .current_dir(dir)
         .stdin(Stdio::null())
-        .stdout(Stdio::null())
+        .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| e.to_string())?;
-    let mut stderr = child.stderr.take().ok_or("no stderr")?;
-    let reader = std::thread::spawn(move || {
-        let mut text = String::new();
-        let _ = stderr.read_to_string(&mut text);
-        text
-    });
+    let read = |mut stream: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            let _ = stream.read_to_string(&mut text);
+            text
+        })
+    };
+    let stdout = read(Box::new(child.stdout.take().ok_or("no stdout")?));
+    let stderr = read(Box::new(child.stderr.take().ok_or("no stderr")?));
     let start = Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
@@ -71,12 +75,13 @@ fn run_in(dir: &Path, args: &[String]) -> Result<(i32, String), String> {
         }
         std::thread::sleep(Duration::from_millis(5));
     };
-    let text = reader.join().unwrap_or_default();
+    let mut text = stdout.join().unwrap_or_default();
+    text.push_str(&stderr.join().unwrap_or_default());
     Ok((status.code().unwrap_or(-1), text))
 }
 
 /// A row of the table: the command line (the binary first), the files it needs, each a
-/// name and its bytes, and, when the row must be refused, what standard error must say.
+/// name and its bytes, and, when the row must be refused, what it must print.
 type Row = (Vec<String>, Vec<(&'static str, Vec<u8>)>, Option<String>);
 
 /// The values no double holds: a run must refuse them (exit 2) and say where they are.
@@ -260,12 +265,12 @@ fn every_command_over_extreme_values_exits_0_1_or_2_and_refuses_what_no_double_h
 }
 
 /// A row of the rule's table: the command line (the binary first), its files, the exit
-/// status it must give and what its standard error must say.
+/// status it must give and what it must print.
 type RuleRow = (Vec<String>, Vec<(&'static str, Vec<u8>)>, i32, String);
 
 /// One rule for numbers in every input (docs/reliability.md, "Numbers pkdgrav would
 /// misread"): each row is a command, its files, the exit status it must give and what
-/// its standard error must say: underflow refused like overflow with its place, a
+/// it must print: underflow refused like overflow with its place, a
 /// subnormal read with a warning at its place, a step count or a C int that does not
 /// fit refused, a length whose squares overflow reported.
 #[test]
@@ -430,11 +435,9 @@ fn numbers_follow_one_rule_in_every_input() {
         }
         let line = args.join(" ");
         match run_in(dir.path(), args) {
-            Ok((got, stderr)) if got != *code || !stderr.contains(says.as_str()) => {
-                failures.push(format!(
-                    "{line}: exit {got} (want {code}), standard error {stderr:?} (want {says:?})"
-                ))
-            }
+            Ok((got, stderr)) if got != *code || !stderr.contains(says.as_str()) => failures.push(
+                format!("{line}: exit {got} (want {code}), printed {stderr:?} (want {says:?})"),
+            ),
             Ok(_) => {}
             Err(why) => failures.push(format!("{line}: {why}")),
         }

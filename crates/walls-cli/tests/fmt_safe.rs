@@ -43,8 +43,12 @@ fn walls_fmt_fed(dir: &Path, args: &[&str], stdin: &[u8]) -> Output {
     child.wait_with_output().unwrap()
 }
 
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
+/// What the tool printed: its own errors (standard error), then its report (standard
+/// output: the files that would change, the summary).
+fn printed(out: &Output) -> String {
+    let mut text = String::from_utf8_lossy(&out.stderr).into_owned();
+    text.push_str(&String::from_utf8_lossy(&out.stdout));
+    text
 }
 
 /// The names in `dir`, sorted.
@@ -147,7 +151,7 @@ fn a_read_only_file_is_refused() {
     let out = walls_fmt(dir.path(), &["ro.walls", "ok.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         "walls-fmt: error: not writing ro.walls: it is read-only (mode 0444); make it \
          writable first (chmod u+w)\n1 file reformatted, 0 unchanged, 1 not written\n"
     );
@@ -173,7 +177,7 @@ fn extended_attributes_are_kept() {
     )
     .expect("the temporary folder's filesystem takes user extended attributes");
     let out = walls_fmt(dir.path(), &["a.walls"]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", printed(&out));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), CLEAN);
     let mut value = [0; 64];
     let len = rustix::fs::getxattr(&path, "user.walls.note", &mut value[..]).unwrap();
@@ -189,7 +193,7 @@ fn hard_links_are_refused_not_parted() {
     let out = walls_fmt(dir.path(), &["a.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         "walls-fmt: error: not writing a.walls: it has 2 hard links, which a rewrite would \
          part; format a copy (walls-fmt - < FILE > COPY) and copy it back over the file\n\
          0 files reformatted, 0 unchanged, 1 not written\n"
@@ -221,7 +225,7 @@ fn a_pipe_is_read_but_not_replaced() {
         let args: Vec<&str> = flag.into_iter().chain(["/dev/stdin"]).collect();
         let out = walls_fmt_fed(dir.path(), &args, MESSY.as_bytes());
         assert_eq!(out.status.code(), Some(code), "{flag:?}");
-        assert_eq!(stderr(&out), message);
+        assert_eq!(printed(&out), message);
     }
 }
 
@@ -236,7 +240,7 @@ fn the_same_file_named_three_ways_is_formatted_once() {
         &["a.walls", "./a.walls", "link.walls", "b.walls", "b.walls"],
     );
     assert_eq!(out.status.code(), Some(0));
-    assert_eq!(stderr(&out), "1 file reformatted, 1 unchanged\n");
+    assert_eq!(printed(&out), "1 file reformatted, 1 unchanged\n");
     assert_eq!(
         std::fs::read_to_string(dir.path().join("link.walls")).unwrap(),
         CLEAN
@@ -351,7 +355,7 @@ fn a_full_disk_leaves_the_original() {
     let out = fmt_past_a_file_size_limit("trap '' XFSZ && ");
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         "walls-fmt: error: cannot write big.walls: File too large (os error 27)\n\
          0 files reformatted, 0 unchanged, 1 not written\n"
     );
@@ -464,7 +468,7 @@ fn root_keeps_the_owner_group_and_mode() {
     // Set-group-id too, which a chown after the chmod would clear.
     std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o2640)).unwrap();
     let out = walls_fmt(dir.path(), &["theirs.walls"]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", printed(&out));
     let meta = std::fs::metadata(&path).unwrap();
     assert_eq!((meta.uid(), meta.gid()), (NOBODY, NOBODY));
     assert_eq!(meta.mode() & 0o7777, 0o2640);
@@ -479,7 +483,7 @@ fn nobody_may_not_rewrite_roots_file_in_an_open_folder() {
     let out = walls_fmt_as_nobody(dir.path(), &["root.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         "walls-fmt: error: not writing root.walls: you do not have permission to write it\n\
          0 files reformatted, 0 unchanged, 1 not written\n"
     );
@@ -504,7 +508,7 @@ fn nobody_may_not_take_roots_writable_file_nor_change_a_group() {
     let out = walls_fmt_as_nobody(dir.path(), &["shared.walls", "group.walls", "own.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         "walls-fmt: error: not writing shared.walls: a rewrite would change its owner or \
          group (uid 0, gid 0), which you cannot keep; format it as its owner\n\
          walls-fmt: error: not writing group.walls: a rewrite would change its owner or \
@@ -542,7 +546,7 @@ fn a_folder_nobody_may_write_is_named() {
     let out = walls_fmt_as_nobody(dir.path(), &["mine.walls"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        stderr(&out),
+        printed(&out),
         format!(
             "walls-fmt: error: cannot write mine.walls: cannot make a new file in {} to put \
              in its place (Permission denied (os error 13)): rewriting a file needs \

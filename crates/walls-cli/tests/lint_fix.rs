@@ -32,17 +32,20 @@ fn a_read_only_file_is_not_written_and_its_findings_are_reported() {
     let (dir, path) = scene_with_mode(0o444);
     let out = fix(dir.path());
     let stderr = String::from_utf8_lossy(&out.stderr);
+    let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(
-        stderr.starts_with(
-            "walls-lint: error: not writing scene.walls: it is read-only (mode 0444); make it \
-             writable first (chmod u+w)\n[S004] Error: comment glued to `0.5`\n"
-        ),
-        "{stderr}"
+    assert_eq!(
+        stderr,
+        "walls-lint: error: not writing scene.walls: it is read-only (mode 0444); make it \
+         writable first (chmod u+w)\n"
     );
     assert!(
-        stderr.ends_with("1 error, 0 warnings in 1 file; 0 fixed\n"),
-        "{stderr}"
+        stdout.starts_with("[S004] Error: comment glued to `0.5`\n"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.ends_with("1 error, 0 warnings in 1 file; 0 fixed\n"),
+        "{stdout}"
     );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), GLUED);
 }
@@ -53,9 +56,10 @@ fn a_fixed_file_keeps_its_mode() {
     let out = fix(dir.path());
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(
-        String::from_utf8_lossy(&out.stderr),
+        String::from_utf8_lossy(&out.stdout),
         "0 errors, 0 warnings in 1 file; 1 fixed\n"
     );
+    assert_eq!(String::from_utf8_lossy(&out.stderr), "");
     assert_eq!(std::fs::read_to_string(&path).unwrap(), FIXED);
     let mode = std::fs::metadata(&path).unwrap().permissions().mode();
     assert_eq!(mode & 0o7777, 0o640);

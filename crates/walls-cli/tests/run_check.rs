@@ -110,7 +110,7 @@ fn json_places_particles_at_their_records() {
 fn human_github_gitlab_and_sarif_show_the_particle() {
     let dir = run_dir();
     let out = lint(dir.path(), &["run/params.par"]);
-    let human = String::from_utf8(out.stderr).unwrap();
+    let human = String::from_utf8(out.stdout).unwrap();
     assert!(
         human.contains(&format!(
             "[R001] Error: {PAIR}\n   ╭─[ run/particles.ss: particle 0 ]\n   │ \n   │ ─ particle 1\n"

@@ -4,7 +4,9 @@
 //! owner, group, mode and hard links, never over an edit made meanwhile, and atomically (a
 //! crash or a kill mid-write leaves the original). A file named twice (by any path) is
 //! formatted once. `-` formats standard input to standard output. `--check` lists the
-//! files that would change and `--diff` shows how, without writing. Exit status: 0
+//! files that would change and `--diff` shows how, without writing. The report (the files
+//! that would change or cannot be formatted, and the summary) goes to standard output, or
+//! to standard error when `-` is among the files; the tool's own errors to standard error. Exit status: 0
 //! success, 1 a file would change (`--check`, `--diff`) or has syntax errors that prevent
 //! formatting, 2 usage or I/O error, or a file not written.
 
@@ -83,7 +85,22 @@ pub fn run(args: &FmtArgs) -> i32 {
         .par_iter()
         .map(|f| (input::display_name(f), format_one(f, args, &resolver)))
         .collect();
-    let color = crate::console::color_stderr();
+    // What the files are found to be (would change, cannot be formatted, the summary) is
+    // the report, on standard output; standard input's formatted text takes standard
+    // output when `-` is among the files, and the report goes to standard error then.
+    let to_stdout = !args.files.iter().any(|f| f == "-");
+    let say = |text: std::fmt::Arguments<'_>| {
+        if to_stdout {
+            crate::outln!("{text}");
+        } else {
+            crate::errln!("{text}");
+        }
+    };
+    let color = if to_stdout {
+        crate::console::color_stdout()
+    } else {
+        crate::console::color_stderr()
+    };
     let (mut changed, mut unchanged, mut broken) = (0, 0, 0);
     let (mut unreadable, mut unwritten) = (0, 0);
     for (name, outcome) in &outcomes {
@@ -94,7 +111,7 @@ pub fn run(args: &FmtArgs) -> i32 {
                 match diff {
                     // Escaped where it was made (`unified_diff`).
                     Some(d) => crate::console::out_data(|out| out.write_all(d.as_bytes())),
-                    None if args.check => crate::errln!("would reformat {name}"),
+                    None if args.check => say(format_args!("would reformat {name}")),
                     None => {}
                 }
             }
@@ -105,11 +122,16 @@ pub fn run(args: &FmtArgs) -> i32 {
                     source: text,
                     diagnostics: report,
                 };
-                let mut err = std::io::BufWriter::new(std::io::stderr().lock());
-                // Standard error is for people: if it is gone there is nobody to tell.
-                let _ = render::human(&mut err, &file, color).and_then(|()| err.flush());
-                drop(err);
-                crate::errln!("walls-fmt: {name} has syntax errors: not formatted");
+                if to_stdout {
+                    crate::console::out_data(|out| render::human(out, &file, color));
+                } else {
+                    let mut err = std::io::BufWriter::new(std::io::stderr().lock());
+                    // Standard error is for people: if it is gone there is nobody to tell.
+                    let _ = render::human(&mut err, &file, color).and_then(|()| err.flush());
+                }
+                say(format_args!(
+                    "walls-fmt: {name} has syntax errors: not formatted"
+                ));
             }
             Outcome::Unreadable(e) => {
                 unreadable += 1;
@@ -139,7 +161,7 @@ pub fn run(args: &FmtArgs) -> i32 {
             summary.push_str(&format!(", {n} {what}"));
         }
     }
-    crate::errln!("{summary}");
+    say(format_args!("{summary}"));
     if unreadable + unwritten > 0 {
         2
     } else if broken > 0 || ((args.check || args.diff) && changed > 0) {

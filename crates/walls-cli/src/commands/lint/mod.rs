@@ -9,8 +9,10 @@
 //! Exit status: 0 clean, 1 errors found (or warnings, with `--deny-warnings`), 2 usage
 //! or I/O error. An I/O error wins: a file that cannot be read (or a folder with no walls
 //! file, or a `.par` naming a missing one) makes the status 2 even when other files have
-//! findings, and every format reports it. Human output goes to standard error, machine
-//! output (json, sarif, github, gitlab) to standard output. Folders are walked as [`walk`] says.
+//! findings, and every format reports it. Findings go to standard output in every format
+//! (human, json, sarif, github, gitlab), the tool's own errors and warnings to standard
+//! error; human findings go to standard error only when standard output carries standard
+//! input's fixed text (`--fix -`). Folders are walked as [`walk`] says.
 //! `--fix`, `--unsafe-fixes` and `--diff` apply the diagnostics' fixes first (`fix.rs`).
 //! Each file is checked with the settings found for it ([`super::settings`]); the flags
 //! win over them.
@@ -39,7 +41,7 @@ use walls_model::Options;
     name = "walls-lint",
     version,
     about = "Check pkdgrav walls files for every mistake pkdgrav would reject or silently misread.",
-    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nHuman output goes to standard error; json, sarif, github and gitlab to standard output.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it, and with its walls file and initial conditions (achInFile, a .ss file) before the job: overlaps, steps per contact, wall speeds, outputs (R codes; the files it names are read only inside the folder named).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
+    after_help = "Exit status: 0 no errors, 1 errors found (or warnings, with --deny-warnings), 2 usage or I/O error (a file that cannot be read gives 2 even when others have errors).\nFindings go to standard output in every format (to standard error beside --fix -'s fixed text); the tool's own errors to standard error.\nA folder is walked (.gitignore respected): its files matching --include (default *.walls), its .par files (pkdgrav's parameter files; not ssdraw.par) and the walls files they name (achWallsFile).\nA .par file is checked as pkdgrav's reader and the --pkdgrav-build build read it, and with its walls file and initial conditions (achInFile, a .ss file) before the job: overlaps, steps per contact, wall speeds, outputs (R codes; the files it names are read only inside the folder named).\nSettings come from the nearest walls.toml, .walls.toml or pyproject.toml [tool.walls] above each file (docs/configuration.md); flags override them."
 )]
 pub struct LintArgs {
     /// Files or folders to check; `-` reads standard input.
@@ -348,7 +350,16 @@ pub fn run(args: &LintArgs) -> i32 {
         if diff {
             fix::write_diff_summary(&fixes)
         } else {
-            write_reports(args, &reports, &unreadable, fixing.map(|_| fixed))
+            // Standard output carries standard input's fixed text when there is one: the
+            // findings go beside it, to standard error, so the text stays the file's.
+            let stdout_taken = fixes.iter().any(|f| f.output.is_some());
+            write_reports(
+                args,
+                &reports,
+                &unreadable,
+                fixing.map(|_| fixed),
+                stdout_taken,
+            )
         }
     });
     if let Err(e) = written {
@@ -511,30 +522,40 @@ fn positive(s: &str) -> Result<f64, String> {
     }
 }
 
-/// Writes the report in the format `args` ask for; human output ends with a summary,
-/// which says how many fixes were applied when `fixed` gives their number.
+/// Writes the report in the format `args` ask for, on standard output (as ruff, flake8
+/// and shellcheck do: `walls-lint f > report.txt` keeps it), or for human output on
+/// standard error when `stdout_taken` (standard input's fixed text is on standard output).
+/// Human output ends with a summary, which says how many fixes were applied when `fixed`
+/// gives their number.
 fn write_reports(
     args: &LintArgs,
     reports: &[FileReport],
     unreadable: &[Unreadable],
     fixed: Option<usize>,
+    stdout_taken: bool,
 ) -> std::io::Result<()> {
     match args.format {
         Format::Human => {
             let color = match args.color {
                 Color::Always => true,
                 Color::Never => false,
-                Color::Auto => crate::console::color_stderr(),
+                Color::Auto if stdout_taken => crate::console::color_stderr(),
+                Color::Auto => crate::console::color_stdout(),
             };
-            // Standard error is unbuffered: ariadne writes a character at a time.
-            let mut err = std::io::BufWriter::new(std::io::stderr().lock());
+            // ariadne writes a character at a time: a buffer in front of either stream.
+            let stream: Box<dyn Write> = if stdout_taken {
+                Box::new(std::io::stderr().lock())
+            } else {
+                Box::new(std::io::stdout().lock())
+            };
+            let mut out = std::io::BufWriter::new(stream);
             for r in reports {
-                render::human(&mut err, r, color)?;
+                render::human(&mut out, r, color)?;
             }
             let s = render::summarize(reports);
             if s.errors + s.warnings + s.infos > 0 || reports.len() > 1 || fixed > Some(0) {
                 write!(
-                    err,
+                    out,
                     "{} error{}, {} warning{} in {} file{}",
                     s.errors,
                     plural(s.errors),
@@ -544,11 +565,11 @@ fn write_reports(
                     plural(reports.len())
                 )?;
                 match fixed {
-                    Some(n) => writeln!(err, "; {n} fixed")?,
-                    None => writeln!(err)?,
+                    Some(n) => writeln!(out, "; {n} fixed")?,
+                    None => writeln!(out)?,
                 }
             }
-            err.flush()
+            out.flush()
         }
         Format::Json => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());
