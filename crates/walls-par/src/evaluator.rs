@@ -156,6 +156,18 @@ pub const KEYS: &[(&str, Use)] = &[
     ("iOverlapOption", Use::NotYet(HARD_OPTION)),
 ];
 
+/// Whether walls-sim's rule for `name` holds in a build with (`dem`) or without DEM:
+/// DEM builds ignore `iOutcomes` (pkdgrav warns unless it is 0); the values walls-sim
+/// follows for `iForceOverrideOption` and `iCheckInterval` are the DEM builds' (a
+/// hard-sphere build stops on 2 and takes checkpoints).
+pub fn follows_alone(name: &str, dem: bool) -> bool {
+    match name {
+        "iOutcomes" => !dem,
+        "iForceOverrideOption" | "iCheckInterval" => dem,
+        _ => true,
+    }
+}
+
 /// What the evaluator does with `key`; `None` for a key it does not know.
 pub fn use_of(key: &str) -> Option<Use> {
     if ["dSlide", "dCollapse", "dCrush"]

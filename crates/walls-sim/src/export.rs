@@ -47,6 +47,8 @@ pub struct Export {
     pub build: walls_par::Build,
     /// The number of the last step (`nSteps`).
     pub last_step: u64,
+    /// The digits of the outputs' step numbers (`nDigits`).
+    pub digits: usize,
     /// What the user should know: the source's lines copied that name files the export
     /// does not carry, or whose physics walls-sim does not follow; a folder of
     /// `achOutName` not kept.
@@ -100,11 +102,26 @@ pub fn par_file(
         written.append_to_last(&format!("; {said}"));
         written.warnings.push(said);
     }
+    // Unless the source says otherwise, every output's name is as wide as the last one's,
+    // so that they sort in step order (R008).
+    let wide = last_step.to_string().len();
+    let digits = if written.given("nDigits") || outputs.ss.digits >= wide {
+        outputs.ss.digits
+    } else {
+        wide
+    };
     written.int(
         "nDigits",
-        outputs.ss.digits as i64,
+        digits as i64,
         None,
-        "pkdgrav's default",
+        &if digits == outputs.ss.digits {
+            "pkdgrav's default".to_string()
+        } else {
+            format!(
+                "the last step's {digits} digits (pkdgrav's default {} would make the last outputs' names wider than the first ones')",
+                outputs.ss.digits
+            )
+        },
     );
     if let Some(file) = names.cohesion {
         written.text(
@@ -348,6 +365,7 @@ pub fn par_file(
         par,
         build,
         last_step,
+        digits,
         warnings,
     })
 }
@@ -555,7 +573,7 @@ pub fn readme(export: &Export, names: &Names, particles: usize, outputs: &Output
     let build = export.build.names();
     let last = export.last_step;
     let name =
-        |step: u64| crate::io::particles::ss_file_name(&outputs.ss.base, outputs.ss.digits, step);
+        |step: u64| crate::io::particles::ss_file_name(&outputs.ss.base, export.digits, step);
     let written = if outputs.every == 0 {
         format!("the last step's, `{}`", name(last))
     } else {

@@ -160,7 +160,7 @@ pub enum Warning {
         /// When.
         t: f64,
     },
-    /// W106: a bounce off a wall that is not oscillating leaving faster than it came
+    /// W106: a bounce off a wall that neither oscillates nor spins leaving faster than it came
     /// (the first time).
     EnergyGain {
         /// The particle's index.

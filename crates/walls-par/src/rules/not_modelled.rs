@@ -47,7 +47,7 @@ pub(crate) fn check(file: &File, stopped: &[&str], out: &mut Vec<Diagnostic>) {
     let dem = file.build.has("DEM");
     for entry in file.entries.iter().filter(|e| file.wins(e)) {
         let name = entry.key.name;
-        if !follows_alone(name, dem) {
+        if !crate::evaluator::follows_alone(name, dem) {
             continue;
         }
         let message = match use_of(name) {
@@ -89,7 +89,7 @@ pub(crate) fn check(file: &File, stopped: &[&str], out: &mut Vec<Diagnostic>) {
             || file.given(name).is_some()
             || stopped.contains(&name)
             || crate::keys::registered(name, file.build).is_none()
-            || !follows_alone(name, dem)
+            || !crate::evaluator::follows_alone(name, dem)
         {
             continue;
         }
@@ -99,17 +99,5 @@ pub(crate) fn check(file: &File, stopped: &[&str], out: &mut Vec<Diagnostic>) {
             0..0,
             format!("`{name}` is not given, so pkdgrav takes its default {default}: {why}"),
         ));
-    }
-}
-
-/// Whether walls-sim's rule for `name` holds in a build with (`dem`) or without DEM:
-/// DEM builds ignore `iOutcomes` (pkdgrav warns unless it is 0); the values walls-sim
-/// follows for `iForceOverrideOption` and `iCheckInterval` are the DEM builds' (a
-/// hard-sphere build stops on 2 and takes checkpoints).
-fn follows_alone(name: &str, dem: bool) -> bool {
-    match name {
-        "iOutcomes" => !dem,
-        "iForceOverrideOption" | "iCheckInterval" => dem,
-        _ => true,
     }
 }

@@ -481,12 +481,19 @@ fn beyond_int(key: &str, text: &str) -> String {
 /// Reads a pkdgrav parameter file: the keys the evaluator follows into [`Params`], the
 /// others into its warnings ([`KEYS`]).
 pub fn read_par(text: &str) -> Result<Params, InputError> {
-    read_par_overridden(text, &[])
+    read_par_overridden(text, &[], None)
 }
 
 /// [`read_par`] for a run whose command line sets the keys `overridden`: the file's lines
-/// of them are not read (nor judged), as if the file left them out.
-pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, InputError> {
+/// of them are not read (nor judged), as if the file left them out. With `dem` (whether
+/// the run's build has DEM), a key whose one value walls-sim follows is not warned about
+/// where that build does not need the value (`iOutcomes` in a DEM build, which ignores it:
+/// [`walls_par::evaluator::follows_alone`]).
+pub fn read_par_overridden(
+    text: &str,
+    overridden: &[&str],
+    dem: Option<bool>,
+) -> Result<Params, InputError> {
     let mut lines = Lines::split(text)?;
     lines.by_key.retain(|k, _| !overridden.contains(k));
     lines.order.retain(|(_, k)| !overridden.contains(k));
@@ -565,6 +572,7 @@ pub fn read_par_overridden(text: &str, overridden: &[&str]) -> Result<Params, In
                 };
                 if let Some(x) = x
                     && !same(x)
+                    && dem.is_none_or(|dem| walls_par::evaluator::follows_alone(key, dem))
                 {
                     warn(Some(n), key, format!("{x} is not modelled: {why}"));
                 }
@@ -827,8 +835,8 @@ pub fn read_file_for(
         let message = format!("{}{help} [{}]{more}", first.message, first.code.id);
         return Err(FileError::input(path, error(at, message)));
     }
-    let mut params =
-        read_par_overridden(&text, overridden).map_err(|e| FileError::input(path, e))?;
+    let mut params = read_par_overridden(&text, overridden, Some(build.has("DEM")))
+        .map_err(|e| FileError::input(path, e))?;
     params.subnormals = super::in_file(path, std::mem::take(&mut params.subnormals));
     Ok(params)
 }

@@ -199,8 +199,10 @@ struct WallSet {
     damping: Vec<f64>,
     /// Each wall's normal and tangential restitutions, worked out once.
     restitutions: Vec<(Restitution, Restitution)>,
-    /// Whether each wall oscillates (a bounce off it may gain speed).
-    oscillating: Vec<bool>,
+    /// Whether each wall oscillates or spins: it does work on what touches it, so a
+    /// bounce off it may gain speed (its friction turns a spinning wall's speed into a
+    /// particle's).
+    driven: Vec<bool>,
     origins: Origins,
     /// The walls as they stand: placed once when no wall moves (the plan), else every
     /// step; reactive assemblies' walls every step.

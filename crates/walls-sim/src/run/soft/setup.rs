@@ -226,8 +226,8 @@ fn wall_set(
             .map(|m| (Restitution::new(m.eps_n), Restitution::new(m.eps_t)))
             .collect(),
         materials,
-        oscillating: (scene.iter())
-            .map(|w| w.motion.oscillation.amplitude != 0.0)
+        driven: (scene.iter())
+            .map(|w| w.motion.oscillation.amplitude != 0.0 || w.motion.ang_speed != 0.0)
             .collect(),
         origins,
         now,

@@ -764,7 +764,7 @@ pub(super) fn note_wall_contacts(
                                 bodies.states[place].particle.mass,
                                 rules.settings.dt,
                             ))
-                && !walls.oscillating[e.wall]
+                && !walls.driven[e.wall]
                 && !journal.once.gain
             {
                 journal.once.gain = true;
