@@ -1,7 +1,7 @@
 //! The shipped examples teach what they say: every walls file in `examples/` is
 //! lint-clean and formatted except `mistakes.walls`, whose mistakes are found; the drum is
-//! a run directory pkdgrav takes, and runs as a drum; each example is used by the README
-//! or a page of `docs/`.
+//! a run directory pkdgrav takes, and runs as a drum; the hopper mesh makes clean walls;
+//! each example is used by the README or a page of `docs/`.
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -159,4 +159,23 @@ fn every_example_is_used_by_the_readme_or_a_doc() {
             );
         }
     }
+}
+
+#[test]
+fn the_hopper_mesh_is_96_clean_triangle_walls() {
+    let out = run(
+        env!("CARGO_BIN_EXE_walls-mesh"),
+        &["hopper.stl", "--unit", "mm", "--max-walls", "100"],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.starts_with("# Made by walls-mesh from hopper.stl: 96 faces as 96 walls"),
+        "{text}"
+    );
+    assert_eq!(text.matches("wall type triangle").count(), 96);
 }
