@@ -104,10 +104,14 @@ def write_ss(path: Path, time: float, particles: Any) -> None:
         raise _error(f"cannot write {os.fsdecode(path)}: {e.strerror or e}") from e
 
 
-def _is_text(walls: Any) -> bool:
-    """Whether ``walls`` is a walls file's text rather than its path: a ``str`` with a
-    line break, or ``bytes``."""
-    return isinstance(walls, bytes) or (isinstance(walls, str) and "\n" in walls)
+def _text_of(walls: Union[Path, bytes]) -> Optional[bytes]:
+    """The walls file's text when ``walls`` is one rather than a path: ``bytes``, or a
+    ``str`` with a line break."""
+    if isinstance(walls, bytes):
+        return walls
+    if isinstance(walls, str) and "\n" in walls:
+        return walls.encode()
+    return None
 
 
 class RunResult:
@@ -226,12 +230,12 @@ def run(
     """
     with tempfile.TemporaryDirectory(prefix="walls-run-") as folder:
         walls_path: Optional[Path] = None
-        if walls is not None and _is_text(walls):
+        text = None if walls is None else _text_of(walls)
+        if text is not None:
             walls_path = os.path.join(folder, "walls.walls")
-            data = walls.encode() if isinstance(walls, str) else walls
             with open(walls_path, "wb") as f:
-                f.write(data)  # type: ignore[arg-type]
-        elif walls is not None:
+                f.write(text)
+        elif walls is not None and not isinstance(walls, bytes):
             walls_path = walls
         particles_path: Optional[Path] = None
         if isinstance(particles, (str, os.PathLike)):
@@ -303,38 +307,38 @@ def preview(
     motion puts them and the particles interpolated between their times. A walls file
     with errors raises ``walls.WallsError``.
     """
-    if _is_text(walls):
-        text: Union[str, bytes] = walls  # type: ignore[assignment]
-    else:
+    text = _text_of(walls)
+    if text is None and not isinstance(walls, bytes):
         try:
-            with open(walls, "rb") as f:  # type: ignore[arg-type]
+            with open(walls, "rb") as f:
                 text = f.read()
         except OSError as e:
-            raise _error(f"cannot read {os.fsdecode(walls)}: {e.strerror or e}") from e  # type: ignore[arg-type]
-    radii: List[float] = []
-    colors: List[int] = []
-    times: List[float] = [0.0]
-    positions = b""
+            raise _error(f"cannot read {os.fsdecode(walls)}: {e.strerror or e}") from e
+    given: Optional[Tuple[List[float], List[int], List[float], bytes]] = None
     if isinstance(particles, RunResult):
-        radii = particles.particles["radius"].tolist()
-        colors = particles.particles["color"].tolist()
-        times = particles.times.tolist()
-        positions = np.ascontiguousarray(particles.positions, dtype=np.float64).tobytes()
+        times: List[float] = particles.times.tolist()
+        positions = np.ascontiguousarray(particles.positions, dtype=np.float64)
+        given = (
+            particles.particles["radius"].tolist(),
+            particles.particles["color"].tolist(),
+            times,
+            positions.tobytes(),
+        )
         if until is None:
             until = times[-1]
         if frames is None:
             frames = len(times)
     elif particles is not None:
         records = _records(particles, "particles")
-        radii = records["radius"].tolist()
-        colors = records["color"].tolist()
-        positions = np.ascontiguousarray(records["pos"], dtype=np.float64).tobytes()
+        given = (
+            records["radius"].tolist(),
+            records["color"].tolist(),
+            [0.0],
+            np.ascontiguousarray(records["pos"], dtype=np.float64).tobytes(),
+        )
     page = _walls._preview(
-        text,
-        radii,
-        colors,
-        times,
-        positions,
+        text or b"",
+        given,
         0.0 if until is None else until,
         101 if frames is None else frames,
     )

@@ -16,20 +16,21 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// The most frames a page has, as `walls-sim preview --frames` allows.
 const MOST_FRAMES: i128 = 10_000;
 
-/// The page of the walls file `text` over times 0 to `until` in `frames` frames, with the
-/// particles of `radii` and `colors` at `times` (`positions`: three native doubles per
-/// particle per time, time after time), interpolated between them; no particles when
-/// `radii` is empty. A walls file with errors raises `WallsError` with them, as does a
-/// scene or particle with a number the page cannot draw.
+/// Particles along their trajectories as Python hands them over: each one's radius and
+/// colour, the times, and the positions (three native doubles per particle per time,
+/// time after time).
+type Given<'a> = (Vec<f64>, Vec<i64>, Vec<f64>, &'a [u8]);
+
+/// The page of the walls file `text` over times 0 to `until` in `frames` frames, with
+/// `particles` (if any) interpolated between their times. A walls file with errors
+/// raises `WallsError` with them, as does a scene or particle with a number the page
+/// cannot draw.
 #[pyfunction]
-#[pyo3(signature = (text, radii, colors, times, positions, until, frames))]
+#[pyo3(signature = (text, particles, until, frames))]
 fn _preview(
     py: Python<'_>,
     text: &Bound<'_, PyAny>,
-    radii: Vec<f64>,
-    colors: Vec<i64>,
-    times: Vec<f64>,
-    positions: &[u8],
+    particles: Option<Given<'_>>,
     until: &Bound<'_, PyAny>,
     frames: &Bound<'_, PyAny>,
 ) -> PyResult<String> {
@@ -45,23 +46,25 @@ fn _preview(
             &errors,
         ));
     }
-    let doubles: Vec<f64> = positions
-        .chunks_exact(8)
-        .map(|b| f64::from_ne_bytes(b.try_into().expect("8 bytes")))
-        .collect();
-    let particles = (!radii.is_empty()).then(|| Particles {
-        frames: doubles
-            .chunks_exact(3 * radii.len())
-            .map(|frame| {
-                frame
-                    .chunks_exact(3)
-                    .map(|v| Vector3::new(v[0], v[1], v[2]))
-                    .collect()
-            })
-            .collect(),
-        radii,
-        colors,
-        times,
+    let particles = particles.map(|(radii, colors, times, positions)| {
+        let doubles: Vec<f64> = positions
+            .chunks_exact(8)
+            .map(|b| f64::from_ne_bytes(b.try_into().expect("8 bytes")))
+            .collect();
+        Particles {
+            frames: doubles
+                .chunks_exact(3 * radii.len().max(1))
+                .map(|frame| {
+                    frame
+                        .chunks_exact(3)
+                        .map(|v| Vector3::new(v[0], v[1], v[2]))
+                        .collect()
+                })
+                .collect(),
+            radii,
+            colors,
+            times,
+        }
     });
     let mut page = Vec::new();
     py.detach(|| html::write(&mut page, &checked.scene, particles.as_ref(), until, frames))

@@ -178,6 +178,14 @@ fn push_states<'a>(out: &mut Vec<f64>, particles: impl Iterator<Item = Option<&'
     }
 }
 
+/// What `_run` returns: the report, the times, the states and the particles at the start.
+type Ran<'py> = (
+    Bound<'py, PyAny>,
+    Bound<'py, PyBytes>,
+    Bound<'py, PyBytes>,
+    Bound<'py, PyBytes>,
+);
+
 /// Runs `walls-sim run` on the walls file `walls` (None: the `.par` file's
 /// achWallsFile), the particles file `particles` (None: the command's default) and the
 /// `.par` file `par`, with `options` its keywords. Returns the report `--json` prints,
@@ -197,12 +205,7 @@ fn _run<'py>(
     particles: Option<&Bound<'py, PyAny>>,
     par: Option<&Bound<'py, PyAny>>,
     options: &Bound<'py, PyDict>,
-) -> PyResult<(
-    Bound<'py, PyAny>,
-    Bound<'py, PyBytes>,
-    Bound<'py, PyBytes>,
-    Bound<'py, PyBytes>,
-)> {
+) -> PyResult<Ran<'py>> {
     let path = |v: Option<&Bound<'py, PyAny>>| -> PyResult<Option<OsString>> {
         Ok(args::optional(v, args::path)?.map(Into::into))
     };
