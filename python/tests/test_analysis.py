@@ -14,7 +14,10 @@ import json
 import math
 import re
 import shutil
+import signal
 import subprocess
+import sys
+import time
 from pathlib import Path
 
 import numpy as np
@@ -280,3 +283,22 @@ def test_preview_refuses_bad_walls_and_bad_frames():
         walls.preview("no-such.walls")
     with pytest.raises(ValueError, match="frames must be an integer from 1 to 10000"):
         walls.preview(DROP, until=1.0, frames=0)
+
+
+def test_ctrl_c_stops_a_long_run():
+    script = (
+        "import walls\n"
+        "try:\n"
+        f"    walls.run({str(DROP)!r}, {str(BALL)!r}, gravity=(0, 0, -1), t_end=1e4,"
+        " dt=1e-5, max_steps=10**10, every=10**6)\n"
+        "except KeyboardInterrupt as e:\n"
+        "    print('interrupted:', e)\n"
+    )
+    with subprocess.Popen(
+        [sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    ) as child:
+        time.sleep(2)
+        assert child.poll() is None, "the run should still be going"
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=LIMIT)
+    assert out == "interrupted: walls.run was interrupted\n", err
