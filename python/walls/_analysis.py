@@ -74,14 +74,14 @@ def _records(particles: Any, name: str) -> "npt.NDArray[np.void]":
     out = np.zeros(array.shape, dtype=SS_DTYPE)
     for field in SS_DTYPE.names or ():
         given = np.asarray(array[field])
-        want = SS_DTYPE.fields[field][0] if SS_DTYPE.fields else None
-        kind = "iu" if want is not None and want.base.kind == "i" else "iuf"
-        if given.dtype.kind not in kind or given.shape != out[field].shape:
+        integers = out[field].dtype.kind == "i"
+        kinds = "iu" if integers else "iuf"
+        if given.dtype.kind not in kinds or given.shape != out[field].shape:
             raise TypeError(
-                f"{name}[{field!r}] must be {'integers' if kind == 'iu' else 'numbers'} "
+                f"{name}[{field!r}] must be {'integers' if integers else 'numbers'} "
                 f"of shape {out[field].shape}, not {given.dtype} of shape {given.shape}"
             )
-        if kind == "iu" and given.size and (given.min() < -(2**31) or given.max() >= 2**31):
+        if integers and given.size and (given.min() < -(2**31) or given.max() >= 2**31):
             raise ValueError(f"{name}[{field!r}] must fit 32 bits")
         out[field] = given
     return out
