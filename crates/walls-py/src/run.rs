@@ -18,7 +18,6 @@ use std::ffi::OsString;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use walls_cli::commands::sim::run::{self, Prepared, RunArgs};
 use walls_cli::commands::sim::{SimArgs, SimCommand};
-use walls_diagnostics::Severity;
 use walls_geometry::Particle;
 use walls_model::Options;
 
@@ -158,13 +157,12 @@ fn walls_errors(py: Python<'_>, prepared: &Prepared) -> PyErr {
         ..Options::default()
     };
     let checked = walls_ide::check_text(prepared.walls_text.to_string(), &options);
-    let errors: Vec<_> = checked
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity == Severity::Error)
-        .cloned()
-        .collect();
-    diagnostics::error(py, "the walls file has errors", &checked.text, &errors)
+    diagnostics::error(
+        py,
+        "the walls file has errors",
+        &checked.text,
+        &checked.errors(),
+    )
 }
 
 /// Appends each particle's position, velocity and spin (nine doubles; NaN for one no
