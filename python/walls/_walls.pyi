@@ -101,3 +101,22 @@ def _from_mesh(
 def _read_mesh(
     path: Union[str, "os.PathLike[str]"],
 ) -> Tuple[List[Tuple[float, float, float]], List[Tuple[int, int, int]], List[str]]: ...
+
+# The extension's side of walls.run, walls.read_ss, walls.write_ss and walls.preview
+# (python/walls/_analysis.py wraps their bytes in NumPy arrays).
+_PathArg = Union[str, "os.PathLike[str]"]
+
+def _run(
+    walls: Optional[_PathArg],
+    particles: Optional[_PathArg],
+    par: Optional[_PathArg],
+    options: Dict[str, Any],
+) -> Tuple[Dict[str, Any], bytes, bytes, bytes]: ...
+def _read_ss(path: _PathArg) -> Tuple[float, bytes, List[str]]: ...
+def _ss_bytes(time: float, records: bytes) -> bytes: ...
+def _preview(
+    text: Union[str, bytes],
+    particles: Optional[Tuple[List[float], List[int], List[float], bytes]],
+    until: float,
+    frames: int,
+) -> str: ...

@@ -22,7 +22,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 
 /// The one check of a file (`walls_ide::check_text` / `check_bytes`), with the GIL
 /// released.
-fn check(py: Python<'_>, text: Text, options: &Options) -> Checked {
+pub fn check(py: Python<'_>, text: Text, options: &Options) -> Checked {
     py.detach(|| match text {
         Text::Str(text) => walls_ide::check_text(text, options),
         Text::Bytes(bytes) => walls_ide::check_bytes(bytes, options),

@@ -5,8 +5,11 @@
 //! `walls.scene` over text; [`diagnostics`] is `walls.WallsError` and the diagnostics as
 //! `walls-lint --format json` gives them; [`tools`] runs the command-line tools for the
 //! wheel's console scripts; [`build`] is `walls.Wall` and the builder's calls; [`args`]
-//! converts the arguments of them all, strictly and in one place. The work runs with the
-//! GIL released, so threads may lint files side by side.
+//! converts the arguments of them all, strictly and in one place; [`run`] is
+//! `walls.run` (a run of `walls-sim run`), [`ss`] `walls.read_ss` and `walls.write_ss`,
+//! [`preview`] `walls.preview` (the page of `walls-sim preview --out page.html`), whose
+//! NumPy side is `python/walls/_analysis.py`. The work runs with the GIL released, so
+//! threads may lint files side by side.
 //!
 //! Each file of the module adds its own functions in its `register`; a new one is a
 //! `mod` line and a `register` call in [`_walls`].
@@ -15,6 +18,9 @@ mod api;
 mod args;
 mod build;
 mod diagnostics;
+mod preview;
+mod run;
+mod ss;
 mod tools;
 
 use pyo3::prelude::*;
@@ -27,5 +33,8 @@ fn _walls(m: &Bound<'_, PyModule>) -> PyResult<()> {
     api::register(m)?;
     build::register(m)?;
     tools::register(m)?;
+    run::register(m)?;
+    ss::register(m)?;
+    preview::register(m)?;
     Ok(())
 }

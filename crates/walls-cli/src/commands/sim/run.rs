@@ -152,6 +152,13 @@ pub fn prepare(args: &RunArgs, doing: Option<&str>) -> Result<Prepared, String> 
     })
 }
 
+/// The steps after which a run with `settings` outputs its particles, outputs every
+/// `every` steps: the multiples of `every` (none when it is 0) and a counted run's last
+/// step, as pkdgrav (the trajectory of `--out`, and `walls.run`'s arrays).
+pub fn output_step(every: u64, settings: &Settings) -> impl Fn(u64) -> bool + '_ {
+    move |step| (every > 0 && step.is_multiple_of(every)) || Some(step) == settings.last_step
+}
+
 fn simulate(args: &RunArgs) -> Result<i32, String> {
     use walls_sim::run::run_watched;
     // Before the particles are read: a run keeps less resident in ordinary pages.
@@ -170,9 +177,7 @@ fn simulate(args: &RunArgs) -> Result<i32, String> {
         ..
     } = prepare(args, Some("running"))?;
     let scene = &walls[..];
-    // Outputs at the multiples of `every` and at a counted run's last step, as pkdgrav.
-    let output =
-        |step: u64| (every > 0 && step.is_multiple_of(every)) || Some(step) == settings.last_step;
+    let output = output_step(every, &settings);
     let first = settings.start_step;
     // The WALLSREACT lines at the output steps, or, when the `.par` file sets
     // `iRedOutInterval`, at pkdgrav's reduced outputs: the start step and every
