@@ -109,7 +109,10 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
     }
     let text = String::from_utf8_lossy(&bytes);
     if text.starts_with(&PARTICLE_COLUMNS[..3].join(",")) {
-        let rows = read_particles(&text).map_err(|e| format!("{name}: {e}"))?;
+        let rows = read_particles(&text).map_err(|e| match e.line() {
+            Some(line) => format!("{name}:{line}: {}", e.message()),
+            None => format!("{name}: {e}"),
+        })?;
         return Ok(trajectory_snapshots(&rows));
     }
     let read = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
@@ -144,7 +147,7 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
                 pos: row.pos,
                 vel: row.vel,
                 spin: row.spin,
-                color: 3,
+                color: row.color,
                 index: i32::try_from(row.particle).unwrap_or(i32::MAX),
             });
         }
@@ -406,7 +409,7 @@ mod tests {
         std::fs::write(
             &csv,
             format!(
-                "{header}\n0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0\n0,0,1,1,1,0.1,1,0,0,0,0,0,0,0,0\n5,0.25,0,1,1,0.1,0,0,2,0,0,0,0,0,0\n5,0.25,1,0,1,0.1,1,0,0,0,0,0,0,0,0\n"
+                "{header}\n0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0,5\n0,0,1,1,1,0.1,1,0,0,0,0,0,0,0,0,2\n5,0.25,0,1,1,0.1,0,0,2,0,0,0,0,0,0,5\n5,0.25,1,0,1,0.1,1,0,0,0,0,0,0,0,0,2\n"
             ),
         )
         .unwrap();
@@ -417,5 +420,8 @@ mod tests {
         // Particle 1 has left the run by step 5.
         assert_eq!(snapshots[1].particles.len(), 1);
         assert_eq!(snapshots[1].particles[0].pos.z, 2.0);
+        // Each keeps its pkdgrav colour.
+        assert_eq!(snapshots[0].particles[1].color, 2);
+        assert_eq!(snapshots[1].particles[0].color, 5);
     }
 }
