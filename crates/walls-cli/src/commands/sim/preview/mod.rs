@@ -64,8 +64,9 @@ pub struct PreviewArgs {
     /// its step, a single picture at the last line.
     #[arg(long, value_name = "FILE")]
     pub reactive: Option<PathBuf>,
-    /// The units shown (SVG's time and scale bar) and written (VTK): auto shows
-    /// pkdgrav's and the file's own; VTK in cgs or si is converted.
+    /// The units shown (the time and the scale bar of SVG and HTML) and written (VTK):
+    /// auto shows a walls file that sets units in them (times in seconds), another in
+    /// pkdgrav's; VTK in cgs or si is converted.
     #[arg(long, value_enum, default_value_t = System::Auto)]
     pub units: System,
     /// The particles.csv that `walls-sim run --out` writes, as a movie: the same as

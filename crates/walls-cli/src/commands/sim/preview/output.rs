@@ -94,7 +94,7 @@ pub(super) fn write(
     outputs: &Outputs,
 ) -> Result<(), String> {
     let frames = &movie.frames[..];
-    let readout = Readout::new(args.units, &scene.units);
+    let readout = Readout::picture(args.units, &scene.units);
     let view = svg_view(args, ssdraw, movie);
     let (Some(kind), Some(path)) = (kind, args.out.as_deref()) else {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -244,6 +244,7 @@ fn tell(args: &PreviewArgs, files: &[&Path], frames: usize, series: Option<usize
         (None, _) => shown,
         (Some(m), Some(n)) => format!("{shown}, 1 in every {n} of {}", many(m, "output")),
         (Some(m), None) if frames == m => format!("{shown}, one per output"),
+        (Some(m), None) if args.frames.is_some() => format!("{shown} of {m} outputs, evenly spaced"),
         (Some(m), None) => format!(
             "{shown} of {m} outputs, evenly spaced; --frames N for up to N (at most 10000), --every N for 1 in every N"
         ),
