@@ -609,7 +609,10 @@ fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
         .status()
         .unwrap();
     assert_eq!(status.code(), Some(0));
-    assert_eq!(whole_rows(&out.join("particles.csv"), PARTICLE_FIELDS), 1 + 3);
+    assert_eq!(
+        whole_rows(&out.join("particles.csv"), PARTICLE_FIELDS),
+        1 + 3
+    );
     // A pipe whose reader has gone: every warning write fails.
     std::fs::remove_dir_all(&out).unwrap();
     let mut child = Command::new(&sim)

@@ -244,7 +244,9 @@ fn tell(args: &PreviewArgs, files: &[&Path], frames: usize, series: Option<usize
         (None, _) => shown,
         (Some(m), Some(n)) => format!("{shown}, 1 in every {n} of {}", many(m, "output")),
         (Some(m), None) if frames == m => format!("{shown}, one per output"),
-        (Some(m), None) if args.frames.is_some() => format!("{shown} of {m} outputs, evenly spaced"),
+        (Some(m), None) if args.frames.is_some() => {
+            format!("{shown} of {m} outputs, evenly spaced")
+        }
         (Some(m), None) => format!(
             "{shown} of {m} outputs, evenly spaced; --frames N for up to N (at most 10000), --every N for 1 in every N"
         ),
