@@ -198,6 +198,22 @@ fn a_run_with_one_output_is_one_picture() {
     assert!(out.status.success(), "{}", stderr(&out));
     assert_eq!(frames(&read(dir.path(), "one.svg")), 1);
     assert_eq!(stderr(&out), "");
+    // --every picks among its one output.
+    let out = walls_sim(
+        dir.path(),
+        &[
+            "preview",
+            "floor.walls",
+            "--particles",
+            "run",
+            "--every",
+            "5",
+            "--out",
+            "e.svg",
+        ],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(frames(&read(dir.path(), "e.svg")), 1);
 }
 
 #[test]

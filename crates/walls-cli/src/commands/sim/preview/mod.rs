@@ -191,7 +191,9 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
                 .into(),
         );
     }
-    if let (false, Some(n)) = (series, args.every) {
+    // A run's one output (it has a step) is all of its outputs --every picks from.
+    let output = snapshots.first().is_some_and(|s| s.step.is_some());
+    if let (false, false, Some(n)) = (series, output, args.every) {
         return Err(format!(
             "--every {n} picks among a run's outputs, and the particles given are one set: --frames N --until T makes frames of it"
         ));
