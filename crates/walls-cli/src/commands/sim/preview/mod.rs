@@ -16,6 +16,9 @@ use std::path::{Path, PathBuf};
 use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
 
+/// The most frames `--frames` asks for.
+const MOST_FRAMES: u64 = 10000;
+
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
 pub struct PreviewArgs {
@@ -88,7 +91,7 @@ pub struct PreviewArgs {
     /// Frames: of one set of particles, N from --time to --until (default 1); of a
     /// run's outputs, at most N of them evenly spaced, the first and the last among
     /// them (default 300).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=10000))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=MOST_FRAMES))]
     pub frames: Option<u64>,
     /// Of a run's outputs, every Nth (the first, the N+1th…) however many that makes,
     /// rather than at most 300 evenly spaced.

@@ -248,7 +248,8 @@ fn tell(args: &PreviewArgs, files: &[&Path], frames: usize, series: Option<usize
             format!("{shown} of {m} outputs, evenly spaced")
         }
         (Some(m), None) => format!(
-            "{shown} of {m} outputs, evenly spaced; --frames N for up to N (at most 10000), --every N for 1 in every N"
+            "{shown} of {m} outputs, evenly spaced; --frames N for up to N (at most {}), --every N for 1 in every N",
+            super::MOST_FRAMES
         ),
     };
     crate::errln!(
