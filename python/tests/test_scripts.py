@@ -164,7 +164,7 @@ def test_ctrl_c_stops_a_long_run_on_whole_rows(tmp_path):
     assert json.loads(stdout)["stopped"] == "interrupted"
     assert b": interrupted" in stderr
     rows = csv.read_text().splitlines()
-    assert len(rows) > 100 and all(len(row.split(",")) == 15 for row in rows)
+    assert len(rows) > 100 and all(len(row.split(",")) == 16 for row in rows)
 
 
 def frame(message) -> bytes:

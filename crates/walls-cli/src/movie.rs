@@ -3,6 +3,9 @@
 //! folder), one snapshot per output, and the frames built from them: the walls where
 //! they were at each snapshot's time, reactive walls placed from the run's
 //! `WALLSREACTviz.out` by step.
+//!
+//! A run's outputs can be thousands (a step's worth each): a movie shows at most
+//! [`MOVIE_FRAMES`] of them, evenly spaced, unless more are asked for ([`Pick`]).
 
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
@@ -109,7 +112,10 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
     }
     let text = String::from_utf8_lossy(&bytes);
     if text.starts_with(&PARTICLE_COLUMNS[..3].join(",")) {
-        let rows = read_particles(&text).map_err(|e| format!("{name}: {e}"))?;
+        let rows = read_particles(&text).map_err(|e| match e.line() {
+            Some(line) => format!("{name}:{line}: {}", e.message()),
+            None => format!("{name}: {e}"),
+        })?;
         return Ok(trajectory_snapshots(&rows));
     }
     let read = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
@@ -144,12 +150,62 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
                 pos: row.pos,
                 vel: row.vel,
                 spin: row.spin,
-                color: 3,
+                color: row.color,
                 index: i32::try_from(row.particle).unwrap_or(i32::MAX),
             });
         }
     }
     out
+}
+
+/// The most frames a movie of a run's outputs shows unless more are asked for
+/// (`walls-sim preview --frames N`, `--every N`; the preview's help says this number):
+/// ten seconds at 30 frames a second, an animated SVG of a few MB for a few hundred
+/// particles (all 4,882 outputs of a two-second run made one of 340 MB).
+pub const MOVIE_FRAMES: usize = 300;
+
+/// Which of a run's outputs a movie shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pick {
+    /// At most this many (at least 1), evenly spaced, the first and the last among them
+    /// (all of them when there are no more).
+    AtMost(usize),
+    /// Every Nth (N at least 1): the first, the N+1th, the 2N+1th…
+    Every(usize),
+}
+
+/// `snapshots` sorted as [`frames`] sorts them (by time, a snapshot without one at
+/// `t0`), and of them those `pick` keeps.
+pub fn pick(snapshots: Vec<Snapshot>, t0: f64, pick: Pick) -> Vec<Snapshot> {
+    let sorted = by_time(snapshots, t0).into_iter().map(|(_, s)| s);
+    let m = sorted.len();
+    match pick {
+        Pick::Every(n) => sorted.step_by(n.max(1)).collect(),
+        Pick::AtMost(n) if n >= m => sorted.collect(),
+        Pick::AtMost(n) => {
+            // Output k·(m − 1)/(n − 1) rounded, k = 0 … n − 1 (the first for n = 1):
+            // increasing by at least one, as m > n.
+            let (n, last) = (n.max(1) as u128, m as u128 - 1);
+            let at = |k: u128| (k * last + (n - 1) / 2).checked_div(n - 1).unwrap_or(0);
+            let mut next = (0..n).map(at).peekable();
+            sorted
+                .enumerate()
+                .filter(|&(i, _)| next.next_if_eq(&(i as u128)).is_some())
+                .map(|(_, s)| s)
+                .collect()
+        }
+    }
+}
+
+/// `snapshots` by time (a snapshot without one at `t0`), then by step, each with its
+/// time.
+fn by_time(snapshots: Vec<Snapshot>, t0: f64) -> Vec<(f64, Snapshot)> {
+    let mut snapshots: Vec<(f64, Snapshot)> = snapshots
+        .into_iter()
+        .map(|s| (s.t.unwrap_or(t0), s))
+        .collect();
+    snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
+    snapshots
 }
 
 /// The steps of a `WALLSREACTviz.out`: its walls' placements by step label (a label on
@@ -243,11 +299,7 @@ pub fn frames(
     viz: Option<&VizSteps>,
     segments: usize,
 ) -> Movie {
-    let mut snapshots: Vec<(f64, Snapshot)> = snapshots
-        .into_iter()
-        .map(|s| (s.t.unwrap_or(t0), s))
-        .collect();
-    snapshots.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.step.cmp(&b.1.step)));
+    let snapshots = by_time(snapshots, t0);
     let times: Vec<f64> = snapshots.iter().map(|(t, _)| t + wall_offset).collect();
     let decoded = walls_geometry::decode(scene);
     let all = snapshots.iter().flat_map(|(_, s)| &s.particles);
@@ -341,6 +393,37 @@ mod tests {
     }
 
     #[test]
+    fn a_movie_picks_among_the_outputs() {
+        let outputs = |m: u64| -> Vec<Snapshot> {
+            // Given last to first: the picks are by time.
+            (0..m)
+                .rev()
+                .map(|k| Snapshot {
+                    t: Some(k as f64),
+                    step: Some(k),
+                    particles: Vec::new(),
+                })
+                .collect()
+        };
+        let steps = |m: u64, how: Pick| -> Vec<u64> {
+            let picked = pick(outputs(m), 0.0, how);
+            picked.iter().map(|s| s.step.unwrap()).collect()
+        };
+        assert_eq!(steps(10, Pick::AtMost(4)), [0, 3, 6, 9]);
+        assert_eq!(steps(10, Pick::AtMost(1)), [0]);
+        assert_eq!(steps(3, Pick::AtMost(300)), [0, 1, 2]);
+        assert_eq!(steps(10, Pick::Every(4)), [0, 4, 8]);
+        assert_eq!(steps(10, Pick::Every(usize::MAX)), [0]);
+        assert_eq!(steps(0, Pick::AtMost(5)), Vec::<u64>::new());
+        // The default cap: at most MOVIE_FRAMES, distinct, the first and the last.
+        let capped = steps(4882, Pick::AtMost(MOVIE_FRAMES));
+        assert_eq!(capped.len(), MOVIE_FRAMES);
+        assert_eq!((capped[0], capped[MOVIE_FRAMES - 1]), (0, 4881));
+        assert!(capped.windows(2).all(|w| w[0] < w[1]));
+        assert_eq!(steps(301, Pick::AtMost(300)).len(), 300);
+    }
+
+    #[test]
     fn a_bad_file_is_named() {
         let dir = tempfile::tempdir().unwrap();
         let bad = dir.path().join("ss.00100");
@@ -406,7 +489,7 @@ mod tests {
         std::fs::write(
             &csv,
             format!(
-                "{header}\n0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0\n0,0,1,1,1,0.1,1,0,0,0,0,0,0,0,0\n5,0.25,0,1,1,0.1,0,0,2,0,0,0,0,0,0\n5,0.25,1,0,1,0.1,1,0,0,0,0,0,0,0,0\n"
+                "{header}\n0,0,0,1,1,0.1,0,0,0,0,0,0,0,0,0,5\n0,0,1,1,1,0.1,1,0,0,0,0,0,0,0,0,2\n5,0.25,0,1,1,0.1,0,0,2,0,0,0,0,0,0,5\n5,0.25,1,0,1,0.1,1,0,0,0,0,0,0,0,0,2\n"
             ),
         )
         .unwrap();
@@ -417,5 +500,8 @@ mod tests {
         // Particle 1 has left the run by step 5.
         assert_eq!(snapshots[1].particles.len(), 1);
         assert_eq!(snapshots[1].particles[0].pos.z, 2.0);
+        // Each keeps its pkdgrav colour.
+        assert_eq!(snapshots[0].particles[1].color, 2);
+        assert_eq!(snapshots[1].particles[0].color, 5);
     }
 }

@@ -478,6 +478,9 @@ fn rest_of(stream: Option<impl Read>) -> String {
     text
 }
 
+/// The fields of a row of `particles.csv`.
+const PARTICLE_FIELDS: usize = walls_sim::io::trajectory::PARTICLE_COLUMNS.len();
+
 /// Every line of `path` has `columns` fields; the number of rows.
 fn whole_rows(path: &Path, columns: usize) -> usize {
     let text = std::fs::read_to_string(path).unwrap();
@@ -525,7 +528,7 @@ fn an_interrupted_run_ends_its_outputs_on_whole_rows_and_exits_1() {
         stderr.contains("particles.csv") && stderr.contains("walls.csv"),
         "{stderr}"
     );
-    assert!(whole_rows(&csv, 15) > 100);
+    assert!(whole_rows(&csv, PARTICLE_FIELDS) > 100);
     // The step the message names is the last row's.
     let text = std::fs::read_to_string(&csv).unwrap();
     let last_row = text.lines().last().unwrap();
@@ -565,13 +568,16 @@ fn a_run_whose_output_fails_stops_keeping_the_whole_rows_written_and_exits_2() {
     // The message names the step being written, the file that failed, where the outputs
     // end and every file.
     let particles = out.join("particles.csv");
-    let rows = whole_rows(&particles, 15);
+    let rows = whole_rows(&particles, PARTICLE_FIELDS);
     let text = std::fs::read_to_string(&particles).unwrap();
     let last = text.lines().last().unwrap().split(',').next().unwrap();
     let failed = last.parse::<u64>().unwrap() + 1;
+    // Its time, 1e-4 a step, as the message writes it (no trailing zero: 0.154).
+    let t = format!("0.{failed:04}");
+    let t = t.trim_end_matches('0');
     assert!(
         stderr.contains(&format!(
-            "error: at output step {failed} (t = 0.{failed:04}): cannot write out/particles.csv: File too large"
+            "error: at output step {failed} (t = {t}): cannot write out/particles.csv: File too large"
         )) && stderr.contains(&format!(
             "the outputs in out end at output step {last} (t = "
         )) && stderr.contains("out/particles.csv, out/walls.csv"),
@@ -609,7 +615,10 @@ fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
         .status()
         .unwrap();
     assert_eq!(status.code(), Some(0));
-    assert_eq!(whole_rows(&out.join("particles.csv"), 15), 1 + 3);
+    assert_eq!(
+        whole_rows(&out.join("particles.csv"), PARTICLE_FIELDS),
+        1 + 3
+    );
     // A pipe whose reader has gone: every warning write fails.
     std::fs::remove_dir_all(&out).unwrap();
     let mut child = Command::new(&sim)
@@ -634,7 +643,7 @@ fn a_run_with_its_standard_streams_closed_still_writes_its_outputs() {
     let status = child.wait().unwrap();
     // The overlap stop is exit 1; stdout gone ends quietly (0); never 101.
     assert!(matches!(status.code(), Some(0 | 1)), "{status:?}");
-    assert!(whole_rows(&out.join("particles.csv"), 15) > 1);
+    assert!(whole_rows(&out.join("particles.csv"), PARTICLE_FIELDS) > 1);
 }
 
 /// `walls-sim run --json` over 2,000 particles falling onto a floor, with standard output

@@ -7,7 +7,8 @@
 //! A walls file that sets `lengthunit 6.68459e-14` speaks in centimetres.
 //! [`Readout::new`] picks what to show: with [`System::Auto`] pkdgrav's number and,
 //! when the file sets units, the same in the file's own (`2.927e-7 (1.47 s)`);
-//! otherwise only the system asked for. When a file's unit is within 1 % of the
+//! otherwise only the system asked for; [`Readout::picture`], a picture's, shows such a
+//! file in its physical units alone (`t = 1.47 s`). When a file's unit is within 1 % of the
 //! system's (`lengthunit 6.68445e-14` for the 6.68459e-14 of a centimetre), the file's
 //! factor is used, so that what the file says reads back as written (5.5 cm, not
 //! 5.49988 cm).
@@ -213,6 +214,22 @@ impl Readout {
                 scale: Scale::physical(true, file),
                 with_pkdgrav: false,
             },
+        }
+    }
+
+    /// The readout of a picture (`walls-sim preview`'s labels, its HTML page) in
+    /// `system` for a file whose units are `file`: as [`Readout::new`], except that with
+    /// [`System::Auto`] a file that sets units is shown in physical units alone, as its
+    /// reader thinks of it: times in seconds (`t = 1.47 s`, whether or not it sets a
+    /// `timeunit`), lengths in metres when its `lengthunit` is a metre, else in
+    /// centimetres, each unit near the file's taken as [`System::Cgs`] takes it.
+    pub fn picture(system: System, file: &Units) -> Readout {
+        match system {
+            System::Auto if file.are_set() => Readout {
+                scale: Scale::physical(Scale::of_file(file).length.name == "m", file),
+                with_pkdgrav: false,
+            },
+            _ => Readout::new(system, file),
         }
     }
 

@@ -79,8 +79,9 @@ pub struct MovieOptions {
 /// Writes the page: the walls of `scene` (and `particles`, if given) over times 0 to
 /// `t_end`, as a movie of `frames` evenly spaced frames (at least two; one frame, or
 /// `t_end` ≤ 0, shows t = 0 only), each wall where its motion puts it and each particle
-/// interpolated linearly between the times of `particles`. Times are labelled in the
-/// file's units beside pkdgrav's ([`System::Auto`]).
+/// interpolated linearly between the times of `particles`. Times are labelled as a
+/// picture labels them by default ([`Readout::picture`] of [`System::Auto`]: in seconds
+/// when the file sets units).
 pub fn write(
     out: &mut impl io::Write,
     scene: &Scene,
@@ -121,7 +122,7 @@ pub fn write(
         })
         .collect();
     let options = MovieOptions {
-        readout: Readout::new(System::Auto, &scene.units),
+        readout: Readout::picture(System::Auto, &scene.units),
         trails: None,
         title: "walls preview".to_string(),
     };

@@ -34,6 +34,8 @@ fn written_rows_read_back_the_same() {
         .collect();
     states[1].particle.spin = Vector3::new(1.5, f64::MIN_POSITIVE, -0.1);
     states[1].alive = false;
+    // Stuck to wall 1: pkdgrav's colour −1 − 1.
+    states[1].particle.color = -2;
     let mut out = Trajectory::new(Vec::new(), Vec::new()).unwrap();
     out.record(0, 0.0, &states, &floor, &[]).unwrap();
     out.record(100, 0.1 + 0.2, &states, &floor, &[]).unwrap();
@@ -47,6 +49,7 @@ fn written_rows_read_back_the_same() {
         pos: Vector3::new(-1.0, 2.0, 1e10),
         vel: Vector3::zeros(),
         spin: Vector3::new(0.0, -0.0, 4.0),
+        color: 12,
     };
     out.write_particle(&extra).unwrap();
     let (particles, walls) = out.finish().unwrap();
@@ -106,6 +109,40 @@ fn the_readers_say_what_is_wrong() {
         ReadError::NotANumber { line: 2, column: 4 }
     );
     assert_eq!(read_particles(header), Ok(Vec::new()));
+    // A file written before the `color` column: its particles take the default colour.
+    let old = read_particles(&format!("{header}{good}")).unwrap();
+    assert_eq!(old[0].color, walls_sim::io::particles::DEFAULT_COLOR);
+    // With the column, a colour that is not pkdgrav's is refused at its line.
+    let header = header.replace("wz\n", "wz,color\n");
+    let colored = |c: &str| {
+        read_particles(&format!(
+            "{header}{}",
+            good.replace("0\n", &format!("0,{c}\n"))
+        ))
+    };
+    assert_eq!(colored("-4").unwrap()[0].color, -4);
+    for bad in ["256", "2.5", "1e12", "-3e9"] {
+        let e = colored(bad).unwrap_err();
+        assert_eq!(
+            e,
+            ReadError::NotAColor {
+                line: 2,
+                cell: bad.into()
+            }
+        );
+        assert!(
+            e.to_string()
+                .starts_with(&format!("line 2: `color` is `{bad}`")),
+            "{e}"
+        );
+    }
+    assert_eq!(
+        colored("red").unwrap_err(),
+        ReadError::NotAColor {
+            line: 2,
+            cell: "red".into()
+        }
+    );
     assert_eq!(
         read_walls("step,t,wall,x,y\n"),
         Err(ReadError::NotATrajectory { what: "walls.csv" })

@@ -119,7 +119,7 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
                         error(line(), format!("`color` is `{field}`, not an integer"))
                     })?
                 }
-                None => 3,
+                None => DEFAULT_COLOR,
             },
             index: n as i32,
         };
@@ -189,7 +189,11 @@ pub fn check(p: &Particle) -> Result<(), String> {
 
 /// The largest colour pkdgrav's tools draw (docs/spec.md §1: 0 to 255; a negative colour
 /// means stuck to a wall).
-const COLOR_MAX: i32 = 255;
+pub const COLOR_MAX: i32 = 255;
+
+/// The colour of a particle whose file gives none (a CSV without a `color` column, a
+/// `particles.csv` written before it had one): 3, green in ssdraw's palette.
+pub const DEFAULT_COLOR: i32 = 3;
 
 /// A cursor over big-endian XDR data that reports the byte offset of a short read.
 struct Xdr<'a> {

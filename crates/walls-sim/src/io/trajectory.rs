@@ -1,8 +1,10 @@
 //! Trajectory output (`walls-sim run --out DIR --every N`): the particles and the walls'
 //! origins at step 0 and every N steps after, as two CSV files in DIR.
 //!
-//! * `particles.csv`: `step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz`, one
-//!   row per particle per output step;
+//! * `particles.csv`: `step,t,particle,alive,mass,radius,x,y,z,vx,vy,vz,wx,wy,wz,color`,
+//!   one row per particle per output step, `color` pkdgrav's colour (ssdraw's palette,
+//!   docs/pkdgrav-physics.md §16, as the input particles gave it; a file written before
+//!   the column was added reads with [`DEFAULT_COLOR`]);
 //! * `walls.csv`: `step,t,wall,x,y,z`, where each wall's origin is (docs/spec.md §1
 //!   "Motion"; a reactive wall's where its assembly has moved it).
 //!
@@ -14,6 +16,7 @@
 //! writes them and [`read_particles`] and [`read_walls`] read them back.
 
 use crate::bodies::State;
+use crate::io::particles::{COLOR_MAX, DEFAULT_COLOR};
 use nalgebra::Vector3;
 use std::io::{self, Write};
 use walls_geometry::{Particle, Wall};
@@ -21,9 +24,9 @@ use walls_geometry::{Particle, Wall};
 type Vec3 = Vector3<f64>;
 
 /// The columns of `particles.csv`.
-pub const PARTICLE_COLUMNS: [&str; 15] = [
+pub const PARTICLE_COLUMNS: [&str; 16] = [
     "step", "t", "particle", "alive", "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx",
-    "wy", "wz",
+    "wy", "wz", "color",
 ];
 
 /// The columns of `walls.csv`.
@@ -50,6 +53,8 @@ pub struct ParticleRow {
     pub vel: Vec3,
     /// Its spin.
     pub spin: Vec3,
+    /// Its pkdgrav colour (negative: stuck to wall −1 − color).
+    pub color: i32,
 }
 
 impl ParticleRow {
@@ -70,6 +75,7 @@ impl ParticleRow {
             pos: p.pos,
             vel: p.vel,
             spin: p.spin,
+            color: p.color,
         }
     }
 
@@ -85,6 +91,7 @@ impl ParticleRow {
         for v in [&self.pos, &self.vel, &self.spin] {
             row.extend(v.iter().map(f64::to_string));
         }
+        row.push(self.color.to_string());
         row
     }
 }
@@ -252,17 +259,45 @@ pub enum ReadError {
         /// The column, counting from 1.
         column: usize,
     },
+    /// A `color` cell is not one of pkdgrav's colours: an integer up to
+    /// [`COLOR_MAX`] (negative for a particle stuck to a wall).
+    NotAColor {
+        /// The line, counting from 1 (the header is line 1).
+        line: usize,
+        /// The cell as written.
+        cell: String,
+    },
+}
+
+impl ReadError {
+    /// The line it is at, counting from 1 (none for a header that is not a
+    /// trajectory's).
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            ReadError::NotATrajectory { .. } => None,
+            ReadError::NotANumber { line, .. } | ReadError::NotAColor { line, .. } => Some(*line),
+        }
+    }
+
+    /// What is wrong, without the line.
+    pub fn message(&self) -> String {
+        match self {
+            ReadError::NotATrajectory { what } => {
+                format!("not a trajectory (the {what} of walls-sim run --out)")
+            }
+            ReadError::NotANumber { column, .. } => format!("column {column} is not a number"),
+            ReadError::NotAColor { cell, .. } => format!(
+                "`color` is `{cell}`, not one of pkdgrav's colours (an integer up to {COLOR_MAX}; negative: stuck to wall −1 − color)"
+            ),
+        }
+    }
 }
 
 impl std::fmt::Display for ReadError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            ReadError::NotATrajectory { what } => {
-                write!(f, "not a trajectory (the {what} of walls-sim run --out)")
-            }
-            ReadError::NotANumber { line, column } => {
-                write!(f, "line {line}: column {column} is not a number")
-            }
+        match self.line() {
+            Some(line) => write!(f, "line {line}: {}", self.message()),
+            None => f.write_str(&self.message()),
         }
     }
 }
@@ -299,13 +334,34 @@ fn numbers<'a>(
 }
 
 /// Reads the rows of a `particles.csv`, in file order: row k is on line k + 2. The
-/// header must start with the columns up to `z`.
+/// header must start with the columns up to `z`; a file without the `color` column
+/// (written before it was added) reads with [`DEFAULT_COLOR`].
 pub fn read_particles(text: &str) -> Result<Vec<ParticleRow>, ReadError> {
-    let width = PARTICLE_COLUMNS.len();
+    let header = text.lines().next().unwrap_or_default();
+    let colored = header.starts_with(&PARTICLE_COLUMNS.join(","));
+    let width = PARTICLE_COLUMNS.len() - usize::from(!colored);
     numbers(text, &PARTICLE_COLUMNS[..9], width, "particles.csv")?
-        .map(|row| {
-            let x = row?;
+        .enumerate()
+        .map(|(k, row)| {
+            // The colour's cell, as written, for its error.
+            let not_a_color = |line: usize| ReadError::NotAColor {
+                line,
+                cell: (text.lines().nth(line - 1))
+                    .and_then(|l| l.split(',').nth(15))
+                    .unwrap_or_default()
+                    .chars()
+                    .take(40)
+                    .collect(),
+            };
+            let x = row.map_err(|e| match e {
+                ReadError::NotANumber { line, column: 16 } => not_a_color(line),
+                e => e,
+            })?;
             let v = |k: usize| Vec3::new(x[k], x[k + 1], x[k + 2]);
+            let color = match x.get(15) {
+                Some(&c) => color(c).ok_or_else(|| not_a_color(k + 2))?,
+                None => DEFAULT_COLOR,
+            };
             Ok(ParticleRow {
                 step: x[0] as u64,
                 t: x[1],
@@ -316,9 +372,15 @@ pub fn read_particles(text: &str) -> Result<Vec<ParticleRow>, ReadError> {
                 pos: v(6),
                 vel: v(9),
                 spin: v(12),
+                color,
             })
         })
         .collect()
+}
+
+/// `c` as a pkdgrav colour: an integer up to [`COLOR_MAX`] (negative: stuck to a wall).
+fn color(c: f64) -> Option<i32> {
+    (c.fract() == 0.0 && c >= f64::from(i32::MIN) && c <= f64::from(COLOR_MAX)).then_some(c as i32)
 }
 
 /// Reads the rows of a `walls.csv`, in file order: row k is on line k + 2.

@@ -16,6 +16,9 @@ use std::path::{Path, PathBuf};
 use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
 
+/// The most frames `--frames` asks for.
+const MOST_FRAMES: u64 = 10000;
+
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
 pub struct PreviewArgs {
@@ -64,8 +67,9 @@ pub struct PreviewArgs {
     /// its step, a single picture at the last line.
     #[arg(long, value_name = "FILE")]
     pub reactive: Option<PathBuf>,
-    /// The units shown (SVG's time and scale bar) and written (VTK): auto shows
-    /// pkdgrav's and the file's own; VTK in cgs or si is converted.
+    /// The units shown (the time and the scale bar of SVG and HTML) and written (VTK):
+    /// auto shows a walls file that sets units in them (times in seconds), another in
+    /// pkdgrav's; VTK in cgs or si is converted.
     #[arg(long, value_enum, default_value_t = System::Auto)]
     pub units: System,
     /// The particles.csv that `walls-sim run --out` writes, as a movie: the same as
@@ -84,10 +88,19 @@ pub struct PreviewArgs {
     /// The picture's size in pixels.
     #[arg(long, num_args = 2, value_names = ["W", "H"], value_parser = clap::value_parser!(u32).range(16..=16384))]
     pub size: Option<Vec<u32>>,
-    /// Frames from --time to --until: numbered pictures FILE-000.svg… and FILE.svg
-    /// animated.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=10000))]
-    pub frames: u64,
+    /// Frames: of one set of particles, N from --time to --until (default 1); of a
+    /// run's outputs, at most N of them evenly spaced, the first and the last among
+    /// them (default 300).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=MOST_FRAMES))]
+    pub frames: Option<u64>,
+    /// Of a run's outputs, every Nth (the first, the N+1th…) however many that makes,
+    /// rather than at most 300 evenly spaced.
+    #[arg(long, value_name = "N", conflicts_with = "frames", value_parser = clap::value_parser!(u64).range(1..=u64::from(u32::MAX)))]
+    pub every: Option<u64>,
+    /// An SVG of several frames: write each frame as a numbered still too,
+    /// FILE-000.svg… beside the animated FILE.svg.
+    #[arg(long, requires = "out")]
+    pub stills: bool,
     /// The end of the span the frames cover.
     #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = ruled(Rule::Any))]
     pub until: Option<f64>,
@@ -122,6 +135,12 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
     );
     // The format first: a wrong --out is told before any input is read.
     let kind = output::Kind::of(args.out.as_deref())?;
+    if args.stills && kind != Some(output::Kind::Svg) {
+        return Err(
+            "--stills writes an SVG movie's frames as numbered stills: name an .svg with --out"
+                .into(),
+        );
+    }
     let ssdraw = args.ssdraw.as_deref().map(read_ssdraw).transpose()?;
     let first = args
         .particles
@@ -167,15 +186,23 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
             args.time
         ));
     }
-    let series = snapshots.len() > 1;
-    if series && (args.frames > 1 || args.until.is_some()) {
+    let read = snapshots.len();
+    let series = read > 1;
+    if series && args.until.is_some() {
         return Err(
-            "--frames and --until make the frames of one set of particles; a series of outputs makes its own"
+            "--until makes the frames of one set of particles; a series of outputs makes its own (--frames N or --every N picks among them)"
                 .into(),
         );
     }
+    // A run's one output (it has a step) is all of its outputs --every picks from.
+    let output = snapshots.first().is_some_and(|s| s.step.is_some());
+    if let (false, false, Some(n)) = (series, output, args.every) {
+        return Err(format!(
+            "--every {n} picks among a run's outputs, and the particles given are one set: --frames N --until T makes frames of it"
+        ));
+    }
     let snapshots = if series {
-        snapshots
+        movie::pick(snapshots, args.time, picked(args))
     } else {
         // One picture, or --frames over [--time, --until], with the particles (if any)
         // on every frame.
@@ -234,7 +261,7 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
         kind,
         scene,
         &movie,
-        series,
+        series.then_some(read),
         &outputs,
     )?;
     Ok(exit_status(errors))
@@ -261,9 +288,20 @@ fn drawable(movie: &movie::Movie, file: &str, checked: &Checked) -> Result<(), S
     Err(format!("{}{e}; nothing was drawn", at.unwrap_or_default()))
 }
 
-/// The times of --frames over [--time, --until].
+/// Which of a run's outputs the movie shows: --every's, else at most --frames (by
+/// default [`movie::MOVIE_FRAMES`]).
+fn picked(args: &PreviewArgs) -> movie::Pick {
+    let size = |n: u64| usize::try_from(n).unwrap_or(usize::MAX);
+    match (args.every, args.frames) {
+        (Some(n), _) => movie::Pick::Every(size(n)),
+        (None, Some(n)) => movie::Pick::AtMost(size(n)),
+        (None, None) => movie::Pick::AtMost(movie::MOVIE_FRAMES),
+    }
+}
+
+/// The times of --frames (default 1) over [--time, --until].
 fn times(args: &PreviewArgs) -> Vec<f64> {
-    let n = args.frames as usize;
+    let n = args.frames.unwrap_or(1) as usize;
     let until = args.until.unwrap_or(args.time);
     (0..n)
         .map(|k| {

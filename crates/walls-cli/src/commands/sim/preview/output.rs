@@ -76,8 +76,9 @@ const NAMES: &str =
     "use .svg, .pov, .vtp, .pvd or .html (or no --out, or --out -, for SVG on standard output)";
 
 /// Writes `frames` as `kind` (`None`: SVG on standard output). `series`: the frames
-/// are a run's outputs (not --frames of one picture). Every file is planned through
-/// `outputs` (the one writer's policy) before any is written.
+/// are of a run's outputs, this many read (not --frames of one picture). Every file is
+/// planned through `outputs` (the one writer's policy) before any is written; a movie
+/// then says on standard error what it wrote ([`tell`]).
 #[allow(
     clippy::too_many_arguments,
     reason = "the preview's parts, each used once"
@@ -89,11 +90,11 @@ pub(super) fn write(
     kind: Option<Kind>,
     scene: &Scene,
     movie: &Movie,
-    series: bool,
+    series: Option<usize>,
     outputs: &Outputs,
 ) -> Result<(), String> {
     let frames = &movie.frames[..];
-    let readout = Readout::new(args.units, &scene.units);
+    let readout = Readout::picture(args.units, &scene.units);
     let view = svg_view(args, ssdraw, movie);
     let (Some(kind), Some(path)) = (kind, args.out.as_deref()) else {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -101,7 +102,7 @@ pub(super) fn write(
             .and_then(|()| out.flush())
             .map_err(|e| format!("cannot write the picture: {e}"));
     };
-    let files = Files::plan(outputs, path, kind, frames.len())?;
+    let files = Files::plan(outputs, path, kind, frames.len(), args.stills)?;
     let replaced: Vec<PathBuf> = files
         .replaced()
         .into_iter()
@@ -187,7 +188,7 @@ pub(super) fn write(
                 match (frames, args.until) {
                     // One set of particles with the walls' motion over [0, --until],
                     // sampled at 101 times.
-                    ([frame], Some(until)) if !series => {
+                    ([frame], Some(until)) if series.is_none() => {
                         let moving = html_particles(frame);
                         walls_preview::html::write(&mut out, scene, moving.as_ref(), until, 101)
                     }
@@ -206,6 +207,9 @@ pub(super) fn write(
         }
     }
     bar.finish_and_clear();
+    if frames.len() > 1 || series.is_some() {
+        tell(args, &files.written(kind), frames.len(), series);
+    }
     if !replaced.is_empty() {
         let names: Vec<&Path> = replaced.iter().map(PathBuf::as_path).collect();
         crate::errln!(
@@ -224,10 +228,67 @@ struct Files {
     include: Option<Target>,
 }
 
+/// Says on standard error what a movie wrote: its `files` and their size, its `frames`
+/// and, of a run's outputs (`series`, how many), which, and how to have others.
+fn tell(args: &PreviewArgs, files: &[&Path], frames: usize, series: Option<usize>) {
+    let bytes: u64 = (files.iter())
+        .filter_map(|f| std::fs::metadata(f).ok())
+        .map(|m| m.len())
+        .sum();
+    let many = |n: usize, what: &str| match n {
+        1 => format!("1 {what}"),
+        n => format!("{n} {what}s"),
+    };
+    let shown = many(frames, "frame");
+    let which = match (series, args.every) {
+        (None, _) => shown,
+        (Some(m), Some(n)) => format!("{shown}, 1 in every {n} of {}", many(m, "output")),
+        (Some(m), None) if frames == m => format!("{shown}, one per output"),
+        (Some(m), None) if args.frames.is_some() => {
+            format!("{shown} of {m} outputs, evenly spaced")
+        }
+        (Some(m), None) => format!(
+            "{shown} of {m} outputs, evenly spaced; --frames N for up to N (at most {}), --every N for 1 in every N",
+            super::MOST_FRAMES
+        ),
+    };
+    crate::errln!(
+        "walls-sim: wrote {} ({}): {which}",
+        walls_output::name_files(files),
+        size(bytes)
+    );
+}
+
+/// `bytes` as people read a file's size: `812 bytes`, `12.3 kB`, `340 MB`.
+fn size(bytes: u64) -> String {
+    let units = ["kB", "MB", "GB", "TB"];
+    let mut x = bytes as f64;
+    let mut unit = "bytes";
+    for u in units {
+        if x < 1000.0 {
+            break;
+        }
+        x /= 1000.0;
+        unit = u;
+    }
+    match unit {
+        "bytes" => format!("{bytes} bytes"),
+        _ if x < 10.0 => format!("{x:.1} {unit}"),
+        _ => format!("{x:.0} {unit}"),
+    }
+}
+
 impl Files {
     /// Plans every file a picture of `kind` with `frames` frames at `path` writes, in
-    /// `path`'s folder: refused before anything is written if any may not be.
-    fn plan(outputs: &Outputs, path: &Path, kind: Kind, frames: usize) -> Result<Files, String> {
+    /// `path`'s folder (an SVG's numbered stills only with `stills`): refused before
+    /// anything is written if any may not be.
+    fn plan(
+        outputs: &Outputs,
+        path: &Path,
+        kind: Kind,
+        frames: usize,
+        stills: bool,
+    ) -> Result<Files, String> {
         let refused =
             |shown: &Path, e: WriteError| e.message(&shown.display().to_string(), Tool::PREVIEW);
         // The file named is the user's: a link to a file is written through.
@@ -253,7 +314,7 @@ impl Files {
                 .collect()
         };
         let frame_names = match kind {
-            Kind::Svg if frames > 1 => numbered_names("svg"),
+            Kind::Svg if frames > 1 && stills => numbered_names("svg"),
             Kind::Pov if frames > 1 => numbered_names("pov"),
             Kind::Pvd => walls_preview::pvd::frame_files(path, frames),
             _ => Vec::new(),
@@ -282,6 +343,22 @@ impl Files {
 }
 
 impl Files {
+    /// The files a picture of `kind` writes, in the order written: an SVG, then its
+    /// stills; a collection's frames, then it; a POV-Ray movie's scenes (without the file
+    /// `--out` names), then the include.
+    fn written(&self, kind: Kind) -> Vec<&Path> {
+        let main = std::iter::once(&self.main);
+        let files: Vec<&Target> = match kind {
+            Kind::Pov if !self.frames.is_empty() => self.frames.iter().collect(),
+            Kind::Pvd => self.frames.iter().chain(main).collect(),
+            _ => main.chain(&self.frames).collect(),
+        };
+        (files.into_iter())
+            .chain(&self.include)
+            .map(Target::path)
+            .collect()
+    }
+
     /// The files there already, which writing replaces (with `--force`).
     fn replaced(&self) -> Vec<&Path> {
         std::iter::once(&self.main)
