@@ -302,16 +302,3 @@ def test_ctrl_c_stops_a_long_run():
         child.send_signal(signal.SIGINT)
         out, err = child.communicate(timeout=LIMIT)
     assert out == "interrupted: walls.run was interrupted\n", err
-
-
-def test_the_examples_of_docs_python_md_run_as_written(tmp_path, monkeypatch):
-    text = (REPO / "docs" / "python.md").read_text(encoding="utf-8")
-    section = text.split("## Analysis", 1)[1].split("\n## ", 1)[0]
-    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
-    assert len(blocks) == 3
-    (tmp_path / "examples").symlink_to(REPO / "examples")
-    monkeypatch.chdir(tmp_path)
-    for block in blocks:
-        exec(compile(block, "docs/python.md", "exec"), {})
-    assert (tmp_path / "copy.ss").read_bytes() == (EXAMPLES / "drop.ss").read_bytes()
-    assert (tmp_path / "drop.html").read_text(encoding="utf-8").startswith("<!DOCTYPE html>")

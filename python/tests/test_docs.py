@@ -37,5 +37,12 @@ def test_every_python_block_runs(page, tmp_path, monkeypatch):
             exec(compile(code, f"{page}:{line}", "exec"), namespace)
         except Exception as e:  # noqa: BLE001: the failure names the block
             raise AssertionError(f"the block at {page}:{line} fails: {e!r}") from e
+    # What the pages say their examples write, they wrote: docs/python.md's copy of a
+    # `.ss` file is the same bytes, and its movie a page.
+    if page == "docs/python.md":
+        shipped_ss = (REPO / "examples" / "python" / "drop.ss").read_bytes()
+        assert (tmp_path / "copy.ss").read_bytes() == shipped_ss
+        page_text = (tmp_path / "drop.html").read_text(encoding="utf-8")
+        assert page_text.startswith("<!DOCTYPE html>")
     # The examples write where the reader runs them, never into the repository.
     assert sorted(p.relative_to(REPO) for p in (REPO / "examples").rglob("*")) == shipped

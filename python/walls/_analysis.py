@@ -303,8 +303,8 @@ def preview(
     is None, a ``walls.RunResult`` (a movie of its outputs), or a structured array with
     the fields of ``walls.SS_DTYPE`` (drawn still). The page covers the times 0 to
     ``until`` (default: a run's last output time, else 0, the walls at rest) in
-    ``frames`` frames (default: a run's outputs, else 101), the walls where their
-    motion puts them and the particles interpolated between their times. A walls file
+    ``frames`` frames (default: one per output of a run, at most 300 as
+    ``walls-sim preview`` makes a movie, else 101), the walls where their motion puts them and the particles interpolated between their times. A walls file
     with errors raises ``walls.WallsError``.
     """
     text = _text_of(walls)
@@ -327,7 +327,8 @@ def preview(
         if until is None:
             until = times[-1]
         if frames is None:
-            frames = len(times)
+            # At most a few hundred, as walls-sim preview makes a movie by default.
+            frames = min(len(times), _walls.MOVIE_FRAMES)
     elif particles is not None:
         records = _records(particles, "particles")
         given = (

@@ -164,6 +164,10 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
 /// particles (all 4,882 outputs of a two-second run made one of 340 MB).
 pub const MOVIE_FRAMES: usize = 300;
 
+/// The most frames a movie or a span of the walls' motion may be asked for
+/// (`walls-sim preview --frames`, `walls.preview(frames=)`).
+pub const MOST_FRAMES: usize = 10_000;
+
 /// Which of a run's outputs a movie shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Pick {

@@ -10,11 +10,9 @@ use walls_preview::html::{self, Particles};
 
 /// Adds the functions of this file to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("MOVIE_FRAMES", walls_cli::movie::MOVIE_FRAMES)?;
     m.add_function(wrap_pyfunction!(_preview, m)?)
 }
-
-/// The most frames a page has, as `walls-sim preview --frames` allows.
-const MOST_FRAMES: i128 = 10_000;
 
 /// Particles along their trajectories as Python hands them over: each one's radius and
 /// colour, the times, and the positions (three native doubles per particle per time,
@@ -35,7 +33,8 @@ fn _preview(
     frames: &Bound<'_, PyAny>,
 ) -> PyResult<String> {
     let until = args::number(until, &"until")?;
-    let frames = args::integer(frames, &"frames", 1..=MOST_FRAMES)? as usize;
+    let frames =
+        args::integer(frames, &"frames", 1..=walls_cli::movie::MOST_FRAMES as i128)? as usize;
     let checked = api::check(py, args::text(text)?, &Options::default());
     let errors = checked.errors();
     if !errors.is_empty() {

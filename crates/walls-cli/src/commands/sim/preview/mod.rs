@@ -17,7 +17,7 @@ use walls_preview::ssdraw::SsdrawView;
 use walls_sim::io::par::Rule;
 
 /// The most frames `--frames` asks for.
-const MOST_FRAMES: u64 = 10000;
+const MOST_FRAMES: u64 = crate::movie::MOST_FRAMES as u64;
 
 /// `walls-sim preview`: pictures of the walls at a time, or over a span.
 #[derive(clap::Args)]
