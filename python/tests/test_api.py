@@ -77,7 +77,7 @@ def test_the_linters_options(case):
         ("C209", "warning", 3),
     ]
     for d in got:
-        assert f"[{d['code']}] Warning: {d['message']}" in fast.stderr()
+        assert f"[{d['code']}] Warning: {d['message']}" in fast.stdout()
     assert walls.lint(text) == []
 
 
