@@ -75,8 +75,9 @@ pub fn err(args: Arguments<'_>) {
     let _ = std::io::stderr().lock().write_all(escaped(args).as_bytes());
 }
 
-/// The text of `args` with every hazard shown as its escape.
-fn escaped(args: Arguments<'_>) -> String {
+/// The text of `args` with every hazard shown as its escape: what [`out`] writes, for a
+/// command that writes its human text through its own writer.
+pub fn escaped(args: Arguments<'_>) -> String {
     let text = match args.as_str() {
         Some(text) => text.to_string(),
         None => args.to_string(),

@@ -25,6 +25,12 @@ fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
+/// Asserts that the command succeeded and said `text` on standard error.
+fn succeeded_saying(out: &Output, text: &str) {
+    assert!(out.status.success(), "{}", stderr(out));
+    assert!(stderr(out).contains(text), "{}", stderr(out));
+}
+
 /// A cup: a floor and a cylinder around eight spheres that fall, meet each other and
 /// the walls, with friction.
 const CUP: &str = "wall type plane\n\nwall type cylinder-infinite\n  radius 0.03\n";
@@ -121,13 +127,9 @@ fn an_export_runs_as_the_direct_run_and_lints_clean() {
         d,
         &[&["export", "cup.walls"][..], &options, &["--out", "job"]].concat(),
     );
-    assert!(export.status.success(), "{}", stderr(&export));
-    assert!(
-        stderr(&export).contains(
-            "to job: ss.par, walls.dat, initial.ss, README.md, walls.toml (build: COLLISIONS DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT WALLS)"
-        ),
-        "{}",
-        stderr(&export)
+    succeeded_saying(
+        &export,
+        "to job: ss.par, walls.dat, initial.ss, README.md, walls.toml (build: COLLISIONS DEM DEM_FIXED_BALL DEM_ROTATION_DASHPOT WALLS)",
     );
     assert_eq!(
         std::fs::read_to_string(d.join("job/walls.dat")).unwrap(),
@@ -518,5 +520,40 @@ fn run_directory_findings_are_ignored_as_any_code() {
     let after = lint();
     let findings = String::from_utf8_lossy(&after.stdout);
     assert!(after.status.success(), "{findings}{}", stderr(&after));
+    assert!(findings.contains("0 errors, 0 warnings"), "{findings}");
+}
+
+#[test]
+fn outputs_names_keep_their_order_however_many_steps() {
+    // The drum's ss.par says nDigits = 6; a run of 10⁶ steps names its last output with 7.
+    let d = tempfile::tempdir().unwrap();
+    let drum = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/drum/ss.par");
+    let out = sim(
+        d.path(),
+        &[
+            "export",
+            "--par",
+            drum.to_str().unwrap(),
+            "--t-end",
+            "1.99102e-6",
+            "--out",
+            "job",
+        ],
+    );
+    succeeded_saying(
+        &out,
+        "gives nDigits = 6, narrower than the last step's 7 digits: written 7, so that the outputs' names sort in step order",
+    );
+    let par = std::fs::read_to_string(d.path().join("job/ss.par")).unwrap();
+    assert!(par.contains("\nnDigits                  = 7\n"), "{par}");
+    assert!(
+        par.contains("\nnSteps                   = 1000000\n"),
+        "{par}"
+    );
+    let lint = Command::new(env!("CARGO_BIN_EXE_walls-lint"))
+        .arg(d.path().join("job"))
+        .output()
+        .unwrap();
+    let findings = String::from_utf8_lossy(&lint.stdout);
     assert!(findings.contains("0 errors, 0 warnings"), "{findings}");
 }

@@ -556,3 +556,26 @@ fn a_folder_nobody_may_write_is_named() {
     );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), MESSY);
 }
+
+#[test]
+fn a_report_nobody_reads_is_no_success() {
+    // `walls-fmt --check … | head -1` in a CI script with pipefail: the reader gone, the
+    // files still need formatting, and the status must not say they do not.
+    let dir = tempfile::tempdir().unwrap();
+    for k in 0..50 {
+        write(&dir.path().join(format!("f{k}.walls")), MESSY, 0o644);
+    }
+    let names: Vec<String> = (0..50).map(|k| format!("f{k}.walls")).collect();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_walls-fmt"))
+        .arg("--check")
+        .args(&names)
+        .current_dir(dir.path())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&out.stderr), "");
+}

@@ -102,27 +102,32 @@ pub fn par_file(
         written.append_to_last(&format!("; {said}"));
         written.warnings.push(said);
     }
-    // Unless the source says otherwise, every output's name is as wide as the last one's,
-    // so that they sort in step order (R008).
+    // Every output's name is as wide as the last one's, so that they sort in step order
+    // (R008): pkdgrav's default, or the source's nDigits, is widened when it is narrower.
     let wide = last_step.to_string().len();
-    let digits = if written.given("nDigits") || outputs.ss.digits >= wide {
-        outputs.ss.digits
+    let digits = outputs.ss.digits.max(wide);
+    if digits == outputs.ss.digits {
+        written.int("nDigits", digits as i64, None, "pkdgrav's default");
     } else {
-        wide
-    };
-    written.int(
-        "nDigits",
-        digits as i64,
-        None,
-        &if digits == outputs.ss.digits {
-            "pkdgrav's default".to_string()
-        } else {
+        let was = match source.and_then(|s| Some((s.path, s.file.given("nDigits")?))) {
+            Some((path, entry)) => {
+                let said = format!(
+                    "{path} line {} gives nDigits = {}, narrower than the last step's {digits} digits: written {digits}, so that the outputs' names sort in step order",
+                    entry.line, outputs.ss.digits
+                );
+                written.warnings.push(said);
+                format!("{path} line {}'s {}", entry.line, outputs.ss.digits)
+            }
+            None => format!("pkdgrav's default {}", outputs.ss.digits),
+        };
+        written.push(
+            "nDigits",
+            Value::Int(digits as i64),
             format!(
-                "the last step's {digits} digits (pkdgrav's default {} would make the last outputs' names wider than the first ones')",
-                outputs.ss.digits
-            )
-        },
-    );
+                "nDigits: the last step's {digits} digits ({was} would make the last outputs' names wider than the first ones')"
+            ),
+        );
+    }
     if let Some(file) = names.cohesion {
         written.text(
             "achCohesionFile",

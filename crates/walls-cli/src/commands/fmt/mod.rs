@@ -72,6 +72,43 @@ enum Outcome {
     NotWritten(String),
 }
 
+/// Where walls-fmt's report goes (standard output, or standard error beside standard
+/// input's formatted text), and the first write to standard output that failed: after it
+/// nothing more is written, and the status is 2.
+struct Report {
+    to_stdout: bool,
+    failed: Option<std::io::Error>,
+}
+
+impl Report {
+    /// Lets `write` write to standard output through a buffer.
+    fn stdout(&mut self, write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+        if self.failed.is_none() {
+            let mut w = std::io::BufWriter::new(std::io::stdout().lock());
+            if let Err(e) = write(&mut w).and_then(|()| w.flush()) {
+                self.failed = Some(e);
+            }
+        }
+    }
+
+    /// Lets `write` write to the report's stream.
+    fn report(&mut self, write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+        if self.to_stdout {
+            self.stdout(write);
+        } else {
+            let mut w = std::io::BufWriter::new(std::io::stderr().lock());
+            // Standard error is for people: if it is gone there is nobody to tell.
+            let _ = write(&mut w).and_then(|()| w.flush());
+        }
+    }
+
+    /// A line of the report, its hazards escaped.
+    fn say(&mut self, line: std::fmt::Arguments<'_>) {
+        let text = crate::console::escaped(format_args!("{line}\n"));
+        self.report(|w| w.write_all(text.as_bytes()));
+    }
+}
+
 /// Formats the files `args` name and reports on them; the exit status.
 pub fn run(args: &FmtArgs) -> i32 {
     let resolver = match Resolver::new(&args.settings) {
@@ -89,12 +126,9 @@ pub fn run(args: &FmtArgs) -> i32 {
     // the report, on standard output; standard input's formatted text takes standard
     // output when `-` is among the files, and the report goes to standard error then.
     let to_stdout = !args.files.iter().any(|f| f == "-");
-    let say = |text: std::fmt::Arguments<'_>| {
-        if to_stdout {
-            crate::outln!("{text}");
-        } else {
-            crate::errln!("{text}");
-        }
+    let mut out = Report {
+        to_stdout,
+        failed: None,
     };
     let color = if to_stdout {
         crate::console::color_stdout()
@@ -110,8 +144,8 @@ pub fn run(args: &FmtArgs) -> i32 {
                 changed += 1;
                 match diff {
                     // Escaped where it was made (`unified_diff`).
-                    Some(d) => crate::console::out_data(|out| out.write_all(d.as_bytes())),
-                    None if args.check => say(format_args!("would reformat {name}")),
+                    Some(d) => out.stdout(|w| w.write_all(d.as_bytes())),
+                    None if args.check => out.say(format_args!("would reformat {name}")),
                     None => {}
                 }
             }
@@ -122,14 +156,8 @@ pub fn run(args: &FmtArgs) -> i32 {
                     source: text,
                     diagnostics: report,
                 };
-                if to_stdout {
-                    crate::console::out_data(|out| render::human(out, &file, color));
-                } else {
-                    let mut err = std::io::BufWriter::new(std::io::stderr().lock());
-                    // Standard error is for people: if it is gone there is nobody to tell.
-                    let _ = render::human(&mut err, &file, color).and_then(|()| err.flush());
-                }
-                say(format_args!(
+                out.report(|w| render::human(w, &file, color));
+                out.say(format_args!(
                     "walls-fmt: {name} has syntax errors: not formatted"
                 ));
             }
@@ -161,7 +189,15 @@ pub fn run(args: &FmtArgs) -> i32 {
             summary.push_str(&format!(", {n} {what}"));
         }
     }
-    say(format_args!("{summary}"));
+    out.say(format_args!("{summary}"));
+    // A report nobody received is no success: its reader gone (`| head`) or its disk
+    // full, the status is 2, as walls-lint's.
+    if let Some(e) = out.failed {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            crate::errln!("walls-fmt: error: cannot write the report: {e}");
+        }
+        return 2;
+    }
     if unreadable + unwritten > 0 {
         2
     } else if broken > 0 || ((args.check || args.diff) && changed > 0) {
