@@ -353,7 +353,7 @@ fn a_scene_with_units_is_labelled_in_seconds() {
     };
     // Output 1 is at t = 0.01 pkdgrav units: 50,226 s.
     let svg = preview("m.svg", &[]);
-    assert!(svg.contains(">t = 50226 s<"), "{svg}");
+    assert!(svg.contains(">t = 50230 s<"), "{svg}");
     let html = preview("m.html", &[]);
     assert!(
         html.contains("\"readout\":{\"time\":[\"s\",") && html.contains("\"withPkdgrav\":false"),

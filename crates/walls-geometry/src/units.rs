@@ -265,7 +265,7 @@ impl Readout {
 }
 
 /// `x` to four significant figures, as people write it: `1.47`, `5.5`, `0.0123`,
-/// `2.927e-7`, `1.2e6`.
+/// `50230`, `2.927e-7`, `1.2e6`.
 pub fn number(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return format!("{x}");
@@ -273,6 +273,14 @@ pub fn number(x: f64) -> String {
     let exponent = x.abs().log10().floor() as i32;
     if (-3..6).contains(&exponent) {
         let decimals = (3 - exponent).max(0) as usize;
+        // Above 9999, the digits past the fourth are rounded to zeros: 502,264 s is
+        // `502300`, as it is `5.023e5` further up.
+        let x = if exponent > 3 {
+            let step = 10f64.powi(exponent - 3);
+            (x / step).round() * step
+        } else {
+            x
+        };
         let s = format!("{x:.decimals$}");
         if s.contains('.') {
             s.trim_end_matches('0').trim_end_matches('.').to_string()
@@ -313,6 +321,8 @@ mod tests {
             (2.9268e-7, "2.927e-7"),
             (1_234_567.0, "1.235e6"),
             (100.0, "100"),
+            (50_226.355, "50230"),
+            (502_264.0, "502300"),
             (-3.0, "-3"),
             (0.0, "0"),
         ] {
