@@ -470,12 +470,15 @@ fn an_earlier_pictures_other_frames_are_named_and_left() {
         args.extend(extra);
         walls_sim(dir.path(), &args)
     };
-    let cases: [(&str, &[&str], fn(usize) -> String); 3] = [
-        ("m.svg", &["--stills"], |k| format!("m-{k:03}.svg")),
-        ("m.pov", &[], |k| format!("m-{k:03}.pov")),
-        ("m.pvd", &[], |k| format!("m/m_{k:06}.vtp")),
-    ];
-    for (out, extra, frame) in cases {
+    // The k-th numbered file of the picture `out`.
+    let numbered = |out: &str, k: usize| match out {
+        "m.svg" => format!("m-{k:03}.svg"),
+        "m.pov" => format!("m-{k:03}.pov"),
+        _ => format!("m/m_{k:06}.vtp"),
+    };
+    let cases: [(&str, &[&str]); 3] = [("m.svg", &["--stills"]), ("m.pov", &[]), ("m.pvd", &[])];
+    for (out, extra) in cases {
+        let frame = |k| numbered(out, k);
         let first = preview("10", out, extra);
         assert!(first.status.success(), "{}", stderr(&first));
         assert!(!stderr(&first).contains("warning"), "{}", stderr(&first));
