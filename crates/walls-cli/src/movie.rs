@@ -167,7 +167,7 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
 pub const MOVIE_FRAMES: usize = 300;
 
 /// The most frames a movie or a span of the walls' motion may be asked for
-/// (`walls-sim preview --frames`, `walls.preview(frames=)`).
+/// (`walls-sim preview --frames`, `walls.preview(frames=)`), or may make (`--every`).
 pub const MOST_FRAMES: usize = 10_000;
 
 /// Which of a run's outputs a movie shows.

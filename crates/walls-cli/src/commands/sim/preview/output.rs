@@ -1,7 +1,8 @@
 //! The pictures of `walls-sim preview`, by the extension of `--out`: an SVG (animated
 //! for several frames, with numbered stills), numbered POV-Ray scenes, one VTK
-//! PolyData, a ParaView collection of them, or the HTML page; and the progress bar of a
-//! long series.
+//! PolyData, a ParaView collection of them, or the HTML page; the progress bar of a
+//! long series; and the warning naming an earlier picture's numbered files that this
+//! one did not write, left beside it.
 
 use super::PreviewArgs;
 use crate::movie::Movie;
