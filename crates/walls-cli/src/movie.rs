@@ -34,30 +34,32 @@ pub struct Snapshot {
 /// What a `walls-sim run --out` folder (or pkdgrav's) holds for a movie.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunFolder {
-    /// The particle files: its `.ss` series (the files whose extension is a number,
-    /// `ss.00000`…, which hold the particles' colours), in name order, else its
-    /// `particles.csv`.
+    /// The particle files: its `particles.csv` (every output of `walls-sim run --out`,
+    /// with the particles' colours), else its `.ss` series (the files whose extension
+    /// is a number, `ss.00000`…), in name order.
     pub particles: Vec<PathBuf>,
     /// Its `WALLSREACTviz.out`, if it has one.
     pub viz: Option<PathBuf>,
 }
 
-/// What the folder `dir` holds for a movie; an error when it has no particles.
+/// What the folder `dir` holds for a movie: its `particles.csv` when it has one (a
+/// `walls-sim run --out --ss-output` folder has both, and the CSV holds every output,
+/// the first too), else its `.ss` series; an error when it has neither.
 pub fn run_folder(dir: &Path) -> Result<RunFolder, String> {
     let csv = dir.join("particles.csv");
     let viz = Some(dir.join(VIZ_FILE)).filter(|p| p.is_file());
+    if csv.is_file() {
+        return Ok(RunFolder {
+            particles: vec![csv],
+            viz,
+        });
+    }
     let entries =
         std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
     let mut series: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.is_file() && trailing_step(p).is_some())
         .collect();
-    if series.is_empty() && csv.is_file() {
-        return Ok(RunFolder {
-            particles: vec![csv],
-            viz,
-        });
-    }
     if series.is_empty() {
         return Err(format!(
             "{}: no particles.csv and no .ss outputs (ss.00000…)",
@@ -165,7 +167,7 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
 pub const MOVIE_FRAMES: usize = 300;
 
 /// The most frames a movie or a span of the walls' motion may be asked for
-/// (`walls-sim preview --frames`, `walls.preview(frames=)`).
+/// (`walls-sim preview --frames`, `walls.preview(frames=)`), or may make (`--every`).
 pub const MOST_FRAMES: usize = 10_000;
 
 /// Which of a run's outputs a movie shows.

@@ -8,7 +8,7 @@
 
 use std::path::Path;
 use std::process::{Command, Output};
-use walls_cli::movie::MOVIE_FRAMES;
+use walls_cli::movie::{MOST_FRAMES, MOVIE_FRAMES};
 use walls_sim::io::trajectory::PARTICLE_COLUMNS;
 
 /// A floor of pkdgrav units.
@@ -371,4 +371,150 @@ fn a_scene_with_units_is_labelled_in_seconds() {
         html.contains("\"readout\":{\"time\":[\"\",1"),
         "pkdgrav's time"
     );
+}
+
+/// `--every N` is held to the cap of `--frames` (`MOST_FRAMES`): a choice that makes
+/// more frames is refused with exit 2, saying how many and the smallest N that fits,
+/// before anything is written.
+#[test]
+fn every_that_makes_too_many_frames_is_refused() {
+    let dir = run_folder(FLOOR, MOST_FRAMES + 1, Some(3));
+    for out in ["m.svg", "m.pvd", "m.pov"] {
+        let run = walls_sim(
+            dir.path(),
+            &[
+                "preview",
+                "floor.walls",
+                "--particles",
+                "run",
+                "--every",
+                "1",
+                "--out",
+                out,
+            ],
+        );
+        assert_eq!(run.status.code(), Some(2), "{}", stderr(&run));
+        let e = stderr(&run);
+        assert!(
+            e.contains(&format!(
+                "--every 1 of {} outputs would make {} frames",
+                MOST_FRAMES + 1,
+                MOST_FRAMES + 1
+            )) && e.contains("--every 2 or more fits"),
+            "{e}"
+        );
+    }
+    assert_eq!(names(dir.path()), ["floor.walls", "run"]);
+}
+
+/// A run folder holding both `particles.csv` and `.ss` files (`walls-sim run --out DIR
+/// --ss-output`) is read from its `particles.csv`, as `--help` says: every output, the
+/// first too, in the CSV's colours; not the one `.ss` file beside it as a still.
+#[test]
+fn a_run_folder_is_read_from_its_particles_csv() {
+    let dir = run_folder(FLOOR, 3, Some(5));
+    let p = walls_geometry::Particle::at_rest(0.1, nalgebra::Vector3::new(0.0, 0.0, 9.0), 0);
+    std::fs::write(
+        dir.path().join("run/ss.00100"),
+        walls_sim::io::particles::write_ss(1.0, &[p]),
+    )
+    .unwrap();
+    let out = walls_sim(
+        dir.path(),
+        &[
+            "preview",
+            "floor.walls",
+            "--particles",
+            "run",
+            "--out",
+            "m.svg",
+        ],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let svg = read(dir.path(), "m.svg");
+    assert_eq!(frames(&svg), 3);
+    assert!(svg.contains(">t = 0<") && !svg.contains(">t = 1<"), "{svg}");
+    // Colour 5 (yellow), not the .ss file's 3 (green).
+    let discs: Vec<&str> = svg.lines().filter(|l| l.starts_with("<circle")).collect();
+    assert_eq!(discs.len(), 3, "{svg}");
+    assert!(
+        discs.iter().all(|d| d.contains("fill=\"#ffff00\"")),
+        "{discs:?}"
+    );
+    // Named, the .ss file is drawn.
+    let out = walls_sim(
+        dir.path(),
+        &[
+            "preview",
+            "floor.walls",
+            "--particles",
+            "run/ss.00100",
+            "--out",
+            "ss.svg",
+        ],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let ss = read(dir.path(), "ss.svg");
+    assert!(ss.contains("fill=\"#00ff00\""), "{ss}");
+}
+
+/// A shorter picture over an earlier, longer one (`--force`) leaves the earlier one's
+/// other numbered files, and a warning names them: exactly the names the preview
+/// numbers its frames with, regular files only, none removed.
+#[test]
+fn an_earlier_pictures_other_frames_are_named_and_left() {
+    let dir = run_folder(FLOOR, 10, Some(3));
+    let preview = |frames: &str, out: &str, extra: &[&str]| {
+        let mut args = vec!["preview", "floor.walls", "--particles", "run"];
+        args.extend(["--frames", frames, "--out", out, "--force"]);
+        args.extend(extra);
+        walls_sim(dir.path(), &args)
+    };
+    // The k-th numbered file of the picture `out`.
+    let numbered = |out: &str, k: usize| match out {
+        "m.svg" => format!("m-{k:03}.svg"),
+        "m.pov" => format!("m-{k:03}.pov"),
+        _ => format!("m/m_{k:06}.vtp"),
+    };
+    let cases: [(&str, &[&str]); 3] = [("m.svg", &["--stills"]), ("m.pov", &[]), ("m.pvd", &[])];
+    for (out, extra) in cases {
+        let frame = |k| numbered(out, k);
+        let first = preview("10", out, extra);
+        assert!(first.status.success(), "{}", stderr(&first));
+        assert!(!stderr(&first).contains("warning"), "{}", stderr(&first));
+        let again = preview("3", out, extra);
+        assert!(again.status.success(), "{}", stderr(&again));
+        let e = stderr(&again);
+        assert!(
+            e.contains(&format!(
+                "warning: {} … {}, 7 files named as this picture's numbered frames but not written by it",
+                frame(3),
+                frame(9)
+            )),
+            "{e}"
+        );
+        for k in 0..10 {
+            assert!(dir.path().join(frame(k)).is_file(), "{}", frame(k));
+        }
+    }
+    // Only exact names, only regular files: `m-0003.svg`, `m-3.svg`, a folder and a
+    // link named as a frame are not named; an SVG without stills names the stills left.
+    for name in ["m-0003.svg", "m-3.svg", "m-x03.svg"] {
+        std::fs::write(dir.path().join(name), "mine").unwrap();
+    }
+    for k in 3..10 {
+        std::fs::remove_file(dir.path().join(format!("m-{k:03}.svg"))).unwrap();
+    }
+    std::fs::create_dir(dir.path().join("m-005.svg")).unwrap();
+    #[cfg(unix)]
+    std::os::unix::fs::symlink("m-0003.svg", dir.path().join("m-006.svg")).unwrap();
+    let out = preview("2", "m.svg", &[]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let e = stderr(&out);
+    assert!(
+        e.contains("warning: m-000.svg, m-001.svg and m-002.svg named as"),
+        "{e}"
+    );
+    let out = preview("3", "m.svg", &["--stills"]);
+    assert!(!stderr(&out).contains("warning"), "{}", stderr(&out));
 }

@@ -3,8 +3,9 @@
 //! then triangles sorted far to near (the painter's algorithm) and shaded by how
 //! squarely they face the viewer, each wall outlined where its surface ends, in
 //! ssdraw's colours with transparency as opacity; particles as discs; axes and a scale
-//! bar. Several frames make an animated SVG (SMIL: one group per frame, shown in turn),
-//! which browsers play without script.
+//! bar. Several frames make an animated SVG (SMIL: one group per frame, shown in its own
+//! slot of the cycle by an `<animate>` of at most three values, so that the file grows
+//! linearly with the frames), which browsers play without script.
 
 use crate::escape;
 use crate::mesh::WallMesh;
@@ -343,6 +344,7 @@ fn furniture(camera: &Camera, readout: &Readout) -> String {
 /// and the scale bar are shown as `readout` says. A frame with a number that cannot be
 /// drawn ([`crate::finite`]) is refused with nothing written, as an
 /// [`io::ErrorKind::InvalidData`] error holding its [`crate::finite::NotDrawable`].
+/// The text goes to `out` a frame at a time, never held whole.
 pub fn write(
     out: &mut impl io::Write,
     frames: &[Frame],
@@ -351,7 +353,8 @@ pub fn write(
     seconds: f64,
     readout: &Readout,
 ) -> io::Result<()> {
-    out.write_all(document(frames, view, bounds, seconds, readout)?.as_bytes())
+    let camera = camera(frames, view, &bounds)?;
+    render(out, &camera, frames, view, seconds, readout)
 }
 
 /// The SVG [`write()`] writes, or the first number of `frames` (or of the box) it cannot
@@ -363,6 +366,20 @@ pub fn document(
     seconds: f64,
     readout: &Readout,
 ) -> Result<String, crate::finite::NotDrawable> {
+    let camera = camera(frames, view, &bounds)?;
+    let mut bytes = Vec::new();
+    render(&mut bytes, &camera, frames, view, seconds, readout)
+        .expect("writing to a Vec does not fail");
+    Ok(String::from_utf8(bytes).expect("the SVG is written from strings"))
+}
+
+/// The camera fitting `bounds` and every frame's particles into `view`, once every
+/// number of `frames` and of the box is checked drawable.
+fn camera(
+    frames: &[Frame],
+    view: &View,
+    bounds: &(Vec3, Vec3),
+) -> Result<Camera, crate::finite::NotDrawable> {
     let n = frames.len();
     for (k, f) in frames.iter().enumerate() {
         crate::finite::check_frame(f.t, f.walls, f.particles).map_err(|e| {
@@ -372,44 +389,55 @@ pub fn document(
             }
         })?;
     }
-    crate::finite::check_box(&bounds, frames.first().map_or(0.0, |f| f.t))?;
+    crate::finite::check_box(bounds, frames.first().map_or(0.0, |f| f.t))?;
     let centres = frames
         .iter()
         .flat_map(|f| f.particles.iter().map(|p| p.pos));
-    let camera = Camera::new(view, &bounds.0, &bounds.1, centres);
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
+    Ok(Camera::new(view, &bounds.0, &bounds.1, centres))
+}
+
+/// Writes the SVG of `frames` through `camera` to `out`, a frame at a time. Several
+/// frames animate: each frame's group is shown only during its own n-th of the cycle,
+/// by an `<animate>` of three values at most (hidden, shown, hidden), so that the file
+/// grows linearly with the frames (an animation listing every frame in every frame's
+/// `<animate>` grew with their square: 10,000 frames of one particle made 1.4 GB).
+fn render(
+    out: &mut impl io::Write,
+    camera: &Camera,
+    frames: &[Frame],
+    view: &View,
+    seconds: f64,
+    readout: &Readout,
+) -> io::Result<()> {
+    writeln!(
+        out,
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>",
         w = view.width,
         h = view.height
-    );
+    )?;
     if let [frame] = frames {
-        s.push_str("<g class=\"frame\">\n");
-        s.push_str(&draw(&camera, frame, readout));
-        s.push_str("</g>\n");
+        out.write_all(b"<g class=\"frame\">\n")?;
+        out.write_all(draw(camera, frame, readout).as_bytes())?;
+        out.write_all(b"</g>\n")?;
     } else {
         let n = frames.len();
+        let at = |k: usize| format!("{:.6}", k as f64 / n as f64);
         for (k, frame) in frames.iter().enumerate() {
-            // Shown during the k-th n-th of the cycle.
-            let values: Vec<&str> = (0..n)
-                .map(|j| if j == k { "inline" } else { "none" })
-                .collect();
-            let times: Vec<String> = (0..n)
-                .map(|j| format!("{:.6}", j as f64 / n as f64))
-                .collect();
-            let _ = writeln!(
-                s,
-                "<g class=\"frame\" display=\"{}\">\n<animate attributeName=\"display\" values=\"{}\" keyTimes=\"{}\" dur=\"{seconds}s\" calcMode=\"discrete\" repeatCount=\"indefinite\"/>",
+            // Shown from k/n to (k + 1)/n of the cycle (discrete keyTimes start at 0).
+            let (values, times) = match k {
+                0 => ("inline;none", format!("0;{}", at(1))),
+                _ if k + 1 == n => ("none;inline", format!("0;{}", at(k))),
+                _ => ("none;inline;none", format!("0;{};{}", at(k), at(k + 1))),
+            };
+            writeln!(
+                out,
+                "<g class=\"frame\" display=\"{}\">\n<animate attributeName=\"display\" values=\"{values}\" keyTimes=\"{times}\" dur=\"{seconds}s\" calcMode=\"discrete\" repeatCount=\"indefinite\"/>",
                 if k == 0 { "inline" } else { "none" },
-                values.join(";"),
-                times.join(";")
-            );
-            s.push_str(&draw(&camera, frame, readout));
-            s.push_str("</g>\n");
+            )?;
+            out.write_all(draw(camera, frame, readout).as_bytes())?;
+            out.write_all(b"</g>\n")?;
         }
     }
-    s.push_str(&furniture(&camera, readout));
-    s.push_str("</svg>\n");
-    Ok(s)
+    out.write_all(furniture(camera, readout).as_bytes())?;
+    out.write_all(b"</svg>\n")
 }

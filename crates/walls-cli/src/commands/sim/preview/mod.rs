@@ -93,8 +93,8 @@ pub struct PreviewArgs {
     /// them (default 300).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=MOST_FRAMES))]
     pub frames: Option<u64>,
-    /// Of a run's outputs, every Nth (the first, the N+1th…) however many that makes,
-    /// rather than at most 300 evenly spaced.
+    /// Of a run's outputs, every Nth (the first, the N+1th…), rather than at most 300
+    /// evenly spaced; refused if that makes more than 10000 frames.
     #[arg(long, value_name = "N", conflicts_with = "frames", value_parser = clap::value_parser!(u64).range(1..=u64::from(u32::MAX)))]
     pub every: Option<u64>,
     /// An SVG of several frames: write each frame as a numbered still too,
@@ -201,6 +201,9 @@ fn draw(args: &PreviewArgs) -> Result<i32, String> {
             "--every {n} picks among a run's outputs, and the particles given are one set: --frames N --until T makes frames of it"
         ));
     }
+    if let Some(n) = args.every {
+        every_fits(n, read)?;
+    }
     let snapshots = if series {
         movie::pick(snapshots, args.time, picked(args))
     } else {
@@ -297,6 +300,21 @@ fn picked(args: &PreviewArgs) -> movie::Pick {
         (None, Some(n)) => movie::Pick::AtMost(size(n)),
         (None, None) => movie::Pick::AtMost(movie::MOVIE_FRAMES),
     }
+}
+
+/// Whether `--every n` of `outputs` makes no more than [`movie::MOST_FRAMES`] frames,
+/// the most `--frames` may ask for: else how many it would make, and the smallest N
+/// that fits.
+fn every_fits(n: u64, outputs: usize) -> Result<(), String> {
+    let outputs = outputs as u64;
+    let frames = outputs.div_ceil(n.max(1));
+    if frames <= MOST_FRAMES {
+        return Ok(());
+    }
+    Err(format!(
+        "--every {n} of {outputs} outputs would make {frames} frames, more than a movie may have ({MOST_FRAMES}, as with --frames): --every {} or more fits",
+        outputs.div_ceil(MOST_FRAMES)
+    ))
 }
 
 /// The times of --frames (default 1) over [--time, --until].

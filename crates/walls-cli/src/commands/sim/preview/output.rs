@@ -1,7 +1,8 @@
 //! The pictures of `walls-sim preview`, by the extension of `--out`: an SVG (animated
 //! for several frames, with numbered stills), numbered POV-Ray scenes, one VTK
-//! PolyData, a ParaView collection of them, or the HTML page; and the progress bar of a
-//! long series.
+//! PolyData, a ParaView collection of them, or the HTML page; the progress bar of a
+//! long series; and the warning naming an earlier picture's numbered files that this
+//! one did not write, left beside it.
 
 use super::PreviewArgs;
 use crate::movie::Movie;
@@ -217,7 +218,61 @@ pub(super) fn write(
             walls_output::name_files(&names)
         );
     }
+    let left = leftovers(path, kind, files.frames.len());
+    if !left.is_empty() {
+        let names: Vec<&Path> = left.iter().map(PathBuf::as_path).collect();
+        crate::errln!(
+            "walls-sim: warning: {} named as this picture's numbered frames but not written by it (an earlier picture's?) were left as they were: remove them, or a glob of the frames mixes two pictures",
+            walls_output::name_files(&names)
+        );
+    }
     Ok(())
+}
+
+/// The regular files beside a picture of `kind` at `path` that are named exactly as
+/// its numbered frames are (`NAME-007.svg` of an SVG's stills, `NAME-007.pov` of
+/// POV-Ray's scenes, `NAME/NAME_000007.vtp` of a collection's frames) with a number
+/// this picture, writing `written` of them, did not write: an earlier, longer
+/// picture's, which a glob would mix with this one's. They are named in a warning and
+/// never removed (a file of that name may be the user's own).
+fn leftovers(path: &Path, kind: Kind, written: usize) -> Vec<PathBuf> {
+    let name = |p: &Path| p.file_stem().map(|s| s.to_string_lossy().into_owned());
+    let Some(stem) = name(path) else {
+        return Vec::new();
+    };
+    let parent = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let (folder, prefix, width, suffix) = match kind {
+        Kind::Svg => (PathBuf::new(), format!("{stem}-"), 3, ".svg"),
+        Kind::Pov => (PathBuf::new(), format!("{stem}-"), 3, ".pov"),
+        Kind::Pvd => (PathBuf::from(&stem), format!("{stem}_"), 6, ".vtp"),
+        Kind::Vtp | Kind::Html => return Vec::new(),
+    };
+    // The number of a name written as the preview writes it (`{k:03}`, `{k:06}`).
+    let number = |file: &str| -> Option<usize> {
+        let digits = file.strip_prefix(&prefix)?.strip_suffix(suffix)?;
+        let k: usize = digits
+            .bytes()
+            .all(|b| b.is_ascii_digit())
+            .then(|| digits.parse().ok())??;
+        (format!("{k:0width$}") == digits).then_some(k)
+    };
+    let Ok(entries) = std::fs::read_dir(parent.join(&folder)) else {
+        return Vec::new();
+    };
+    let mut left: Vec<(usize, PathBuf)> = entries
+        .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
+        .filter_map(|e| {
+            let k = number(e.file_name().to_str()?)?;
+            let shown = walls_output::path_in(parent, &folder.join(e.file_name()));
+            (k >= written).then_some((k, shown))
+        })
+        .collect();
+    left.sort();
+    left.into_iter().map(|(_, p)| p).collect()
 }
 
 /// The files of a picture, planned: the one `--out` names, the numbered stills or
