@@ -21,8 +21,9 @@ const FOLD: usize = 96;
 pub enum Value {
     /// A double: written in the shortest form that reads back as the same double.
     Real(f64),
-    /// A whole number (an `int` key).
-    Int(i64),
+    /// A whole number (an `int` key); wide enough for any count the tools hold, so that a
+    /// value beyond pkdgrav's int is refused as itself.
+    Int(i128),
     /// A switch (a `bool` key): 1 or 0.
     Bool(bool),
     /// A string, written as is.

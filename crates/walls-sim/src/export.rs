@@ -107,7 +107,7 @@ pub fn par_file(
     let wide = last_step.to_string().len();
     let digits = outputs.ss.digits.max(wide);
     if digits == outputs.ss.digits {
-        written.int("nDigits", digits as i64, None, "pkdgrav's default");
+        written.int("nDigits", digits as i128, None, "pkdgrav's default");
     } else {
         let was = match source.and_then(|s| Some((s.path, s.file.given("nDigits")?))) {
             Some((path, entry)) => {
@@ -122,7 +122,7 @@ pub fn par_file(
         };
         written.push(
             "nDigits",
-            Value::Int(digits as i64),
+            Value::Int(digits as i128),
             format!(
                 "nDigits: the last step's {digits} digits ({was} would make the last outputs' names wider than the first ones')"
             ),
@@ -155,7 +155,7 @@ pub fn par_file(
     );
     written.int(
         "nSteps",
-        i64::try_from(last_step).unwrap_or(i64::MAX),
+        i128::from(last_step),
         steps_from,
         "walls-sim's default end time (three free falls over the scene) in steps of dDelta",
     );
@@ -163,7 +163,7 @@ pub fn par_file(
     if settings.start_step != 0 || written.given("iStartStep") {
         written.int(
             "iStartStep",
-            i64::try_from(settings.start_step).unwrap_or(i64::MAX),
+            i128::from(settings.start_step),
             None,
             "pkdgrav's default",
         );
@@ -171,14 +171,14 @@ pub fn par_file(
     if let Some(n) = outputs.reduced {
         written.int(
             "iRedOutInterval",
-            i64::try_from(n).unwrap_or(i64::MAX),
+            i128::from(n),
             None,
             "pkdgrav's default",
         );
     }
     written.int(
         "iOutInterval",
-        i64::try_from(outputs.every).unwrap_or(i64::MAX),
+        i128::from(outputs.every),
         flags.counts.every.map(|n| format!("--every {n}")),
         &format!(
             "walls-sim's default, an output every {} steps",
@@ -288,7 +288,7 @@ pub fn par_file(
     if build.has("DEM_COHESION") {
         written.int(
             "iCohesionModel",
-            settings.cohesion.model.code(),
+            settings.cohesion.model.code().into(),
             None,
             "pkdgrav's default",
         );
@@ -470,7 +470,7 @@ impl Written<'_> {
         self.push(key, Value::Real(x), comment);
     }
 
-    fn int(&mut self, key: &'static str, n: i64, flag: Option<String>, default: &str) {
+    fn int(&mut self, key: &'static str, n: i128, flag: Option<String>, default: &str) {
         let comment = self.origin(key, flag, default);
         self.push(key, Value::Int(n), comment);
     }
@@ -502,7 +502,7 @@ impl Written<'_> {
         let value = match registered.kind {
             walls_par::keys::Kind::Double => Value::Real(value),
             walls_par::keys::Kind::Bool => Value::Bool(value != 0.0),
-            _ => Value::Int(value as i64),
+            _ => Value::Int(value as i128),
         };
         self.push(key, value, comment);
     }
