@@ -334,7 +334,10 @@ fn a_two_gigabyte_ss_file_is_refused_from_its_header_without_being_read() {
     );
     let start = std::time::Instant::now();
     assert_eq!(read_ss_file(&path).unwrap_err().to_string(), expected);
-    assert_eq!(read_file(&path.to_string_lossy()).unwrap_err().to_string(), expected);
+    assert_eq!(
+        read_file(&path.to_string_lossy()).unwrap_err().to_string(),
+        expected
+    );
     let took = start.elapsed();
     assert!(took < std::time::Duration::from_millis(500), "{took:?}");
     // Reduced records are counted as the reduced size, 28 bytes.
