@@ -293,16 +293,21 @@ def test_the_writers_replace_a_regular_file_whole(tmp_path):
     _, p = walls.read_ss(EXAMPLES / "drop.ss")
     walls.write_ss(path, 0.0, p)
     assert walls.read_ss(path)[0] == 0.0
-    # A failure (here, a folder that cannot take the new file) leaves the old file.
-    os.chmod(tmp_path, 0o500)
+    # A failed write (a full disk: here a file-size limit of 64 bytes, under the 112 of
+    # the file) leaves the old file whole, and nothing beside it.
+    import resource
+
+    limits = resource.getrlimit(resource.RLIMIT_FSIZE)
+    handler = signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (64, limits[1]))
     try:
-        if os.access(tmp_path, os.W_OK):
-            pytest.skip("root writes a read-only folder")
         with pytest.raises(walls.WallsError, match=re.escape(f"cannot write {path}")):
             walls.write_ss(path, 1.0, p)
     finally:
-        os.chmod(tmp_path, 0o700)
+        resource.setrlimit(resource.RLIMIT_FSIZE, limits)
+        signal.signal(signal.SIGXFSZ, handler)
     assert walls.read_ss(path)[0] == 0.0
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
 
 
 def test_read_ss_refuses_devices_and_fifos_at_once(tmp_path):
