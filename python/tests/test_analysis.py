@@ -12,6 +12,7 @@ import csv
 import html
 import json
 import math
+import os
 import re
 import shutil
 import signal
@@ -246,6 +247,87 @@ def test_write_ss_refuses_what_the_reader_would(tmp_path):
     assert not path.exists()
     with pytest.raises(walls.WallsError, match="cannot write"):
         walls.write_ss(tmp_path / "no-such-folder" / "x.ss", 0.0, p)
+
+
+def _writers():
+    """Both of the package's writers, each as a function of the path it writes."""
+    _, p = walls.read_ss(EXAMPLES / "drop.ss")
+    page = walls.Preview("<p>page</p>")
+    return [lambda path: walls.write_ss(path, 0.0, p), page.save]
+
+
+def test_the_writers_refuse_devices_folders_fifos_and_hard_links(tmp_path):
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    original = tmp_path / "original"
+    original.write_bytes(b"kept")
+    linked = tmp_path / "linked"
+    os.link(original, linked)
+    refused = [
+        ("/dev/null", "it is a character device"),
+        (tmp_path, "it is a folder"),
+        (fifo, "it is a FIFO"),
+        (linked, "it has 2 hard links"),
+    ]
+    for write in _writers():
+        for path, why in refused:
+            start = time.monotonic()
+            with pytest.raises(walls.WallsError, match=re.escape(f"not writing {path}: {why}")):
+                write(path)
+            # Refused at once: a FIFO is not opened, so nothing blocks.
+            assert time.monotonic() - start < 5
+        assert original.read_bytes() == b"kept" and linked.read_bytes() == b"kept"
+        assert fifo.is_fifo()
+
+
+def test_the_writers_replace_a_regular_file_whole(tmp_path):
+    path = tmp_path / "out"
+    for write in _writers():
+        path.write_bytes(b"old")
+        os.chmod(path, 0o640)
+        write(path)
+        assert path.read_bytes() != b"old" and path.stat().st_nlink == 1
+        assert path.stat().st_mode & 0o777 == 0o640
+        # Nothing is left beside it: the new file was renamed into place.
+        assert [p.name for p in tmp_path.iterdir()] == ["out"]
+    _, p = walls.read_ss(EXAMPLES / "drop.ss")
+    walls.write_ss(path, 0.0, p)
+    assert walls.read_ss(path)[0] == 0.0
+    # A failed write (a full disk: here a file-size limit of 64 bytes, under the 112 of
+    # the file) leaves the old file whole, and nothing beside it.
+    import resource
+
+    limits = resource.getrlimit(resource.RLIMIT_FSIZE)
+    handler = signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (64, limits[1]))
+    try:
+        with pytest.raises(walls.WallsError, match=re.escape(f"cannot write {path}")):
+            walls.write_ss(path, 1.0, p)
+    finally:
+        resource.setrlimit(resource.RLIMIT_FSIZE, limits)
+        signal.signal(signal.SIGXFSZ, handler)
+    assert walls.read_ss(path)[0] == 0.0
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+def test_read_ss_refuses_devices_and_fifos_at_once(tmp_path):
+    fifo = tmp_path / "fifo.ss"
+    os.mkfifo(fifo)
+    for path, why in [("/dev/zero", "it is a character device"), (fifo, "it is a FIFO"), (tmp_path, "it is a folder")]:
+        start = time.monotonic()
+        with pytest.raises(walls.WallsError, match=re.escape(f"cannot read {path}: {why}")):
+            walls.read_ss(path)
+        assert time.monotonic() - start < 5
+    # A file far longer than its header says is refused from its header and its length.
+    big = tmp_path / "big.ss"
+    with open(big, "wb") as f:
+        f.write((EXAMPLES / "drop.ss").read_bytes()[:16])
+        f.truncate(2**31)
+    start = time.monotonic()
+    expected = f"{big}: byte 8: 1 particles of 96 bytes need 112 bytes, the file has {2**31}"
+    with pytest.raises(walls.WallsError, match=re.escape(expected)):
+        walls.read_ss(big)
+    assert time.monotonic() - start < 1
 
 
 # ---------------------------------------------------------------------------------------

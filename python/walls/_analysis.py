@@ -94,14 +94,12 @@ def write_ss(path: Path, time: float, particles: Any) -> None:
     ``read_ss`` gives); the file is made by the tools' one ``.ss`` writer, which
     ``read_ss`` reads back exactly. Particles ``walls-sim run`` would refuse (a mass or
     radius not positive, a number not finite) raise ``walls.WallsError`` before anything
-    is written.
+    is written. A regular file at ``path`` is replaced (as ``numpy.save`` does), whole
+    or not at all; a device, a FIFO, a folder or a file with hard links is refused with
+    ``walls.WallsError``, as the command-line tools refuse them.
     """
     data = _walls._ss_bytes(time, _records(particles, "particles").tobytes())
-    try:
-        with open(path, "wb") as f:
-            f.write(data)
-    except OSError as e:
-        raise _error(f"cannot write {os.fsdecode(path)}: {e.strerror or e}") from e
+    _walls._write(path, data)
 
 
 def _text_of(walls: Union[Path, bytes]) -> Optional[bytes]:
@@ -279,12 +277,12 @@ class Preview:
         )
 
     def save(self, path: Path) -> None:
-        """Write the page to ``path`` (an ``.html`` file that needs no network)."""
-        try:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(self.html)
-        except OSError as e:
-            raise _error(f"cannot write {os.fsdecode(path)}: {e.strerror or e}") from e
+        """Write the page to ``path`` (an ``.html`` file that needs no network).
+
+        A regular file at ``path`` is replaced, whole or not at all; a device, a FIFO, a
+        folder or a file with hard links raises ``walls.WallsError``, as ``write_ss``.
+        """
+        _walls._write(path, self.html.encode("utf-8"))
 
     def __repr__(self) -> str:
         return f"<walls.Preview: {len(self.html)} characters of HTML>"

@@ -77,6 +77,9 @@ pub struct Tool {
     /// Whether it rewrites the files it reads (walls-fmt, `walls-lint --fix`) rather than
     /// writing outputs of its own.
     pub rewrites: bool,
+    /// Whether `-` names standard output, which the messages then offer (a command line;
+    /// not the Python package, whose writes take a path).
+    pub dash: bool,
 }
 
 impl Tool {
@@ -92,6 +95,15 @@ impl Tool {
     pub const EXPORT: Tool = Tool::writer("walls-sim export");
     /// `walls-sim preview`, writing pictures.
     pub const PREVIEW: Tool = Tool::writer("walls-sim preview");
+    /// The Python package (`walls.write_ss`, `walls.Preview.save`), writing the file a
+    /// function is given, which it replaces as `numpy.save` does.
+    pub const PYTHON: Tool = Tool {
+        command: "walls (Python)",
+        verb: "write",
+        done: "written",
+        rewrites: false,
+        dash: false,
+    };
 
     const fn rewriter(command: &'static str, verb: &'static str, done: &'static str) -> Tool {
         Tool {
@@ -99,6 +111,7 @@ impl Tool {
             verb,
             done,
             rewrites: true,
+            dash: true,
         }
     }
 
@@ -108,6 +121,7 @@ impl Tool {
             verb: "write",
             done: "written",
             rewrites: false,
+            dash: true,
         }
     }
 }
@@ -120,9 +134,13 @@ impl Refusal {
             Refusal::NotRegular { kind } if tool.rewrites => {
                 format!("it is {}, not a regular file", kind.named())
             }
-            Refusal::NotRegular { kind } => format!(
+            Refusal::NotRegular { kind } if tool.dash => format!(
                 "it is {}, which the walls tools never replace or write into (to write to \
                  standard output, give -)",
+                kind.named()
+            ),
+            Refusal::NotRegular { kind } => format!(
+                "it is {}, which the walls tools never replace or write into",
                 kind.named()
             ),
             Refusal::DanglingLink { to } => format!(
@@ -159,10 +177,13 @@ impl Refusal {
             Refusal::Input => {
                 format!("{command} reads it: an output never replaces one of the command's inputs")
             }
-            Refusal::StandardStream => {
+            Refusal::StandardStream if tool.dash => {
                 "it names an open file of the process, not a file: for standard output, \
                  give - (or leave the option out) and redirect it"
                     .into()
+            }
+            Refusal::StandardStream => {
+                "it names an open file of the process, not a file the tools replace".into()
             }
             Refusal::Link => "it is a symbolic link, which an output placed in a folder \
                  never follows: remove it, or write elsewhere"

@@ -8,7 +8,8 @@
 //! converts the arguments of them all, strictly and in one place; [`run`] is
 //! `walls.run` (a run of `walls-sim run`), [`ss`] `walls.read_ss` and `walls.write_ss`,
 //! [`preview`] `walls.preview` (the page of `walls-sim preview --out page.html`), whose
-//! NumPy side is `python/walls/_analysis.py`. The work runs with the GIL released, so
+//! NumPy side is `python/walls/_analysis.py`; [`write`] writes their files through
+//! `walls-output`, as the tools write theirs. The work runs with the GIL released, so
 //! threads may lint files side by side.
 //!
 //! Each file of the module adds its own functions in its `register`; a new one is a
@@ -22,6 +23,7 @@ mod preview;
 mod run;
 mod ss;
 mod tools;
+mod write;
 
 use pyo3::prelude::*;
 
@@ -36,5 +38,6 @@ fn _walls(m: &Bound<'_, PyModule>) -> PyResult<()> {
     run::register(m)?;
     ss::register(m)?;
     preview::register(m)?;
+    write::register(m)?;
     Ok(())
 }

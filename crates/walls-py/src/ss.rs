@@ -1,6 +1,6 @@
 //! `walls.read_ss` and `walls.write_ss`: pkdgrav `.ss` files through the run's own reader
 //! and writer (`walls_sim::io::particles`), and particles as NumPy records. Python writes
-//! the file `_ss_bytes` makes (only `walls-output` writes files in Rust).
+//! the file `_ss_bytes` makes through `_write` (`crate::write`, `walls-output`).
 //!
 //! Python sees particles as records of `walls.SS_DTYPE` (`python/walls/_analysis.py`):
 //! `mass`, `radius`, `pos[3]`, `vel[3]`, `spin[3]` as native doubles, then `color` and
@@ -13,7 +13,6 @@ use nalgebra::Vector3;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyList};
 use walls_geometry::Particle;
-use walls_sim::io::FileError;
 use walls_sim::io::particles as io;
 
 /// Bytes of one record of `walls.SS_DTYPE`.
@@ -81,25 +80,19 @@ fn particles(bytes: &[u8]) -> Result<Vec<Particle>, String> {
 
 /// Reads the pkdgrav `.ss` file at `path` (standard or reduced) as `walls-sim run
 /// --particles` reads it: its header's time, its particles as records of
-/// `walls.SS_DTYPE`, and the warnings about its numbers (subnormal values, W701). A file
-/// that cannot be read, or is not a `.ss` file pkdgrav would read, raises `WallsError`
-/// naming the path and the byte.
+/// `walls.SS_DTYPE`, and the warnings about its numbers (subnormal values, W701), by the
+/// one `.ss` file reader ([`io::read_ss_file`]). A path that is not a regular file (a
+/// device, a FIFO, a folder) is refused before it is read, and a file whose length is not
+/// what its header's particle count needs before its records are read; these, a file
+/// that cannot be read, or one that is not a `.ss` file pkdgrav would read, raise
+/// `WallsError` naming the path and the byte.
 #[pyfunction]
 fn _read_ss<'py>(
     py: Python<'py>,
     #[pyo3(from_py_with = args::path)] path: std::path::PathBuf,
 ) -> PyResult<(f64, Bound<'py, PyBytes>, Bound<'py, PyList>)> {
     let name = path.display().to_string();
-    let read = py.detach(|| {
-        let bytes = std::fs::read(&path).map_err(|error| FileError::Read {
-            path: name.clone(),
-            error,
-        })?;
-        io::read_ss(&bytes).map_err(|error| FileError::Input {
-            path: name.clone(),
-            error,
-        })
-    });
+    let read = py.detach(|| io::read_ss_file(&path));
     let (time, read) = read.map_err(|e| diagnostics::plain(py, e.to_string()))?;
     let warnings: Vec<String> = read
         .warnings

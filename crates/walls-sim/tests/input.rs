@@ -309,3 +309,72 @@ fn a_negative_colour_is_stuck_from_the_start_and_stuck_particles_are_written_so(
         "the run's own record keeps the colour given"
     );
 }
+
+/// A `.ss` header: `time`, `count` particles, the magic number `magic`.
+fn ss_header(count: i32, magic: i32) -> Vec<u8> {
+    let mut b = 0.0f64.to_be_bytes().to_vec();
+    b.extend_from_slice(&count.to_be_bytes());
+    b.extend_from_slice(&magic.to_be_bytes());
+    b
+}
+
+#[test]
+fn a_two_gigabyte_ss_file_is_refused_from_its_header_without_being_read() {
+    use walls_sim::io::particles::{read_file, read_ss_file};
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("big.ss");
+    let file = std::fs::File::create(&path).unwrap();
+    std::io::Write::write_all(&mut &file, &ss_header(1, -1)).unwrap();
+    // Sparse: no disk, and reading it would take 2 GB of memory and seconds.
+    file.set_len(2 << 30).unwrap();
+    let name = path.display();
+    let expected = format!(
+        "{name}: byte 8: 1 particles of 96 bytes need 112 bytes, the file has {}",
+        2u64 << 30
+    );
+    let start = std::time::Instant::now();
+    assert_eq!(read_ss_file(&path).unwrap_err().to_string(), expected);
+    assert_eq!(
+        read_file(&path.to_string_lossy()).unwrap_err().to_string(),
+        expected
+    );
+    let took = start.elapsed();
+    assert!(took < std::time::Duration::from_millis(500), "{took:?}");
+    // Reduced records are counted as the reduced size, 28 bytes.
+    std::fs::write(&path, ss_header(2, -10101)).unwrap();
+    assert_eq!(
+        read_ss_file(&path).unwrap_err().to_string(),
+        format!("{name}: byte 8: 2 particles of 28 bytes need 72 bytes, the file has 16")
+    );
+}
+
+#[test]
+fn what_is_not_a_regular_file_is_refused_before_it_is_read() {
+    use walls_sim::io::particles::{read_file, read_input, read_ss_file};
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("fifo.ss");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let folder = dir.path().to_path_buf();
+    let cases = [
+        (std::path::PathBuf::from("/dev/zero"), "a character device"),
+        (fifo, "a FIFO (named pipe)"),
+        (folder, "a folder"),
+    ];
+    for (path, kind) in cases {
+        let expected = format!(
+            "cannot read {}: it is {kind}, not a regular file (for standard input, give -)",
+            path.display()
+        );
+        let start = std::time::Instant::now();
+        assert_eq!(read_ss_file(&path).unwrap_err().to_string(), expected);
+        let text = path.to_string_lossy();
+        assert_eq!(read_file(&text).unwrap_err().to_string(), expected);
+        assert_eq!(read_input(&text).unwrap_err().to_string(), expected);
+        let took = start.elapsed();
+        assert!(took < std::time::Duration::from_millis(500), "{took:?}");
+    }
+}

@@ -16,7 +16,9 @@ use super::{FileError, InputError, error};
 use crate::bodies::State;
 use crate::warning::Warning;
 use nalgebra::Vector3;
-use std::io::{self, Write};
+use std::fs::File;
+use std::io::{self, Read, Write};
+use std::path::Path;
 use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
@@ -235,9 +237,18 @@ const SS_FIELDS: [&str; 11] = [
     "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz",
 ];
 
-/// Reads a pkdgrav `.ss` file: its time and particles.
-pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
-    let mut x = Xdr { bytes, at: 0 };
+/// A `.ss` file's 16-byte header, checked against the file's length.
+struct Header {
+    time: f64,
+    count: usize,
+    standard: bool,
+}
+
+/// Reads the header of a `.ss` file of `len` bytes from `x` (its time, particle count and
+/// magic number) and checks that the records the count implies (standard or reduced) make
+/// exactly `len` bytes; the header's time goes to `warnings` if subnormal. This is all a
+/// file is checked by before its records are read ([`read_ss_file`]).
+fn header(x: &mut Xdr<'_>, len: u64, warnings: &mut Vec<Warning>) -> Result<Header, InputError> {
     let time = x.f64()?;
     if !time.is_finite() {
         return Err(error(
@@ -245,11 +256,10 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
             format!("the header's time is {time}, not a finite number"),
         ));
     }
-    let mut warnings = Vec::new();
-    super::subnormal(time, || "byte 0: the header's time".into(), &mut warnings);
+    super::subnormal(time, || "byte 0: the header's time".into(), warnings);
     let count = x.i32()?;
     let magic = x.i32()?;
-    let record = match magic {
+    let record: u64 = match magic {
         STANDARD => 96,
         REDUCED => 28,
         m => {
@@ -259,20 +269,33 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
             ));
         }
     };
-    if count < 0 || bytes.len() != 16 + count as usize * record {
+    let need = 16 + u64::from(count.max(0).unsigned_abs()) * record;
+    if count < 0 || len != need {
         return Err(error(
             "byte 8",
-            format!(
-                "{count} particles of {record} bytes need {} bytes, the file has {}",
-                16 + count.max(0) as usize * record,
-                bytes.len()
-            ),
+            format!("{count} particles of {record} bytes need {need} bytes, the file has {len}"),
         ));
     }
-    let mut out = Vec::with_capacity(count as usize);
+    Ok(Header {
+        time,
+        count: count.unsigned_abs() as usize,
+        standard: magic == STANDARD,
+    })
+}
+
+/// Reads a pkdgrav `.ss` file: its time and particles.
+pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
+    let mut x = Xdr { bytes, at: 0 };
+    let mut warnings = Vec::new();
+    let Header {
+        time,
+        count,
+        standard,
+    } = header(&mut x, bytes.len() as u64, &mut warnings)?;
+    let mut out = Vec::with_capacity(count);
     for k in 0..count {
         let start = x.at;
-        let p = if magic == STANDARD {
+        let p = if standard {
             let mass = x.f64()?;
             let radius = x.f64()?;
             let pos = Vec3::new(x.f64()?, x.f64()?, x.f64()?);
@@ -303,7 +326,7 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
         };
         check(&p)
             .map_err(|says| error(format!("byte {start}"), format!("particle {k}: {says}")))?;
-        if magic == STANDARD {
+        if standard {
             // (A reduced record's single-precision numbers are normal doubles.)
             let values = [p.mass, p.radius].into_iter().chain(p.pos.iter().copied());
             let values = values
@@ -422,7 +445,102 @@ pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Particles, InputError> {
     }
 }
 
-/// Reads the file at `path`, or standard input when it is `-`.
+/// Opens the file at `path` to read it, refusing what is not a regular file (a folder, a
+/// FIFO, a device, a socket) before opening it: reading `/dev/zero` would fill memory, a
+/// FIFO would block. Returns the file and its length.
+fn open_regular(path: &Path) -> Result<(File, u64), FileError> {
+    let name = path.display().to_string();
+    let regular = |m: &std::fs::Metadata| {
+        use std::os::unix::fs::FileTypeExt;
+        let t = m.file_type();
+        let kind = if t.is_file() {
+            return Ok(());
+        } else if t.is_dir() {
+            "a folder"
+        } else if t.is_fifo() {
+            "a FIFO (named pipe)"
+        } else if t.is_char_device() {
+            "a character device"
+        } else if t.is_block_device() {
+            "a block device"
+        } else if t.is_socket() {
+            "a socket"
+        } else {
+            "not a file"
+        };
+        Err(FileError::read(
+            &name,
+            io::Error::other(format!(
+                "it is {kind}, not a regular file (for standard input, give -)"
+            )),
+        ))
+    };
+    regular(&std::fs::metadata(path).map_err(|e| FileError::read(&name, e))?)?;
+    let file = File::open(path).map_err(|e| FileError::read(&name, e))?;
+    // What was opened, should the name have changed meanwhile.
+    let m = file.metadata().map_err(|e| FileError::read(&name, e))?;
+    regular(&m)?;
+    Ok((file, m.len()))
+}
+
+/// The first `at_most` bytes of `file`, fewer if it ends sooner; `path` names it.
+fn read_head(file: &mut File, at_most: u64, path: &Path) -> Result<Vec<u8>, FileError> {
+    let mut bytes = Vec::new();
+    file.take(at_most)
+        .read_to_end(&mut bytes)
+        .map_err(|e| FileError::read(&path.display().to_string(), e))?;
+    Ok(bytes)
+}
+
+/// The bytes of the regular file `file` of `len` bytes (by its metadata) whose first
+/// bytes, `head`, were read: the rest is read up to one byte past `len`, so a file that
+/// grows meanwhile is found wrong without being read whole.
+fn read_rest(
+    mut file: File,
+    len: u64,
+    mut head: Vec<u8>,
+    path: &Path,
+) -> Result<Vec<u8>, FileError> {
+    let rest = (len + 1).saturating_sub(head.len() as u64);
+    let mut more = read_head(&mut file, rest, path)?;
+    head.append(&mut more);
+    Ok(head)
+}
+
+/// The `.ss` file `file` of `len` bytes whose first 16 bytes (fewer if it is shorter) are
+/// `head`: the header is checked against `len` (the particle count and the record size
+/// give the length) before the records are read, so a file of the wrong length, however
+/// large, is refused having read 16 bytes.
+fn read_ss_open(
+    file: File,
+    len: u64,
+    head: Vec<u8>,
+    path: &Path,
+) -> Result<(f64, Particles), FileError> {
+    let name = path.display().to_string();
+    if head.len() == 16 {
+        let mut x = Xdr {
+            bytes: &head,
+            at: 0,
+        };
+        header(&mut x, len, &mut Vec::new()).map_err(|e| FileError::input(&name, e))?;
+    }
+    let bytes = read_rest(file, len, head, path)?;
+    read_ss(&bytes).map_err(|e| FileError::input(&name, e))
+}
+
+/// Reads the pkdgrav `.ss` file at `path` as [`read_file`] reads one: a path that is not
+/// a regular file is refused before it is opened, and the 16-byte header is checked
+/// against the file's length before the rest is read. Its time and particles (the
+/// warnings not yet located: see [`read_file`]).
+pub fn read_ss_file(path: &Path) -> Result<(f64, Particles), FileError> {
+    let (mut file, len) = open_regular(path)?;
+    let head = read_head(&mut file, 16, path)?;
+    read_ss_open(file, len, head, path)
+}
+
+/// Reads the file at `path`, or standard input when it is `-`; a path that is not a
+/// regular file (a folder, a FIFO, a device) is refused before it is read.
 pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
     if path == "-" {
         let mut bytes = Vec::new();
@@ -430,27 +548,39 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
             .map_err(|e| FileError::read("standard input", e))?;
         return Ok(bytes);
     }
-    std::fs::read(path).map_err(|e| FileError::read(path, e))
+    let path = Path::new(path);
+    let (file, len) = open_regular(path)?;
+    read_rest(file, len, Vec::new(), path)
 }
 
 /// Particles from the file at `path` (`-`: standard input), CSV or a pkdgrav `.ss`
-/// file ([`format_of`]), the warnings located in it.
+/// file ([`format_of`]), the warnings located in it. A path that is not a regular file
+/// is refused before it is read; a CSV is read as it streams in (at 10⁶ particles its
+/// 124 MB of text, read whole, would lie beside the particles), a `.ss` file's header is
+/// checked against the file's length before its records are read ([`read_ss_file`]).
 pub fn read_file(path: &str) -> Result<Particles, FileError> {
     let name = if path == "-" { "<stdin>" } else { path };
-    // A file named as CSV is read as it streams in: at 10⁶ particles its 124 MB of
-    // text, read whole, lay beside the particles.
-    let csv_file = path != "-"
-        && format_of(path, &[]) == Some(Format::Csv)
-        && std::fs::metadata(path).is_ok_and(|m| m.is_file());
-    let read = if csv_file {
-        let file = std::fs::File::open(path).map_err(|e| FileError::read(path, e))?;
-        read_csv_from(file)
-    } else {
+    let read = if path == "-" {
         read_bytes(path, &read_input(path)?)
+    } else {
+        let p = Path::new(path);
+        let (mut file, len) = open_regular(p)?;
+        let head = read_head(&mut file, 16, p)?;
+        match format_of(path, &head) {
+            Some(Format::Csv) => read_csv_from(io::Cursor::new(head).chain(file)),
+            Some(Format::Ss) => return Ok(located(name, read_ss_open(file, len, head, p)?.1)),
+            // Found by the whole first line, not its first 16 bytes.
+            None => read_bytes(path, &read_rest(file, len, head, p)?),
+        }
     };
     let read = read.map_err(|e| FileError::input(name, e))?;
-    Ok(Particles {
+    Ok(located(name, read))
+}
+
+/// `read` with its warnings located in the file `name`.
+fn located(name: &str, read: Particles) -> Particles {
+    Particles {
         warnings: super::in_file(name, read.warnings),
         ..read
-    })
+    }
 }
