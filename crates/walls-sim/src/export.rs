@@ -169,12 +169,7 @@ pub fn par_file(
         );
     }
     if let Some(n) = outputs.reduced {
-        written.int(
-            "iRedOutInterval",
-            i128::from(n),
-            None,
-            "pkdgrav's default",
-        );
+        written.int("iRedOutInterval", i128::from(n), None, "pkdgrav's default");
     }
     written.int(
         "iOutInterval",
