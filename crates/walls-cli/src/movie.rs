@@ -88,11 +88,19 @@ pub fn trailing_step(path: &Path) -> Option<u64> {
 /// step for a `particles.csv` of `walls-sim run --out`. Errors name the file and the
 /// line or byte.
 pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
-    use walls_sim::io::particles::{Format, format_of, read_input};
+    use walls_sim::io::particles::{Format, Opened, format_of, open_input};
     let name = path.display();
     let given = path.to_string_lossy();
-    let bytes = read_input(&given).map_err(|e| e.to_string())?;
-    let format = format_of(&given, &bytes).ok_or_else(|| {
+    // A `.ss` file is read header first: one whose header does not match its length is
+    // refused before its records are read.
+    let (bytes, ss) = match open_input(&given).map_err(|e| e.to_string())? {
+        Opened::Ss(t, read) => (Vec::new(), Some((t, read))),
+        Opened::Bytes(bytes) => (bytes, None),
+    };
+    let format = (ss.is_some())
+        .then_some(Format::Ss)
+        .or_else(|| format_of(&given, &bytes))
+        .ok_or_else(|| {
         format!(
             "{name}: neither a particle CSV (a text header row) nor a pkdgrav .ss file (a binary header with the magic number -1 or -10101 at byte 12)"
         )
@@ -104,7 +112,10 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
         }
     };
     if format == Format::Ss {
-        let (t, read) = read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?;
+        let (t, read) = match ss {
+            Some(read) => read,
+            None => read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?,
+        };
         warn(&read.warnings);
         return Ok(vec![Snapshot {
             t: Some(t),

@@ -518,3 +518,42 @@ fn an_earlier_pictures_other_frames_are_named_and_left() {
     let out = preview("3", "m.svg", &["--stills"]);
     assert!(!stderr(&out).contains("warning"), "{}", stderr(&out));
 }
+
+#[test]
+fn a_ss_output_whose_header_lies_is_refused_before_it_is_read() {
+    // pkdgrav's name (`NAME.STEP`, no `.ss`): a header of one particle in a 2 GiB file.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("floor.walls"), "wall type plane\n").unwrap();
+    let mut header = 0f64.to_be_bytes().to_vec();
+    header.extend(1i32.to_be_bytes());
+    header.extend((-1i32).to_be_bytes());
+    std::fs::write(dir.path().join("ss.00100"), header).unwrap();
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .open(dir.path().join("ss.00100"))
+        .unwrap();
+    file.set_len(2 << 30).unwrap();
+    let started = std::time::Instant::now();
+    let out = walls_sim(
+        dir.path(),
+        &[
+            "preview",
+            "floor.walls",
+            "--particles",
+            "ss.00100",
+            "--out",
+            "m.svg",
+        ],
+    );
+    assert!(
+        started.elapsed().as_secs_f64() < 1.0,
+        "{:?}",
+        started.elapsed()
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        stderr(&out),
+        "walls-sim: error: ss.00100: byte 8: 1 particles of 96 bytes need 112 bytes, the file has 2147483648\n"
+    );
+    assert!(!dir.path().join("m.svg").exists());
+}

@@ -577,6 +577,32 @@ pub fn read_file(path: &str) -> Result<Particles, FileError> {
     Ok(located(name, read))
 }
 
+/// A particle file as [`open_input`] gives it to a reader that tells more formats apart
+/// than [`read_file`] (the preview's run outputs).
+pub enum Opened {
+    /// A pkdgrav `.ss` file: its header's time and its particles.
+    Ss(f64, Particles),
+    /// Anything else (or standard input), as its bytes.
+    Bytes(Vec<u8>),
+}
+
+/// The file at `path` (`-`: standard input) as [`read_file`] opens it: a path that is
+/// not a regular file refused before it is read, a `.ss` file (by its name or its first
+/// 16 bytes) read header first ([`read_ss_file`]); anything else read whole.
+pub fn open_input(path: &str) -> Result<Opened, FileError> {
+    if path == "-" {
+        return Ok(Opened::Bytes(read_input(path)?));
+    }
+    let p = Path::new(path);
+    let (mut file, len) = open_regular(p)?;
+    let head = read_head(&mut file, 16, p)?;
+    if format_of(path, &head) == Some(Format::Ss) {
+        let (t, read) = read_ss_open(file, len, head, p)?;
+        return Ok(Opened::Ss(t, read));
+    }
+    Ok(Opened::Bytes(read_rest(file, len, head, p)?))
+}
+
 /// `read` with its warnings located in the file `name`.
 fn located(name: &str, read: Particles) -> Particles {
     Particles {
