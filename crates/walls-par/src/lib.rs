@@ -9,6 +9,21 @@
 //! The build is a set of compile options ([`Build`]); the default is pkdgrav's default
 //! soft-sphere build with walls ([`options::DEFAULT`]).
 
+/// The lines every code's example `.par` shares (the `.par` rules' and the run
+/// directory's), of a run directory pkdgrav's default build runs without a word: the
+/// examples add the lines they are about.
+macro_rules! settled {
+    () => {
+        "achInFile            = ss.ic
+achWallsFile         = walls.dat
+iOutInterval         = 100
+iForceOverrideOption = 2
+iOutcomes            = 0
+bDoSelfGravity       = 0
+"
+    };
+}
+
 pub mod check;
 pub mod codes;
 pub mod evaluator;

@@ -2,20 +2,6 @@
 //! `startup.rs`, their one check): each file holds its code's `Code`, with the
 //! explanation and the bad and good examples a test runs, and its check.
 
-/// The lines every code's example `.par` shares, of a run directory pkdgrav's default
-/// build runs without a word: the examples add the lines they are about.
-macro_rules! settled {
-    () => {
-        "achInFile            = ss.ic
-achWallsFile         = walls.dat
-iOutInterval         = 100
-iForceOverrideOption = 2
-iOutcomes            = 0
-bDoSelfGravity       = 0
-"
-    };
-}
-
 /// A whole example `.par` that pkdgrav's default build runs without a word, and that
 /// has no finding: [`settled`] and the timestep, steps, spring and checkpoints.
 macro_rules! clean {

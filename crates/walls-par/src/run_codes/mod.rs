@@ -5,19 +5,12 @@
 //! the codes are here, below the registry, so that every tool knows them (`--explain`,
 //! settings' `ignore`, the language server).
 
-/// The `.par` lines every code's example shares: a run directory pkdgrav's default
-/// build runs without a word (the `.par`'s own check finds nothing in it); the examples
-/// add the lines they are about.
+/// The `.par` lines every code's example shares: `settled!`'s, with checkpoints off, of a
+/// run directory pkdgrav's default build runs without a word (the `.par`'s own check finds
+/// nothing in it); the examples add the lines they are about.
 macro_rules! run_par {
     () => {
-        "achInFile            = ss.ic
-achWallsFile         = walls.dat
-iOutInterval         = 100
-iForceOverrideOption = 2
-iOutcomes            = 0
-bDoSelfGravity       = 0
-iCheckInterval       = 0
-"
+        concat!(settled!(), "iCheckInterval       = 0\n")
     };
 }
 
