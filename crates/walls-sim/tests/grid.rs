@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use std::collections::BTreeSet;
-use walls_sim::broad::grid::{CellGrid, GridScratch};
+use walls_sim::broad::grid::CellGrid;
 
 type Vec3 = Vector3<f64>;
 
@@ -162,12 +162,12 @@ proptest! {
 
     #[test]
     fn a_grid_filled_again_is_the_grid_made_anew(a in spheres(), b in spheres()) {
-        // One grid and one scratch, filled with one set, another, and the first again
-        // (each in the memory the last left), as a candidate list's grid is.
-        let (mut grid, mut scratch) = (CellGrid::default(), GridScratch::default());
+        // One grid filled with one set, another, and the first again (each in the
+        // memory the last left), as a candidate list's grid is.
+        let mut grid = CellGrid::default();
         for sp in [&a, &b, &a] {
             let s = swollen(&sp.r, &sp.m);
-            grid.refill(sp.p.len(), |i| Some((sp.p[i], s[i])), &mut scratch);
+            grid.refill(sp.p.len(), |i| Some((sp.p[i], s[i])));
             let fresh = CellGrid::with_margin(&sp.p, &sp.r, &sp.m);
             prop_assert_eq!(visited(&grid), visited(&fresh));
             prop_assert_eq!(grid.cell_count(), fresh.cell_count());
@@ -193,7 +193,7 @@ proptest! {
         let s = swollen(&sp.r, &sp.m);
         let sphere = |i: usize| alive[i].then(|| (sp.p[i], s[i]));
         let mut grid = CellGrid::from_fn(sp.p.len(), sphere);
-        let mut order: Vec<usize> = grid.order().map(|i| i as usize).collect();
+        let mut order: Vec<usize> = grid.order().into_iter().map(|i| i as usize).collect();
         let left_out: Vec<usize> = (0..sp.p.len()).filter(|i| !order.contains(i)).collect();
         order.extend(left_out);
         let old: Vec<(usize, usize)> = (grid.pairs().into_iter())
@@ -202,7 +202,7 @@ proptest! {
         grid.placed_in_order();
         let mut anew = CellGrid::default();
         let placed = |place: usize| sphere(order[place]);
-        anew.refill_ranked(sp.p.len(), placed, |place| order[place] as u32, &mut GridScratch::default());
+        anew.refill_ranked(sp.p.len(), placed, |place| order[place] as u32);
         let to_old = |pairs: Vec<(u32, u32)>| -> Vec<(usize, usize)> {
             pairs.into_iter().map(|(a, b)| (order[a as usize], order[b as usize])).collect()
         };
@@ -440,9 +440,9 @@ fn a_grid_filled_again_goes_between_packed_wide_and_no_keys() {
         (&near, 0.0, &[][..]),
         (&near, 1.0, all),
     ];
-    let (mut grid, mut scratch) = (CellGrid::default(), GridScratch::default());
+    let mut grid = CellGrid::default();
     for (p, r, expected) in scenes {
-        grid.refill(p.len(), |i| Some((p[i], r)), &mut scratch);
+        grid.refill(p.len(), |i| Some((p[i], r)));
         let mut pairs = grid.pairs();
         pairs.sort_unstable();
         assert_eq!(pairs, expected, "radius {r}");
@@ -484,7 +484,7 @@ fn many_particles_are_sorted_by_cell_then_index_on_any_thread() {
         let h = grid.cell_size();
         let inv_h = 1.0 / h;
         let key = |i: usize| p[i].map(|x| (x * inv_h).floor() as i64);
-        let order: Vec<usize> = grid.order().map(|i| i as usize).collect();
+        let order: Vec<usize> = grid.order().into_iter().map(|i| i as usize).collect();
         assert_eq!(order.len(), n);
         assert!(order.windows(2).all(|w| {
             let (a, b) = (key(w[0]), key(w[1]));

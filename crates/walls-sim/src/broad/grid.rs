@@ -51,11 +51,13 @@
 //! leave out particles that are not alive while keeping their indices, use
 //! [`CellGrid::from_fn`] and return `None` for them.
 //!
-//! The grid keeps its own copy of the positions and swollen radii, in cell order: the
-//! pair loop reads them contiguously, and the grid cannot be queried with positions other
-//! than those it binned. The copy is 40 bytes a particle, rebuilt each step with the rest.
+//! **Memory**: a particle's slot is its cell key, rank and index (16 bytes, sorted in
+//! place: nothing else is made to sort them), not a copy of where it is: [`Bins`] are
+//! queried with the spheres they binned, by index ([`Spheres`]), which a caller that
+//! keeps its particles in the grid's order (the soft-sphere run's places) reads almost
+//! in order. [`CellGrid`] is the bins with their own copy of the spheres (32 bytes a
+//! particle), for callers that keep none.
 
-use crate::permute;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -77,16 +79,6 @@ const FORWARD_COLUMNS: [(i64, i64); 4] = [(0, 1), (1, -1), (1, 0), (1, 1)];
 
 /// Bits of a packed key per axis.
 const BITS: u32 = 21;
-
-/// A binned particle: its position, swollen radius, index and rank (40 bytes, as
-/// without the rank: it takes the index's padding).
-#[derive(Debug, Clone, Copy)]
-struct Slot {
-    p: Vec3,
-    s: f64,
-    id: u32,
-    rank: u32,
-}
 
 /// A cell key, ordered as (i, j, k) lexicographically.
 trait Key: Copy + Ord + Send {
@@ -125,53 +117,384 @@ impl Key for Packed {
     }
 }
 
-/// The occupied cells' keys, ascending.
-#[derive(Debug, Clone)]
-enum Keys {
-    /// Packed, with the lowest key along each axis.
-    Packed(Vec<Packed>, [i64; 3]),
-    /// As they are.
-    Wide(Vec<[i64; 3]>),
+/// A binned particle: its cell's key, its rank and its index, ordered so (the order
+/// of the grid: cells by key, within a cell by rank; the ranks are distinct, so the
+/// index never decides). 16 bytes with packed keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Slot<K> {
+    key: K,
+    rank: u32,
+    id: u32,
 }
 
-/// A uniform grid of cubic cells over a set of spheres, for finding the pairs whose
-/// swollen spheres overlap (see the [module documentation](self)). The default grid holds
-/// nothing (no cells).
+/// The binned particles, sorted, and the occupied cells' keys, ascending.
 #[derive(Debug, Clone)]
-pub struct CellGrid {
+enum Cells {
+    /// Keys packed.
+    Packed {
+        keys: Vec<Packed>,
+        slots: Vec<Slot<Packed>>,
+    },
+    /// Keys as they are.
+    Wide {
+        keys: Vec<[i64; 3]>,
+        slots: Vec<Slot<[i64; 3]>>,
+    },
+}
+
+/// Where the binned particles are, by index: (x, y, z, r), each radius `r` swollen by
+/// `margin` (s = r + margin). A [`Bins`] is queried with the spheres it was filled
+/// with.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Spheres<'a> {
+    pub(crate) xyzr: &'a [[f64; 4]],
+    pub(crate) margin: f64,
+}
+
+impl Spheres<'_> {
+    /// Particle i's position and swollen radius.
+    #[inline]
+    fn get(&self, i: usize) -> ([f64; 3], f64) {
+        let [x, y, z, r] = self.xyzr[i];
+        ([x, y, z], r + self.margin)
+    }
+}
+
+/// The cells of a uniform grid over spheres given by index ([`Spheres`]), the
+/// particles binned in them in order (cells by key, within a cell by rank), without a
+/// copy of where they are: 16 bytes a particle (its slot, kept for the next build,
+/// which sorts it in place) and a few a cell. The soft-sphere run's candidate list
+/// bins its spheres so, and [`CellGrid`] bins a copy of its own.
+#[derive(Debug, Clone)]
+pub(crate) struct Bins {
     /// Cell edge h.
     h: f64,
     /// 1/h, for the cell keys.
     inv_h: f64,
-    /// The binned particles, sorted by cell key then rank.
-    slots: Vec<Slot>,
-    /// The occupied cells' keys, ascending.
-    keys: Keys,
+    /// The binned particles and the occupied cells.
+    cells: Cells,
     /// Cell c holds `slots[starts[c]..starts[c + 1]]`; one more entry than the keys.
     starts: Vec<u32>,
-    /// Each particle's slot, or [`NONE`].
-    slot_of: Vec<u32>,
 }
 
-impl Default for CellGrid {
+impl Default for Bins {
     fn default() -> Self {
-        CellGrid {
+        Bins {
             h: 1.0,
             inv_h: 1.0,
-            slots: Vec::new(),
-            keys: Keys::Wide(Vec::new()),
+            cells: Cells::Wide {
+                keys: Vec::new(),
+                slots: Vec::new(),
+            },
             starts: vec![0],
-            slot_of: Vec::new(),
         }
     }
 }
 
-/// What building a [`CellGrid`] works in besides the grid (the binned particles' keys to
-/// sort, with their ranks), kept between builds by whoever builds one again and again
-/// ([`CellGrid::refill`]).
-#[derive(Debug, Default)]
-pub struct GridScratch {
-    order: Vec<(Packed, u32, u32)>,
+impl Bins {
+    /// Bins particles `0..len` of `spheres`, those `kept` says and whose position is
+    /// finite and swollen radius finite and ≥ 0, particle i ranked `rank(i)` (distinct
+    /// ranks), in the memory this one holds ([`CellGrid::refill_ranked`]).
+    ///
+    /// # Panics
+    /// If `len` is `u32::MAX` or more, or `spheres` holds fewer than `len`.
+    pub(crate) fn refill_ranked(
+        &mut self,
+        len: usize,
+        spheres: Spheres,
+        kept: impl Fn(usize) -> bool,
+        rank: impl Fn(usize) -> u32,
+    ) {
+        assert!(len < NONE as usize, "at most 2³² − 2 particles");
+        assert!(spheres.xyzr.len() >= len, "a sphere per particle");
+        let binned = |i: usize| {
+            let (p, s) = spheres.get(i);
+            (kept(i) && p.iter().all(|x| x.is_finite()) && s.is_finite() && s >= 0.0)
+                .then_some((p, s))
+        };
+        let (s_max, extent) =
+            (0..len)
+                .filter_map(binned)
+                .fold((0.0, 0.0), |(s_max, extent), (p, s)| {
+                    let far = p.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+                    (f64::max(s_max, s), f64::max(extent, far))
+                });
+        let h =
+            ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
+        self.h = h;
+        self.inv_h = 1.0 / h;
+        self.starts.clear();
+        self.starts.push(0);
+        // The arrays of packed keys, whichever kind they held, kept for the kind
+        // needed now.
+        let empty = Cells::Wide {
+            keys: Vec::new(),
+            slots: Vec::new(),
+        };
+        let (mut keys, mut slots) = match std::mem::replace(&mut self.cells, empty) {
+            Cells::Packed { keys, slots } => (keys, slots),
+            Cells::Wide { .. } => (Vec::new(), Vec::new()),
+        };
+        keys.clear();
+        slots.clear();
+        if s_max == 0.0 {
+            // Nothing overlaps: distance² < 0 never holds.
+            self.cells = Cells::Packed { keys, slots };
+            return;
+        }
+        let (lo, hi) = (0..len).filter_map(binned).map(|(p, _)| self.key(p)).fold(
+            ([i64::MAX; 3], [i64::MIN; 3]),
+            |(lo, hi), k| {
+                (
+                    [0, 1, 2].map(|d| lo[d].min(k[d])),
+                    [0, 1, 2].map(|d| hi[d].max(k[d])),
+                )
+            },
+        );
+        self.cells = if (0..3).all(|d| hi[d] - lo[d] < (1 << BITS) - 2) {
+            let key = |p| Packed::new(self.key(p), lo);
+            slots.reserve(len);
+            slots.extend((0..len).filter_map(|i| binned(i).map(|(p, _)| slot(i, key(p), &rank))));
+            self.bin(&mut slots, &mut keys);
+            Cells::Packed { keys, slots }
+        } else {
+            let mut slots: Vec<_> = (0..len)
+                .filter_map(|i| binned(i).map(|(p, _)| slot(i, self.key(p), &rank)))
+                .collect();
+            let mut keys = Vec::new();
+            self.bin(&mut slots, &mut keys);
+            Cells::Wide { keys, slots }
+        };
+    }
+
+    /// Sorts `slots` and fills the cells from them, and `keys` (empty) with the cells'
+    /// keys.
+    fn bin<K: Key>(&mut self, slots: &mut [Slot<K>], keys: &mut Vec<K>) {
+        // On rayon's threads when there are many: the ranks are distinct, so any sort
+        // gives the one order.
+        if slots.len() >= PAR_SORT_FROM {
+            slots.par_sort_unstable();
+        } else {
+            slots.sort_unstable();
+        }
+        for (n, slot) in slots.iter().enumerate() {
+            if keys.last() != Some(&slot.key) {
+                if !keys.is_empty() {
+                    self.starts.push(n as u32);
+                }
+                keys.push(slot.key);
+            }
+        }
+        self.starts.push(slots.len() as u32);
+    }
+
+    /// The binned particles in the grid's order: cells by key, within a cell by rank.
+    pub(crate) fn order(&self) -> Vec<u32> {
+        match &self.cells {
+            Cells::Packed { slots, .. } => slots.iter().map(|slot| slot.id).collect(),
+            Cells::Wide { slots, .. } => slots.iter().map(|slot| slot.id).collect(),
+        }
+    }
+
+    /// [`CellGrid::placed_in_order`], for spheres that the caller moves to their places.
+    pub(crate) fn placed_in_order(&mut self) {
+        fn place<K>(slots: &mut [Slot<K>]) {
+            for (n, slot) in slots.iter_mut().enumerate() {
+                slot.rank = slot.id;
+                slot.id = n as u32;
+            }
+        }
+        match &mut self.cells {
+            Cells::Packed { slots, .. } => place(slots),
+            Cells::Wide { slots, .. } => place(slots),
+        }
+    }
+
+    /// The number of occupied cells.
+    pub(crate) fn cell_count(&self) -> usize {
+        self.starts.len() - 1
+    }
+
+    /// [`CellGrid::for_each_pair_in`], the spheres given.
+    pub(crate) fn for_each_pair_in(
+        &self,
+        spheres: Spheres,
+        cells: Range<usize>,
+        mut f: impl FnMut(usize, usize),
+    ) {
+        assert!(cells.end <= self.cell_count(), "cells past the grid's");
+        if cells.is_empty() {
+            return;
+        }
+        match &self.cells {
+            Cells::Packed { keys, slots } => self.pairs_in(spheres, keys, slots, cells, &mut f),
+            Cells::Wide { keys, slots } => self.pairs_in(spheres, keys, slots, cells, &mut f),
+        }
+    }
+
+    /// [`CellGrid::pairs_into`], the spheres given.
+    pub(crate) fn pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
+        pairs.clear();
+        let all = 0..self.cell_count();
+        self.for_each_pair_in(spheres, all, |i, j| pairs.push((i as u32, j as u32)));
+    }
+
+    /// [`CellGrid::par_pairs_into`], the spheres given.
+    pub(crate) fn par_pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
+        let cells = self.cell_count();
+        let size = cells.div_ceil(PAIR_RANGES).max(1);
+        let parts: Vec<Vec<(u32, u32)>> = (0..cells.div_ceil(size))
+            .into_par_iter()
+            .map(|c| {
+                let mut pairs = Vec::new();
+                let range = c * size..((c + 1) * size).min(cells);
+                self.for_each_pair_in(spheres, range, |i, j| pairs.push((i as u32, j as u32)));
+                pairs
+            })
+            .collect();
+        pairs.clear();
+        pairs.extend(parts.into_iter().flatten());
+    }
+
+    /// [`CellGrid::for_each_neighbour`] for the particle in slot `a`, the spheres given.
+    fn for_each_neighbour(&self, spheres: Spheres, a: usize, mut f: impl FnMut(usize)) {
+        match &self.cells {
+            Cells::Packed { keys, slots } => self.neighbours(spheres, keys, slots, a, &mut f),
+            Cells::Wide { keys, slots } => self.neighbours(spheres, keys, slots, a, &mut f),
+        }
+    }
+
+    /// The pairs with a first cell in `cells` (non-empty), for cell keys `keys`.
+    fn pairs_in<K: Key>(
+        &self,
+        spheres: Spheres,
+        keys: &[K],
+        slots: &[Slot<K>],
+        cells: Range<usize>,
+        f: &mut impl FnMut(usize, usize),
+    ) {
+        let first = keys[cells.start];
+        let mut cursor =
+            FORWARD_COLUMNS.map(|(di, dj)| keys.partition_point(|&c| c < first.shift(di, dj, -1)));
+        for c in cells {
+            let k = keys[c];
+            let here = self.cell(c);
+            // The cell with itself and with (0, 0, +1), the next cell if present: the
+            // slots after each of its own up to the end of that next cell.
+            let end = if keys.get(c + 1) == Some(&k.shift(0, 0, 1)) {
+                self.starts[c + 2] as usize
+            } else {
+                here.end
+            };
+            for a in here.clone() {
+                for b in a + 1..end {
+                    check(spheres, &slots[a], &slots[b], f);
+                }
+            }
+            for (col, &(di, dj)) in FORWARD_COLUMNS.iter().enumerate() {
+                // The column's first cell at or after k + (di, dj, −1) only moves forward
+                // as k does: walk to it from where it was for the previous cell.
+                let lo = k.shift(di, dj, -1);
+                let mut n = cursor[col];
+                while n < keys.len() && keys[n] < lo {
+                    n += 1;
+                }
+                cursor[col] = n;
+                let there = self.column_run(keys, n, k.shift(di, dj, 1));
+                for a in here.clone() {
+                    for b in there.clone() {
+                        check(spheres, &slots[a], &slots[b], f);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The neighbours of slot `a`, for cell keys `keys`.
+    fn neighbours<K: Key>(
+        &self,
+        spheres: Spheres,
+        keys: &[K],
+        slots: &[Slot<K>],
+        a: usize,
+        f: &mut impl FnMut(usize),
+    ) {
+        let k = slots[a].key;
+        for di in -1..=1 {
+            for dj in -1..=1 {
+                let first = keys.partition_point(|&c| c < k.shift(di, dj, -1));
+                for b in self.column_run(keys, first, k.shift(di, dj, 1)) {
+                    if b != a && overlap(spheres, &slots[a], &slots[b]) {
+                        f(slots[b].id as usize);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The key of the cell holding `p`: ⌊p/h⌋ per axis.
+    #[inline]
+    fn key(&self, p: [f64; 3]) -> [i64; 3] {
+        p.map(|x| (x * self.inv_h).floor() as i64)
+    }
+
+    /// The slots of cell `c`.
+    #[inline]
+    fn cell(&self, c: usize) -> Range<usize> {
+        self.starts[c] as usize..self.starts[c + 1] as usize
+    }
+
+    /// The slots of the cells from `first` up to key `hi`, in `first`'s column: the
+    /// cells of one column are consecutive in key order, so their slots are one run.
+    #[inline]
+    fn column_run<K: Key>(&self, keys: &[K], first: usize, hi: K) -> Range<usize> {
+        let mut n = first;
+        while n < keys.len() && keys[n] <= hi {
+            n += 1;
+        }
+        self.starts[first] as usize..self.starts[n] as usize
+    }
+}
+
+/// Particle i's slot in the cell of key `key`.
+#[inline]
+fn slot<K>(i: usize, key: K, rank: &impl Fn(usize) -> u32) -> Slot<K> {
+    Slot {
+        key,
+        rank: rank(i),
+        id: i as u32,
+    }
+}
+
+/// Whether the swollen spheres of slots `a` and `b` overlap (module documentation).
+#[inline]
+fn overlap<K>(spheres: Spheres, a: &Slot<K>, b: &Slot<K>) -> bool {
+    let (pa, sa) = spheres.get(a.id as usize);
+    let (pb, sb) = spheres.get(b.id as usize);
+    let d = [pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]];
+    let reach = sa + sb;
+    d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach
+}
+
+/// Reports slots `a` and `b` if they overlap, the lower ranked first.
+#[inline]
+fn check<K>(spheres: Spheres, a: &Slot<K>, b: &Slot<K>, f: &mut impl FnMut(usize, usize)) {
+    if overlap(spheres, a, b) {
+        let (i, j) = (a.id as usize, b.id as usize);
+        if a.rank < b.rank { f(i, j) } else { f(j, i) }
+    }
+}
+
+/// A uniform grid of cubic cells over a set of spheres, for finding the pairs whose
+/// swollen spheres overlap (see the [module documentation](self)): [`Bins`] with its
+/// own copy of the spheres, by index. The default grid holds nothing (no cells).
+#[derive(Debug, Clone, Default)]
+pub struct CellGrid {
+    bins: Bins,
+    /// Each particle's position and swollen radius (x, y, z, s); NaN for one left out.
+    spheres: Vec<[f64; 4]>,
+    /// Each particle's slot, or [`NONE`].
+    slot_of: Vec<u32>,
 }
 
 impl CellGrid {
@@ -207,23 +530,17 @@ impl CellGrid {
     /// If `len` is `u32::MAX` or more.
     pub fn from_fn(len: usize, sphere: impl FnMut(usize) -> Option<(Vec3, f64)>) -> Self {
         let mut grid = CellGrid::default();
-        grid.refill(len, sphere, &mut GridScratch::default());
+        grid.refill(len, sphere);
         grid
     }
 
-    /// [`CellGrid::from_fn`] in place: the same grid, in the arrays this one and
-    /// `scratch` already hold, so that a grid built again and again (a candidate list's)
-    /// does not ask for its memory anew each time.
+    /// [`CellGrid::from_fn`] in place: the same grid, in the arrays this one already
+    /// holds.
     ///
     /// # Panics
     /// If `len` is `u32::MAX` or more.
-    pub fn refill(
-        &mut self,
-        len: usize,
-        sphere: impl FnMut(usize) -> Option<(Vec3, f64)>,
-        scratch: &mut GridScratch,
-    ) {
-        self.refill_ranked(len, sphere, |i| i as u32, scratch);
+    pub fn refill(&mut self, len: usize, sphere: impl FnMut(usize) -> Option<(Vec3, f64)>) {
+        self.refill_ranked(len, sphere, |i| i as u32);
     }
 
     /// [`CellGrid::refill`] with particle i ranked `rank(i)` (distinct ranks): the ranks
@@ -238,107 +555,36 @@ impl CellGrid {
         len: usize,
         mut sphere: impl FnMut(usize) -> Option<(Vec3, f64)>,
         rank: impl Fn(usize) -> u32,
-        scratch: &mut GridScratch,
     ) {
         assert!(len < NONE as usize, "at most 2³² − 2 particles");
-        // The particles kept, in index order, in the slots, which are then sorted in
-        // place (a second array of them was 40 bytes a particle more at each build).
-        let mut kept = std::mem::take(&mut self.slots);
-        kept.clear();
-        kept.reserve(len);
-        for i in 0..len {
-            let Some((p, s)) = sphere(i) else { continue };
-            if p.iter().all(|x| x.is_finite()) && s.is_finite() && s >= 0.0 {
-                kept.push(Slot {
-                    p,
-                    s,
-                    id: i as u32,
-                    rank: rank(i),
-                });
-            }
-        }
-        let s_max = kept.iter().map(|k| k.s).fold(0.0, f64::max);
-        let extent = kept.iter().map(|k| k.p.amax()).fold(0.0, f64::max);
-        let h =
-            ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
-        self.h = h;
-        self.inv_h = 1.0 / h;
-        self.starts.clear();
-        self.starts.push(0);
+        self.spheres.clear();
+        self.spheres.extend((0..len).map(|i| match sphere(i) {
+            Some((p, s)) => [p.x, p.y, p.z, s],
+            None => [f64::NAN; 4],
+        }));
+        let spheres = Spheres {
+            xyzr: &self.spheres,
+            margin: 0.0,
+        };
+        self.bins.refill_ranked(len, spheres, |_| true, rank);
         self.slot_of.clear();
         self.slot_of.resize(len, NONE);
-        // The keys' array, whichever kind it held, kept for the kind needed now.
-        let mut packed = match std::mem::replace(&mut self.keys, Keys::Wide(Vec::new())) {
-            Keys::Packed(keys, _) => keys,
-            Keys::Wide(_) => Vec::new(),
-        };
-        packed.clear();
-        if s_max == 0.0 {
-            // Nothing overlaps: distance² < 0 never holds.
-            kept.clear();
-            self.slots = kept;
-            return;
+        for (n, i) in self.bins.order().into_iter().enumerate() {
+            self.slot_of[i as usize] = n as u32;
         }
-        let (lo, hi) = kept.iter().map(|slot| self.key(&slot.p)).fold(
-            ([i64::MAX; 3], [i64::MIN; 3]),
-            |(lo, hi), k| {
-                (
-                    [0, 1, 2].map(|d| lo[d].min(k[d])),
-                    [0, 1, 2].map(|d| hi[d].max(k[d])),
-                )
-            },
-        );
-        // Sorting (key, rank, position in `kept`) sorts by key then rank (the ranks
-        // are distinct: the positions only come along).
-        self.keys = if (0..3).all(|d| hi[d] - lo[d] < (1 << BITS) - 2) {
-            let order = &mut scratch.order;
-            order.clear();
-            order.extend(
-                kept.iter()
-                    .zip(0..)
-                    .map(|(slot, n)| (Packed::new(self.key(&slot.p), lo), slot.rank, n)),
-            );
-            self.bin(kept, order, &mut packed);
-            Keys::Packed(packed, lo)
-        } else {
-            let mut order: Vec<_> = kept
-                .iter()
-                .zip(0..)
-                .map(|(slot, n)| (self.key(&slot.p), slot.rank, n))
-                .collect();
-            let mut keys = Vec::new();
-            self.bin(kept, &mut order, &mut keys);
-            Keys::Wide(keys)
-        };
     }
 
-    /// Sorts `order` (key, rank, position in `kept`) and the slots `kept` with it, and
-    /// fills the cells from it, and `keys` (empty) with the cells' keys.
-    fn bin<K: Key>(&mut self, mut kept: Vec<Slot>, order: &mut [(K, u32, u32)], keys: &mut Vec<K>) {
-        // On rayon's threads when there are many: the ranks are distinct, so any sort
-        // gives the one order.
-        if order.len() >= PAR_SORT_FROM {
-            order.par_sort_unstable();
-        } else {
-            order.sort_unstable();
+    /// The spheres as the bins read them.
+    fn spheres(&self) -> Spheres<'_> {
+        Spheres {
+            xyzr: &self.spheres,
+            margin: 0.0,
         }
-        permute::gather(&mut kept, |n| order[n].2 as usize);
-        for (n, (&(key, _, _), slot)) in order.iter().zip(&kept).enumerate() {
-            if keys.last() != Some(&key) {
-                if !keys.is_empty() {
-                    self.starts.push(n as u32);
-                }
-                keys.push(key);
-            }
-            self.slot_of[slot.id as usize] = n as u32;
-        }
-        self.starts.push(order.len() as u32);
-        self.slots = kept;
     }
 
     /// The binned particles in the grid's order: cells by key, within a cell by rank.
-    pub fn order(&self) -> impl ExactSizeIterator<Item = u32> + '_ {
-        self.slots.iter().map(|slot| slot.id)
+    pub fn order(&self) -> Vec<u32> {
+        self.bins.order()
     }
 
     /// The grid as [`CellGrid::refill_ranked`] would find it once each particle is
@@ -347,11 +593,12 @@ impl CellGrid {
     /// particle its place, its rank the particle's index (for a grid built with the
     /// indices as ranks).
     pub fn placed_in_order(&mut self) {
-        for (n, slot) in self.slots.iter_mut().enumerate() {
-            slot.rank = slot.id;
-            slot.id = n as u32;
-        }
-        let binned = self.slots.len();
+        let order = self.order();
+        let mut placed: Vec<[f64; 4]> = order.iter().map(|&i| self.spheres[i as usize]).collect();
+        placed.resize(self.spheres.len(), [f64::NAN; 4]);
+        self.spheres = placed;
+        self.bins.placed_in_order();
+        let binned = order.len();
         for (n, slot) in self.slot_of.iter_mut().enumerate() {
             *slot = if n < binned { n as u32 } else { NONE };
         }
@@ -359,12 +606,12 @@ impl CellGrid {
 
     /// The cell edge: the largest swollen diameter, a little more (module documentation).
     pub fn cell_size(&self) -> f64 {
-        self.h
+        self.bins.h
     }
 
     /// The number of occupied cells, which [`CellGrid::for_each_pair_in`] splits.
     pub fn cell_count(&self) -> usize {
-        self.starts.len() - 1
+        self.bins.cell_count()
     }
 
     /// Calls `f(i, j)` once for each unordered pair whose swollen spheres overlap, i the
@@ -381,15 +628,8 @@ impl CellGrid {
     ///
     /// # Panics
     /// If `cells` reaches past `cell_count()`.
-    pub fn for_each_pair_in(&self, cells: Range<usize>, mut f: impl FnMut(usize, usize)) {
-        assert!(cells.end <= self.cell_count(), "cells past the grid's");
-        if cells.is_empty() {
-            return;
-        }
-        match &self.keys {
-            Keys::Packed(keys, _) => self.pairs_in(keys, cells, &mut f),
-            Keys::Wide(keys) => self.pairs_in(keys, cells, &mut f),
-        }
+    pub fn for_each_pair_in(&self, cells: Range<usize>, f: impl FnMut(usize, usize)) {
+        self.bins.for_each_pair_in(self.spheres(), cells, f);
     }
 
     /// The pairs of [`CellGrid::for_each_pair`], in its order, as (i, j), i the lower ranked.
@@ -401,8 +641,7 @@ impl CellGrid {
 
     /// [`CellGrid::pairs`] into `pairs` (emptied first), in the memory it already holds.
     pub fn pairs_into(&self, pairs: &mut Vec<(u32, u32)>) {
-        pairs.clear();
-        self.for_each_pair(|i, j| pairs.push((i as u32, j as u32)));
+        self.bins.pairs_into(self.spheres(), pairs);
     }
 
     /// [`CellGrid::pairs`], the same list in the same order, found by ranges of cells in
@@ -416,19 +655,7 @@ impl CellGrid {
     /// [`CellGrid::par_pairs`] into `pairs` (emptied first), in the memory it already
     /// holds.
     pub fn par_pairs_into(&self, pairs: &mut Vec<(u32, u32)>) {
-        let cells = self.cell_count();
-        let size = cells.div_ceil(PAIR_RANGES).max(1);
-        let parts: Vec<Vec<(u32, u32)>> = (0..cells.div_ceil(size))
-            .into_par_iter()
-            .map(|c| {
-                let mut pairs = Vec::new();
-                let range = c * size..((c + 1) * size).min(cells);
-                self.for_each_pair_in(range, |i, j| pairs.push((i as u32, j as u32)));
-                pairs
-            })
-            .collect();
-        pairs.clear();
-        pairs.extend(parts.into_iter().flatten());
+        self.bins.par_pairs_into(self.spheres(), pairs);
     }
 
     /// Calls `f(j)` once for each particle j ≠ i whose swollen sphere overlaps particle
@@ -437,111 +664,10 @@ impl CellGrid {
     ///
     /// # Panics
     /// If `i` is not below the number of particles the grid was built for.
-    pub fn for_each_neighbour(&self, i: usize, mut f: impl FnMut(usize)) {
+    pub fn for_each_neighbour(&self, i: usize, f: impl FnMut(usize)) {
         let a = self.slot_of[i];
-        if a == NONE {
-            return;
-        }
-        let a = a as usize;
-        let k = self.key(&self.slots[a].p);
-        match &self.keys {
-            Keys::Packed(keys, lo) => self.neighbours(keys, Packed::new(k, *lo), a, &mut f),
-            Keys::Wide(keys) => self.neighbours(keys, k, a, &mut f),
-        }
-    }
-
-    /// The pairs with a first cell in `cells` (non-empty), for cell keys `keys`.
-    fn pairs_in<K: Key>(&self, keys: &[K], cells: Range<usize>, f: &mut impl FnMut(usize, usize)) {
-        let first = keys[cells.start];
-        let mut cursor =
-            FORWARD_COLUMNS.map(|(di, dj)| keys.partition_point(|&c| c < first.shift(di, dj, -1)));
-        for c in cells {
-            let k = keys[c];
-            let here = self.cell(c);
-            // The cell with itself and with (0, 0, +1), the next cell if present: the
-            // slots after each of its own up to the end of that next cell.
-            let end = if keys.get(c + 1) == Some(&k.shift(0, 0, 1)) {
-                self.starts[c + 2] as usize
-            } else {
-                here.end
-            };
-            for a in here.clone() {
-                for b in a + 1..end {
-                    self.check(a, b, f);
-                }
-            }
-            for (col, &(di, dj)) in FORWARD_COLUMNS.iter().enumerate() {
-                // The column's first cell at or after k + (di, dj, −1) only moves forward
-                // as k does: walk to it from where it was for the previous cell.
-                let lo = k.shift(di, dj, -1);
-                let mut n = cursor[col];
-                while n < keys.len() && keys[n] < lo {
-                    n += 1;
-                }
-                cursor[col] = n;
-                let there = self.column_run(keys, n, k.shift(di, dj, 1));
-                for a in here.clone() {
-                    for b in there.clone() {
-                        self.check(a, b, f);
-                    }
-                }
-            }
-        }
-    }
-
-    /// The neighbours of slot `a`, in the cell of key `k`, for cell keys `keys`.
-    fn neighbours<K: Key>(&self, keys: &[K], k: K, a: usize, f: &mut impl FnMut(usize)) {
-        for di in -1..=1 {
-            for dj in -1..=1 {
-                let first = keys.partition_point(|&c| c < k.shift(di, dj, -1));
-                for b in self.column_run(keys, first, k.shift(di, dj, 1)) {
-                    if b != a && self.overlap(a, b) {
-                        f(self.slots[b].id as usize);
-                    }
-                }
-            }
-        }
-    }
-
-    /// The key of the cell holding `p`: ⌊p/h⌋ per axis.
-    #[inline]
-    fn key(&self, p: &Vec3) -> [i64; 3] {
-        p.map(|x| (x * self.inv_h).floor() as i64).into()
-    }
-
-    /// The slots of cell `c`.
-    #[inline]
-    fn cell(&self, c: usize) -> Range<usize> {
-        self.starts[c] as usize..self.starts[c + 1] as usize
-    }
-
-    /// The slots of the cells from `first` up to key `hi`, in `first`'s column: the
-    /// cells of one column are consecutive in key order, so their slots are one run.
-    #[inline]
-    fn column_run<K: Key>(&self, keys: &[K], first: usize, hi: K) -> Range<usize> {
-        let mut n = first;
-        while n < keys.len() && keys[n] <= hi {
-            n += 1;
-        }
-        self.starts[first] as usize..self.starts[n] as usize
-    }
-
-    /// Whether the swollen spheres of slots `a` and `b` overlap (module documentation).
-    #[inline]
-    fn overlap(&self, a: usize, b: usize) -> bool {
-        let (sa, sb) = (&self.slots[a], &self.slots[b]);
-        let d = sa.p - sb.p;
-        let reach = sa.s + sb.s;
-        d.x * d.x + d.y * d.y + d.z * d.z < reach * reach
-    }
-
-    /// Reports slots `a` and `b` if they overlap.
-    #[inline]
-    fn check(&self, a: usize, b: usize, f: &mut impl FnMut(usize, usize)) {
-        if self.overlap(a, b) {
-            let (a, b) = (&self.slots[a], &self.slots[b]);
-            let (i, j) = (a.id as usize, b.id as usize);
-            if a.rank < b.rank { f(i, j) } else { f(j, i) }
+        if a != NONE {
+            self.bins.for_each_neighbour(self.spheres(), a as usize, f);
         }
     }
 }

@@ -2,7 +2,7 @@
 //! list, [`PairList`]), with the records of their open contacts ([`PairContacts`]),
 //! found on the cell grid ([`super::grid`]).
 
-use super::grid::{CellGrid, GridScratch};
+use super::grid::{Bins, Spheres};
 use crate::contact::ssdem::Record;
 use crate::run::State;
 use nalgebra::Vector3;
@@ -24,10 +24,9 @@ pub(crate) struct PairList {
     pub(crate) slots: Vec<u32>,
     /// The open contacts' records.
     pub(crate) contacts: PairContacts,
-    /// The cell grid the list was found with, and what building it works in: kept for
-    /// the next build, which fills the same memory.
-    pub(crate) grid: CellGrid,
-    pub(crate) scratch: GridScratch,
+    /// The cell grid the list was found with, over `spheres` swollen by half the skin:
+    /// kept for the next build, which fills the same memory.
+    pub(crate) bins: Bins,
     /// Whether the grid already bins the particles where they are, at the places
     /// [`PairList::grid_order`] found, for the next build (the first).
     placed: bool,
@@ -63,8 +62,7 @@ impl PairList {
             slots: Vec::new(),
             spheres: Vec::new(),
             contacts: PairContacts::default(),
-            grid: CellGrid::default(),
-            scratch: GridScratch::default(),
+            bins: Bins::default(),
             placed: false,
             built_at: Vec::new(),
             skin: 0.4 * largest,
@@ -91,10 +89,12 @@ impl PairList {
     /// The next build takes the grid as it is, for the particles moved to those places
     /// and ranked by their indices (`CellGrid::placed_in_order`).
     pub(crate) fn grid_order(&mut self, states: &[State]) -> Vec<u32> {
-        let half = self.skin / 2.0;
-        let sphere = |i: usize| Self::swollen(&states[i], half);
-        self.grid.refill(states.len(), sphere, &mut self.scratch);
-        let mut order: Vec<u32> = self.grid.order().collect();
+        self.spheres.clear();
+        self.spheres.extend(states.iter().map(Self::sphere));
+        let alive = |i: usize| states[i].alive;
+        let swollen = Self::swollen(&self.spheres, self.skin);
+        (self.bins).refill_ranked(states.len(), swollen, alive, |i| i as u32);
+        let mut order = self.bins.order();
         if order.len() < states.len() {
             let mut binned = vec![false; states.len()];
             for &i in &order {
@@ -102,7 +102,7 @@ impl PairList {
             }
             order.extend((0..states.len() as u32).filter(|&i| !binned[i as usize]));
         }
-        self.grid.placed_in_order();
+        self.bins.placed_in_order();
         self.placed = true;
         order
     }
@@ -111,7 +111,6 @@ impl PairList {
     /// `rank(i)` ([`CellGrid::refill_ranked`]: the order of the pairs, and of the two of
     /// a pair, is that of the ranks).
     pub(crate) fn build(&mut self, states: &[State], rank: impl Fn(usize) -> u32) {
-        let half = self.skin / 2.0;
         self.built_at.clear();
         self.spheres.clear();
         if self.parallel {
@@ -127,8 +126,9 @@ impl PairList {
         // The grid, the pairs and their slots in the memory they held at the last build:
         // made anew each time, they took 15–20 MiB more for a moment at 10⁵ particles.
         if !std::mem::take(&mut self.placed) {
-            let sphere = |i: usize| Self::swollen(&states[i], half);
-            (self.grid).refill_ranked(states.len(), sphere, rank, &mut self.scratch);
+            let alive = |i: usize| states[i].alive;
+            let swollen = Self::swollen(&self.spheres, self.skin);
+            (self.bins).refill_ranked(states.len(), swollen, alive, rank);
         }
         // The open contacts go with their pairs into the new list (every pair that
         // touches is in it); any other ends. They are found by their first particle:
@@ -151,10 +151,11 @@ impl PairList {
             open[next[i as usize] as usize] = (j, slot);
             next[i as usize] += 1;
         }
+        let swollen = Self::swollen(&self.spheres, self.skin);
         if self.parallel {
-            self.grid.par_pairs_into(&mut self.pairs);
+            self.bins.par_pairs_into(swollen, &mut self.pairs);
         } else {
-            self.grid.pairs_into(&mut self.pairs);
+            self.bins.pairs_into(swollen, &mut self.pairs);
         }
         // Their records are laid out again in the new list's order, which the force
         // pass follows: one after the other in memory rather than where each happened
@@ -179,12 +180,13 @@ impl PairList {
         };
     }
 
-    /// A particle as the grid bins it: its centre and its radius swollen by `half` the
-    /// skin, or none once it has left the run.
-    #[inline]
-    fn swollen(s: &State, half: f64) -> Option<(Vec3, f64)> {
-        s.alive
-            .then_some((s.particle.pos, s.particle.radius + half))
+    /// The spheres as the grid bins them: each radius swollen by half the skin (the
+    /// particles that have left the run are left out).
+    fn swollen(spheres: &[[f64; 4]], skin: f64) -> Spheres<'_> {
+        Spheres {
+            xyzr: spheres,
+            margin: skin / 2.0,
+        }
     }
 
     /// A particle's centre and radius, as the pairs' first test reads them.
