@@ -378,3 +378,47 @@ fn what_is_not_a_regular_file_is_refused_before_it_is_read() {
         assert!(took < std::time::Duration::from_millis(500), "{took:?}");
     }
 }
+
+#[test]
+fn a_csv_is_read_whole_whatever_its_first_row_says_of_the_others() {
+    // The reader makes room for as many rows as the file would hold were they all as
+    // long as the first: a short first row over long ones, or a long one over short
+    // ones, still gives every row, each as written.
+    use walls_sim::io::particles::read_file;
+    let dir = tempfile::tempdir().unwrap();
+    let long = |i: usize| {
+        format!(
+            "1.0471975511965977e-05,0.001,{},0.0011000000000000001,0.0011000000000000001,0.017712582680027036,0.028491135608711082,0.0020466157203081537",
+            i as f64 * 0.0022
+        )
+    };
+    let short = |i: usize| format!("1,1,{i},0,0,0,0,0");
+    for (name, first, rest) in [
+        (
+            "short-first.csv",
+            short(0),
+            (1..300).map(long).collect::<Vec<_>>(),
+        ),
+        (
+            "long-first.csv",
+            long(0),
+            (1..300).map(short).collect::<Vec<_>>(),
+        ),
+    ] {
+        let path = dir.path().join(name);
+        let text = format!("mass,radius,x,y,z,vx,vy,vz\n{first}\n{}\n", rest.join("\n"));
+        std::fs::write(&path, &text).unwrap();
+        let read = read_file(&path.to_string_lossy()).unwrap();
+        assert_eq!(read.particles.len(), 300, "{name}");
+        let expected = walls_sim::io::particles::read_csv(&text).unwrap();
+        assert_eq!(read.particles, expected.particles, "{name}");
+        assert_eq!(
+            read.particles[299].pos.x,
+            if name == "short-first.csv" {
+                299.0 * 0.0022
+            } else {
+                299.0
+            }
+        );
+    }
+}

@@ -35,13 +35,14 @@ pub struct Particles {
 
 /// Reads particles from CSV text.
 pub fn read_csv(text: &str) -> Result<Particles, InputError> {
-    read_csv_from(text.as_bytes())
+    read_csv_from(text.as_bytes(), text.len() as u64)
 }
 
 /// Reads particles from the CSV `source` gives, row by row (a file is never in memory
 /// whole), a field's bytes that are not UTF-8 read as U+FFFD, as [`read_bytes`] reads
-/// them.
-fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
+/// them. `len`, the source's length in bytes, sizes the particles' array from the first
+/// row's length.
+fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputError> {
     // The names and fields trimmed of white space as Unicode defines it (as the csv
     // reader's trim of text records does), here, one field at a time: the reader's own
     // trim made a new record for each row. The reader buffers `source` itself.
@@ -93,6 +94,10 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
             Ok(false) => break,
             Err(e) => return Err(error(line(), e.to_string())),
         }
+        if n == 0 {
+            // Asked for, not required: a file that is mostly a hole asks for little.
+            let _ = out.try_reserve(rows_expected(len, &reader, &record).min(MOST_RESERVED));
+        }
         // A field as text (trimmed where it is used).
         let field = |i: usize| text(record.get(i).unwrap_or(b""));
         let mut number = |(name, column): (&str, Option<usize>)| -> Result<f64, InputError> {
@@ -132,6 +137,22 @@ fn read_csv_from(source: impl io::Read) -> Result<Particles, InputError> {
         particles: out,
         warnings,
     })
+}
+
+/// The most particles the CSV reader makes room for before it has read them (1.6 GB of
+/// them): past it the array grows as they come.
+const MOST_RESERVED: usize = 1 << 24;
+
+/// How many rows a CSV of `len` bytes probably holds, from where its first row ended
+/// (rows of one table are about as long as each other): growing the array of 10⁶
+/// particles one doubling at a time left each smaller array behind it. At most one row
+/// per 16 bytes (the shortest row of eight numbers).
+fn rows_expected<R: io::Read>(len: u64, reader: &csv::Reader<R>, first: &csv::ByteRecord) -> usize {
+    let Some(start) = first.position().map(|p| p.byte()) else {
+        return 0;
+    };
+    let row = reader.position().byte().saturating_sub(start).max(16);
+    usize::try_from(len.saturating_sub(start) / row).unwrap_or(0)
 }
 
 /// `bytes` as text, those that are not UTF-8 read as U+FFFD (`from_utf8_lossy`, whose
@@ -436,7 +457,7 @@ pub fn format_of(name: &str, bytes: &[u8]) -> Option<Format> {
 /// [`format_of`] finds.
 pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Particles, InputError> {
     match format_of(name, bytes) {
-        Some(Format::Csv) => read_csv_from(bytes),
+        Some(Format::Csv) => read_csv_from(bytes, bytes.len() as u64),
         Some(Format::Ss) => read_ss(bytes).map(|(_, ps)| ps),
         None => Err(error(
             "byte 0",
@@ -567,7 +588,7 @@ pub fn read_file(path: &str) -> Result<Particles, FileError> {
         let (mut file, len) = open_regular(p)?;
         let head = read_head(&mut file, 16, p)?;
         match format_of(path, &head) {
-            Some(Format::Csv) => read_csv_from(io::Cursor::new(head).chain(file)),
+            Some(Format::Csv) => read_csv_from(io::Cursor::new(head).chain(file), len),
             Some(Format::Ss) => return Ok(located(name, read_ss_open(file, len, head, p)?.1)),
             // Found by the whole first line, not its first 16 bytes.
             None => read_bytes(path, &read_rest(file, len, head, p)?),
