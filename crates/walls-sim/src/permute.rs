@@ -1,7 +1,6 @@
 //! A slice put in another order in place, without a second copy of it: along each cycle
-//! of the permutation, with a byte an item to mark those done. The cell grid sorts its
-//! slots so ([`crate::broad::grid`]), and the soft-sphere run moves its particles to and
-//! from their places.
+//! of the permutation, with a byte an item to mark those done. The soft-sphere run moves
+//! its particles to and from their places so.
 
 /// `items` gathered: the item at j becomes the one that was at `source(j)` (a
 /// permutation of `0..items.len()`).
