@@ -79,6 +79,16 @@ fn csv_errors_say_where() {
             .unwrap_err()
             .message
             .contains("unknown column `spin`")
+    ); // A column named twice is refused, not read from its first place alone.
+    let e = read_csv("mass,radius,x,y,z,vx,vy,vz,x\n1,0.1,0,0,0,0,0,0,5\n").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "line 1: the column `x` is named twice (columns 3 and 9)"
+    );
+    let e = read_csv("mass,radius,x,y,z,vx,vy,vz,color, color\n").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "line 1: the column `color` is named twice (columns 9 and 10)"
     );
 }
 

@@ -56,13 +56,27 @@ fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputErro
         .map(|h| String::from_utf8_lossy(h).trim().to_string())
         .collect();
     const REQUIRED: [&str; 8] = ["mass", "radius", "x", "y", "z", "vx", "vy", "vz"];
-    const OPTIONAL: [&str; 4] = ["wx", "wy", "wz", "color"];
+    const OPTIONAL: [&str; 5] = ["wx", "wy", "wz", "color", "org_idx"];
     let column = |name: &str| header.iter().position(|h| h == name);
     for name in REQUIRED {
         if column(name).is_none() {
             return Err(error(
                 "line 1",
                 format!("the header has no `{name}` column (it needs mass,radius,x,y,z,vx,vy,vz)"),
+            ));
+        }
+    }
+    // A column named twice would be read from its first place and its second ignored.
+    for (n, name) in header.iter().enumerate() {
+        if let Some(first) = header[..n].iter().position(|h| h == name) {
+            return Err(error(
+                "line 1",
+                format!(
+                    "the column `{}` is named twice (columns {} and {})",
+                    super::excerpt(name),
+                    first + 1,
+                    n + 1
+                ),
             ));
         }
     }
@@ -75,10 +89,24 @@ fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputErro
             format!("unknown column `{}`", super::excerpt(extra)),
         ));
     }
-    // Each column's place in a row, found once (`wx`, `wy`, `wz` and `color` may be
-    // absent).
-    let [mass, radius, x, y, z, vx, vy, vz, wx, wy, wz, color] = [
-        "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "color",
+    // Each column's place in a row, found once (`wx`, `wy`, `wz`, `color` and `org_idx`
+    // may be absent).
+    let [
+        mass,
+        radius,
+        x,
+        y,
+        z,
+        vx,
+        vy,
+        vz,
+        wx,
+        wy,
+        wz,
+        color,
+        org_idx,
+    ] = [
+        "mass", "radius", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "color", "org_idx",
     ]
     .map(|name| (name, column(name)));
     // One record read into again and again, and the line named only in an error
@@ -111,24 +139,27 @@ fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputErro
                 error(line(), format!("`{name}` is `{field}`, {why}"))
             })
         };
+        let integer = |(name, column): (&str, Option<usize>)| -> Result<Option<i32>, InputError> {
+            let Some(i) = column else {
+                return Ok(None);
+            };
+            let text = field(i);
+            let field = text.trim();
+            field.parse::<i32>().map(Some).map_err(|_| {
+                let field = super::excerpt(field);
+                error(line(), format!("`{name}` is `{field}`, not an integer"))
+            })
+        };
         let particle = Particle {
             mass: number(mass)?,
             radius: number(radius)?,
             pos: Vec3::new(number(x)?, number(y)?, number(z)?),
             vel: Vec3::new(number(vx)?, number(vy)?, number(vz)?),
             spin: Vec3::new(number(wx)?, number(wy)?, number(wz)?),
-            color: match color.1 {
-                Some(i) => {
-                    let text = field(i);
-                    let field = text.trim();
-                    field.parse::<i32>().map_err(|_| {
-                        let field = super::excerpt(field);
-                        error(line(), format!("`color` is `{field}`, not an integer"))
-                    })?
-                }
-                None => DEFAULT_COLOR,
-            },
-            index: n as i32,
+            color: integer(color)?.unwrap_or(DEFAULT_COLOR),
+            // pkdgrav's original index, as a `.ss` file's: a negative one names an
+            // aggregate (docs/pkdgrav-physics.md §9); else the row's place.
+            index: integer(org_idx)?.unwrap_or(n as i32),
         };
         check(&particle).map_err(|says| error(line(), says))?;
         out.push(particle);
