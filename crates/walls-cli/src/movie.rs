@@ -111,12 +111,19 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
             crate::errln!("walls-sim: warning: {name}: {w}");
         }
     };
+    // A file of no particles draws the walls alone: said, not silent.
+    let empty = |particles: &[Particle]| {
+        if particles.is_empty() {
+            crate::errln!("walls-sim: warning: {name}: it holds no particles");
+        }
+    };
     if format == Format::Ss {
         let (t, read) = match ss {
             Some(read) => read,
             None => read_ss(&bytes).map_err(|e| format!("{name}: {e}"))?,
         };
         warn(&read.warnings);
+        empty(&read.particles);
         return Ok(vec![Snapshot {
             t: Some(t),
             step: trailing_step(path),
@@ -129,10 +136,22 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
             Some(line) => format!("{name}:{line}: {}", e.message()),
             None => format!("{name}: {e}"),
         })?;
-        return Ok(trajectory_snapshots(&rows));
+        if rows.is_empty() {
+            crate::errln!(
+                "walls-sim: warning: {name}: no rows after its header: the run wrote no output into it"
+            );
+        }
+        let (snapshots, twice) = trajectory_snapshots(&rows);
+        if let Some((particle, step)) = twice {
+            crate::errln!(
+                "walls-sim: warning: {name}: particle {particle} is in output step {step} twice (two runs written into one file?); both are drawn"
+            );
+        }
+        return Ok(snapshots);
     }
     let read = read_csv(&text).map_err(|e| format!("{name}: {e}"))?;
     warn(&read.warnings);
+    empty(&read.particles);
     Ok(vec![Snapshot {
         t: None,
         step: None,
@@ -141,19 +160,28 @@ pub fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, String> {
 }
 
 /// The rows of a `particles.csv` as one snapshot per output step (consecutive rows of
-/// one step), with the particles still in the run; a row's particle is its index.
-fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<Snapshot> {
+/// one step), with the particles still in the run; a row's particle is its index. The
+/// first particle found twice in one step, with the step, if any is.
+fn trajectory_snapshots(
+    rows: &[walls_sim::io::trajectory::ParticleRow],
+) -> (Vec<Snapshot>, Option<(usize, u64)>) {
     let mut out: Vec<Snapshot> = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    let mut twice = None;
     for row in rows {
         let same = out
             .last()
             .is_some_and(|s| s.step == Some(row.step) && s.t == Some(row.t));
         if !same {
+            seen.clear();
             out.push(Snapshot {
                 t: Some(row.t),
                 step: Some(row.step),
                 particles: Vec::new(),
             });
+        }
+        if !seen.insert(row.particle) && twice.is_none() {
+            twice = Some((row.particle, row.step));
         }
         if row.alive {
             let last = out.last_mut().expect("pushed above");
@@ -168,7 +196,7 @@ fn trajectory_snapshots(rows: &[walls_sim::io::trajectory::ParticleRow]) -> Vec<
             });
         }
     }
-    out
+    (out, twice)
 }
 
 /// The most frames a movie of a run's outputs shows unless more are asked for

@@ -557,3 +557,54 @@ fn a_ss_output_whose_header_lies_is_refused_before_it_is_read() {
     );
     assert!(!dir.path().join("m.svg").exists());
 }
+
+/// A `particles.csv` of a header alone, a particle file of no particles and a trajectory
+/// whose step holds a particle twice (two runs written into one file) still draw, and
+/// each is said on standard error.
+#[test]
+fn empty_and_doubled_particle_files_are_drawn_and_said() {
+    let dir = run_folder(FLOOR, 0, Some(3));
+    let preview = |particles: &str, out: &str| {
+        walls_sim(
+            dir.path(),
+            &[
+                "preview",
+                "floor.walls",
+                "--particles",
+                particles,
+                "--out",
+                out,
+            ],
+        )
+    };
+    let out = preview("run", "a.svg");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let csv = Path::new("run").join("particles.csv");
+    assert_eq!(
+        stderr(&out),
+        format!(
+            "walls-sim: warning: {}: no rows after its header: the run wrote no output into it\n",
+            csv.display()
+        )
+    );
+    std::fs::write(dir.path().join("none.csv"), "mass,radius,x,y,z,vx,vy,vz\n").unwrap();
+    let out = preview("none.csv", "b.svg");
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        stderr(&out),
+        "walls-sim: warning: none.csv: it holds no particles\n"
+    );
+    let twice = run_folder(FLOOR, 2, Some(3));
+    let text = read(twice.path(), "run/particles.csv");
+    let doubled = text.clone() + text.lines().nth(2).unwrap() + "\n";
+    std::fs::write(dir.path().join("run/particles.csv"), doubled).unwrap();
+    let out = preview("run", "c.svg");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let said = stderr(&out);
+    let warning = format!(
+        "walls-sim: warning: {}: particle 0 is in output step 1 twice (two runs written into one file?); both are drawn\n",
+        csv.display()
+    );
+    assert!(said.starts_with(&warning), "{said}");
+    assert!(said.ends_with("2 frames, one per output\n"), "{said}");
+}
