@@ -86,6 +86,20 @@ def test_the_report_is_walls_sim_run_json():
     )
 
 
+def test_a_par_files_warnings_are_python_warnings(tmp_path, capfd):
+    # What the command says of its inputs reaches a notebook's cell: a UserWarning
+    # pointing at the caller's line, not text on the process's standard error.
+    par = tmp_path / "ss.par"
+    par.write_text(
+        "dKn = 1e5\nbDoSelfGravity = 0\niForceOverrideOption = 2\niCheckInterval = 0\n"
+        "dSlideLimit = 0.1\n"
+    )
+    with pytest.warns(UserWarning, match=r"ss\.par: line 5: `dSlideLimit`: ") as caught:
+        walls.run(str(DROP), str(BALL), par=str(par), gravity=(0, 0, -1), t_end=0.01, dt=1e-4)
+    assert all(w.filename == __file__ for w in caught)
+    assert capfd.readouterr().err == ""
+
+
 def test_particles_as_arrays_run_as_their_files():
     by_file = walls.run(DROP, BALL, **OPTIONS)
     columns = np.array([[1e-9, 0.01, 0, 0, 0.1, 0, 0, 0]])

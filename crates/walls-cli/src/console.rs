@@ -70,9 +70,61 @@ fn out_failed(e: &std::io::Error) -> ! {
 }
 
 /// Writes human text to standard error, its hazards escaped, dropping it if it cannot be
-/// written.
+/// written; kept instead while [`capturing`] runs.
 pub fn err(args: Arguments<'_>) {
-    let _ = std::io::stderr().lock().write_all(escaped(args).as_bytes());
+    let text = escaped(args);
+    if !kept(&text) {
+        let _ = std::io::stderr().lock().write_all(text.as_bytes());
+    }
+}
+
+/// Lets `write` write its text (a drawn diagnostic, coloured only where
+/// [`color_stderr`] says) to standard error as it is, dropping what cannot be written;
+/// kept instead while [`capturing`] runs.
+pub fn err_data(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) {
+    if CAPTURED.with(|c| c.borrow().is_some()) {
+        let mut text = Vec::new();
+        let _ = write(&mut text);
+        kept(&String::from_utf8_lossy(&text));
+        return;
+    }
+    let mut stderr = std::io::BufWriter::new(std::io::stderr().lock());
+    let _ = write(&mut stderr).and_then(|()| stderr.flush());
+}
+
+thread_local! {
+    /// What this thread's commands wrote to standard error while [`capturing`] ran.
+    static CAPTURED: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f`, keeping what it writes to standard error on this thread ([`err`],
+/// [`err_data`], uncoloured) rather than writing it, and returns it with `f`'s value:
+/// for a library caller that hands the messages on its own way (the Python package, as
+/// warnings a notebook shows under its cell).
+pub fn capturing<T>(f: impl FnOnce() -> T) -> (T, String) {
+    /// Puts back what was kept before when dropped, even if `f` panics.
+    struct Restore(Option<String>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let before = self.0.take();
+            CAPTURED.with(|c| *c.borrow_mut() = before);
+        }
+    }
+    let _restore = Restore(CAPTURED.with(|c| c.replace(Some(String::new()))));
+    let value = f();
+    let text = CAPTURED.with(|c| c.borrow_mut().take()).unwrap_or_default();
+    (value, text)
+}
+
+/// Keeps `text` if [`capturing`] runs on this thread; whether it did.
+fn kept(text: &str) -> bool {
+    CAPTURED.with(|c| match c.borrow_mut().as_mut() {
+        Some(kept) => {
+            kept.push_str(text);
+            true
+        }
+        None => false,
+    })
 }
 
 /// The text of `args` with every hazard shown as its escape: what [`out`] writes, for a
@@ -89,13 +141,15 @@ pub fn escaped(args: Arguments<'_>) -> String {
 }
 
 /// Whether to colour standard error, where the tools write diagnostics: on a terminal
-/// or with `CLICOLOR_FORCE` (not `0`), unless `NO_COLOR` is set to a non-empty value.
+/// or with `CLICOLOR_FORCE` (not `0`), unless `NO_COLOR` is set to a non-empty value,
+/// and never while [`capturing`] keeps it.
 pub fn color_stderr() -> bool {
-    color_with(
-        std::io::stderr().is_terminal(),
-        std::env::var_os("NO_COLOR").as_deref(),
-        std::env::var_os("CLICOLOR_FORCE").as_deref(),
-    )
+    !CAPTURED.with(|c| c.borrow().is_some())
+        && color_with(
+            std::io::stderr().is_terminal(),
+            std::env::var_os("NO_COLOR").as_deref(),
+            std::env::var_os("CLICOLOR_FORCE").as_deref(),
+        )
 }
 
 /// Whether to colour standard output, where `walls-lint` writes its findings: as
@@ -142,6 +196,23 @@ macro_rules! errln {
 mod tests {
     use super::{color_with, escaped};
     use std::ffi::OsStr;
+
+    #[test]
+    fn what_is_captured_is_kept_uncoloured_and_put_back_after_a_panic() {
+        let (value, said) = super::capturing(|| {
+            crate::errln!("walls-sim: warning: a\x1b.par: one");
+            super::err_data(|w| w.write_all(b"drawn\n"));
+            let (_, inner) = super::capturing(|| crate::errln!("inner"));
+            assert_eq!(inner, "inner\n");
+            assert!(!super::color_stderr());
+            7
+        });
+        assert_eq!(value, 7);
+        assert_eq!(said, "walls-sim: warning: a\\x1b.par: one\ndrawn\n");
+        let caught = std::panic::catch_unwind(|| super::capturing(|| panic!("in f")));
+        assert!(caught.is_err());
+        assert!(!super::kept("not kept: nothing captures now"));
+    }
 
     #[test]
     fn human_text_is_escaped_whatever_its_arguments() {

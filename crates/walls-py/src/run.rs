@@ -209,9 +209,20 @@ fn _run<'py>(
     };
     let argv = command_line(path(walls)?, path(particles)?, path(par)?, options)?;
     let args = parse(argv)?;
-    let prepared = py
-        .detach(|| run::prepare(&args, None))
-        .map_err(|e| diagnostics::plain(py, e))?;
+    // The command's warnings about its inputs (a `.par` file's), which it prints, as
+    // Python warnings (a notebook shows them under the cell); a walls file's errors are
+    // the `WallsError`'s diagnostics.
+    let (prepared, said) =
+        py.detach(|| walls_cli::console::capturing(|| run::prepare(&args, None)));
+    for line in said.lines() {
+        if let Some(warning) = line.strip_prefix("walls-sim: warning: ") {
+            let message = std::ffi::CString::new(warning.replace('\0', "\\0"))
+                .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+            let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+            PyErr::warn(py, &category, &message, 2)?;
+        }
+    }
+    let prepared = prepared.map_err(|e| diagnostics::plain(py, e))?;
     if prepared.errors > 0 {
         return Err(walls_errors(py, &prepared));
     }

@@ -214,10 +214,8 @@ fn read_walls(
             diagnostics: &errors,
         };
         let color = crate::console::color_stderr();
-        let mut err = std::io::BufWriter::new(std::io::stderr().lock());
         // Standard error is only for people here; if it is gone there is nobody to tell.
-        let _ = walls_diagnostics::render::human(&mut err, &report, color)
-            .and_then(|()| std::io::Write::flush(&mut err));
+        crate::console::err_data(|err| walls_diagnostics::render::human(err, &report, color));
         let overflow = &walls_model::codes::ARITHMETIC_OVERFLOW;
         if let Some(d) = errors.iter().find(|d| d.code.id == overflow.id) {
             return Err(format!(

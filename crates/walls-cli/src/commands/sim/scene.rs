@@ -37,9 +37,8 @@ pub fn run(path: &str, time: Option<f64>, mode: ContactModel) -> i32 {
         diagnostics: &checked.diagnostics,
     };
     let color = crate::console::color_stderr();
-    let mut err = std::io::BufWriter::new(std::io::stderr().lock());
     // Standard error is only for people here; if it is gone there is nobody to tell.
-    let _ = render::human(&mut err, &report, color).and_then(|()| err.flush());
+    crate::console::err_data(|err| render::human(err, &report, color));
     if checked
         .diagnostics
         .iter()
