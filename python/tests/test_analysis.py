@@ -377,6 +377,9 @@ def test_preview_refuses_bad_walls_and_bad_frames():
     assert caught.value.diagnostics
     with pytest.raises(walls.WallsError, match="cannot read no-such.walls"):
         walls.preview("no-such.walls")
+    # Read as the tools read a walls file: a device is refused, not read forever.
+    with pytest.raises(walls.WallsError, match="cannot read /dev/zero: it is not a regular file"):
+        walls.preview("/dev/zero")
     with pytest.raises(ValueError, match="frames must be an integer from 1 to 10000"):
         walls.preview(DROP, until=1.0, frames=0)
 

@@ -307,11 +307,8 @@ def preview(
     """
     text = _text_of(walls)
     if text is None and not isinstance(walls, bytes):
-        try:
-            with open(walls, "rb") as f:
-                text = f.read()
-        except OSError as e:
-            raise _error(f"cannot read {os.fsdecode(walls)}: {e.strerror or e}") from e
+        # As the tools read a walls file: at most their limit, a regular file only.
+        text = _walls._read_walls(walls)
     given: Optional[Tuple[List[float], List[int], List[float], bytes]] = None
     if isinstance(particles, RunResult):
         times: List[float] = particles.times.tolist()

@@ -11,7 +11,30 @@ use walls_preview::html::{self, Particles};
 /// Adds the functions of this file to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MOVIE_FRAMES", walls_cli::movie::MOVIE_FRAMES)?;
+    m.add_function(wrap_pyfunction!(_read_walls, m)?)?;
     m.add_function(wrap_pyfunction!(_preview, m)?)
+}
+
+/// The bytes of the walls file at `path`, read as the tools read one (at most
+/// `walls_cli::input::MAX_FILE_BYTES`); a path that is not a regular file (a device, a
+/// FIFO, a folder) is refused before it is opened. Errors raise `WallsError` naming the
+/// path.
+#[pyfunction]
+fn _read_walls<'py>(
+    py: Python<'py>,
+    #[pyo3(from_py_with = args::path)] path: std::path::PathBuf,
+) -> PyResult<Bound<'py, pyo3::types::PyBytes>> {
+    let name = path.display().to_string();
+    let read = py.detach(|| {
+        let regular = std::fs::metadata(&path).map_err(|e| format!("cannot read {name}: {e}"))?;
+        if !regular.is_file() {
+            return Err(format!("cannot read {name}: it is not a regular file"));
+        }
+        let file = std::fs::File::open(&path).map_err(|e| format!("cannot read {name}: {e}"))?;
+        walls_cli::input::read_all(file, &name)
+    });
+    let bytes = read.map_err(|e| diagnostics::plain(py, e))?;
+    Ok(pyo3::types::PyBytes::new(py, &bytes))
 }
 
 /// Particles along their trajectories as Python hands them over: each one's radius and
