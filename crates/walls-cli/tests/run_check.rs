@@ -336,6 +336,36 @@ fn broken_particle_files_are_io_errors_where_they_stop() {
     assert!(errors(&report).is_empty());
 }
 
+/// A particle file whose header does not match its length is refused from its 16-byte
+/// header, as a run refuses it, however large the file: a 2 GiB hole is not read.
+#[test]
+fn a_particle_file_that_lies_in_its_header_is_refused_unread() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = dir.path().join("run");
+    std::fs::create_dir(&run).unwrap();
+    std::fs::write(run.join("params.par"), PAR).unwrap();
+    std::fs::write(run.join("walls.dat"), FLOOR).unwrap();
+    let file = std::fs::File::create(run.join("particles.ss")).unwrap();
+    std::io::Write::write_all(&mut &file, &ss(&[(1.0, 1.0, [0.0, 0.0, 5.0])])[..16]).unwrap();
+    file.set_len(2 << 30).unwrap();
+    let start = std::time::Instant::now();
+    let out = lint(dir.path(), &["--format", "json", "run"]);
+    let took = start.elapsed();
+    let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{report:#}");
+    assert_eq!(
+        errors(&report),
+        [(
+            format!(
+                "run/params.par:1: achInFile = particles.ss: not a pkdgrav .ss file: run/particles.ss: byte 8: 1 particles of 96 bytes need 112 bytes, the file has {}",
+                2u64 << 30
+            ),
+            Some(1)
+        )]
+    );
+    assert!(took < std::time::Duration::from_secs(2), "{took:?}");
+}
+
 #[test]
 fn explain_knows_the_run_codes() {
     let out = Command::new(env!("CARGO_BIN_EXE_walls-lint"))

@@ -51,8 +51,9 @@
 //! leave out particles that are not alive while keeping their indices, use
 //! [`CellGrid::from_fn`] and return `None` for them.
 //!
-//! **Memory**: a particle's slot is its cell key, rank and index (16 bytes, sorted in
-//! place: nothing else is made to sort them), not a copy of where it is: [`Bins`] are
+//! **Memory**: a particle's slot is its cell key, rank and index (16 bytes with packed
+//! keys, 32 with wide ones; sorted in place: nothing else is made to sort them), not a
+//! copy of where it is: [`Bins`] are
 //! queried with the spheres they binned, by index ([`Spheres`]), which a caller that
 //! keeps its particles in the grid's order (the soft-sphere run's places) reads almost
 //! in order. [`CellGrid`] is the bins with their own copy of the spheres (32 bytes a

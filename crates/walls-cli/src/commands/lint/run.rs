@@ -63,10 +63,13 @@ pub(super) fn check(
     let file = walls_par::check::File::read(text, build, &mut Vec::new());
     let folder = Path::new(par_path).parent().unwrap_or(Path::new(""));
     let inside = walked.unwrap_or(folder);
+    // The walls file whole; of the `.ss` file its 16-byte header (its records are read
+    // below, once the header says how long the file must be).
     let read = |key: &str, out: &mut RunChecked| -> Option<Named> {
         let name = file.string(key).filter(|n| !n.is_empty())?;
         let line = file.given(key).map(|e| e.line);
-        match read_in(inside, folder, &name) {
+        let at_most = (key == "achInFile").then_some(16);
+        match read_in(inside, folder, &name, at_most) {
             Ok((real, bytes)) => Some(Named {
                 shown: shown(folder, &name),
                 given: name,
@@ -94,14 +97,21 @@ pub(super) fn check(
             &walls_model::Options::default(),
         )
     });
-    // The particles: a `.ss` file that does not read is an I/O error where it stops. Its
-    // bytes go once read (a 10⁶-particle file is 96 MB).
+    // The particles: a `.ss` file that does not read is an I/O error where it stops. It
+    // is read header first, as a run reads it: a header that does not match the file's
+    // length is refused before the records are read (a 2 GiB hole is not read whole).
     let particles = ss.as_mut().and_then(|s| {
-        let bytes = std::mem::take(&mut s.bytes);
-        let standard = bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]);
+        let standard = s.bytes.get(12..16) == Some(&(-1i32).to_be_bytes()[..]);
+        let read = walls_sim::io::particles::read_ss_file(&s.real).map_err(|e| match e {
+            walls_sim::io::FileError::Input { error, .. } => error,
+            walls_sim::io::FileError::Read { error, .. } => walls_sim::io::InputError {
+                at: "byte 0".into(),
+                message: format!("cannot read it: {error}"),
+            },
+        });
         // pkdgrav starts only from standard records at a time of 0 or later (startup
         // rows A119, A124): anything else stops it, as a file it cannot read.
-        let read = walls_sim::io::particles::read_ss(&bytes).and_then(|(time, read)| {
+        let read = read.and_then(|(time, read)| {
             if !standard {
                 Err(walls_sim::io::InputError {
                     at: "byte 12".into(),
@@ -198,10 +208,15 @@ fn shown(folder: &Path, name: &str) -> String {
         .to_string()
 }
 
-/// The real path and bytes of the file `name` in `folder` (relative to it, or absolute),
-/// if it lies in `inside` and is a regular file; else why it is not read (nothing of the
-/// file is said).
-fn read_in(inside: &Path, folder: &Path, name: &str) -> Result<(PathBuf, Vec<u8>), String> {
+/// The real path and bytes (its first `at_most` bytes, if given) of the file `name` in
+/// `folder` (relative to it, or absolute), if it lies in `inside` and is a regular file;
+/// else why it is not read (nothing of the file is said).
+fn read_in(
+    inside: &Path,
+    folder: &Path,
+    name: &str,
+    at_most: Option<u64>,
+) -> Result<(PathBuf, Vec<u8>), String> {
     let here = |p: &Path| {
         if p.as_os_str().is_empty() {
             Path::new(".").to_path_buf()
@@ -221,8 +236,15 @@ fn read_in(inside: &Path, folder: &Path, name: &str) -> Result<(PathBuf, Vec<u8>
     if !std::fs::metadata(&real).is_ok_and(|m| m.is_file()) {
         return Err("not a regular file: not read".to_string());
     }
-    let bytes = std::fs::File::open(&real)
-        .map_err(|e| format!("cannot read {name}: {e}"))
-        .and_then(|f| crate::input::read_all(f, name))?;
+    let file = std::fs::File::open(&real).map_err(|e| format!("cannot read {name}: {e}"))?;
+    let bytes = match at_most {
+        Some(n) => {
+            let mut head = Vec::new();
+            std::io::Read::read_to_end(&mut std::io::Read::take(file, n), &mut head)
+                .map_err(|e| format!("cannot read {name}: {e}"))?;
+            head
+        }
+        None => crate::input::read_all(file, name)?,
+    };
     Ok((real, bytes))
 }
