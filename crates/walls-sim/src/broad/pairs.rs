@@ -87,8 +87,10 @@ impl PairList {
     /// a cell by index), those it leaves out (not alive, or not finite) last: where the
     /// soft-sphere run keeps them, so that a pair's two are near each other in memory.
     /// The next build takes the grid as it is, for the particles moved to those places
-    /// and ranked by their indices (`CellGrid::placed_in_order`).
+    /// and ranked by their indices (`Bins::placed_in_order`).
     pub(crate) fn grid_order(&mut self, states: &[State]) -> Vec<u32> {
+        // The spheres in the file's order, to bin them; the build that follows sets them
+        // anew from the particles at their places before anything reads them.
         self.spheres.clear();
         self.spheres.extend(states.iter().map(Self::sphere));
         let alive = |i: usize| states[i].alive;
