@@ -494,8 +494,9 @@ pub struct CellGrid {
     bins: Bins,
     /// Each particle's position and swollen radius (x, y, z, s); NaN for one left out.
     spheres: Vec<[f64; 4]>,
-    /// Each particle's slot, or [`NONE`].
-    slot_of: Vec<u32>,
+    /// Each particle's slot, or [`NONE`]: made when a neighbour is first asked for (the
+    /// hard-sphere run builds a grid each step and asks only for its pairs).
+    slot_of: std::sync::OnceLock<Vec<u32>>,
 }
 
 impl CellGrid {
@@ -568,11 +569,7 @@ impl CellGrid {
             margin: 0.0,
         };
         self.bins.refill_ranked(len, spheres, |_| true, rank);
-        self.slot_of.clear();
-        self.slot_of.resize(len, NONE);
-        for (n, i) in self.bins.order().into_iter().enumerate() {
-            self.slot_of[i as usize] = n as u32;
-        }
+        self.slot_of = std::sync::OnceLock::new();
     }
 
     /// The spheres as the bins read them.
@@ -599,10 +596,7 @@ impl CellGrid {
         placed.resize(self.spheres.len(), [f64::NAN; 4]);
         self.spheres = placed;
         self.bins.placed_in_order();
-        let binned = order.len();
-        for (n, slot) in self.slot_of.iter_mut().enumerate() {
-            *slot = if n < binned { n as u32 } else { NONE };
-        }
+        self.slot_of = std::sync::OnceLock::new();
     }
 
     /// The cell edge: the largest swollen diameter, a little more (module documentation).
@@ -666,7 +660,14 @@ impl CellGrid {
     /// # Panics
     /// If `i` is not below the number of particles the grid was built for.
     pub fn for_each_neighbour(&self, i: usize, f: impl FnMut(usize)) {
-        let a = self.slot_of[i];
+        let slot_of = self.slot_of.get_or_init(|| {
+            let mut slot_of = vec![NONE; self.spheres.len()];
+            for (n, i) in self.bins.order().into_iter().enumerate() {
+                slot_of[i as usize] = n as u32;
+            }
+            slot_of
+        });
+        let a = slot_of[i];
         if a != NONE {
             self.bins.for_each_neighbour(self.spheres(), a as usize, f);
         }
