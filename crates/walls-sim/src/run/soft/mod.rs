@@ -66,6 +66,7 @@ use thin_vec::ThinVec;
 use walls_geometry::Wall;
 
 mod drift;
+mod inverses;
 mod law;
 mod near;
 mod numbering;
@@ -74,6 +75,7 @@ mod rigid;
 mod setup;
 mod walls;
 
+use inverses::Inverses;
 use law::{ContactLaw, Kicks, Law};
 use near::NearWalls;
 use numbering::Numbering;
@@ -236,11 +238,9 @@ struct Rules<'a> {
 
 /// The particles, one entry each at its place ([`Numbering`]: the pair grid's order),
 /// laid out as the passes read them:
-/// each [`State`], its [`Load`], its 1/m and 1/I (a solid sphere's I = 0.4·m·r², worked
-/// out once: a division costs as much as the rest of a free particle's step, and kept
-/// beside the states, which the drift writes back every step: it only reads these), its
-/// open wall contacts (wall, contact), kept apart from its load so that the passes that
-/// do not need them do not carry them, and whether it has one open.
+/// each [`State`], its [`Load`], its 1/m and 1/I ([`Inverses`]), its open wall contacts
+/// (wall, contact), kept apart from its load so that the passes that do not need them do
+/// not carry them, and whether it has one open.
 struct Bodies {
     /// Which particle of the file each place holds.
     numbering: Numbering,
@@ -249,7 +249,7 @@ struct Bodies {
     filed: bool,
     states: Vec<State>,
     loads: Vec<Load>,
-    inverses: Vec<(f64, f64)>,
+    inverses: Inverses,
     /// Each particle's open wall contacts: a list of 8 bytes when empty, as most are
     /// (a `Vec` took 24, 16 MB at 10⁶ particles).
     open_walls: Vec<ThinVec<(usize, Open)>>,

@@ -8,9 +8,9 @@ use super::numbering::Numbering;
 use super::pairs::{PairMaterial, PairPass};
 use super::walls::{Closing, WallPass};
 use super::{
-    Bodies, Broad, CHUNK, Clock, ContactLaw, Deferred, Integrator, Journal, Kicks, Load, Materials,
-    OverlapWarnings, PARALLEL_FROM, Rigid, Rules, Settings, SoftStepper, State, Vec3, WallSet,
-    WarnedOnce, Warning, assembly_energy, energy, in_parallel, inertia,
+    Bodies, Broad, CHUNK, Clock, ContactLaw, Deferred, Integrator, Inverses, Journal, Kicks, Load,
+    Materials, OverlapWarnings, PARALLEL_FROM, Rigid, Rules, Settings, SoftStepper, State, Vec3,
+    WallSet, WarnedOnce, Warning, assembly_energy, energy, in_parallel,
 };
 use crate::broad::pairs::PairList;
 use crate::broad::wall_index::WallIndex;
@@ -112,12 +112,7 @@ impl Bodies {
             numbering,
             filed: false,
             loads: states.iter().map(|s| Load::gravity(s, g)).collect(),
-            inverses: (states.iter())
-                .map(|s| {
-                    let p = &s.particle;
-                    (1.0 / p.mass, 1.0 / inertia(p.mass, p.radius))
-                })
-                .collect(),
+            inverses: Inverses::new(&states),
             open_walls: (0..n).map(|_| ThinVec::new()).collect(),
             walled: vec![false; n],
             states,
@@ -158,9 +153,7 @@ impl Deferred {
             owed_bad: None,
             force_bound: 0.0,
             gravity_bound: settings.gravity.abs().sum() * heaviest,
-            largest_inverse: (bodies.inverses.iter())
-                .map(|i| largest(i.0, i.1))
-                .fold(0.0, largest),
+            largest_inverse: bodies.inverses.largest(largest),
         }
     }
 }
