@@ -24,6 +24,14 @@ pub struct Particle {
     pub index: i32,
 }
 
+/// A particle is its own particle: what reads particles takes them or whatever holds
+/// one (a run's states).
+impl AsRef<Particle> for Particle {
+    fn as_ref(&self) -> &Particle {
+        self
+    }
+}
+
 impl Particle {
     /// A particle of radius `radius` and unit density at rest at `pos`, not spinning,
     /// drawn in ssdraw's blue (colour 3), with `index` as its place in the file.

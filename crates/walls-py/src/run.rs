@@ -250,7 +250,7 @@ fn _run<'py>(
         let initial = ss::records(&particles);
         let mut times = vec![settings.t_start()];
         let mut states = Vec::new();
-        push_states(&mut states, particles.iter().map(Some));
+        push_states(&mut states, particles.iter().map(|s| Some(&s.particle)));
         let mut outcome = walls_sim::run::run_watched(
             &walls,
             particles,

@@ -26,9 +26,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 }
 
 /// `particles` as records of `walls.SS_DTYPE`.
-pub fn records(particles: &[Particle]) -> Vec<u8> {
+pub fn records(particles: &[impl AsRef<Particle>]) -> Vec<u8> {
     let mut out = Vec::with_capacity(RECORD * particles.len());
-    for p in particles {
+    for p in particles.iter().map(AsRef::as_ref) {
         let doubles = [p.mass, p.radius]
             .into_iter()
             .chain(p.pos.iter().copied())

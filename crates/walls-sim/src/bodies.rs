@@ -76,6 +76,13 @@ impl State {
     }
 }
 
+/// The particle a state holds, for what reads particles ([`crate::config::load_as`]).
+impl AsRef<Particle> for State {
+    fn as_ref(&self) -> &Particle {
+        &self.particle
+    }
+}
+
 impl From<Particle> for State {
     /// The particle at the start of a run ([`State::new`]), taken rather than copied.
     fn from(particle: Particle) -> State {

@@ -202,7 +202,7 @@ impl Build {
 pub fn missing(
     build: &Build,
     walls: &[walls_geometry::Wall],
-    particles: &[walls_geometry::Particle],
+    particles: &[impl AsRef<walls_geometry::Particle>],
 ) -> Vec<(&'static str, String)> {
     let mut out = Vec::new();
     let heavy = walls.iter().filter(|w| w.reactive.is_heavy()).count();
@@ -212,7 +212,7 @@ pub fn missing(
             format!("{heavy} walls have a mass (reactive walls)"),
         ));
     }
-    let members = particles.iter().filter(|p| p.index < 0).count();
+    let members = particles.iter().filter(|p| p.as_ref().index < 0).count();
     if !build.aggs && members > 0 {
         out.push((
             "AGGS",

@@ -306,11 +306,12 @@ pub fn ss_base(out_name: Option<&str>) -> (String, Option<String>) {
 /// than a wanted run (docs/evaluator.md).
 pub const MAX_STEPS: u64 = 100_000_000;
 
-/// A run's particles and settings.
+/// A run's particles and settings: the particles as [`Particle`]s, or as the states a
+/// run starts from ([`load_as`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Run {
+pub struct Run<P = Particle> {
     /// The particles.
-    pub particles: Vec<Particle>,
+    pub particles: Vec<P>,
     /// The settings.
     pub settings: Settings,
     /// The `.par` lines the run does not follow because of its build or integrator
@@ -396,15 +397,26 @@ pub fn read_par(flags: &Flags) -> Result<Option<Params>, ConfigError> {
 /// Reads the particle file that `flags` and `par` (read by [`read_par`]) name, and
 /// settles the run's settings against `scene`.
 pub fn load(flags: &Flags, par: Option<&Params>, scene: &[Wall]) -> Result<Run, ConfigError> {
+    load_as(flags, par, scene)
+}
+
+/// [`load`], each particle made a `P` as it is read: `walls-sim run` reads them straight
+/// into the [`crate::run::State`]s its run starts from
+/// ([`crate::io::particles::read_file_as`]).
+pub fn load_as<P: AsRef<Particle> + From<Particle>>(
+    flags: &Flags,
+    par: Option<&Params>,
+    scene: &[Wall],
+) -> Result<Run<P>, ConfigError> {
     let read = match particle_file(flags, par) {
-        Some(f) => Some(particles::read_file(&f)?),
+        Some(f) => Some(particles::read_file_as(&f)?),
         None => None,
     };
     let (particles, numbers) = match read {
         Some(read) => (Some(read.particles), read.warnings),
         None => (None, Vec::new()),
     };
-    let mut run = resolve(flags, par, scene, particles)?;
+    let mut run = resolve_as(flags, par, scene, particles)?;
     run.numbers.extend(numbers);
     if crate::run::optional::cohesion_on(&run.settings)
         && let Some(file) = cohesion_file(flags, par)
@@ -464,11 +476,24 @@ pub fn resolve(
     scene: &[Wall],
     particles: Option<Vec<Particle>>,
 ) -> Result<Run, ConfigError> {
+    resolve_as(flags, par, scene, particles)
+}
+
+/// [`resolve`] for particles held as `P`s ([`load_as`]).
+pub fn resolve_as<P: AsRef<Particle> + From<Particle>>(
+    flags: &Flags,
+    par: Option<&Params>,
+    scene: &[Wall],
+    particles: Option<Vec<P>>,
+) -> Result<Run<P>, ConfigError> {
     let given = &flags.inputs;
     let (particles, embedded) = match particles {
         _ if given.no_particles && given.particles.is_none() => (Vec::new(), true),
         Some(ps) => (ps, false),
-        None => (defaults::default_particles(scene), true),
+        None => {
+            let embedded = defaults::default_particles(scene);
+            (embedded.into_iter().map(P::from).collect(), true)
+        }
     };
     // pkdgrav's `bDoGravity = 0`: no forces at all, uniform gravity included.
     let forces = par.and_then(|p| p.do_gravity).unwrap_or(true);
@@ -618,7 +643,7 @@ fn option_subnormals(given: &Inputs) -> Vec<Warning> {
 fn check(
     flags: &Flags,
     par: Option<&Params>,
-    run: &Run,
+    run: &Run<impl AsRef<Particle>>,
     embedded: bool,
 ) -> Result<(), ConfigError> {
     let s = &run.settings;
@@ -685,7 +710,7 @@ fn check(
         ));
     }
     let g = s.gravity.norm();
-    for (i, p) in run.particles.iter().enumerate() {
+    for (i, p) in run.particles.iter().map(AsRef::as_ref).enumerate() {
         let which = if embedded {
             format!("default particle {i} (sized to the scene)")
         } else {

@@ -12,7 +12,11 @@ use walls_geometry::units::Readout;
 
 /// The parts of the model a run used, for the JSON `model` field: the plan's (as the
 /// run saw it), plus sticky and death walls when a particle met one.
-pub fn model(scene: &[Wall], particles: &[Particle], settings: &Settings) -> Vec<&'static str> {
+pub fn model(
+    scene: &[Wall],
+    particles: &[impl AsRef<Particle>],
+    settings: &Settings,
+) -> Vec<&'static str> {
     let (_, parts) = crate::run::plan::parts(scene, particles, settings);
     let everything = settings.planning == Planning::Everything;
     let mut model = vec![match settings.method() {

@@ -482,3 +482,79 @@ fn wallsreact_lines_follow_ired_out_interval_when_above_0() {
     assert_eq!(reduced(with(Some(0))), None);
     assert_eq!(reduced(with(None)), None);
 }
+
+/// `walls-sim run` reads its particles straight into the states its run starts from
+/// (`load_as`): the same settings, and a run of them the same as of the particles, to
+/// the bit, with a particle stuck to a wall from the start (its negative colour) and one
+/// of another size: bouncing, meeting, spinning.
+#[test]
+fn particles_read_as_states_run_as_the_particles() {
+    use walls_sim::run::{Outcome, State, run_watched};
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("balls.csv");
+    std::fs::write(
+        &csv,
+        "mass,radius,x,y,z,vx,vy,vz,wx,wy,wz,color\n\
+         1,0.1,0,0,0.3,0,0,-2,0,1,0,3\n\
+         1,0.1,0.15,0,0.45,0,0,-1,0,0,0,5\n\
+         2,0.15,0,0,-0.85,0,0,0,0,0,0,-2\n",
+    )
+    .unwrap();
+    let flags = Flags {
+        inputs: Inputs {
+            particles: Some(csv.to_string_lossy().into_owned()),
+            t_end: Some(0.2),
+            ..Inputs::default()
+        },
+        ..Flags::default()
+    };
+    let walls =
+        scene("wall type plane origin 0 0 0 epsn 0.5\nwall type plane origin 0 0 -1 epsn 0\n");
+    let particles = load(&flags, None, &walls).unwrap();
+    let states = walls_sim::config::load_as::<State>(&flags, None, &walls).unwrap();
+    assert_eq!(particles.settings, states.settings);
+    let held: Vec<_> = states
+        .particles
+        .iter()
+        .map(|s| s.particle.clone())
+        .collect();
+    assert_eq!(held, particles.particles);
+    let run = |outcome: Outcome| {
+        let bits = |s: &State| {
+            let p = &s.particle;
+            let v = [p.pos, p.vel, p.spin].map(|v| v.map(f64::to_bits));
+            (
+                v,
+                s.alive,
+                s.stuck_to
+                    .as_deref()
+                    .map(|&(w, at)| (w, at.map(f64::to_bits))),
+            )
+        };
+        let states: Vec<_> = outcome.particles.iter().map(bits).collect();
+        (
+            outcome.steps,
+            states,
+            outcome.events.len(),
+            outcome.energy.1.to_bits(),
+        )
+    };
+    let settings = &particles.settings;
+    let from_particles = run_watched(
+        &walls,
+        particles.particles,
+        settings,
+        &mut |_, _, _| {},
+        &|| false,
+    );
+    let from_states = run_watched(
+        &walls,
+        states.particles,
+        settings,
+        &mut |_, _, _| {},
+        &|| false,
+    );
+    assert!(from_particles.steps > 1000);
+    assert!(from_particles.particles[2].stuck_to.is_some());
+    assert_eq!(run(from_particles), run(from_states));
+}

@@ -23,11 +23,13 @@ use walls_geometry::Particle;
 
 type Vec3 = Vector3<f64>;
 
-/// Particles read from a file, with the warnings about its numbers.
+/// Particles read from a file, with the warnings about its numbers: each a [`Particle`],
+/// or made one from it as it is read (a run's [`State`]s: the run then holds no second
+/// array of its particles, [`read_file_as`]).
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Particles {
+pub struct Particles<T = Particle> {
     /// The particles, in the file's order.
-    pub particles: Vec<Particle>,
+    pub particles: Vec<T>,
     /// Its subnormal numbers (W701), each located in the file (`line 3: \`x\``, `byte
     /// 40: particle 0's \`x\``; [`read_file`] puts the file's path before).
     pub warnings: Vec<Warning>,
@@ -42,7 +44,10 @@ pub fn read_csv(text: &str) -> Result<Particles, InputError> {
 /// whole), a field's bytes that are not UTF-8 read as U+FFFD, as [`read_bytes`] reads
 /// them. `len`, the source's length in bytes, sizes the particles' array from the first
 /// row's length.
-fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputError> {
+fn read_csv_from<T: From<Particle>>(
+    source: impl io::Read,
+    len: u64,
+) -> Result<Particles<T>, InputError> {
     // The names and fields trimmed of white space as Unicode defines it (as the csv
     // reader's trim of text records does), here, one field at a time: the reader's own
     // trim made a new record for each row. The reader buffers `source` itself.
@@ -162,7 +167,7 @@ fn read_csv_from(source: impl io::Read, len: u64) -> Result<Particles, InputErro
             index: integer(org_idx)?.unwrap_or(n as i32),
         };
         check(&particle).map_err(|says| error(line(), says))?;
-        out.push(particle);
+        out.push(T::from(particle));
     }
     Ok(Particles {
         particles: out,
@@ -188,6 +193,7 @@ fn rows_expected<R: io::Read>(len: u64, reader: &csv::Reader<R>, first: &csv::By
 
 /// `bytes` as text, those that are not UTF-8 read as U+FFFD (`from_utf8_lossy`, whose
 /// check of every byte took twice as long as `from_utf8`'s for the fields of a CSV row).
+#[inline]
 fn text(bytes: &[u8]) -> std::borrow::Cow<'_, str> {
     match std::str::from_utf8(bytes) {
         Ok(text) => text.into(),
@@ -337,6 +343,11 @@ fn header(x: &mut Xdr<'_>, len: u64, warnings: &mut Vec<Warning>) -> Result<Head
 
 /// Reads a pkdgrav `.ss` file: its time and particles.
 pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
+    read_ss_as(bytes)
+}
+
+/// [`read_ss`], each particle made a `T` as it is read.
+fn read_ss_as<T: From<Particle>>(bytes: &[u8]) -> Result<(f64, Particles<T>), InputError> {
     let mut x = Xdr { bytes, at: 0 };
     let mut warnings = Vec::new();
     let Header {
@@ -389,7 +400,7 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
                 super::subnormal(value, at, &mut warnings);
             }
         }
-        out.push(p);
+        out.push(T::from(p));
     }
     Ok((
         time,
@@ -402,10 +413,11 @@ pub fn read_ss(bytes: &[u8]) -> Result<(f64, Particles), InputError> {
 
 /// `particles` as a pkdgrav `.ss` file at `time` (standard records, big-endian XDR):
 /// what [`read_ss`] reads back exactly.
-pub fn write_ss(time: f64, particles: &[Particle]) -> Vec<u8> {
+pub fn write_ss(time: f64, particles: &[impl AsRef<Particle>]) -> Vec<u8> {
     let mut out = Vec::with_capacity(16 + 96 * particles.len());
+    let each = particles.iter().map(|p| p.as_ref().clone());
     // Writing to memory cannot fail.
-    let _ = write_records(&mut out, time, particles.len(), particles.iter().cloned());
+    let _ = write_records(&mut out, time, particles.len(), each);
     out
 }
 
@@ -487,9 +499,14 @@ pub fn format_of(name: &str, bytes: &[u8]) -> Option<Format> {
 /// Particles from `bytes`, the contents of the particle file `name`, in the format
 /// [`format_of`] finds.
 pub fn read_bytes(name: &str, bytes: &[u8]) -> Result<Particles, InputError> {
+    read_bytes_as(name, bytes)
+}
+
+/// [`read_bytes`], each particle made a `T` as it is read.
+fn read_bytes_as<T: From<Particle>>(name: &str, bytes: &[u8]) -> Result<Particles<T>, InputError> {
     match format_of(name, bytes) {
         Some(Format::Csv) => read_csv_from(bytes, bytes.len() as u64),
-        Some(Format::Ss) => read_ss(bytes).map(|(_, ps)| ps),
+        Some(Format::Ss) => read_ss_as(bytes).map(|(_, ps)| ps),
         None => Err(error(
             "byte 0",
             "neither a particle CSV (a text header row: mass,radius,x,y,z,vx,vy,vz) nor a pkdgrav .ss file (a binary header with the magic number -1 or -10101 at byte 12)",
@@ -563,12 +580,12 @@ fn read_rest(
 /// `head`: the header is checked against `len` (the particle count and the record size
 /// give the length) before the records are read, so a file of the wrong length, however
 /// large, is refused having read 16 bytes.
-fn read_ss_open(
+fn read_ss_open<T: From<Particle>>(
     file: File,
     len: u64,
     head: Vec<u8>,
     path: &Path,
-) -> Result<(f64, Particles), FileError> {
+) -> Result<(f64, Particles<T>), FileError> {
     let name = path.display().to_string();
     if head.len() == 16 {
         let mut x = Xdr {
@@ -578,7 +595,7 @@ fn read_ss_open(
         header(&mut x, len, &mut Vec::new()).map_err(|e| FileError::input(&name, e))?;
     }
     let bytes = read_rest(file, len, head, path)?;
-    read_ss(&bytes).map_err(|e| FileError::input(&name, e))
+    read_ss_as(&bytes).map_err(|e| FileError::input(&name, e))
 }
 
 /// Reads the pkdgrav `.ss` file at `path` as [`read_file`] reads one: a path that is not
@@ -611,9 +628,17 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, FileError> {
 /// 124 MB of text, read whole, would lie beside the particles), a `.ss` file's header is
 /// checked against the file's length before its records are read ([`read_ss_file`]).
 pub fn read_file(path: &str) -> Result<Particles, FileError> {
+    read_file_as(path)
+}
+
+/// [`read_file`], each particle made a `T` as it is read: a run reads its particles
+/// straight into its [`State`]s, so that no array of [`Particle`]s (104 bytes each) is
+/// made and freed beside them (the allocator kept its pages resident into the run: 30 MiB
+/// of the peak at 10⁶ particles).
+pub fn read_file_as<T: From<Particle>>(path: &str) -> Result<Particles<T>, FileError> {
     let name = if path == "-" { "<stdin>" } else { path };
     let read = if path == "-" {
-        read_bytes(path, &read_input(path)?)
+        read_bytes_as(path, &read_input(path)?)
     } else {
         let p = Path::new(path);
         let (mut file, len) = open_regular(p)?;
@@ -622,7 +647,7 @@ pub fn read_file(path: &str) -> Result<Particles, FileError> {
             Some(Format::Csv) => read_csv_from(io::Cursor::new(head).chain(file), len),
             Some(Format::Ss) => return Ok(located(name, read_ss_open(file, len, head, p)?.1)),
             // Found by the whole first line, not its first 16 bytes.
-            None => read_bytes(path, &read_rest(file, len, head, p)?),
+            None => read_bytes_as(path, &read_rest(file, len, head, p)?),
         }
     };
     let read = read.map_err(|e| FileError::input(name, e))?;
@@ -656,7 +681,7 @@ pub fn open_input(path: &str) -> Result<Opened, FileError> {
 }
 
 /// `read` with its warnings located in the file `name`.
-fn located(name: &str, read: Particles) -> Particles {
+fn located<T>(name: &str, read: Particles<T>) -> Particles<T> {
     Particles {
         warnings: super::in_file(name, read.warnings),
         ..read

@@ -167,13 +167,13 @@ impl<W: Write> Trajectory<W> {
         &mut self,
         step: u64,
         t: f64,
-        particles: &[Particle],
+        particles: &[impl AsRef<Particle>],
         scene: &[Wall],
     ) -> io::Result<()> {
         let rows = particles
             .iter()
             .enumerate()
-            .map(|(i, p)| ParticleRow::of(step, t, i, true, p));
+            .map(|(i, p)| ParticleRow::of(step, t, i, true, p.as_ref()));
         self.write_step(step, t, rows, scene, &[])
     }
 

@@ -158,39 +158,38 @@ pub fn fastest_wall(walls: &[Wall]) -> f64 {
 
 /// The fastest relative speed a run expects: the larger of the fastest particle and
 /// free fall over the scene, plus the fastest wall.
-pub fn fastest_speed(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+pub fn fastest_speed(walls: &[Wall], particles: &[impl AsRef<Particle>], gravity: &Vec3) -> f64 {
     let (lo, hi) = scene_bounds(walls, &[]);
-    let span = particles
-        .iter()
-        .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()));
+    let span =
+        (particles.iter().map(AsRef::as_ref)).fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()));
     let fall = (2.0 * gravity.norm() * span.max()).sqrt();
-    let fastest = particles.iter().map(|p| p.vel.norm()).fold(0.0, f64::max);
+    let fastest = (particles.iter().map(|p| p.as_ref().vel.norm())).fold(0.0, f64::max);
     fall.max(fastest) + fastest_wall(walls)
 }
 
 /// The smallest radius of `particles` (infinite when there are none).
-fn smallest_radius(particles: &[Particle]) -> f64 {
+fn smallest_radius(particles: &[impl AsRef<Particle>]) -> f64 {
     particles
         .iter()
-        .map(|p| p.radius)
+        .map(|p| p.as_ref().radius)
         .fold(f64::INFINITY, f64::min)
 }
 
 /// A normal spring constant for which the fastest expected impact overlaps by 1 % of the
 /// smallest radius: k_n = m·(v/(0.01·r))²; 0 without particles.
-pub fn default_k_n(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+pub fn default_k_n(walls: &[Wall], particles: &[impl AsRef<Particle>], gravity: &Vec3) -> f64 {
     if particles.is_empty() {
         return 0.0;
     }
     let v = fastest_speed(walls, particles, gravity).max(1e-12);
-    let m = particles.iter().map(|p| p.mass).fold(0.0, f64::max);
+    let m = (particles.iter().map(|p| p.as_ref().mass)).fold(0.0, f64::max);
     m * (v / (0.01 * smallest_radius(particles))).powi(2)
 }
 
 /// The longest step for which nothing moves more than [`TRAVEL_PER_STEP`] of the
 /// smallest radius at the fastest relative speed (infinite when nothing moves or there
 /// are no particles).
-pub fn travel_cap(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+pub fn travel_cap(walls: &[Wall], particles: &[impl AsRef<Particle>], gravity: &Vec3) -> f64 {
     let v = fastest_speed(walls, particles, gravity);
     TRAVEL_PER_STEP * smallest_radius(particles) / v
 }
@@ -220,22 +219,21 @@ pub fn walls_only_dt(walls: &[Wall], t_end: f64) -> f64 {
 
 /// How long to run when not told: three free falls (or crossings) over the scene;
 /// without particles, two periods of the slowest oscillation.
-pub fn default_duration(walls: &[Wall], particles: &[Particle], gravity: &Vec3) -> f64 {
+pub fn default_duration(walls: &[Wall], particles: &[impl AsRef<Particle>], gravity: &Vec3) -> f64 {
     if particles.is_empty()
         && let Some((_, longest)) = periods(walls)
     {
         return 2.0 * longest;
     }
     let (lo, hi) = scene_bounds(walls, &[]);
-    let span = particles
-        .iter()
+    let span = (particles.iter().map(AsRef::as_ref))
         .fold(hi - lo, |s, p| s.sup(&(p.pos - lo).abs()))
         .max();
     let g = gravity.norm();
     if g > 0.0 {
         3.0 * (2.0 * span / g).sqrt()
     } else {
-        let fastest = particles.iter().map(|p| p.vel.norm()).fold(0.0, f64::max);
+        let fastest = (particles.iter().map(|p| p.as_ref().vel.norm())).fold(0.0, f64::max);
         if fastest > 0.0 {
             3.0 * span / fastest
         } else {
@@ -248,7 +246,12 @@ pub fn default_duration(walls: &[Wall], particles: &[Particle], gravity: &Vec3) 
 /// parabola by at most g·dt²/8; keep that below 0.1 % of the smallest radius. Without
 /// gravity paths are straight and any step is exact: a hundredth of the run. Either way
 /// no more than the [`travel_cap`]; without particles, [`walls_only_dt`].
-pub fn default_hard_dt(walls: &[Wall], particles: &[Particle], gravity: &Vec3, t_end: f64) -> f64 {
+pub fn default_hard_dt(
+    walls: &[Wall],
+    particles: &[impl AsRef<Particle>],
+    gravity: &Vec3,
+    t_end: f64,
+) -> f64 {
     if particles.is_empty() {
         return walls_only_dt(walls, t_end);
     }
@@ -267,7 +270,7 @@ pub fn default_hard_dt(walls: &[Wall], particles: &[Particle], gravity: &Vec3, t
 /// without particles, [`walls_only_dt`].
 pub fn default_soft_dt(
     walls: &[Wall],
-    particles: &[Particle],
+    particles: &[impl AsRef<Particle>],
     gravity: &Vec3,
     k_n: f64,
     t_end: f64,

@@ -299,10 +299,10 @@ fn in_parallel(n: usize) -> bool {
 pub const STEPS_PER_CONTACT: f64 = 100.0;
 
 /// pkdgrav's suggested timestep for the lightest particle, with [`STEPS_PER_CONTACT`].
-pub fn default_dt(particles: &[Particle], k_n: f64) -> f64 {
+pub fn default_dt(particles: &[impl AsRef<Particle>], k_n: f64) -> f64 {
     let m = particles
         .iter()
-        .map(|p| p.mass)
+        .map(|p| p.as_ref().mass)
         .fold(f64::INFINITY, f64::min);
     std::f64::consts::PI * (m / (2.0 * k_n)).sqrt() / STEPS_PER_CONTACT
 }
@@ -512,9 +512,13 @@ pub fn run_observed(
 /// thread waits. So neither may wait on the calling thread (a lock it holds, a channel
 /// it would read), and runs started together from several threads share the pool: one
 /// may wait for another to finish.
-pub fn run_watched(
+///
+/// The particles may come as [`Particle`]s or as the [`State`]s a reader made of them
+/// ([`crate::io::particles::read_file_as`]): those become the run's own, in the memory
+/// they hold, where particles are copied into states made for them.
+pub fn run_watched<P: AsRef<Particle> + Into<State>>(
     walls: &[Wall],
-    particles: Vec<Particle>,
+    particles: Vec<P>,
     settings: &Settings,
     observe: Observer,
     interrupted: Interrupted,
@@ -524,7 +528,7 @@ pub fn run_watched(
     let countable = |step: u64| step <= walls_keywords::number::EXACT_COUNT;
     let steps_fit = countable(settings.start_step) && countable(settings.end_step());
     if !(dt > 0.0 && dt.is_finite() && steps_fit) {
-        let states: Vec<State> = particles.into_iter().map(State::from).collect();
+        let states: Vec<State> = particles.into_iter().map(Into::into).collect();
         let e = energy(&states, &settings.gravity);
         return Outcome {
             t: t0,
@@ -547,13 +551,15 @@ pub fn run_watched(
     // Walls react only where the run can have them ([`plan::reactive`]: a build with
     // `DEM_WALLS_REACT`), whatever plan was asked for.
     plan.reactive &= plan::reactive(walls, settings);
-    // The particles become the states: the run does not keep them twice.
+    // The particles become the states: the run does not keep them twice (states given
+    // stay where they are: the same type collected in place).
     let states: Vec<State> = particles
         .into_iter()
-        .map(|p| State {
-            acc: settings.gravity,
-            stuck_to: stuck_from_the_start(&p, walls, t0).map(Box::new),
-            ..State::from(p)
+        .map(|p| {
+            let mut s: State = p.into();
+            s.acc = settings.gravity;
+            s.stuck_to = stuck_from_the_start(&s.particle, walls, t0).map(Box::new);
+            s
         })
         .collect();
     // Negative colours naming no wall, warned about after the run.

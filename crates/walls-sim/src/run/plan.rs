@@ -82,13 +82,21 @@ impl Plan {
     }
 
     /// The parts a run of `particles` against `walls` with `settings` needs.
-    pub fn for_run(walls: &[Wall], particles: &[Particle], settings: &Settings) -> Plan {
+    pub fn for_run(
+        walls: &[Wall],
+        particles: &[impl AsRef<Particle>],
+        settings: &Settings,
+    ) -> Plan {
         parts(walls, particles, settings).0
     }
 }
 
 /// The plan for a run, with every part's reason, in a fixed order.
-pub fn parts(walls: &[Wall], particles: &[Particle], settings: &Settings) -> (Plan, Vec<Part>) {
+pub fn parts(
+    walls: &[Wall],
+    particles: &[impl AsRef<Particle>],
+    settings: &Settings,
+) -> (Plan, Vec<Part>) {
     let scene = Scene {
         walls,
         hard: settings.method() == ContactModel::Hsdem,
@@ -292,7 +300,7 @@ fn edges(scene: &Scene, settings: &Settings) -> Part {
 /// never to meet (which needs `frictionless` contacts).
 fn particle_contacts(
     walls: &[Wall],
-    particles: &[Particle],
+    particles: &[impl AsRef<Particle>],
     settings: &Settings,
     frictionless: bool,
 ) -> Part {
@@ -374,7 +382,7 @@ fn death_walls(scene: &Scene) -> Part {
 }
 
 /// The pkdgrav build the run follows, with the options the inputs need and it lacks.
-fn pkdgrav_build(walls: &[Wall], particles: &[Particle], settings: &Settings) -> Part {
+fn pkdgrav_build(walls: &[Wall], particles: &[impl AsRef<Particle>], settings: &Settings) -> Part {
     let build = &settings.build;
     let missing = crate::build::missing(build, walls, particles);
     Part::new(
@@ -440,7 +448,8 @@ pub fn reactive(walls: &[Wall], settings: &Settings) -> bool {
 /// only along n̂; gravity is uniform; so if all particles move at the same velocity
 /// across n̂, their positions across n̂ keep their separations, and if no two are within
 /// the sum of their radii there, they never touch.
-fn never_meet(walls: &[Wall], particles: &[Particle], frictionless: bool) -> bool {
+fn never_meet(walls: &[Wall], particles: &[impl AsRef<Particle>], frictionless: bool) -> bool {
+    let particle = |i: usize| particles[i].as_ref();
     let Some(Shape::Plane(first)) = walls.first().map(|w| &w.shape) else {
         return false;
     };
@@ -450,12 +459,12 @@ fn never_meet(walls: &[Wall], particles: &[Particle], frictionless: bool) -> boo
             && w.material.eps_n != 0.0
     });
     let across = |v: &nalgebra::Vector3<f64>| v - n * n.dot(v);
-    let v0 = across(&particles[0].vel);
-    if !frictionless || !planes || particles.iter().any(|p| across(&p.vel) != v0) {
+    let v0 = across(&particle(0).vel);
+    if !frictionless || !planes || particles.iter().any(|p| across(&p.as_ref().vel) != v0) {
         return false;
     }
     let grid = crate::broad::grid::CellGrid::from_fn(particles.len(), |i| {
-        Some((across(&particles[i].pos), particles[i].radius))
+        Some((across(&particle(i).pos), particle(i).radius))
     });
     let mut any = false;
     grid.for_each_pair(|_, _| any = true);

@@ -177,7 +177,7 @@ impl RunOutputs {
         &mut self,
         step: u64,
         t: f64,
-        particles: &[Particle],
+        particles: &[impl AsRef<Particle>],
         scene: &[Wall],
         assemblies: Option<&[Assembly]>,
     ) -> Result<(), Failure> {

@@ -7,12 +7,11 @@ use super::outputs::{Due, Failure, RunOutputs};
 use super::{error, exit_status, read_walls};
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
-use walls_geometry::Particle;
 use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
 use walls_sim::config::{Counts, Flags, Inputs, Outputs, Stepping};
 use walls_sim::report::OutputError;
-use walls_sim::run::Settings;
+use walls_sim::run::{Settings, State};
 
 /// `walls-sim run`: the docs/spec.md §2 command line.
 #[derive(clap::Args)]
@@ -69,8 +68,9 @@ pub struct Prepared {
     pub walls_text: std::sync::Arc<str>,
     /// The `.par` file read, if any.
     pub par: Option<walls_sim::io::par::Params>,
-    /// The particles.
-    pub particles: Vec<Particle>,
+    /// The particles, read straight into the states the run starts from (the run holds
+    /// no second array of them).
+    pub particles: Vec<State>,
     /// The settings, from the options, the `.par` file and the defaults.
     pub settings: Settings,
     /// How many errors the walls file has.
@@ -118,7 +118,7 @@ pub fn prepare(args: &RunArgs, doing: Option<&str>) -> Result<Prepared, String> 
     let (checked, errors) = read_walls(&file, flags.build().contact_model(), doing)?;
     let walls = decode(&checked.scene);
     let readout = walls_geometry::units::Readout::new(args.units, &checked.scene.units);
-    let run = config::load(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
+    let run = config::load_as(&flags, par.as_ref(), &walls).map_err(|e| e.to_string())?;
     if let Some(path) = &flags.inputs.par {
         for w in &run.warnings {
             crate::errln!("walls-sim: warning: {path}: {w}");
