@@ -175,8 +175,9 @@ fn read_csv_from<T: From<Particle>>(
     })
 }
 
-/// The most particles the CSV reader makes room for before it has read them (1.6 GB of
-/// them): past it the array grows as they come.
+/// The most particles the CSV reader makes room for before it has read them (1.7 GB of
+/// particles, 2.7 GB of a run's states; room asked for, touched only as rows fill it):
+/// past it the array grows as they come.
 const MOST_RESERVED: usize = 1 << 24;
 
 /// How many rows a CSV of `len` bytes probably holds, from where its first row ended

@@ -48,7 +48,6 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
     let near = broad.near.as_ref().filter(|_| forces);
     let now: &[WallNow] = if forces { &walls.now } else { &[] };
     let owing = near.is_none_or(|n| !n.moved(now, half));
-    let inverses = &bodies.inverses;
     // The settings held by value (`move`): by reference, every particle read each
     // through a pointer to these locals.
     let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {
@@ -59,6 +58,7 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
             at,
             sphere,
             walled,
+            inverse,
         } = work;
         if s.member {
             // The others' loads were started in the last wall pass, once used.
@@ -78,7 +78,6 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
             // The last step's closing kick, as the wall pass would have given it
             // (`close_step`'s arithmetic, in its order, from the locals).
             debug_assert_eq!(ACC_CRIT, kick.acc_crit > 0.0);
-            let inverse = inverses.of(i);
             // The load paid, set back to gravity for the next step; when the marks
             // are valid, one not marked is gravity already: worked out, not read.
             let paid = if !marks_valid || std::mem::take(loaded) {
@@ -129,7 +128,7 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
     // no short cut), chunks in parallel for many particles.
     let chunk = |(
         c,
-        (((((states, (loads, loaded)), owed), (built_at, spheres)), walled), visited),
+        (((((states, (loads, loaded)), owed), (built_at, spheres)), (walled, inverses)), visited),
     ): DriftChunk| {
         let mut drifted = false;
         let first = c * CHUNK;
@@ -140,8 +139,8 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
             .zip(owed)
             .zip(built_at)
             .zip(spheres)
-            .zip(walled);
-        for (k, (s, (((((load, loaded), owed), at), sphere), &walled))) in
+            .zip(walled.iter().zip(inverses));
+        for (k, (s, (((((load, loaded), owed), at), sphere), (&walled, &inverse)))) in
             states.iter_mut().zip(rest).enumerate()
         {
             let work = DriftWork {
@@ -151,6 +150,7 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
                 at,
                 sphere,
                 walled,
+                inverse,
             };
             drifted |= kick_drift(first + k, s, work);
             if !*owed {
@@ -169,7 +169,12 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
                 .zip((bodies.loads.$chunks_mut(CHUNK)).zip(deferred.loaded.$chunks_mut(CHUNK)))
                 .zip(deferred.owed.$chunks_mut(CHUNK))
                 .zip(built_at.$chunks(CHUNK).zip(spheres.$chunks_mut(CHUNK)))
-                .zip(bodies.walled.$chunks(CHUNK))
+                .zip(
+                    bodies
+                        .walled
+                        .$chunks(CHUNK)
+                        .zip(bodies.inverses.$chunks(CHUNK)),
+                )
                 .zip(deferred.visited.$iter_mut())
                 .enumerate()
         };
@@ -217,13 +222,14 @@ pub(super) fn settle(bodies: &mut Bodies, deferred: &mut Deferred, rules: &Rules
     let kick = deferred.owed_kick;
     let g = rules.settings.gravity;
     let mut bad = None;
-    for (i, ((s, load), owed)) in (bodies.states.iter_mut())
+    for (i, (((s, load), owed), &inverse)) in (bodies.states.iter_mut())
         .zip(&mut bodies.loads)
         .zip(&mut deferred.owed)
+        .zip(bodies.inverses.iter())
         .enumerate()
     {
         if std::mem::take(owed) {
-            let motion = close_step(s, load, bodies.inverses.of(i), kick);
+            let motion = close_step(s, load, inverse, kick);
             *load = Load::gravity(s, &g);
             if !s.finite_with(motion) {
                 let i = bodies.numbering.file(i);
@@ -248,8 +254,8 @@ pub(super) fn surely_finite(deferred: &Deferred) -> bool {
 
 /// A chunk of the particles as the drift takes it: its number, their states, loads, the
 /// loads' marks and owed kicks, where the candidate pairs were found and their spheres, whether they have
-/// a wall contact open, and the list of those the wall pass is to visit (within the
-/// chunk).
+/// a wall contact open and their 1/m and 1/I, and the list of those the wall pass is to
+/// visit (within the chunk).
 pub(super) type DriftChunk<'a> = (
     usize,
     (
@@ -261,7 +267,7 @@ pub(super) type DriftChunk<'a> = (
                 ),
                 (&'a [Vec3], &'a mut [[f64; 4]]),
             ),
-            &'a [bool],
+            (&'a [bool], &'a [(f64, f64)]),
         ),
         &'a mut Vec<u32>,
     ),
@@ -279,6 +285,8 @@ pub(super) struct DriftWork<'a> {
     sphere: &'a mut [f64; 4],
     /// Whether it has a wall contact open ([`Bodies::walled`]).
     walled: bool,
+    /// 1/m and 1/I ([`Bodies::inverses`]).
+    inverse: (f64, f64),
 }
 
 /// How large a particle's numbers, or a bound on its next kick, may be for the kick

@@ -153,7 +153,9 @@ impl Deferred {
             owed_bad: None,
             force_bound: 0.0,
             gravity_bound: settings.gravity.abs().sum() * heaviest,
-            largest_inverse: bodies.inverses.largest(largest),
+            largest_inverse: (bodies.inverses.iter())
+                .map(|i| largest(i.0, i.1))
+                .fold(0.0, largest),
         }
     }
 }

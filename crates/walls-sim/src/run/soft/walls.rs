@@ -640,48 +640,49 @@ pub(super) fn wall_contacts(
         t,
         numbering: &bodies.numbering,
     };
-    let inverses = &bodies.inverses;
     // A plain loop over the particles of each chunk not owed their kick, its reports
     // kept with it (in particle order within the chunk), chunks in parallel for many
     // particles. Each load, once used, starts the next step with gravity alone
     // (while it is at hand; the drift does it for the owed); an aggregate's members'
     // loads are kept for it ([`super::rigid::gather_aggregates`]).
-    let chunk =
-        |(c, ((((states, loads), visited), (opens, walled)), (reports, visit))): WallChunk| {
-            reports.clear();
-            let first = c * CHUNK;
-            // The others are clear of the walls: their closing kicks are owed, not given
-            // here.
-            for &k in visited.iter() {
-                let k = k as usize;
-                let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
-                let i = first + k;
-                if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
-                    // Clear of the walls, not owed: the closing kick alone. (None is
-                    // open, as `walled[k]` already says: only this pass opens them.)
-                    if let Some(report) = clear_step(s, load, inverses.of(i), &walls) {
-                        reports.push((i, report));
-                    }
-                    *load = Load::gravity(s, &gravity);
-                    continue;
-                }
-                let work = WallWork {
-                    load,
-                    inverse: inverses.of(i),
-                    open,
-                    visit,
-                };
-                let mut report = wall_step(i, s, work, &walls);
-                walled[k] = !open.is_empty();
-                report.not_finite = !s.finite();
-                if !s.member {
-                    *load = Load::gravity(s, &gravity);
-                }
-                if !report.is_empty() {
+    let chunk = |(
+        c,
+        ((((states, loads), (visited, inverses)), (opens, walled)), (reports, visit)),
+    ): WallChunk| {
+        reports.clear();
+        let first = c * CHUNK;
+        // The others are clear of the walls: their closing kicks are owed, not given
+        // here.
+        for &k in visited.iter() {
+            let k = k as usize;
+            let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
+            let i = first + k;
+            if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
+                // Clear of the walls, not owed: the closing kick alone. (None is
+                // open, as `walled[k]` already says: only this pass opens them.)
+                if let Some(report) = clear_step(s, load, inverses[k], &walls) {
                     reports.push((i, report));
                 }
+                *load = Load::gravity(s, &gravity);
+                continue;
             }
-        };
+            let work = WallWork {
+                load,
+                inverse: inverses[k],
+                open,
+                visit,
+            };
+            let mut report = wall_step(i, s, work, &walls);
+            walled[k] = !open.is_empty();
+            report.not_finite = !s.finite();
+            if !s.member {
+                *load = Load::gravity(s, &gravity);
+            }
+            if !report.is_empty() {
+                reports.push((i, report));
+            }
+        }
+    };
     let chunks = bodies.states.len().div_ceil(CHUNK);
     wall_pass.reports.resize_with(chunks, Vec::new);
     wall_pass.visits.resize_with(chunks, Vec::new);
@@ -691,7 +692,7 @@ pub(super) fn wall_contacts(
         ($chunks:ident, $chunks_mut:ident, $iter:ident, $iter_mut:ident) => {
             (bodies.states.$chunks_mut(CHUNK))
                 .zip(bodies.loads.$chunks_mut(CHUNK))
-                .zip(deferred.visited.$iter())
+                .zip(deferred.visited.$iter().zip(bodies.inverses.$chunks(CHUNK)))
                 .zip((bodies.open_walls.$chunks_mut(CHUNK)).zip(bodies.walled.$chunks_mut(CHUNK)))
                 .zip(wall_pass.reports.$iter_mut().zip(&mut wall_pass.visits))
                 .enumerate()
@@ -866,13 +867,16 @@ pub(super) fn gain_tolerance(k_n: f64, mass: f64, dt: f64) -> f64 {
 }
 
 /// A chunk of the particles as the wall pass takes it: its number, their states and
-/// loads, which of them it visits, their open wall contacts and whether any is open, and
-/// its reports and scratch list of walls.
+/// loads, which of them it visits and their 1/m and 1/I, their open wall contacts and
+/// whether any is open, and its reports and scratch list of walls.
 pub(super) type WallChunk<'a> = (
     usize,
     (
         (
-            ((&'a mut [State], &'a mut [Load]), &'a Vec<u32>),
+            (
+                (&'a mut [State], &'a mut [Load]),
+                (&'a Vec<u32>, &'a [(f64, f64)]),
+            ),
             (&'a mut [ThinVec<(usize, Open)>], &'a mut [bool]),
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
