@@ -74,6 +74,13 @@ fn csv_errors_say_where() {
         e.to_string(),
         "line 2: `z` is `\u{fffd}1\u{fffd}`, not a number"
     );
+    // Two halves of one character split by a comma (the row's bytes, commas left out,
+    // are UTF-8): each field is read on its own, each half shown as U+FFFD.
+    let split = b"mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0,0,0\xc3,\xa90\n";
+    let e = walls_sim::io::particles::read_bytes("p.csv", split).unwrap_err();
+    assert_eq!(e.to_string(), "line 2: `vy` is `0\u{fffd}`, not a number");
+    let e = read_csv("mass,radius,x,y,z,vx,vy,vz\n1,0.1,0,0,0,0,0,é0\n").unwrap_err();
+    assert_eq!(e.to_string(), "line 2: `vz` is `é0`, not a number");
     assert!(
         read_csv("mass,radius,x,y,z,vx,vy,vz,spin\n")
             .unwrap_err()

@@ -131,8 +131,14 @@ fn read_csv_from<T: From<Particle>>(
             // Asked for, not required: a file that is mostly a hole asks for little.
             let _ = out.try_reserve(rows_expected(len, &reader, &record).min(MOST_RESERVED));
         }
-        // A field as text (trimmed where it is used).
-        let field = |i: usize| text(record.get(i).unwrap_or(b""));
+        // A field as text (trimmed where it is used): the row's bytes checked once, each
+        // field its part of them (a field that does not end on a character's boundary,
+        // as two halves of one character split by a comma would, is read on its own).
+        let row = std::str::from_utf8(record.as_slice()).ok();
+        let field = |i: usize| match row.zip(record.range(i)).and_then(|(row, r)| row.get(r)) {
+            Some(field) => std::borrow::Cow::Borrowed(field),
+            None => text(record.get(i).unwrap_or(b"")),
+        };
         let mut number = |(name, column): (&str, Option<usize>)| -> Result<f64, InputError> {
             let Some(i) = column else {
                 return Ok(0.0);
