@@ -540,13 +540,9 @@ fn particles_read_as_states_run_as_the_particles() {
         )
     };
     let settings = &particles.settings;
-    let from_particles = run_watched(
-        &walls,
-        particles.particles,
-        settings,
-        &mut |_, _, _| {},
-        &|| false,
-    );
+    let go =
+        |particles: Vec<_>| run_watched(&walls, particles, settings, &mut |_, _, _| {}, &|| false);
+    let from_particles = go(particles.particles);
     let from_states = run_watched(
         &walls,
         states.particles,
@@ -556,5 +552,11 @@ fn particles_read_as_states_run_as_the_particles() {
     );
     assert!(from_particles.steps > 1000);
     assert!(from_particles.particles[2].stuck_to.is_some());
+    // A finished run's states (stuck, accelerated, spinning) start a run as their
+    // particles do: a state's particle alone is taken.
+    let ended = from_states.particles.clone();
+    let as_particles: Vec<_> = ended.iter().map(|s| s.particle.clone()).collect();
+    let again = run_watched(&walls, ended, settings, &mut |_, _, _| {}, &|| false);
+    assert_eq!(run(again), run(go(as_particles)));
     assert_eq!(run(from_particles), run(from_states));
 }

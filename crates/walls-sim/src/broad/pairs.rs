@@ -177,10 +177,11 @@ impl PairList {
         };
     }
 
-    /// The candidate pairs found on the grid, in the memory the last build's held. The
-    /// first build makes room for 8 a particle (a close packing has 6; room not filled
-    /// is never touched) rather than growing the list one doubling at a time: the
-    /// allocator kept each smaller copy resident, 18 MiB of a run's peak at 10⁶.
+    /// The candidate pairs found on the grid over the spheres [`PairList::build`] has just
+    /// set, in the memory the last build's held. The first build makes room for 8 a
+    /// particle (a close packing has 6; room not filled is never touched) rather than
+    /// growing the list one doubling at a time, whose smaller copies, freed, stay
+    /// resident under mimalloc.
     fn find_pairs(&mut self, states: &[State]) {
         if self.pairs.capacity() == 0 {
             let _ = self.pairs.try_reserve(8 * states.len());

@@ -181,7 +181,7 @@ fn read_csv_from<T: From<Particle>>(
     })
 }
 
-/// The most particles the CSV reader makes room for before it has read them (1.7 GB of
+/// The most particles the CSV reader makes room for before it has read them (1.6 GB of
 /// particles, 2.7 GB of a run's states; room asked for, touched only as rows fill it):
 /// past it the array grows as they come.
 const MOST_RESERVED: usize = 1 << 24;
@@ -639,9 +639,9 @@ pub fn read_file(path: &str) -> Result<Particles, FileError> {
 }
 
 /// [`read_file`], each particle made a `T` as it is read: a run reads its particles
-/// straight into its [`State`]s, so that no array of [`Particle`]s (104 bytes each) is
-/// made and freed beside them (the allocator kept its pages resident into the run: 10 MiB
-/// of the peak at 10⁶ particles, and a pass over them).
+/// straight into its [`State`]s, so that no array of [`Particle`]s (96 bytes each) is
+/// made and freed beside them: a freed array's pages stay resident under mimalloc until
+/// it frees another page a second or more later.
 pub fn read_file_as<T: From<Particle>>(path: &str) -> Result<Particles<T>, FileError> {
     let name = if path == "-" { "<stdin>" } else { path };
     let read = if path == "-" {

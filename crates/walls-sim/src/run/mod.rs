@@ -513,9 +513,10 @@ pub fn run_observed(
 /// it would read), and runs started together from several threads share the pool: one
 /// may wait for another to finish.
 ///
-/// The particles may come as [`Particle`]s or as the [`State`]s a reader made of them
-/// ([`crate::io::particles::read_file_as`]): those become the run's own, in the memory
-/// they hold, where particles are copied into states made for them.
+/// The particles may come as [`Particle`]s or as [`State`]s (those a reader made of them,
+/// [`crate::io::particles::read_file_as`]): a state's particle alone is taken, and the
+/// states become the run's own in the memory they hold, where particles are copied into
+/// states made for them.
 pub fn run_watched<P: AsRef<Particle> + Into<State>>(
     walls: &[Wall],
     particles: Vec<P>,
@@ -528,7 +529,8 @@ pub fn run_watched<P: AsRef<Particle> + Into<State>>(
     let countable = |step: u64| step <= walls_keywords::number::EXACT_COUNT;
     let steps_fit = countable(settings.start_step) && countable(settings.end_step());
     if !(dt > 0.0 && dt.is_finite() && steps_fit) {
-        let states: Vec<State> = particles.into_iter().map(Into::into).collect();
+        let start = |p: P| State::from(p.into().particle);
+        let states: Vec<State> = particles.into_iter().map(start).collect();
         let e = energy(&states, &settings.gravity);
         return Outcome {
             t: t0,
@@ -551,15 +553,18 @@ pub fn run_watched<P: AsRef<Particle> + Into<State>>(
     // Walls react only where the run can have them ([`plan::reactive`]: a build with
     // `DEM_WALLS_REACT`), whatever plan was asked for.
     plan.reactive &= plan::reactive(walls, settings);
-    // The particles become the states: the run does not keep them twice (states given
-    // stay where they are: the same type collected in place).
+    // The particles become the states, each as a run starts it whatever state it came
+    // in: the run does not keep them twice (states given are made anew where they lie,
+    // the same type collected in place).
     let states: Vec<State> = particles
         .into_iter()
         .map(|p| {
-            let mut s: State = p.into();
-            s.acc = settings.gravity;
-            s.stuck_to = stuck_from_the_start(&s.particle, walls, t0).map(Box::new);
-            s
+            let p = p.into().particle;
+            State {
+                acc: settings.gravity,
+                stuck_to: stuck_from_the_start(&p, walls, t0).map(Box::new),
+                ..State::from(p)
+            }
         })
         .collect();
     // Negative colours naming no wall, warned about after the run.

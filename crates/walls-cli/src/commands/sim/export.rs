@@ -6,8 +6,9 @@
 //! must be) before any is written, and all are written before any takes its name.
 
 use super::error;
-use super::run::{Prepared, RunArgs, prepare};
+use super::run::{Prepared, RunArgs, prepare_as};
 use std::path::{Path, PathBuf};
+use walls_geometry::Particle;
 use walls_output::{Outputs, Tool, WriteError};
 use walls_sim::config::{Counts, Inputs, Stepping};
 use walls_sim::export::{Names, Source};
@@ -68,7 +69,7 @@ fn export(args: &ExportArgs) -> Result<i32, String> {
         json: false,
         units: walls_geometry::units::System::Pkdgrav,
     };
-    let prepared = prepare(&run_args, None)?;
+    let prepared: Prepared<Particle> = prepare_as(&run_args, None)?;
     let Prepared {
         walls_text,
         par,

@@ -2,12 +2,13 @@
 //! each ([`walls_sim::run::plan`]), and the pkdgrav build it follows with where that
 //! came from; it takes the same options as `run`.
 
-use super::run::{RunArgs, prepare};
+use super::run::{Prepared, RunArgs, prepare_as};
 use super::{error, exit_status};
+use walls_geometry::Particle;
 
 /// Prints the plan of the run `args` describe; the exit status.
 pub fn run(args: &RunArgs) -> i32 {
-    let prepared = match prepare(args, Some("running")) {
+    let prepared: Prepared<Particle> = match prepare_as(args, Some("running")) {
         Ok(p) => p,
         Err(e) => return error(e),
     };

@@ -7,6 +7,7 @@ use super::outputs::{Due, Failure, RunOutputs};
 use super::{error, exit_status, read_walls};
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
+use walls_geometry::Particle;
 use walls_geometry::units::System;
 use walls_geometry::{Wall, decode};
 use walls_sim::config::{Counts, Flags, Inputs, Outputs, Stepping};
@@ -60,17 +61,18 @@ pub fn run(args: &RunArgs) -> i32 {
     simulate(args).unwrap_or_else(error)
 }
 
-/// What a run needs, read and checked.
-pub struct Prepared {
+/// What a run needs, read and checked; its particles as `P`s (a run's: the states it
+/// starts from).
+pub struct Prepared<P = State> {
     /// The walls of the file, checked in the run's mode and decoded.
     pub walls: Vec<Wall>,
     /// The walls file's text.
     pub walls_text: std::sync::Arc<str>,
     /// The `.par` file read, if any.
     pub par: Option<walls_sim::io::par::Params>,
-    /// The particles, read straight into the states the run starts from (the run holds
+    /// The particles, for a run read straight into the states it starts from (it holds
     /// no second array of them).
-    pub particles: Vec<State>,
+    pub particles: Vec<P>,
     /// The settings, from the options, the `.par` file and the defaults.
     pub settings: Settings,
     /// How many errors the walls file has.
@@ -94,6 +96,15 @@ pub struct Prepared {
 /// walls file with errors is said to be `doing` ("running") what could be resolved;
 /// `None` says nothing of it (the caller refuses it).
 pub fn prepare(args: &RunArgs, doing: Option<&str>) -> Result<Prepared, String> {
+    prepare_as(args, doing)
+}
+
+/// [`prepare`] with the particles read as `P`s: the commands that do not run them keep
+/// [`Particle`]s (96 bytes each, not a state's 160).
+pub fn prepare_as<P: AsRef<Particle> + From<Particle>>(
+    args: &RunArgs,
+    doing: Option<&str>,
+) -> Result<Prepared<P>, String> {
     use walls_sim::config;
     let flags = Flags {
         inputs: args.inputs.clone(),

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 pub(super) struct Inverses {
     /// Particle i's at i (its place); or, when `shared`, the one pair [`CHUNK`] times.
     values: Vec<(f64, f64)>,
+    /// Whether every particle's is the one pair in `values`.
     shared: bool,
     /// How many particles.
     len: usize,
@@ -52,17 +53,23 @@ impl Inverses {
     }
 
     /// The particles' in chunks of [`CHUNK`], as `states.chunks(CHUNK)` cuts the states.
+    ///
+    /// # Panics
+    /// If `size` is not [`CHUNK`].
     pub(super) fn chunks(&self, size: usize) -> impl Iterator<Item = &[(f64, f64)]> {
-        debug_assert_eq!(size, CHUNK);
+        assert_eq!(size, CHUNK, "the inverses come in the passes' chunks");
         (0..self.len.div_ceil(CHUNK)).map(|c| self.chunk(c))
     }
 
     /// [`Inverses::chunks`] on rayon's threads.
+    ///
+    /// # Panics
+    /// If `size` is not [`CHUNK`].
     pub(super) fn par_chunks(
         &self,
         size: usize,
     ) -> impl IndexedParallelIterator<Item = &[(f64, f64)]> {
-        debug_assert_eq!(size, CHUNK);
+        assert_eq!(size, CHUNK, "the inverses come in the passes' chunks");
         (0..self.len.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| self.chunk(c))
@@ -79,6 +86,7 @@ mod tests {
     use super::*;
     use walls_geometry::Particle;
 
+    /// Particles at rest of unit density and radii `radii`, in a row along x.
     fn states(radii: &[f64]) -> Vec<State> {
         let at = |(i, &r): (usize, &f64)| {
             State::new(&Particle::at_rest(
