@@ -180,7 +180,8 @@ fn trajectory_snapshots(
                 particles: Vec::new(),
             });
         }
-        if !seen.insert(row.particle) && twice.is_none() {
+        // Looked for until the first is found, then no longer hashed.
+        if twice.is_none() && !seen.insert(row.particle) {
             twice = Some((row.particle, row.step));
         }
         if row.alive {

@@ -552,9 +552,11 @@ fn particles_read_as_states_run_as_the_particles() {
     );
     assert!(from_particles.steps > 1000);
     assert!(from_particles.particles[2].stuck_to.is_some());
-    // A finished run's states (stuck, accelerated, spinning) start a run as their
-    // particles do: a state's particle alone is taken.
-    let ended = from_states.particles.clone();
+    // A finished run's states (stuck, accelerated, spinning, one removed as a death
+    // wall leaves it) start a run as their particles do: a state's particle alone is
+    // taken.
+    let mut ended = from_states.particles.clone();
+    ended[1].alive = false;
     let as_particles: Vec<_> = ended.iter().map(|s| s.particle.clone()).collect();
     let again = run_watched(&walls, ended, settings, &mut |_, _, _| {}, &|| false);
     assert_eq!(run(again), run(go(as_particles)));
