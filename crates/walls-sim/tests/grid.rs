@@ -143,8 +143,9 @@ proptest! {
         // Deterministic: a second grid visits the same pairs in the same order.
         let again = CellGrid::with_margin(&sp.p, &sp.r, &sp.m);
         prop_assert_eq!(visited(&again), visited(&grid));
-        // Two ranges of cells, one after the other, visit the pairs of the whole loop.
-        let n = grid.cell_count();
+        // Two ranges of slots, one after the other, cut anywhere (within a cell too),
+        // visit the pairs of the whole loop.
+        let n = grid.binned();
         let split = ((n as f64) * cut) as usize;
         let mut parts = Vec::new();
         grid.for_each_pair_in(0..split, |i, j| parts.push((i, j)));
@@ -240,6 +241,10 @@ fn no_particle_and_one_particle() {
 
     let grid = CellGrid::new(&[v(1.0, 2.0, 3.0)], &[0.5]);
     assert_eq!(grid.cell_count(), 1);
+    assert_eq!(grid.binned(), 1);
+    // One left out (not alive): not binned, and its index kept for the other.
+    let grid = CellGrid::from_fn(2, |i| (i == 1).then(|| (v(1.0, 2.0, 3.0), 0.5)));
+    assert_eq!((grid.binned(), grid.order()), (1, vec![1]));
     assert!(grid.pairs().is_empty());
     grid.for_each_neighbour(0, |j| panic!("neighbour {j} of the only particle"));
 }

@@ -27,7 +27,8 @@
 //!
 //! **Hashing**: no array over the bounding box. The particles are sorted by their cell's
 //! key (i, j, k) = ⌊p/h⌋ (lexicographically, then by index) and each occupied cell is a
-//! range of that order, so memory is O(N) whatever the spread. The cells of one column
+//! run of that order, found by its key (no list of the cells is kept), so memory is
+//! O(N) whatever the spread. The cells of one column
 //! (same i, j) are consecutive in that order, so the neighbours of a cell are one run of
 //! particles in each of 4 columns (pairs: the half shell) or 9 (one particle's
 //! neighbours). When the keys span fewer than 2²¹ − 2 cells along each axis (the usual
@@ -53,7 +54,7 @@
 //!
 //! **Memory**: a particle's slot is its cell key, rank and index (16 bytes with packed
 //! keys, 32 with wide ones; sorted in place: nothing else is made to sort them), not a
-//! copy of where it is: [`Bins`] are
+//! copy of where it is, and a cell costs nothing more: [`Bins`] are
 //! queried with the spheres they binned, by index ([`Spheres`]), which a caller that
 //! keeps its particles in the grid's order (the soft-sphere run's places) reads almost
 //! in order. [`CellGrid`] is the bins with their own copy of the spheres (32 bytes a
@@ -63,7 +64,7 @@ use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::ops::Range;
 
-/// Into how many ranges of cells [`CellGrid::par_pairs`] cuts the grid.
+/// Into how many ranges of slots [`CellGrid::par_pairs`] cuts the grid.
 const PAIR_RANGES: usize = 64;
 
 /// From how many particles the grid sorts them on rayon's threads.
@@ -128,19 +129,13 @@ struct Slot<K> {
     id: u32,
 }
 
-/// The binned particles, sorted, and the occupied cells' keys, ascending.
+/// The binned particles, sorted: an occupied cell is a run of slots of one key.
 #[derive(Debug, Clone)]
 enum Cells {
     /// Keys packed.
-    Packed {
-        keys: Vec<Packed>,
-        slots: Vec<Slot<Packed>>,
-    },
+    Packed(Vec<Slot<Packed>>),
     /// Keys as they are.
-    Wide {
-        keys: Vec<[i64; 3]>,
-        slots: Vec<Slot<[i64; 3]>>,
-    },
+    Wide(Vec<Slot<[i64; 3]>>),
 }
 
 /// Where the binned particles are, by index: (x, y, z, r), each radius `r` swollen by
@@ -164,18 +159,17 @@ impl Spheres<'_> {
 /// The cells of a uniform grid over spheres given by index ([`Spheres`]), the
 /// particles binned in them in order (cells by key, within a cell by rank), without a
 /// copy of where they are: 16 bytes a particle (its slot, kept for the next build,
-/// which sorts it in place) and a few a cell. The soft-sphere run's candidate list
-/// bins its spheres so, and [`CellGrid`] bins a copy of its own.
+/// which sorts it in place) and nothing a cell (a cell is the run of slots of its key).
+/// The soft-sphere run's candidate list bins its spheres so, and [`CellGrid`] bins a
+/// copy of its own.
 #[derive(Debug, Clone)]
 pub(crate) struct Bins {
     /// Cell edge h.
     h: f64,
     /// 1/h, for the cell keys.
     inv_h: f64,
-    /// The binned particles and the occupied cells.
+    /// The binned particles.
     cells: Cells,
-    /// Cell c holds `slots[starts[c]..starts[c + 1]]`; one more entry than the keys.
-    starts: Vec<u32>,
 }
 
 impl Default for Bins {
@@ -183,11 +177,7 @@ impl Default for Bins {
         Bins {
             h: 1.0,
             inv_h: 1.0,
-            cells: Cells::Wide {
-                keys: Vec::new(),
-                slots: Vec::new(),
-            },
-            starts: vec![0],
+            cells: Cells::Wide(Vec::new()),
         }
     }
 }
@@ -224,23 +214,16 @@ impl Bins {
             ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
         self.h = h;
         self.inv_h = 1.0 / h;
-        self.starts.clear();
-        self.starts.push(0);
-        // The arrays of packed keys, whichever kind they held, kept for the kind
-        // needed now.
-        let empty = Cells::Wide {
-            keys: Vec::new(),
-            slots: Vec::new(),
+        // The array of packed keys, whichever kind it held, kept for the kind needed
+        // now.
+        let mut slots = match std::mem::replace(&mut self.cells, Cells::Wide(Vec::new())) {
+            Cells::Packed(slots) => slots,
+            Cells::Wide(_) => Vec::new(),
         };
-        let (mut keys, mut slots) = match std::mem::replace(&mut self.cells, empty) {
-            Cells::Packed { keys, slots } => (keys, slots),
-            Cells::Wide { .. } => (Vec::new(), Vec::new()),
-        };
-        keys.clear();
         slots.clear();
         if s_max == 0.0 {
             // Nothing overlaps: distance² < 0 never holds.
-            self.cells = Cells::Packed { keys, slots };
+            self.cells = Cells::Packed(slots);
             return;
         }
         let (lo, hi) = (0..len).filter_map(binned).map(|(p, _)| self.key(p)).fold(
@@ -256,44 +239,22 @@ impl Bins {
             let key = |p| Packed::new(self.key(p), lo);
             slots.reserve(len);
             slots.extend((0..len).filter_map(|i| binned(i).map(|(p, _)| slot(i, key(p), &rank))));
-            self.bin(&mut slots, &mut keys);
-            Cells::Packed { keys, slots }
+            sort(&mut slots);
+            Cells::Packed(slots)
         } else {
             let mut slots: Vec<_> = (0..len)
                 .filter_map(|i| binned(i).map(|(p, _)| slot(i, self.key(p), &rank)))
                 .collect();
-            let mut keys = Vec::new();
-            self.bin(&mut slots, &mut keys);
-            Cells::Wide { keys, slots }
+            sort(&mut slots);
+            Cells::Wide(slots)
         };
-    }
-
-    /// Sorts `slots` and fills the cells from them, and `keys` (empty) with the cells'
-    /// keys.
-    fn bin<K: Key>(&mut self, slots: &mut [Slot<K>], keys: &mut Vec<K>) {
-        // On rayon's threads when there are many: the ranks are distinct, so any sort
-        // gives the one order.
-        if slots.len() >= PAR_SORT_FROM {
-            slots.par_sort_unstable();
-        } else {
-            slots.sort_unstable();
-        }
-        for (n, slot) in slots.iter().enumerate() {
-            if keys.last() != Some(&slot.key) {
-                if !keys.is_empty() {
-                    self.starts.push(n as u32);
-                }
-                keys.push(slot.key);
-            }
-        }
-        self.starts.push(slots.len() as u32);
     }
 
     /// The binned particles in the grid's order: cells by key, within a cell by rank.
     pub(crate) fn order(&self) -> Vec<u32> {
         match &self.cells {
-            Cells::Packed { slots, .. } => slots.iter().map(|slot| slot.id).collect(),
-            Cells::Wide { slots, .. } => slots.iter().map(|slot| slot.id).collect(),
+            Cells::Packed(slots) => slots.iter().map(|slot| slot.id).collect(),
+            Cells::Wide(slots) => slots.iter().map(|slot| slot.id).collect(),
         }
     }
 
@@ -306,49 +267,61 @@ impl Bins {
             }
         }
         match &mut self.cells {
-            Cells::Packed { slots, .. } => place(slots),
-            Cells::Wide { slots, .. } => place(slots),
+            Cells::Packed(slots) => place(slots),
+            Cells::Wide(slots) => place(slots),
         }
     }
 
-    /// The number of occupied cells.
+    /// The number of binned particles, whose slots [`Bins::for_each_pair_in`] splits.
+    pub(crate) fn binned(&self) -> usize {
+        match &self.cells {
+            Cells::Packed(slots) => slots.len(),
+            Cells::Wide(slots) => slots.len(),
+        }
+    }
+
+    /// The number of occupied cells (counted).
     pub(crate) fn cell_count(&self) -> usize {
-        self.starts.len() - 1
+        fn runs<K: Key>(slots: &[Slot<K>]) -> usize {
+            let starts = slots.windows(2).filter(|w| w[0].key != w[1].key).count();
+            if slots.is_empty() { 0 } else { starts + 1 }
+        }
+        match &self.cells {
+            Cells::Packed(slots) => runs(slots),
+            Cells::Wide(slots) => runs(slots),
+        }
     }
 
     /// [`CellGrid::for_each_pair_in`], the spheres given.
     pub(crate) fn for_each_pair_in(
         &self,
         spheres: Spheres,
-        cells: Range<usize>,
+        range: Range<usize>,
         mut f: impl FnMut(usize, usize),
     ) {
-        assert!(cells.end <= self.cell_count(), "cells past the grid's");
-        if cells.is_empty() {
-            return;
-        }
+        assert!(range.end <= self.binned(), "slots past the grid's");
         match &self.cells {
-            Cells::Packed { keys, slots } => self.pairs_in(spheres, keys, slots, cells, &mut f),
-            Cells::Wide { keys, slots } => self.pairs_in(spheres, keys, slots, cells, &mut f),
+            Cells::Packed(slots) => pairs_in(spheres, slots, range, &mut f),
+            Cells::Wide(slots) => pairs_in(spheres, slots, range, &mut f),
         }
     }
 
     /// [`CellGrid::pairs_into`], the spheres given.
     pub(crate) fn pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
         pairs.clear();
-        let all = 0..self.cell_count();
+        let all = 0..self.binned();
         self.for_each_pair_in(spheres, all, |i, j| pairs.push((i as u32, j as u32)));
     }
 
     /// [`CellGrid::par_pairs_into`], the spheres given.
     pub(crate) fn par_pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
-        let cells = self.cell_count();
-        let size = cells.div_ceil(PAIR_RANGES).max(1);
-        let parts: Vec<Vec<(u32, u32)>> = (0..cells.div_ceil(size))
+        let binned = self.binned();
+        let size = binned.div_ceil(PAIR_RANGES).max(1);
+        let parts: Vec<Vec<(u32, u32)>> = (0..binned.div_ceil(size))
             .into_par_iter()
             .map(|c| {
                 let mut pairs = Vec::new();
-                let range = c * size..((c + 1) * size).min(cells);
+                let range = c * size..((c + 1) * size).min(binned);
                 self.for_each_pair_in(spheres, range, |i, j| pairs.push((i as u32, j as u32)));
                 pairs
             })
@@ -360,76 +333,8 @@ impl Bins {
     /// [`CellGrid::for_each_neighbour`] for the particle in slot `a`, the spheres given.
     fn for_each_neighbour(&self, spheres: Spheres, a: usize, mut f: impl FnMut(usize)) {
         match &self.cells {
-            Cells::Packed { keys, slots } => self.neighbours(spheres, keys, slots, a, &mut f),
-            Cells::Wide { keys, slots } => self.neighbours(spheres, keys, slots, a, &mut f),
-        }
-    }
-
-    /// The pairs with a first cell in `cells` (non-empty), for cell keys `keys`.
-    fn pairs_in<K: Key>(
-        &self,
-        spheres: Spheres,
-        keys: &[K],
-        slots: &[Slot<K>],
-        cells: Range<usize>,
-        f: &mut impl FnMut(usize, usize),
-    ) {
-        let first = keys[cells.start];
-        let mut cursor =
-            FORWARD_COLUMNS.map(|(di, dj)| keys.partition_point(|&c| c < first.shift(di, dj, -1)));
-        for c in cells {
-            let k = keys[c];
-            let here = self.cell(c);
-            // The cell with itself and with (0, 0, +1), the next cell if present: the
-            // slots after each of its own up to the end of that next cell.
-            let end = if keys.get(c + 1) == Some(&k.shift(0, 0, 1)) {
-                self.starts[c + 2] as usize
-            } else {
-                here.end
-            };
-            for a in here.clone() {
-                for b in a + 1..end {
-                    check(spheres, &slots[a], &slots[b], f);
-                }
-            }
-            for (col, &(di, dj)) in FORWARD_COLUMNS.iter().enumerate() {
-                // The column's first cell at or after k + (di, dj, −1) only moves forward
-                // as k does: walk to it from where it was for the previous cell.
-                let lo = k.shift(di, dj, -1);
-                let mut n = cursor[col];
-                while n < keys.len() && keys[n] < lo {
-                    n += 1;
-                }
-                cursor[col] = n;
-                let there = self.column_run(keys, n, k.shift(di, dj, 1));
-                for a in here.clone() {
-                    for b in there.clone() {
-                        check(spheres, &slots[a], &slots[b], f);
-                    }
-                }
-            }
-        }
-    }
-
-    /// The neighbours of slot `a`, for cell keys `keys`.
-    fn neighbours<K: Key>(
-        &self,
-        spheres: Spheres,
-        keys: &[K],
-        slots: &[Slot<K>],
-        a: usize,
-        f: &mut impl FnMut(usize),
-    ) {
-        let k = slots[a].key;
-        for di in -1..=1 {
-            for dj in -1..=1 {
-                let first = keys.partition_point(|&c| c < k.shift(di, dj, -1));
-                for b in self.column_run(keys, first, k.shift(di, dj, 1)) {
-                    if b != a && overlap(spheres, &slots[a], &slots[b]) {
-                        f(slots[b].id as usize);
-                    }
-                }
-            }
+            Cells::Packed(slots) => neighbours(spheres, slots, a, &mut f),
+            Cells::Wide(slots) => neighbours(spheres, slots, a, &mut f),
         }
     }
 
@@ -438,22 +343,95 @@ impl Bins {
     fn key(&self, p: [f64; 3]) -> [i64; 3] {
         p.map(|x| (x * self.inv_h).floor() as i64)
     }
+}
 
-    /// The slots of cell `c`.
-    #[inline]
-    fn cell(&self, c: usize) -> Range<usize> {
-        self.starts[c] as usize..self.starts[c + 1] as usize
+/// Sorts the slots: on rayon's threads when there are many (the ranks are distinct,
+/// so any sort gives the one order).
+fn sort<K: Key>(slots: &mut [Slot<K>]) {
+    if slots.len() >= PAR_SORT_FROM {
+        slots.par_sort_unstable();
+    } else {
+        slots.sort_unstable();
     }
+}
 
-    /// The slots of the cells from `first` up to key `hi`, in `first`'s column: the
-    /// cells of one column are consecutive in key order, so their slots are one run.
-    #[inline]
-    fn column_run<K: Key>(&self, keys: &[K], first: usize, hi: K) -> Range<usize> {
-        let mut n = first;
-        while n < keys.len() && keys[n] <= hi {
-            n += 1;
+/// The end of the run of slots from `n` whose keys are at most `hi`: from a cell's
+/// first slot and its key, the cell; from a column's first cell at or after some key,
+/// that column's cells up to `hi` (the cells of one column are consecutive in key
+/// order, so their slots are one run).
+#[inline]
+fn run_end<K: Key>(slots: &[Slot<K>], mut n: usize, hi: K) -> usize {
+    while n < slots.len() && slots[n].key <= hi {
+        n += 1;
+    }
+    n
+}
+
+/// The pairs with a first cell that begins in `range` of the slots.
+fn pairs_in<K: Key>(
+    spheres: Spheres,
+    slots: &[Slot<K>],
+    range: Range<usize>,
+    f: &mut impl FnMut(usize, usize),
+) {
+    // The first cell that begins in the range.
+    let mut c = range.start;
+    while c > 0 && c < range.end && slots[c - 1].key == slots[c].key {
+        c += 1;
+    }
+    if c >= range.end {
+        return;
+    }
+    let first = slots[c].key;
+    let mut cursor =
+        FORWARD_COLUMNS.map(|(di, dj)| slots.partition_point(|s| s.key < first.shift(di, dj, -1)));
+    while c < range.end {
+        let k = slots[c].key;
+        let here = c..run_end(slots, c, k);
+        // The cell with itself and with (0, 0, +1), the next cell if present: the
+        // slots after each of its own up to the end of that next cell.
+        let above = k.shift(0, 0, 1);
+        let end = match slots.get(here.end) {
+            Some(next) if next.key == above => run_end(slots, here.end, above),
+            _ => here.end,
+        };
+        for a in here.clone() {
+            for b in a + 1..end {
+                check(spheres, &slots[a], &slots[b], f);
+            }
         }
-        self.starts[first] as usize..self.starts[n] as usize
+        for (col, &(di, dj)) in FORWARD_COLUMNS.iter().enumerate() {
+            // The column's first cell at or after k + (di, dj, −1) only moves forward
+            // as k does: walk to it from where it was for the previous cell.
+            let lo = k.shift(di, dj, -1);
+            let mut n = cursor[col];
+            while n < slots.len() && slots[n].key < lo {
+                n += 1;
+            }
+            cursor[col] = n;
+            let there = n..run_end(slots, n, k.shift(di, dj, 1));
+            for a in here.clone() {
+                for b in there.clone() {
+                    check(spheres, &slots[a], &slots[b], f);
+                }
+            }
+        }
+        c = here.end;
+    }
+}
+
+/// The neighbours of slot `a`.
+fn neighbours<K: Key>(spheres: Spheres, slots: &[Slot<K>], a: usize, f: &mut impl FnMut(usize)) {
+    let k = slots[a].key;
+    for di in -1..=1 {
+        for dj in -1..=1 {
+            let first = slots.partition_point(|s| s.key < k.shift(di, dj, -1));
+            for b in first..run_end(slots, first, k.shift(di, dj, 1)) {
+                if b != a && overlap(spheres, &slots[a], &slots[b]) {
+                    f(slots[b].id as usize);
+                }
+            }
+        }
     }
 }
 
@@ -604,27 +582,34 @@ impl CellGrid {
         self.bins.h
     }
 
-    /// The number of occupied cells, which [`CellGrid::for_each_pair_in`] splits.
+    /// The number of occupied cells (counted: the grid keeps no list of its cells).
     pub fn cell_count(&self) -> usize {
         self.bins.cell_count()
+    }
+
+    /// The number of particles binned (those not left out), whose slots in the grid's
+    /// order [`CellGrid::for_each_pair_in`] splits.
+    pub fn binned(&self) -> usize {
+        self.bins.binned()
     }
 
     /// Calls `f(i, j)` once for each unordered pair whose swollen spheres overlap, i the
     /// lower ranked (i < j unless ranked otherwise), in an order that depends only on
     /// the input.
     pub fn for_each_pair(&self, f: impl FnMut(usize, usize)) {
-        self.for_each_pair_in(0..self.cell_count(), f);
+        self.for_each_pair_in(0..self.binned(), f);
     }
 
-    /// [`CellGrid::for_each_pair`] for the pairs whose first cell (in key order) is in
-    /// `cells`, a range of `0..cell_count()`: the ranges of a partition of the cells visit
-    /// each pair exactly once, so they can go to separate threads; visited in turn, they
-    /// give the order of `for_each_pair`.
+    /// [`CellGrid::for_each_pair`] for the pairs whose first cell (in key order) begins
+    /// in `slots`, a range of `0..binned()` (the binned particles in the grid's order,
+    /// [`CellGrid::order`]): the ranges of a partition of the slots visit each pair
+    /// exactly once, wherever they cut, so they can go to separate threads; visited in
+    /// turn, they give the order of `for_each_pair`.
     ///
     /// # Panics
-    /// If `cells` reaches past `cell_count()`.
-    pub fn for_each_pair_in(&self, cells: Range<usize>, f: impl FnMut(usize, usize)) {
-        self.bins.for_each_pair_in(self.spheres(), cells, f);
+    /// If `slots` reaches past `binned()`.
+    pub fn for_each_pair_in(&self, slots: Range<usize>, f: impl FnMut(usize, usize)) {
+        self.bins.for_each_pair_in(self.spheres(), slots, f);
     }
 
     /// The pairs of [`CellGrid::for_each_pair`], in its order, as (i, j), i the lower ranked.
@@ -639,7 +624,7 @@ impl CellGrid {
         self.bins.pairs_into(self.spheres(), pairs);
     }
 
-    /// [`CellGrid::pairs`], the same list in the same order, found by ranges of cells in
+    /// [`CellGrid::pairs`], the same list in the same order, found by ranges of slots in
     /// parallel.
     pub fn par_pairs(&self) -> Vec<(u32, u32)> {
         let mut pairs = Vec::new();

@@ -134,13 +134,13 @@ fn overlapping(
     let grid = CellGrid::from_fn(n, |i| {
         (radii[i] > 0.0 && !big(i)).then(|| (particles[i].pos, radii[i]))
     });
-    let cells = grid.cell_count();
-    let size = cells.div_ceil(256).max(1);
-    let mut kept = (0..cells.div_ceil(size))
+    let binned = grid.binned();
+    let size = binned.div_ceil(256).max(1);
+    let mut kept = (0..binned.div_ceil(size))
         .into_par_iter()
         .map(|c| {
             let mut kept = Kept::default();
-            grid.for_each_pair_in(c * size..((c + 1) * size).min(cells), |i, j| {
+            grid.for_each_pair_in(c * size..((c + 1) * size).min(binned), |i, j| {
                 if let Some(f) = judge(i, j) {
                     kept.push(f);
                 }
