@@ -140,6 +140,16 @@ impl PairList {
                 .zip(&self.slots)
                 .filter(|(_, slot)| **slot != NO_CONTACT)
         };
+        if open_pairs().next().is_none() {
+            // None open: no index of them (4 bytes a particle, which would stay
+            // resident) to find none in.
+            self.find_pairs(states);
+            self.slots.clear();
+            self.slots.resize(self.pairs.len(), NO_CONTACT);
+            self.contacts.records.clear();
+            self.contacts.free.clear();
+            return;
+        }
         let mut starts = vec![0u32; states.len() + 1];
         for (&(i, _), _) in open_pairs() {
             starts[i as usize + 1] += 1;
@@ -147,12 +157,16 @@ impl PairList {
         for i in 0..states.len() {
             starts[i + 1] += starts[i];
         }
+        // Each particle's start taken as where its next contact goes, which leaves it
+        // at the next particle's start: moved back after.
         let mut open = vec![(0, 0); starts[states.len()] as usize];
-        let mut next = starts.clone();
         for (&(i, j), &slot) in open_pairs() {
-            open[next[i as usize] as usize] = (j, slot);
-            next[i as usize] += 1;
+            let next = &mut starts[i as usize];
+            open[*next as usize] = (j, slot);
+            *next += 1;
         }
+        starts.copy_within(0..states.len(), 1);
+        starts[0] = 0;
         self.find_pairs(states);
         // Their records are laid out again in the new list's order, which the force
         // pass follows: one after the other in memory rather than where each happened

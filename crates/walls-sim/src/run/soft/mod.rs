@@ -84,6 +84,10 @@ use walls::{Closing, Open, WallPass};
 
 type Vec3 = Vector3<f64>;
 
+/// The open wall contacts (wall, contact) of a chunk's particles, one list each (8
+/// bytes when empty), or no lists at all while none of them has touched a wall.
+type ChunkOpens = Vec<ThinVec<(usize, Open)>>;
+
 /// What acts on one particle in a step: the force and torque summed so far. Every pass
 /// over the particles touches it, so it holds nothing else: the open wall contacts are
 /// kept beside it ([`Bodies::open_walls`]).
@@ -250,9 +254,10 @@ struct Bodies {
     states: Vec<State>,
     loads: Vec<Load>,
     inverses: Inverses,
-    /// Each particle's open wall contacts: a list of 8 bytes when empty, as most are
-    /// (a `Vec` took 24, 16 MB at 10⁶ particles).
-    open_walls: Vec<ThinVec<(usize, Open)>>,
+    /// Each chunk's particles' open wall contacts ([`ChunkOpens`]): made for a chunk
+    /// when one of its particles first touches a wall, so that the particles away from
+    /// the walls (most, in a large run) hold nothing.
+    open_walls: Vec<ChunkOpens>,
     /// Whether each particle has a wall contact open (its `open_walls` entry is not
     /// empty): set by the wall pass after each particle's contacts, the only place they
     /// change (a particle the pass skips had none, nor has it now), and read by the

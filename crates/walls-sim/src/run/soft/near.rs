@@ -82,22 +82,26 @@ impl NearWalls {
         for s in states {
             if s.alive {
                 let (pos, r) = (&s.particle.pos, s.particle.radius);
-                let test = |w: usize| {
-                    let reach = if translating[w] {
-                        r + 2.0 * half
-                    } else {
-                        r + half
-                    };
-                    if listed[w] && !walls[w].cull.clear_of(pos, reach) {
-                        near.push(w);
-                    }
-                };
+                let particle = (pos, r, half);
                 match index {
                     // The index's candidates come ascending, each once.
                     Some(index) => {
+                        let test = |w| {
+                            if within_reach(w, particle, listed, translating, walls) {
+                                near.push(w);
+                            }
+                        };
                         index.for_each_candidate(pos, r + 2.0 * half, built_origins, test)
                     }
-                    None => (0..walls.len()).for_each(test),
+                    // A plain loop, the test inlined always (as a closure, the
+                    // compiler at times made it a call for each wall and particle).
+                    None => {
+                        for w in 0..walls.len() {
+                            if within_reach(w, particle, listed, translating, walls) {
+                                near.push(w);
+                            }
+                        }
+                    }
                 }
             }
             starts.push(near.len() as u32);
@@ -118,6 +122,25 @@ impl NearWalls {
     pub(super) fn listed_of(&self, i: usize) -> &[usize] {
         &self.walls[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
+}
+
+/// Whether wall `w` is listed and within reach of a particle at `pos` of radius `r`:
+/// `half` (half the skin) beyond its radius for a fixed wall, twice that for a
+/// translating one ([`NearWalls::build`]).
+#[inline(always)]
+fn within_reach(
+    w: usize,
+    (pos, r, half): (&Vec3, f64, f64),
+    listed: &[bool],
+    translating: &[bool],
+    walls: &[WallNow],
+) -> bool {
+    let reach = if translating[w] {
+        r + 2.0 * half
+    } else {
+        r + half
+    };
+    listed[w] && !walls[w].cull.clear_of(pos, reach)
 }
 
 /// The candidate pairs (when wanted) and the walls near each particle (when kept) found

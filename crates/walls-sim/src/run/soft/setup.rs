@@ -20,7 +20,6 @@ use crate::dynamics::reactive::Assembly;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use crate::run::{Origins, Places};
-use thin_vec::ThinVec;
 use walls_geometry::Wall;
 
 impl<'a> SoftStepper<'a> {
@@ -113,7 +112,7 @@ impl Bodies {
             filed: false,
             loads: states.iter().map(|s| Load::gravity(s, g)).collect(),
             inverses: Inverses::new(&states),
-            open_walls: (0..n).map(|_| ThinVec::new()).collect(),
+            open_walls: (0..n.div_ceil(CHUNK)).map(|_| Vec::new()).collect(),
             walled: vec![false; n],
             states,
         }

@@ -6,8 +6,8 @@ use super::law::Side;
 use super::near::NearWalls;
 use super::numbering::Numbering;
 use super::{
-    Bodies, Broad, CHUNK, ContactLaw, Deferred, Event, EventKind, Flow, Journal, Kicks, Law, Load,
-    Overlapping, Rigid, Rules, State, Vec3, WallNow, WallSet, Warning, carry, inertia,
+    Bodies, Broad, CHUNK, ChunkOpens, ContactLaw, Deferred, Event, EventKind, Flow, Journal, Kicks,
+    Law, Load, Overlapping, Rigid, Rules, State, Vec3, WallNow, WallSet, Warning, carry, inertia,
 };
 use crate::contact::ssdem::{
     Dashpot, Optional, Record, Rolling, Touch, contact, contact_radius, dashpot_contact_with,
@@ -655,7 +655,14 @@ pub(super) fn wall_contacts(
         // here.
         for &k in visited.iter() {
             let k = k as usize;
-            let (s, load, open) = (&mut states[k], &mut loads[k], &mut opens[k]);
+            let (s, load) = (&mut states[k], &mut loads[k]);
+            // Its list, or an empty one while its chunk has none (made below when a
+            // contact opens).
+            let mut none = ThinVec::new();
+            let open = match opens.get_mut(k) {
+                Some(open) => open,
+                None => &mut none,
+            };
             let i = first + k;
             if s.free() && !s.member && clear_of_walls(i, s, open, &walls) {
                 // Clear of the walls, not owed: the closing kick alone. (None is
@@ -674,6 +681,10 @@ pub(super) fn wall_contacts(
             };
             let mut report = wall_step(i, s, work, &walls);
             walled[k] = !open.is_empty();
+            if !none.is_empty() {
+                opens.resize_with(walled.len(), ThinVec::new);
+                opens[k] = none;
+            }
             report.not_finite = !s.finite();
             if !s.member {
                 *load = Load::gravity(s, &gravity);
@@ -693,7 +704,7 @@ pub(super) fn wall_contacts(
             (bodies.states.$chunks_mut(CHUNK))
                 .zip(bodies.loads.$chunks_mut(CHUNK))
                 .zip(deferred.visited.$iter().zip(bodies.inverses.$chunks(CHUNK)))
-                .zip((bodies.open_walls.$chunks_mut(CHUNK)).zip(bodies.walled.$chunks_mut(CHUNK)))
+                .zip((bodies.open_walls.$iter_mut()).zip(bodies.walled.$chunks_mut(CHUNK)))
                 .zip(wall_pass.reports.$iter_mut().zip(&mut wall_pass.visits))
                 .enumerate()
         };
@@ -877,7 +888,7 @@ pub(super) type WallChunk<'a> = (
                 (&'a mut [State], &'a mut [Load]),
                 (&'a Vec<u32>, &'a [(f64, f64)]),
             ),
-            (&'a mut [ThinVec<(usize, Open)>], &'a mut [bool]),
+            (&'a mut ChunkOpens, &'a mut [bool]),
         ),
         (&'a mut Vec<(usize, ParticleStep)>, &'a mut Vec<usize>),
     ),
