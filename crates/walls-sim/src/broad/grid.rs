@@ -214,8 +214,8 @@ impl Bins {
             ((2.0 * s_max) * (1.0 + 2f64.powi(-20)) + extent * 2f64.powi(-48)).max(2f64.powi(-480));
         self.h = h;
         self.inv_h = 1.0 / h;
-        // The array of packed keys, whichever kind it held, kept for the kind needed
-        // now.
+        // The slots' memory kept when they had packed keys (the usual kind); wide ones
+        // are dropped.
         let mut slots = match std::mem::replace(&mut self.cells, Cells::Wide(Vec::new())) {
             Cells::Packed(slots) => slots,
             Cells::Wide(_) => Vec::new(),
@@ -587,8 +587,9 @@ impl CellGrid {
         self.bins.cell_count()
     }
 
-    /// The number of particles binned (those not left out), whose slots in the grid's
-    /// order [`CellGrid::for_each_pair_in`] splits.
+    /// The number of particles binned, whose slots in the grid's order
+    /// [`CellGrid::for_each_pair_in`] splits: those not left out, or none when every
+    /// swollen radius is 0 (nothing can overlap).
     pub fn binned(&self) -> usize {
         self.bins.binned()
     }
