@@ -133,48 +133,19 @@ impl PairList {
             (self.bins).refill_ranked(states.len(), swollen, alive, rank);
         }
         // The open contacts go with their pairs into the new list (every pair that
-        // touches is in it); any other ends. They are found by their first particle:
-        // its open contacts, (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
-        let open_pairs = || {
-            (self.pairs.iter())
-                .zip(&self.slots)
-                .filter(|(_, slot)| **slot != NO_CONTACT)
-        };
-        if open_pairs().next().is_none() {
-            // None open: no index of them (4 bytes a particle, which would stay
-            // resident) to find none in.
-            self.find_pairs(states);
-            self.slots.clear();
-            self.slots.resize(self.pairs.len(), NO_CONTACT);
-            self.contacts.records.clear();
-            self.contacts.free.clear();
-            return;
-        }
-        let mut starts = vec![0u32; states.len() + 1];
-        for (&(i, _), _) in open_pairs() {
-            starts[i as usize + 1] += 1;
-        }
-        for i in 0..states.len() {
-            starts[i + 1] += starts[i];
-        }
-        // Each particle's start taken as where its next contact goes, which leaves it
-        // at the next particle's start: moved back after.
-        let mut open = vec![(0, 0); starts[states.len()] as usize];
-        for (&(i, j), &slot) in open_pairs() {
-            let next = &mut starts[i as usize];
-            open[*next as usize] = (j, slot);
-            *next += 1;
-        }
-        starts.copy_within(0..states.len(), 1);
-        starts[0] = 0;
+        // touches is in it); any other ends.
+        let index = self.open_index(states.len());
         self.find_pairs(states);
         // Their records are laid out again in the new list's order, which the force
         // pass follows: one after the other in memory rather than where each happened
         // to open. The others are dropped.
-        let mut records = Vec::with_capacity(open.len());
+        let mut records = Vec::with_capacity(index.as_ref().map_or(0, |x| x.open.len()));
         let last = &self.contacts.records;
         self.slots.clear();
         self.slots.extend(self.pairs.iter().map(|&(i, j)| {
+            let Some(OpenIndex { starts, open }) = &index else {
+                return NO_CONTACT;
+            };
             let of_i = &open[starts[i as usize] as usize..starts[i as usize + 1] as usize];
             match of_i.iter().find(|(second, _)| *second == j) {
                 Some(&(_, slot)) => {
@@ -189,6 +160,36 @@ impl PairList {
             free: Vec::new(),
             next: std::mem::take(&mut self.contacts.next),
         };
+    }
+
+    /// The open contacts of the list as it stands, by their first particle (of `len`);
+    /// `None` when none is open: no index (4 bytes a particle, which would stay
+    /// resident) to find none in.
+    fn open_index(&self, len: usize) -> Option<OpenIndex> {
+        let open_pairs = || {
+            (self.pairs.iter())
+                .zip(&self.slots)
+                .filter(|(_, slot)| **slot != NO_CONTACT)
+        };
+        open_pairs().next()?;
+        let mut starts = vec![0u32; len + 1];
+        for (&(i, _), _) in open_pairs() {
+            starts[i as usize + 1] += 1;
+        }
+        for i in 0..len {
+            starts[i + 1] += starts[i];
+        }
+        // Each particle's start taken as where its next contact goes, which leaves it
+        // at the next particle's start: moved back after.
+        let mut open = vec![(0, 0); starts[len] as usize];
+        for (&(i, j), &slot) in open_pairs() {
+            let next = &mut starts[i as usize];
+            open[*next as usize] = (j, slot);
+            *next += 1;
+        }
+        starts.copy_within(0..len, 1);
+        starts[0] = 0;
+        Some(OpenIndex { starts, open })
     }
 
     /// The candidate pairs found on the grid over the spheres [`PairList::build`] has just
@@ -261,6 +262,13 @@ impl PairList {
         self.drifted = false;
         stale
     }
+}
+
+/// The open contacts of a candidate list by their first particle: particle i's, as
+/// (second particle, slot), are `open[starts[i]..starts[i + 1]]`.
+struct OpenIndex {
+    starts: Vec<u32>,
+    open: Vec<(u32, u32)>,
 }
 
 /// A pair without an open contact.
