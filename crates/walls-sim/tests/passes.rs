@@ -14,12 +14,16 @@
 //!   file's ([`Places`]): a run kept either way ends bit for bit the same, seen at
 //!   every step and on any number of threads, its events, warnings and stops naming
 //!   the file's particles in the file's order.
+//! - **Chunks.** The wall pass keeps a chunk's lists of open wall contacts only once one
+//!   of its particles has touched a wall: a sphere sliding on the floor slides the same
+//!   alone and kept last of a crowd.
 //!
-//! The scene: two thousand spheres of assorted sizes (radii 0.8–1 mm, so that each
+//! The scene of the others: two thousand spheres of assorted sizes (radii 0.8–1 mm, so that each
 //! particle's mass and inertia are its own in every pass) dropped into a box of five
 //! planes, with friction (many clear of the walls, many in contact), for 600 steps.
 
 use nalgebra::Vector3;
+use walls_geometry::Particle;
 use walls_sim::run::{
     EventKind, Integrator, Outcome, Overlapping, ParticleMaterial, Places, Settings, State, Stop,
     Warning, defaults, run, run_observed,
@@ -327,5 +331,66 @@ fn a_run_that_overflows_names_the_files_first_particle_wherever_it_is_kept() {
         assert_eq!((out.steps, out.stopped), (1, Some(Stop::NotFinite(1))));
         assert!(out.particles[0].particle.vel.x.is_finite());
         assert!(!out.particles[1].particle.vel.x.is_finite());
+    }
+}
+
+#[test]
+fn a_wall_contact_is_carried_in_whichever_chunk_its_particle_is_kept() {
+    // A sphere sliding and spinning on a floor with friction (the contact's spring carried
+    // from step to step), alone and as the last of 1,501 (the others at rest in the air
+    // beside it, falling less than their height in the run): in the crowd it is kept
+    // last, past the wall pass's first chunks, whose lists of open contacts are made
+    // only once one of their particles touches a wall. On one thread and on three, it
+    // slides to the same bit, as does the run kept in the file's order.
+    let floor = scene("wall type plane\n  origin 0 0 0\n  orient 0 0 1\n");
+    let r = 1e-3;
+    let slider = Particle {
+        mass: 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * r * r * r,
+        radius: r,
+        pos: Vector3::new(0.2, 0.05, 0.999 * r),
+        vel: Vector3::new(0.05, -0.02, 0.0),
+        spin: Vector3::new(0.0, 30.0, 10.0),
+        color: 3,
+        index: 1500,
+    };
+    let material = ParticleMaterial {
+        mu_s: 0.5,
+        ..defaults::default_material(1000.0)
+    };
+    let dt = 5e-6;
+    let settings = |places| Settings {
+        gravity: Vector3::new(0.0, 0.0, -9.81),
+        places,
+        ..Settings::new(dt, 400.0 * dt, material)
+    };
+    let alone = run(&floor, vec![slider.clone()], &settings(Places::Grid));
+    let mut crowd: Vec<Particle> = (0..1500)
+        .map(|k| Particle {
+            pos: Vector3::new((k % 40) as f64 * 3e-3, (k / 40) as f64 * 3e-3, 0.02),
+            vel: Vector3::zeros(),
+            spin: Vector3::zeros(),
+            index: k,
+            ..slider.clone()
+        })
+        .collect();
+    crowd.push(slider);
+    let slid = &alone.particles[0];
+    // It touched the floor throughout: friction slowed it and turned its spin.
+    assert!(
+        slid.particle.vel.x < 0.049 && slid.particle.spin.y != 30.0,
+        "{slid:?}"
+    );
+    for threads in [1, 3] {
+        for places in [Places::Grid, Places::File] {
+            let out = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a thread pool")
+                .install(|| run(&floor, crowd.clone(), &settings(places)));
+            assert!(
+                same_bits(&out.particles[1500], slid),
+                "{threads} threads, {places:?}"
+            );
+        }
     }
 }

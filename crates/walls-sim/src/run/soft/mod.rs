@@ -259,10 +259,11 @@ struct Bodies {
     /// the walls (most, in a large run) hold nothing.
     open_walls: Vec<ChunkOpens>,
     /// Whether each particle has a wall contact open (its list in its chunk's
-    /// `open_walls` exists and is not empty): set by the wall pass after each particle's contacts, the only place they
-    /// change (a particle the pass skips had none, nor has it now), and read by the
-    /// drift as this byte, not the 8-byte list, which at 10⁵ particles is memory the
-    /// drift's stream need not carry (docs/performance-history.md, "Eighth round").
+    /// `open_walls` exists and is not empty): set by the wall pass after each
+    /// particle's contacts, the only place they change (a particle the pass skips had
+    /// none, nor has it now), and read by the drift as this byte, not the 8-byte list,
+    /// which at 10⁵ particles is memory the drift's stream need not carry
+    /// (docs/performance-history.md, "Eighth round").
     walled: Vec<bool>,
 }
 
