@@ -17,6 +17,9 @@
 //! - **Chunks.** The wall pass keeps a chunk's lists of open wall contacts only once one
 //!   of its particles has touched a wall: a sphere sliding on the floor slides the same
 //!   alone and kept last of a crowd.
+//! - **Contacts through rebuilds.** The candidate list keeps each pair's slot among the
+//!   open contacts only while some contact is open: a contact is carried through every
+//!   rebuild while it lasts, and one that opens after none was is counted once.
 //!
 //! The scene of the others: two thousand spheres of assorted sizes (radii 0.8–1 mm, so that each
 //! particle's mass and inertia are its own in every pass) dropped into a box of five
@@ -390,6 +393,75 @@ fn a_wall_contact_is_carried_in_whichever_chunk_its_particle_is_kept() {
             assert!(
                 same_bits(&out.particles[1500], slid),
                 "{threads} threads, {places:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_pair_contact_is_carried_through_rebuilds_and_a_new_one_opens_after_none_was() {
+    // Two spheres meet at a glancing angle with friction (the contact's spring carried
+    // from step to step) and part; later two others meet. With a runner far away that
+    // moves half the skin every four steps, the candidate list is found again about a
+    // dozen times while the first two touch, and again between the two contacts, when
+    // none is open (and the list keeps no slots for its pairs). The four end as they do
+    // without the runner (no rebuild at all while they touch), bit for bit, and each
+    // contact is counted once; alike on three threads with a crowd at rest far away
+    // (the passes then in parallel).
+    let r = 1e-3;
+    let sphere = |index: i32, x: f64, vel: [f64; 3]| Particle {
+        mass: 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * r * r * r,
+        radius: r,
+        pos: Vector3::new(x, 0.0, 0.0),
+        vel: Vector3::from(vel),
+        spin: Vector3::zeros(),
+        color: 3,
+        index,
+    };
+    let pairs = vec![
+        sphere(0, 0.0, [0.1, 0.01, 0.0]),
+        sphere(1, 2.02 * r, [0.0, 0.0, 0.0]),
+        sphere(2, 0.1, [0.05, 0.0, 0.0]),
+        sphere(3, 0.1 + 2.1 * r, [-0.05, 0.0, 0.0]),
+    ];
+    let runner = Particle {
+        pos: Vector3::new(0.0, 0.5, 0.0),
+        vel: Vector3::new(10.0, 0.0, 0.0),
+        index: 4,
+        ..pairs[0].clone()
+    };
+    let material = ParticleMaterial {
+        mu_s: 0.5,
+        ..defaults::default_material(1000.0)
+    };
+    let dt = 5e-6;
+    let settings = Settings::new(dt, 400.0 * dt, material);
+    let quiet = run(&[], pairs.clone(), &settings);
+    assert_eq!((quiet.pair_contacts, quiet.stopped), (2, None));
+    // The first two met and parted, glancing: each turned the other.
+    let parted = &quiet.particles[..2];
+    assert!(parted[1].particle.vel.x > 0.0 && parted[0].particle.spin.z != 0.0);
+    assert!((quiet.particles[2].particle.vel.x + 0.05).abs() < 0.03);
+    let mut chased = pairs.clone();
+    chased.push(runner.clone());
+    let mut crowded = chased.clone();
+    crowded.extend((0..1200).map(|k| Particle {
+        pos: Vector3::new((k % 40) as f64 * 3e-3, (k / 40) as f64 * 3e-3, 1.0),
+        vel: Vector3::zeros(),
+        index: 5 + k,
+        ..pairs[1].clone()
+    }));
+    for (particles, threads) in [(chased, 1), (crowded.clone(), 1), (crowded, 3)] {
+        let out = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+            .install(|| run(&[], particles, &settings));
+        assert_eq!(out.pair_contacts, 2, "{threads} threads");
+        for k in 0..4 {
+            assert!(
+                same_bits(&out.particles[k], &quiet.particles[k]),
+                "particle {k}, {threads} threads"
             );
         }
     }

@@ -96,9 +96,13 @@ pub(super) fn pair_contacts(
         from,
         bounds,
     } = pair_pass;
-    // …and the contacts closed and opened.
+    // …and the contacts closed and opened (the first since the list was built with
+    // none open makes the pairs' slots).
     touching.clear();
     from.clear();
+    if scans.iter().any(|scan| !scan.touching.is_empty()) {
+        PairList::open_slots(slots, pairs.len());
+    }
     for scan in scans.iter() {
         if !rules.parallel {
             for &k in &scan.apart {
@@ -259,76 +263,103 @@ pub(super) fn scan_pairs(
                     || !states[j].alive
                     || !(states[i].free() || states[j].free())))
     };
-    // One pair (spheres `a` and `b`, the sum of their radii `reach`, and `beyond`,
-    // the square of the distance past which they are surely apart: the sum with a
-    // margin for round-off): apart, and its contact if open ends; or touching, with
-    // its overlap as a fraction of the smaller radius, which pkdgrav's warnings and
-    // abort judge. Whether that overlap is one the ordered check must see.
-    #[inline(always)]
-    fn test(
-        scan: &mut Scan,
-        k: usize,
-        (a, b): (&[f64; 4], &[f64; 4]),
-        (reach, beyond): (f64, f64),
-        (open, quiet): (bool, f64),
-        unmet: impl Fn() -> bool,
-    ) -> bool {
-        // Most candidates do not touch: the square of the distance tells (as
-        // [`separation`] has it, without its square root for the many apart); the
-        // contact, if open, ends.
-        let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
-        let overlap = if d2 > beyond || unmet() {
-            0.0
-        } else {
-            reach - d2.sqrt()
-        };
-        if overlap <= 0.0 {
-            if open {
-                scan.apart.push(k as u32);
-            }
-            false
-        } else {
-            let fraction = overlap / a[3].min(b[3]);
-            scan.touching.push((k as u32, fraction));
-            fraction > quiet
-        }
-    }
     let scan = |(c, scan): (usize, &mut Scan)| {
         scan.touching.clear();
         scan.apart.clear();
-        let mut deep = false;
         let first = c * size;
         let end = (first + size).min(list.len());
-        let pairs = (first..end).zip(list[first..end].iter().zip(&open[first..end]));
-        match uniform {
-            // Every particle of one radius: the reach and its square worked out once,
-            // the same numbers as for each pair (10 % of the test's instructions).
-            Some(reach) => {
-                let beyond = reach * reach * (1.0 + 1e-9);
-                for (k, (&(i, j), &slot)) in pairs {
-                    let (i, j) = (i as usize, j as usize);
-                    let spheres = (&centres[i], &centres[j]);
-                    let open = (slot != NO_CONTACT, quiet);
-                    deep |= test(scan, k, spheres, (reach, beyond), open, || unmet(i, j));
-                }
-            }
-            None => {
-                for (k, (&(i, j), &slot)) in pairs {
-                    let (i, j) = (i as usize, j as usize);
-                    let (a, b) = (&centres[i], &centres[j]);
-                    let reach = a[3] + b[3];
-                    let beyond = reach * reach * (1.0 + 1e-9);
-                    let open = (slot != NO_CONTACT, quiet);
-                    deep |= test(scan, k, (a, b), (reach, beyond), open, || unmet(i, j));
-                }
-            }
-        }
-        scan.deep = deep;
+        let pairs = &list[first..end];
+        let with = (uniform, centres, quiet);
+        scan.deep = if open.is_empty() {
+            // No contact open (no slots kept): none to end.
+            let pairs = pairs.iter().map(|pair| (pair, NO_CONTACT));
+            scan_range(scan, first, pairs.enumerate(), with, &unmet)
+        } else {
+            let pairs = pairs.iter().zip(open[first..end].iter().copied());
+            scan_range(scan, first, pairs.enumerate(), with, &unmet)
+        };
     };
     if parallel {
         scans.par_iter_mut().enumerate().for_each(scan);
     } else {
         scans.iter_mut().enumerate().for_each(scan);
+    }
+}
+
+/// The pairs of one range of the candidate list, the first at place `first` of the
+/// list, each `(n, ((i, j), slot))` (the n-th of the range), tested into `scan` (`with`:
+/// the one sum of radii when every particle has the same radius, the spheres, and the
+/// overlap past which the ordered check must see one); whether one is deep enough for
+/// that check.
+#[inline(always)]
+fn scan_range<'a>(
+    scan: &mut Scan,
+    first: usize,
+    pairs: impl Iterator<Item = (usize, (&'a (u32, u32), u32))>,
+    (uniform, centres, quiet): (Option<f64>, &[[f64; 4]], f64),
+    unmet: &impl Fn(usize, usize) -> bool,
+) -> bool {
+    let mut deep = false;
+    match uniform {
+        // Every particle of one radius: the reach and its square worked out once,
+        // the same numbers as for each pair (10 % of the test's instructions).
+        Some(reach) => {
+            let beyond = reach * reach * (1.0 + 1e-9);
+            for (n, (&(i, j), slot)) in pairs {
+                let (i, j) = (i as usize, j as usize);
+                let spheres = (&centres[i], &centres[j]);
+                let open = (slot != NO_CONTACT, quiet);
+                let reach = (reach, beyond);
+                deep |= test(scan, first + n, spheres, reach, open, || unmet(i, j));
+            }
+        }
+        None => {
+            for (n, (&(i, j), slot)) in pairs {
+                let (i, j) = (i as usize, j as usize);
+                let (a, b) = (&centres[i], &centres[j]);
+                let reach = a[3] + b[3];
+                let beyond = reach * reach * (1.0 + 1e-9);
+                let open = (slot != NO_CONTACT, quiet);
+                let reach = (reach, beyond);
+                deep |= test(scan, first + n, (a, b), reach, open, || unmet(i, j));
+            }
+        }
+    }
+    deep
+}
+
+/// One pair (spheres `a` and `b`, the sum of their radii `reach`, and `beyond`, the
+/// square of the distance past which they are surely apart: the sum with a margin for
+/// round-off): apart, and its contact if open ends; or touching, with its overlap as a
+/// fraction of the smaller radius, which pkdgrav's warnings and abort judge. Whether
+/// that overlap is one the ordered check must see.
+#[inline(always)]
+fn test(
+    scan: &mut Scan,
+    k: usize,
+    (a, b): (&[f64; 4], &[f64; 4]),
+    (reach, beyond): (f64, f64),
+    (open, quiet): (bool, f64),
+    unmet: impl Fn() -> bool,
+) -> bool {
+    // Most candidates do not touch: the square of the distance tells (as
+    // [`separation`] has it, without its square root for the many apart); the
+    // contact, if open, ends.
+    let d2 = Vec3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]).norm_squared();
+    let overlap = if d2 > beyond || unmet() {
+        0.0
+    } else {
+        reach - d2.sqrt()
+    };
+    if overlap <= 0.0 {
+        if open {
+            scan.apart.push(k as u32);
+        }
+        false
+    } else {
+        let fraction = overlap / a[3].min(b[3]);
+        scan.touching.push((k as u32, fraction));
+        fraction > quiet
     }
 }
 
@@ -356,7 +387,8 @@ pub(super) fn check_overlaps(
                 // The contacts the pairs before it opened.
                 let before = scans[..c].iter().flat_map(|s| &s.touching);
                 let opened = before.chain(&scan.touching[..n]);
-                let opened = opened.filter(|(k, _)| slots[*k as usize] == NO_CONTACT);
+                let opened =
+                    opened.filter(|(k, _)| PairList::slot(slots, *k as usize) == NO_CONTACT);
                 journal.pair_contacts += opened.count() as u64;
                 return true;
             }
