@@ -526,3 +526,41 @@ fn a_real_gain_of_energy_is_a_warning() {
     // dt at the stability limit 2/ω₀ of k_n = 10⁴, m = 1: the rebound triples.
     assert!(energy_gained(&elastic_drop(Some(0.02), 0.5)));
 }
+
+#[test]
+fn spheres_at_the_smallest_and_largest_scales_meet_as_they_are() {
+    // Pairs that touch, each at its own scale: spheres of 6e−23 overlapping by 2.7 % of
+    // their radius (whose distances' squares fall below `f32`'s normal numbers, where
+    // the pairs' first test, on centres rounded to `f32`, must not tell them apart),
+    // and spheres of 1 mm meeting 1 km, 10¹⁵⁰ and −10¹⁴⁰ from the origin. Each pair
+    // opens one contact.
+    let row = |r: f64, p: [f64; 3], v: [f64; 3]| {
+        format!(
+            "1e-9,{r},{},{},{},{},{},{}",
+            p[0], p[1], p[2], v[0], v[1], v[2]
+        )
+    };
+    let settings = Settings::new(1e-6, 2e-4, walls_sim::run::defaults::default_material(1e-3));
+    let contacts = |rows: &[String]| {
+        let csv = format!("mass,radius,x,y,z,vx,vy,vz\n{}\n", rows.join("\n"));
+        let out = run(&[], read_csv(&csv).expect("particles").particles, &settings);
+        (out.pair_contacts, out.stopped)
+    };
+    let tiny = [
+        row(6e-23, [0.0, 0.0, 0.0], [0.0; 3]),
+        row(6e-23, [6.1e-23, 8e-23, 6.24e-23], [0.0; 3]),
+    ];
+    assert_eq!(contacts(&tiny), (1, None));
+    let far: Vec<String> = [1e3, 1e150, -1e140]
+        .into_iter()
+        .enumerate()
+        .flat_map(|(k, x)| {
+            let y = 0.01 * (k + 1) as f64;
+            [
+                row(1e-3, [x, y, 0.0], [0.0, 0.1, 0.0]),
+                row(1e-3, [x, y + 2.02e-3, 0.0], [0.0, -0.1, 0.0]),
+            ]
+        })
+        .collect();
+    assert_eq!(contacts(&far), (3, None));
+}

@@ -55,7 +55,7 @@
 //! **Memory**: a particle's slot is its cell key, rank and index (16 bytes with packed
 //! keys, 32 with wide ones; sorted in place: nothing else is made to sort them), not a
 //! copy of where it is, and a cell costs nothing more: [`Bins`] are
-//! queried with the spheres they binned, by index ([`Spheres`]), which a caller that
+//! queried with the spheres they binned, by index ([`Swollen`]), which a caller that
 //! keeps its particles in the grid's order (the soft-sphere run's places) reads almost
 //! in order. [`CellGrid`] is the bins with their own copy of the spheres (32 bytes a
 //! particle), for callers that keep none.
@@ -138,17 +138,30 @@ enum Cells {
     Wide(Vec<Slot<[i64; 3]>>),
 }
 
-/// Where the binned particles are, by index: (x, y, z, r), each radius `r` swollen by
-/// `margin` (s = r + margin). A [`Bins`] is queried with the spheres it was filled
-/// with.
+/// Where the binned particles are, by index, as a copy: (x, y, z, r), each radius `r`
+/// swollen by `margin` (s = r + margin).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Spheres<'a> {
     pub(crate) xyzr: &'a [[f64; 4]],
     pub(crate) margin: f64,
 }
 
-impl Spheres<'_> {
-    /// Particle i's position and swollen radius.
+/// Where the binned particles are, by index: each one's centre and swollen radius
+/// (s = r + margin). A [`Bins`] is filled and queried with one such set: a copy
+/// ([`Spheres`]), or the particles themselves, which the soft-sphere run's list bins.
+pub(crate) trait Swollen: Copy + Sync {
+    /// How many particles.
+    fn len(&self) -> usize;
+    /// Particle i's centre and swollen radius.
+    fn get(&self, i: usize) -> ([f64; 3], f64);
+}
+
+impl Swollen for Spheres<'_> {
+    #[inline]
+    fn len(&self) -> usize {
+        self.xyzr.len()
+    }
+
     #[inline]
     fn get(&self, i: usize) -> ([f64; 3], f64) {
         let [x, y, z, r] = self.xyzr[i];
@@ -192,12 +205,12 @@ impl Bins {
     pub(crate) fn refill_ranked(
         &mut self,
         len: usize,
-        spheres: Spheres,
+        spheres: impl Swollen,
         kept: impl Fn(usize) -> bool,
         rank: impl Fn(usize) -> u32,
     ) {
         assert!(len < NONE as usize, "at most 2³² − 2 particles");
-        assert!(spheres.xyzr.len() >= len, "a sphere per particle");
+        assert!(spheres.len() >= len, "a sphere per particle");
         let binned = |i: usize| {
             let (p, s) = spheres.get(i);
             (kept(i) && p.iter().all(|x| x.is_finite()) && s.is_finite() && s >= 0.0)
@@ -295,7 +308,7 @@ impl Bins {
     /// [`CellGrid::for_each_pair_in`], the spheres given.
     pub(crate) fn for_each_pair_in(
         &self,
-        spheres: Spheres,
+        spheres: impl Swollen,
         range: Range<usize>,
         mut f: impl FnMut(usize, usize),
     ) {
@@ -307,14 +320,14 @@ impl Bins {
     }
 
     /// [`CellGrid::pairs_into`], the spheres given.
-    pub(crate) fn pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
+    pub(crate) fn pairs_into(&self, spheres: impl Swollen, pairs: &mut Vec<(u32, u32)>) {
         pairs.clear();
         let all = 0..self.binned();
         self.for_each_pair_in(spheres, all, |i, j| pairs.push((i as u32, j as u32)));
     }
 
     /// [`CellGrid::par_pairs_into`], the spheres given.
-    pub(crate) fn par_pairs_into(&self, spheres: Spheres, pairs: &mut Vec<(u32, u32)>) {
+    pub(crate) fn par_pairs_into(&self, spheres: impl Swollen, pairs: &mut Vec<(u32, u32)>) {
         let binned = self.binned();
         let size = binned.div_ceil(PAIR_RANGES).max(1);
         let parts: Vec<Vec<(u32, u32)>> = (0..binned.div_ceil(size))
@@ -331,7 +344,7 @@ impl Bins {
     }
 
     /// [`CellGrid::for_each_neighbour`] for the particle in slot `a`, the spheres given.
-    fn for_each_neighbour(&self, spheres: Spheres, a: usize, mut f: impl FnMut(usize)) {
+    fn for_each_neighbour(&self, spheres: impl Swollen, a: usize, mut f: impl FnMut(usize)) {
         match &self.cells {
             Cells::Packed(slots) => neighbours(spheres, slots, a, &mut f),
             Cells::Wide(slots) => neighbours(spheres, slots, a, &mut f),
@@ -369,7 +382,7 @@ fn run_end<K: Key>(slots: &[Slot<K>], mut n: usize, hi: K) -> usize {
 
 /// The pairs with a first cell that begins in `range` of the slots.
 fn pairs_in<K: Key>(
-    spheres: Spheres,
+    spheres: impl Swollen,
     slots: &[Slot<K>],
     range: Range<usize>,
     f: &mut impl FnMut(usize, usize),
@@ -421,7 +434,12 @@ fn pairs_in<K: Key>(
 }
 
 /// The neighbours of slot `a`.
-fn neighbours<K: Key>(spheres: Spheres, slots: &[Slot<K>], a: usize, f: &mut impl FnMut(usize)) {
+fn neighbours<K: Key>(
+    spheres: impl Swollen,
+    slots: &[Slot<K>],
+    a: usize,
+    f: &mut impl FnMut(usize),
+) {
     let k = slots[a].key;
     for di in -1..=1 {
         for dj in -1..=1 {
@@ -447,7 +465,7 @@ fn slot<K>(i: usize, key: K, rank: &impl Fn(usize) -> u32) -> Slot<K> {
 
 /// Whether the swollen spheres of slots `a` and `b` overlap (module documentation).
 #[inline]
-fn overlap<K>(spheres: Spheres, a: &Slot<K>, b: &Slot<K>) -> bool {
+fn overlap<K>(spheres: impl Swollen, a: &Slot<K>, b: &Slot<K>) -> bool {
     let (pa, sa) = spheres.get(a.id as usize);
     let (pb, sb) = spheres.get(b.id as usize);
     let d = [pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]];
@@ -457,7 +475,7 @@ fn overlap<K>(spheres: Spheres, a: &Slot<K>, b: &Slot<K>) -> bool {
 
 /// Reports slots `a` and `b` if they overlap, the lower ranked first.
 #[inline]
-fn check<K>(spheres: Spheres, a: &Slot<K>, b: &Slot<K>, f: &mut impl FnMut(usize, usize)) {
+fn check<K>(spheres: impl Swollen, a: &Slot<K>, b: &Slot<K>, f: &mut impl FnMut(usize, usize)) {
     if overlap(spheres, a, b) {
         let (i, j) = (a.id as usize, b.id as usize);
         if a.rank < b.rank { f(i, j) } else { f(j, i) }

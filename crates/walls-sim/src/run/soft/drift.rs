@@ -113,7 +113,8 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
         s.particle.spin = spin;
         // What follows reads the locals, not the state just written.
         let r = s.particle.radius;
-        *sphere = [pos.x, pos.y, pos.z, r];
+        // (Its radius, which never changes, is there since the list was built.)
+        sphere[..3].copy_from_slice(&[pos.x as f32, pos.y as f32, pos.z as f32]);
         // `PairList::moved_far` (the particle is alive).
         let d2 = (pos - at).norm_squared();
         let far = d2 > limit || d2.is_nan();
@@ -265,7 +266,7 @@ pub(super) type DriftChunk<'a> = (
                     (&'a mut [State], (&'a mut [Load], &'a mut [bool])),
                     &'a mut [bool],
                 ),
-                (&'a [Vec3], &'a mut [[f64; 4]]),
+                (&'a [Vec3], &'a mut [[f32; 4]]),
             ),
             (&'a [bool], &'a [(f64, f64)]),
         ),
@@ -282,7 +283,7 @@ pub(super) struct DriftWork<'a> {
     owed: &'a mut bool,
     /// Where it was when the candidate pairs were found.
     at: &'a Vec3,
-    sphere: &'a mut [f64; 4],
+    sphere: &'a mut [f32; 4],
     /// Whether it has a wall contact open ([`Bodies::walled`]).
     walled: bool,
     /// 1/m and 1/I ([`Bodies::inverses`]).

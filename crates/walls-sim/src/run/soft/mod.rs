@@ -22,8 +22,9 @@
 //! (events and warnings, in the file's order), `kick_assemblies` and `gather_aggregates`.
 //! The passes over all the particles are plain loops over chunks, in parallel only with
 //! many particles and more than one thread; what they carry per particle is kept small
-//! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 32-byte sphere,
-//! a byte marking a load that a pair touched), the particles lie in the pair grid's
+//! (a 160-byte [`State`], its 1/m and 1/I beside it, a 48-byte load, a 16-byte sphere
+//! rounded to `f32` for the pairs' first test, a byte marking a load that a pair
+//! touched), the particles lie in the pair grid's
 //! order, not the file's ([`numbering`]: a pair's two spheres near each other in
 //! memory, every output the same),
 //! and a free particle clear of the walls gets its closing kick in the next drift

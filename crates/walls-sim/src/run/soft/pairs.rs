@@ -86,7 +86,6 @@ pub(super) fn pair_contacts(
         pairs,
         slots,
         contacts,
-        spheres,
         ..
     } = candidates;
     let PairPass {
@@ -155,11 +154,7 @@ pub(super) fn pair_contacts(
         let lanes = context.lanes();
         for block in touching.chunks(BOUND_BLOCK) {
             let list = (block, pairs.as_slice(), slots.as_slice());
-            let on = (
-                spheres.as_slice(),
-                &mut contacts.records[..],
-                &mut loads[..],
-            );
+            let on = (&mut contacts.records[..], &mut loads[..]);
             bound += pair_block(&context, lanes.as_ref(), list, on);
         }
         deferred.force_bound += bound;
@@ -188,7 +183,6 @@ pub(super) fn pair_contacts(
                 lanes.as_ref(),
                 (ks, from),
                 list,
-                spheres,
                 (records, forces),
             );
         });
@@ -233,6 +227,7 @@ pub(super) fn scan_pairs(
         pairs,
         slots,
         spheres,
+        rounding,
         held,
         gone,
         uniform,
@@ -250,7 +245,7 @@ pub(super) fn scan_pairs(
     // Plain slices in the loop (not the list's vectors behind references, which the
     // compiler would read again at every pair).
     let (list, open, centres) = (pairs.as_slice(), slots.as_slice(), spheres.as_slice());
-    let uniform = *uniform;
+    let (uniform, rounding) = (*uniform, *rounding);
     // Whether a pair is out of the test's reach besides its distance: members of one
     // aggregate never meet (docs/pkdgrav-physics.md §9.1); a particle stuck to a wall
     // is an obstacle of infinite mass (pkdgrav's rule), and two stuck ones, or a
@@ -269,7 +264,7 @@ pub(super) fn scan_pairs(
         let first = c * size;
         let end = (first + size).min(list.len());
         let pairs = &list[first..end];
-        let with = (uniform, centres, quiet);
+        let with = (uniform, (centres, rounding, states), quiet);
         scan.deep = if open.is_empty() {
             // No contact open (no slots kept): none to end.
             let pairs = pairs.iter().map(|pair| (pair, NO_CONTACT));
@@ -288,26 +283,40 @@ pub(super) fn scan_pairs(
 
 /// The pairs of one range of the candidate list, the first at place `first` of the
 /// list, each `(n, ((i, j), slot))` (the n-th of the range), tested into `scan` (`with`:
-/// the one sum of radii when every particle has the same radius, the spheres, and the
-/// overlap past which the ordered check must see one); whether one is deep enough for
-/// that check.
+/// the one sum of radii when every particle has the same radius; the rounded spheres,
+/// their rounding and the states; and the overlap past which the ordered check must see
+/// one); whether one is deep enough for that check. A pair whose rounded spheres tell
+/// it apart ([`PairList::clear_beyond`]) is apart, as [`test`] would find from the
+/// states, which it reads only for the others.
 #[inline(always)]
 fn scan_range<'a>(
     scan: &mut Scan,
     first: usize,
     pairs: impl Iterator<Item = (usize, (&'a (u32, u32), u32))>,
-    (uniform, centres, quiet): (Option<f64>, &[[f64; 4]], f64),
+    (uniform, (centres, rounding, states), quiet): Scanned,
     unmet: &impl Fn(usize, usize) -> bool,
 ) -> bool {
     let mut deep = false;
+    let sphere = |i: usize| PairList::sphere(&states[i]);
+    // An apart pair's contact, if open, ends.
+    let apart = |scan: &mut Scan, k: usize, slot: u32| {
+        if slot != NO_CONTACT {
+            scan.apart.push(k as u32);
+        }
+    };
     match uniform {
-        // Every particle of one radius: the reach and its square worked out once,
-        // the same numbers as for each pair (10 % of the test's instructions).
+        // Every particle of one radius: the reach and its squares worked out once, the
+        // same numbers as for each pair (10 % of the test's instructions).
         Some(reach) => {
             let beyond = reach * reach * (1.0 + 1e-9);
+            let clear = PairList::clear_beyond(rounding, PairList::reach_up(reach));
             for (n, (&(i, j), slot)) in pairs {
                 let (i, j) = (i as usize, j as usize);
-                let spheres = (&centres[i], &centres[j]);
+                if PairList::rounded_distance2(&centres[i], &centres[j]) > clear {
+                    apart(scan, first + n, slot);
+                    continue;
+                }
+                let spheres = (&sphere(i), &sphere(j));
                 let open = (slot != NO_CONTACT, quiet);
                 let reach = (reach, beyond);
                 deep |= test(scan, first + n, spheres, reach, open, || unmet(i, j));
@@ -317,6 +326,13 @@ fn scan_range<'a>(
             for (n, (&(i, j), slot)) in pairs {
                 let (i, j) = (i as usize, j as usize);
                 let (a, b) = (&centres[i], &centres[j]);
+                let clear =
+                    PairList::clear_beyond(rounding, PairList::reach_of_rounded(a[3], b[3]));
+                if PairList::rounded_distance2(a, b) > clear {
+                    apart(scan, first + n, slot);
+                    continue;
+                }
+                let (a, b) = (&sphere(i), &sphere(j));
                 let reach = a[3] + b[3];
                 let beyond = reach * reach * (1.0 + 1e-9);
                 let open = (slot != NO_CONTACT, quiet);
@@ -327,6 +343,9 @@ fn scan_range<'a>(
     }
     deep
 }
+
+/// What [`scan_range`] tests the pairs with besides the pairs.
+type Scanned<'a> = (Option<f64>, (&'a [[f32; 4]], f32, &'a [State]), f64);
 
 /// One pair (spheres `a` and `b`, the sum of their radii `reach`, and `beyond`, the
 /// square of the distance past which they are surely apart: the sum with a margin for
@@ -479,11 +498,11 @@ pub(super) fn separation(a: &[f64; 4], b: &[f64; 4]) -> (Vec3, f64, f64) {
 
 /// The forces of a block of the candidate pairs that touch (`list`: their places in the
 /// candidate pairs, the pairs, and each pair's slot among the records), on one thread:
-/// each contact's record stepped where it lies (`on`: the spheres, the records and the
-/// loads), its force added to the loads at once, in the list's order. Four contacts at a
-/// time ([`crate::contact::lanes`]) when `lanes` says how and the eight particles are
-/// free, else one (the last few, or the first of four with a particle held). Returns the
-/// sum of the forces' sizes. Compiled as well for processors with AVX-512 and with AVX2,
+/// each contact's record stepped where it lies (`on`: the records and the loads), its
+/// force added to the loads at once, in the list's order. Four contacts at a time
+/// ([`crate::contact::lanes`]) when `lanes` says how and the eight particles are free,
+/// else one (the last few, or the first of four with a particle held). Returns the sum
+/// of the forces' sizes. Compiled as well for processors with AVX-512 and with AVX2,
 /// the version chosen at run time for the processor it runs on: the lanes' vector
 /// operations inline only into code compiled for them (docs/performance-history.md, "Tenth
 /// round" and "Eleventh round"), and the numbers are the same in each, since Rust never
@@ -496,7 +515,7 @@ pub(super) fn pair_block(
     context: &PairContext,
     lanes: Option<&lanes::Setting>,
     (block, pairs, slots): (&[u32], &[(u32, u32)], &[u32]),
-    (spheres, records, loads): (&[[f64; 4]], &mut [Record], &mut [Load]),
+    (records, loads): (&mut [Record], &mut [Load]),
 ) -> f64 {
     let mut sum = 0.0;
     let mut rest = block;
@@ -511,7 +530,7 @@ pub(super) fn pair_block(
             if context.all_free(&ij)
                 && let Ok(four) = records.get_disjoint_mut(ks.map(|k| slots[k] as usize))
             {
-                let forces = context.force_lanes(&ij, spheres, four, setting);
+                let forces = context.force_lanes(&ij, four, setting);
                 for l in 0..LANES {
                     let (i, j) = ij[l];
                     forces[l].add_to(loads, 0, i, j);
@@ -525,7 +544,7 @@ pub(super) fn pair_block(
         let k = first as usize;
         let (i, j) = ij_of(k);
         let record = &mut records[slots[k] as usize];
-        let f = context.force(i, j, &spheres[i], &spheres[j], record);
+        let f = context.force(i, j, record);
         f.add_to(loads, 0, i, j);
         sum += f.size();
         rest = after;
@@ -550,7 +569,6 @@ pub(super) fn pair_chunk(
     lanes: Option<&lanes::Setting>,
     (ks, from): (&[u32], &[u32]),
     (pairs, last): (&[(u32, u32)], &[Record]),
-    spheres: &[[f64; 4]],
     (records, forces): (&mut [Record], &mut [PairForce]),
 ) {
     let record = |slot: u32| match slot {
@@ -566,7 +584,7 @@ pub(super) fn pair_chunk(
             let ij: [(usize, usize); LANES] = std::array::from_fn(|l| ij_of(ks[done + l]));
             if context.all_free(&ij) {
                 let mut four: [Record; LANES] = std::array::from_fn(|l| record(from[done + l]));
-                let f = context.force_lanes(&ij, spheres, four.each_mut(), setting);
+                let f = context.force_lanes(&ij, four.each_mut(), setting);
                 records[done..done + LANES].copy_from_slice(&four);
                 forces[done..done + LANES].copy_from_slice(&f);
                 done += LANES;
@@ -576,7 +594,7 @@ pub(super) fn pair_chunk(
         // One alone: the last few, or the first of four with a particle held.
         let (i, j) = ij_of(ks[done]);
         records[done] = record(from[done]);
-        forces[done] = context.force(i, j, &spheres[i], &spheres[j], &mut records[done]);
+        forces[done] = context.force(i, j, &mut records[done]);
         done += 1;
     }
 }
@@ -624,16 +642,16 @@ impl PairContext<'_> {
     pub(super) fn force_lanes(
         &self,
         ij: &[(usize, usize); LANES],
-        spheres: &[[f64; 4]],
         records: [&mut Record; LANES],
         setting: &lanes::Setting,
     ) -> [PairForce; LANES] {
         let states = self.states;
         let sphere = |pick: fn(&(usize, usize)) -> usize| {
-            let each: [&[f64; 4]; LANES] = std::array::from_fn(|l| &spheres[pick(&ij[l])]);
+            let each: [&walls_geometry::Particle; LANES] =
+                std::array::from_fn(|l| &states[pick(&ij[l])].particle);
             (
-                lanes::V::gather(|l| [each[l][0], each[l][1], each[l][2]]),
-                lanes::gather(|l| each[l][3]),
+                lanes::V::gather(|l| each[l].pos.into()),
+                lanes::gather(|l| each[l].radius),
             )
         };
         let (ci, ri) = sphere(|p| p.0);
@@ -667,22 +685,16 @@ impl PairContext<'_> {
         })
     }
 
-    /// The force of the contact between particles i and j (spheres `a` and `b`, which
-    /// overlap), with its springs in `record`. Inlined always into its two callers
+    /// The force of the contact between particles i and j (which overlap), with its
+    /// springs in `record`. Inlined always into its two callers
     /// (one thread, many): returned through memory, the force was written out in
     /// pieces and read back whole, and the one-thread loop's sums into the loads
     /// waited on those stores.
     #[inline(always)]
-    pub(super) fn force(
-        &self,
-        i: usize,
-        j: usize,
-        a: &[f64; 4],
-        b: &[f64; 4],
-        record: &mut Record,
-    ) -> PairForce {
-        let (d, distance, overlap) = separation(a, b);
+    pub(super) fn force(&self, i: usize, j: usize, record: &mut Record) -> PairForce {
         let states = self.states;
+        let (a, b) = (PairList::sphere(&states[i]), PairList::sphere(&states[j]));
+        let (d, distance, overlap) = separation(&a, &b);
         let (p, q) = (&states[i].particle, &states[j].particle);
         let (free_i, free_j) = (states[i].free(), states[j].free());
         let (dt, plan, mat) = (self.settings.dt, self.plan, &self.between.mat);
@@ -968,13 +980,12 @@ mod tests {
                 kicks.predict_all = 0.0;
             }
             in_context(&states, &settings, kicks, |context, setting| {
-                let spheres: Vec<[f64; 4]> = states.iter().map(PairList::sphere).collect();
                 let ij = [(0, 1), (2, 3), (4, 5), (6, 7)];
                 let mut four = records;
-                let forces = context.force_lanes(&ij, &spheres, four.each_mut(), setting);
+                let forces = context.force_lanes(&ij, four.each_mut(), setting);
                 for (l, &(i, j)) in ij.iter().enumerate() {
                     let mut alone = records[l];
-                    let want = context.force(i, j, &spheres[i], &spheres[j], &mut alone);
+                    let want = context.force(i, j, &mut alone);
                     prop_assert_eq!(bits(forces[l].force), bits(want.force), "force, lane {}", l);
                     prop_assert_eq!(bits(forces[l].torques.0), bits(want.torques.0), "torque, lane {}", l);
                     prop_assert_eq!(bits(forces[l].torques.1), bits(want.torques.1), "partner, lane {}", l);
@@ -1003,7 +1014,6 @@ mod tests {
             &settings,
             Kicks::of(Integrator::Pkdgrav),
             |context, setting| {
-                let spheres: Vec<[f64; 4]> = states.iter().map(PairList::sphere).collect();
                 let n = pairs.len();
                 let touching: Vec<u32> = (0..n as u32).collect();
                 // Every other contact new, the others in slots in reverse order.
@@ -1027,8 +1037,7 @@ mod tests {
                         .map(|s| Load::gravity(s, &Vec3::zeros()))
                         .collect();
                     let list = (touching.as_slice(), pairs.as_slice(), slots.as_slice());
-                    let sum =
-                        pair_block(context, lanes, list, (&spheres, &mut records, &mut loads));
+                    let sum = pair_block(context, lanes, list, (&mut records, &mut loads));
                     (records, loads, sum)
                 };
                 let (four, alone) = (one(Some(setting)), one(None));
@@ -1051,7 +1060,7 @@ mod tests {
                         .zip(touching.chunks(PAIR_CHUNK).zip(from.chunks(PAIR_CHUNK)))
                     {
                         let list = (pairs.as_slice(), records.as_slice());
-                        pair_chunk(context, lanes, (ks, from), list, &spheres, (out, forces));
+                        pair_chunk(context, lanes, (ks, from), list, (out, forces));
                     }
                     (out, forces)
                 };
