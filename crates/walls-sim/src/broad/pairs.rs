@@ -169,13 +169,12 @@ impl PairList {
         };
     }
 
-    /// Each pair's slot ([`PairList::slots`]), made (every pair's [`NO_CONTACT`]) if
-    /// none is kept, for a contact about to open.
-    pub(crate) fn open_slots(slots: &mut Vec<u32>, pairs: usize) -> &mut [u32] {
+    /// The pairs' slots ([`PairList::slots`]) made (every pair's [`NO_CONTACT`]) if none
+    /// are kept, for a contact about to open.
+    pub(crate) fn open_slots(slots: &mut Vec<u32>, pairs: usize) {
         if slots.is_empty() {
             slots.resize(pairs, NO_CONTACT);
         }
-        slots
     }
 
     /// The slot of pair `k`: [`NO_CONTACT`] when no slots are kept.
