@@ -17,6 +17,9 @@
 //! - **Chunks.** The wall pass keeps a chunk's lists of open wall contacts only once one
 //!   of its particles has touched a wall: a sphere sliding on the floor slides the same
 //!   alone and kept last of a crowd.
+//! - **Asking ahead.** The soft stepper's passes may ask the processor for the memory
+//!   they will read a few particles or pairs on ([`Ahead`]): a hint, which changes
+//!   nothing a run does, on one thread or three, looked at or not.
 //! - **Contacts through rebuilds.** The candidate list keeps each pair's slot among the
 //!   open contacts only while some contact is open: a contact is carried through every
 //!   rebuild while it lasts, and one that opens after none was is counted once.
@@ -28,8 +31,8 @@
 use nalgebra::Vector3;
 use walls_geometry::Particle;
 use walls_sim::run::{
-    EventKind, Integrator, Outcome, Overlapping, ParticleMaterial, Places, Settings, State, Stop,
-    Warning, defaults, run, run_observed,
+    Ahead, EventKind, Integrator, Outcome, Overlapping, ParticleMaterial, Places, Settings, State,
+    Stop, Warning, defaults, run, run_observed,
 };
 use walls_test_support::scene;
 use walls_test_support::scenes::{ball, box_of_spheres};
@@ -270,6 +273,25 @@ fn where_the_particles_are_kept_changes_nothing() {
         assert!(file.0.pair_contacts > 1000 && !file.0.events.is_empty());
         assert_eq!(file.1.len(), 12);
         assert!(same_bits(&file, &grid), "{threads} threads");
+    }
+}
+
+#[test]
+fn asking_for_memory_ahead_changes_nothing() {
+    // The dropped box (2,000 particles: fewer than the default asks from), asking
+    // always and never, looked at every step and every fiftieth (when the drift gives
+    // the owed kicks), on one thread and on three.
+    let every_fiftieth = |step: u64| step.is_multiple_of(50);
+    for threads in [1, 3] {
+        let always = |s: &mut Settings| s.ahead = Ahead::Always;
+        let never = |s: &mut Settings| s.ahead = Ahead::Never;
+        let asked = dropped_with(threads, every_fiftieth, always);
+        let not = dropped_with(threads, every_fiftieth, never);
+        assert!(asked.0.pair_contacts > 1000 && !asked.0.events.is_empty());
+        assert_eq!(asked.1.len(), 12);
+        assert!(same_bits(&asked, &not), "{threads} threads");
+        let asked = dropped_with(threads, |_| true, always);
+        assert!(same_bits(&asked, &dropped_with(threads, |_| true, never)));
     }
 }
 

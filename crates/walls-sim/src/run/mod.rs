@@ -161,6 +161,9 @@ pub struct Settings {
     /// SSDEM: where the run keeps its particles in memory (not an option of the tools:
     /// the outputs are the same bit for bit, and tests compare the two).
     pub places: Places,
+    /// SSDEM: whether the run asks for memory ahead of its use (not an option of the
+    /// tools either, for the same reason).
+    pub ahead: Ahead,
 }
 
 /// Where the soft-sphere run keeps its particles in memory: what it does and reports is
@@ -174,6 +177,22 @@ pub enum Places {
     Grid,
     /// In the file's order.
     File,
+}
+
+/// Whether the soft-sphere run's passes ask the processor for the memory they will read
+/// a few particles or pairs on (a hint: what the run does and reports is the same
+/// either way, bit for bit, but not how fast; docs/performance.md, "Asking for memory
+/// ahead").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Ahead {
+    /// With 32,768 particles or more, where a step's data no longer stays in the
+    /// processor's caches.
+    #[default]
+    ForMany,
+    /// Always.
+    Always,
+    /// Never.
+    Never,
 }
 
 /// How a run chooses the parts of the model it runs ([`crate::run::plan`]).
@@ -215,6 +234,7 @@ impl Settings {
             two_layer: None,
             sliding: crate::contact::ssdem::Sliding::Reset,
             places: Places::Grid,
+            ahead: Ahead::ForMany,
         }
     }
 

@@ -3,6 +3,7 @@
 //! wall pass may owe their closing kick; and the owed kicks given when the particles are
 //! looked at ([`settle`]).
 
+use super::ahead::{fetch, fetch_state};
 use super::walls::{clear_of_near, close_step};
 use super::{Bodies, Broad, CHUNK, Deferred, Kicks, Load, Rules, State, Vec3, WallNow, WallSet};
 use crate::broad::pairs::PairList;
@@ -34,6 +35,7 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
     let pay = std::mem::take(&mut deferred.owing).then_some(deferred.owed_kick);
     let marks_valid = deferred.marks_valid;
     let forces = rules.settings.forces;
+    let ahead = rules.ahead;
     let PairList {
         built_at, spheres, ..
     } = &mut broad.candidates;
@@ -49,7 +51,8 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
     let now: &[WallNow] = if forces { &walls.now } else { &[] };
     let owing = near.is_none_or(|n| !n.moved(now, half));
     // The settings held by value (`move`): by reference, every particle read each
-    // through a pointer to these locals.
+    // through a pointer to these locals. Says whether the particle moved far enough
+    // to rebuild the pairs, and whether this step's wall pass may owe it its kick.
     let kick_drift = move |i: usize, s: &mut State, work: DriftWork| {
         let DriftWork {
             load,
@@ -64,11 +67,11 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
             // The others' loads were started in the last wall pass, once used.
             *load = Load::gravity(s, &g);
             *owed = false;
-            return false;
+            return (false, false);
         }
         if !s.free() {
             *owed = false;
-            return false;
+            return (false, false);
         }
         // In locals, each field read once and written once: read back at once,
         // what was just written stalls the processor.
@@ -123,7 +126,7 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
             && !walled
             && may_owe(d2, &vel, &spin, r, dt)
             && clear_of_near(i, &pos, r, near, now);
-        far
+        (far, *owed)
     };
     // A plain loop over a chunk of the particles (every one is kicked and drifted:
     // no short cut), chunks in parallel for many particles.
@@ -134,28 +137,52 @@ pub(super) fn kick_drift<const ACC_CRIT: bool>(
         let mut drifted = false;
         let first = c * CHUNK;
         visited.clear();
-        let rest = loads
+        // The loads a pair touched, asked for before the loop reaches them (the pair
+        // list sends its forces to them here and there, which no prefetcher guesses).
+        if ahead {
+            for (load, _) in loads
+                .iter()
+                .zip(loaded.iter())
+                .filter(|(_, loaded)| **loaded)
+            {
+                fetch(load);
+            }
+        }
+        let mut works = loads
             .iter_mut()
             .zip(loaded)
             .zip(owed)
             .zip(built_at)
             .zip(spheres)
-            .zip(walled.iter().zip(inverses));
-        for (k, (s, (((((load, loaded), owed), at), sphere), (&walled, &inverse)))) in
-            states.iter_mut().zip(rest).enumerate()
-        {
-            let work = DriftWork {
-                load,
-                loaded,
-                owed: &mut *owed,
-                at,
-                sphere,
-                walled,
-                inverse,
-            };
-            drifted |= kick_drift(first + k, s, work);
-            if !*owed {
-                visited.push(k as u32);
+            .zip(walled.iter().zip(inverses))
+            .map(
+                |(((((load, loaded), owed), at), sphere), (&walled, &inverse))| DriftWork {
+                    load,
+                    loaded,
+                    owed,
+                    at,
+                    sphere,
+                    walled,
+                    inverse,
+                },
+            )
+            .enumerate();
+        // The states in blocks when asking ahead, each asking first for the next
+        // block's: read in order, yet the processor's own prefetching fell behind
+        // on them (asked for, the drift of the polydisperse 10⁵ took ~14 % less time).
+        let mut blocks = states
+            .chunks_mut(if ahead { STATE_BLOCK } else { CHUNK })
+            .peekable();
+        while let Some(block) = blocks.next() {
+            if ahead && let Some(next) = blocks.peek() {
+                next.iter().for_each(fetch_state);
+            }
+            for (s, (k, work)) in block.iter_mut().zip(&mut works) {
+                let (far, owed) = kick_drift(first + k, s, work);
+                drifted |= far;
+                if !owed {
+                    visited.push(k as u32);
+                }
             }
         }
         drifted
@@ -294,6 +321,10 @@ pub(super) struct DriftWork<'a> {
 /// owed to it to be surely finite ([`surely_finite`]): twice it is still
 /// far below the largest double (1.8·10³⁰⁸).
 pub(super) const SURELY_FINITE: f64 = 1e300;
+
+/// How many particles' states the drift asks for at a time ([`fetch_state`]), a block
+/// ahead of the one it drifts.
+const STATE_BLOCK: usize = 4;
 
 /// How long an owed particle's velocity or spin may be ([`may_owe`]): its
 /// size |x| + |y| + |z|, at most √3 times its length, is then far below

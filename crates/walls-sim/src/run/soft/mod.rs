@@ -66,6 +66,7 @@ use nalgebra::Vector3;
 use thin_vec::ThinVec;
 use walls_geometry::Wall;
 
+mod ahead;
 mod drift;
 mod inverses;
 mod law;
@@ -239,6 +240,9 @@ struct Rules<'a> {
     /// Whether a step runs on rayon's threads (many particles, and more than one
     /// thread).
     parallel: bool,
+    /// Whether the passes ask for memory ahead of its use ([`ahead`]): with more
+    /// particles than the caches hold ([`ahead::AHEAD_FROM`]).
+    ahead: bool,
 }
 
 /// The particles, one entry each at its place ([`Numbering`]: the pair grid's order),

@@ -3,6 +3,7 @@
 //! time ([`PairContext::force`]) or four at a time ([`PairContext::force_lanes`]), on one
 //! thread or many; and the particles' material as the pass uses it ([`PairMaterial`]).
 
+use super::ahead::{fetch, fetch_state};
 use super::law::Side;
 use super::numbering::Numbering;
 use super::{
@@ -75,7 +76,7 @@ pub(super) fn pair_contacts(
         pair_pass,
         journal,
         aggregates,
-        rules.parallel,
+        (rules.parallel, rules.ahead),
     );
     // …then, in the list's order, the overlaps checked (a deep one may stop the run,
     // before any contact is opened or closed)…
@@ -155,7 +156,7 @@ pub(super) fn pair_contacts(
         for block in touching.chunks(BOUND_BLOCK) {
             let list = (block, pairs.as_slice(), slots.as_slice());
             let on = (&mut contacts.records[..], &mut loads[..]);
-            bound += pair_block(&context, lanes.as_ref(), list, on);
+            bound += pair_block(&context, (lanes.as_ref(), rules.ahead), list, on);
         }
         deferred.force_bound += bound;
         return Flow::Continue;
@@ -180,7 +181,7 @@ pub(super) fn pair_contacts(
             let list = (pairs.as_slice(), last);
             pair_chunk(
                 &context,
-                lanes.as_ref(),
+                (lanes.as_ref(), rules.ahead),
                 (ks, from),
                 list,
                 (records, forces),
@@ -204,9 +205,22 @@ pub(super) fn pair_contacts(
         .par_chunks_mut(range)
         .enumerate()
         .for_each(|(c, part)| {
-            for (&k, f) in touching.iter().zip(forces.iter()) {
-                let (i, j) = (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
-                f.add_to(part, c * range, i, j);
+            let ij_of = |k: u32| (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
+            let first = c * range;
+            for (n, (&k, f)) in touching.iter().zip(forces.iter()).enumerate() {
+                // The loads of a contact a few on, if in this range, asked for now.
+                if rules.ahead
+                    && let Some(&k) = touching.get(n + CONTACT_AHEAD)
+                {
+                    let (i, j) = ij_of(k);
+                    for p in [i, j] {
+                        if let Some(load) = p.checked_sub(first).and_then(|p| part.get(p)) {
+                            fetch(load);
+                        }
+                    }
+                }
+                let (i, j) = ij_of(k);
+                f.add_to(part, first, i, j);
             }
         });
     Flow::Continue
@@ -221,7 +235,7 @@ pub(super) fn scan_pairs(
     pair_pass: &mut PairPass,
     journal: &Journal,
     aggregates: Option<&Aggregates>,
-    parallel: bool,
+    (parallel, ahead): (bool, bool),
 ) {
     let PairList {
         pairs,
@@ -263,16 +277,30 @@ pub(super) fn scan_pairs(
         scan.apart.clear();
         let first = c * size;
         let end = (first + size).min(list.len());
-        let pairs = &list[first..end];
         let with = (uniform, (centres, rounding, states), quiet);
-        scan.deep = if open.is_empty() {
-            // No contact open (no slots kept): none to end.
-            let pairs = pairs.iter().map(|pair| (pair, NO_CONTACT));
-            scan_range(scan, first, pairs.enumerate(), with, &unmet)
-        } else {
-            let pairs = pairs.iter().zip(open[first..end].iter().copied());
-            scan_range(scan, first, pairs.enumerate(), with, &unmet)
-        };
+        // In blocks when asking ahead, each asking first for the spheres of the next
+        // one's partners (the first particles of the pairs come in order; their
+        // partners do not).
+        let block = if ahead { SCAN_BLOCK } else { size };
+        let mut deep = false;
+        for at in (first..end).step_by(block) {
+            let to = (at + block).min(end);
+            if ahead {
+                for &(_, j) in &list[to..(to + block).min(end)] {
+                    fetch(&centres[j as usize]);
+                }
+            }
+            let pairs = list[at..to].iter();
+            deep |= if open.is_empty() {
+                // No contact open (no slots kept): none to end.
+                let pairs = pairs.map(|pair| (pair, NO_CONTACT));
+                scan_range(scan, at, pairs.enumerate(), with, &unmet)
+            } else {
+                let pairs = pairs.zip(open[at..to].iter().copied());
+                scan_range(scan, at, pairs.enumerate(), with, &unmet)
+            };
+        }
+        scan.deep = deep;
     };
     if parallel {
         scans.par_iter_mut().enumerate().for_each(scan);
@@ -420,6 +448,10 @@ pub(super) fn check_overlaps(
 /// particles) which touch.
 pub(super) const SCAN_CHUNKS: usize = 64;
 
+/// How many pairs the pairs' test takes at a time when it asks for the next ones'
+/// partners' spheres.
+const SCAN_BLOCK: usize = 32;
+
 /// What one chunk of the candidate pairs found in a step: the pairs that touch, with
 /// their overlaps as fractions of the smaller radius, and those with an open contact
 /// that no longer touch.
@@ -496,6 +528,21 @@ pub(super) fn separation(a: &[f64; 4], b: &[f64; 4]) -> (Vec3, f64, f64) {
     (d, distance, a[3] + b[3] - distance)
 }
 
+/// How many contacts on the forces' pass asks for what a contact reads.
+const CONTACT_AHEAD: usize = 8;
+
+/// Asks for what a contact between particles `i` and `j` reads: their states, and its
+/// record if it has one (each where the pair list sends it, not in order).
+#[inline(always)]
+fn fetch_contact(states: &[State], record: Option<&Record>, (i, j): (usize, usize)) {
+    fetch_state(&states[i]);
+    fetch_state(&states[j]);
+    if let Some(record) = record {
+        fetch(record);
+        fetch(&record.twist);
+    }
+}
+
 /// The forces of a block of the candidate pairs that touch (`list`: their places in the
 /// candidate pairs, the pairs, and each pair's slot among the records), on one thread:
 /// each contact's record stepped where it lies (`on`: the records and the loads), its
@@ -513,14 +560,26 @@ pub(super) fn separation(a: &[f64; 4], b: &[f64; 4]) -> (Vec3, f64, f64) {
 ))]
 pub(super) fn pair_block(
     context: &PairContext,
-    lanes: Option<&lanes::Setting>,
+    (lanes, ahead): (Option<&lanes::Setting>, bool),
     (block, pairs, slots): (&[u32], &[(u32, u32)], &[u32]),
     (records, loads): (&mut [Record], &mut [Load]),
 ) -> f64 {
     let mut sum = 0.0;
     let mut rest = block;
     let ij_of = |k: usize| (pairs[k].0 as usize, pairs[k].1 as usize);
+    // The contacts up to this far on have been asked for ([`fetch_contact`]).
+    let mut asked = 0;
     while let Some((&first, after)) = rest.split_first() {
+        if ahead {
+            let to = (block.len() - rest.len() + CONTACT_AHEAD).min(block.len());
+            for &k in &block[asked..to] {
+                let (k, (i, j)) = (k as usize, ij_of(k as usize));
+                fetch_contact(context.states, records.get(slots[k] as usize), (i, j));
+                fetch(&loads[i]);
+                fetch(&loads[j]);
+            }
+            asked = to;
+        }
         if let (Some(setting), Some((group, _))) = (lanes, rest.split_first_chunk::<LANES>()) {
             let ks = group.map(|k| k as usize);
             let ij = ks.map(ij_of);
@@ -566,7 +625,7 @@ pub(super) const PAIR_CHUNK: usize = 256;
 ))]
 pub(super) fn pair_chunk(
     context: &PairContext,
-    lanes: Option<&lanes::Setting>,
+    (lanes, ahead): (Option<&lanes::Setting>, bool),
     (ks, from): (&[u32], &[u32]),
     (pairs, last): (&[(u32, u32)], &[Record]),
     (records, forces): (&mut [Record], &mut [PairForce]),
@@ -577,7 +636,16 @@ pub(super) fn pair_chunk(
     };
     let ij_of = |k: u32| (pairs[k as usize].0 as usize, pairs[k as usize].1 as usize);
     let mut done = 0;
+    // The contacts up to this far on have been asked for ([`fetch_contact`]).
+    let mut asked = 0;
     while done < ks.len() {
+        if ahead {
+            let to = (done + CONTACT_AHEAD).min(ks.len());
+            for (&k, &slot) in ks[asked..to].iter().zip(&from[asked..]) {
+                fetch_contact(context.states, last.get(slot as usize), ij_of(k));
+            }
+            asked = to;
+        }
         if let Some(setting) = lanes
             && done + LANES <= ks.len()
         {
@@ -1029,7 +1097,8 @@ mod tests {
                         number(r.twist),
                     )
                 };
-                // One thread.
+                // One thread (four at a time asking for memory ahead, one at a time
+                // not: the hint changes nothing).
                 let one = |lanes: Option<&lanes::Setting>| {
                     let mut records = records.clone();
                     let mut loads: Vec<Load> = states
@@ -1037,7 +1106,8 @@ mod tests {
                         .map(|s| Load::gravity(s, &Vec3::zeros()))
                         .collect();
                     let list = (touching.as_slice(), pairs.as_slice(), slots.as_slice());
-                    let sum = pair_block(context, lanes, list, (&mut records, &mut loads));
+                    let how = (lanes, lanes.is_some());
+                    let sum = pair_block(context, how, list, (&mut records, &mut loads));
                     (records, loads, sum)
                 };
                 let (four, alone) = (one(Some(setting)), one(None));
@@ -1060,7 +1130,8 @@ mod tests {
                         .zip(touching.chunks(PAIR_CHUNK).zip(from.chunks(PAIR_CHUNK)))
                     {
                         let list = (pairs.as_slice(), records.as_slice());
-                        pair_chunk(context, lanes, (ks, from), list, (out, forces));
+                        let how = (lanes, lanes.is_some());
+                        pair_chunk(context, how, (ks, from), list, (out, forces));
                     }
                     (out, forces)
                 };

@@ -3,6 +3,7 @@
 //! walls, the assemblies that can move, pkdgrav's aggregates, the lists of what may
 //! touch, the particles and the kicks deferred).
 
+use super::ahead::AHEAD_FROM;
 use super::near::{self, NearWalls};
 use super::numbering::Numbering;
 use super::pairs::{PairMaterial, PairPass};
@@ -17,6 +18,7 @@ use crate::broad::wall_index::WallIndex;
 use crate::contact::ssdem::{Material, Restitution, damping_per_root_mass};
 use crate::dynamics::aggregate::{self, Aggregates};
 use crate::dynamics::reactive::Assembly;
+use crate::run::Ahead;
 use crate::run::optional::OptionalPhysics;
 use crate::run::plan::Plan;
 use crate::run::{Origins, Places};
@@ -70,6 +72,11 @@ impl<'a> SoftStepper<'a> {
                 between,
                 optional,
                 parallel: in_parallel(n),
+                ahead: match settings.ahead {
+                    Ahead::ForMany => n >= AHEAD_FROM,
+                    Ahead::Always => true,
+                    Ahead::Never => false,
+                },
             },
             deferred: Deferred::new(&bodies, settings),
             bodies,
