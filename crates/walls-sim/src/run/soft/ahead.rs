@@ -4,10 +4,9 @@
 //! arithmetic (docs/performance.md, "Asking for memory ahead"). A pass that knows what
 //! it will read a few items on asks for it now, and the wait overlaps its work; with
 //! fewer particles ([`AHEAD_FROM`]) none asks. The drift asks for the states a block on
-//! and the loads a pair touched, the forces for their contacts' states, loads and
-//! records a few contacts on. (The pairs' test asking for its partners' spheres a block
-//! on gained the polydisperse 10⁵ a few percent and cost the 10⁶ drop a tenth: it does
-//! not ask.)
+//! and the loads a pair touched, the pairs' test with a size mix for the partners'
+//! spheres a block on, the forces for their contacts' states, loads and records a few
+//! contacts on.
 
 use super::State;
 use std::mem::offset_of;

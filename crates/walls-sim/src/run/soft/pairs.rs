@@ -76,7 +76,7 @@ pub(super) fn pair_contacts(
         pair_pass,
         journal,
         aggregates,
-        rules.parallel,
+        (rules.parallel, rules.ahead),
     );
     // …then, in the list's order, the overlaps checked (a deep one may stop the run,
     // before any contact is opened or closed)…
@@ -235,7 +235,7 @@ pub(super) fn scan_pairs(
     pair_pass: &mut PairPass,
     journal: &Journal,
     aggregates: Option<&Aggregates>,
-    parallel: bool,
+    (parallel, ahead): (bool, bool),
 ) {
     let PairList {
         pairs,
@@ -277,15 +277,41 @@ pub(super) fn scan_pairs(
         scan.apart.clear();
         let first = c * size;
         let end = (first + size).min(list.len());
-        let pairs = &list[first..end];
         let with = (uniform, (centres, rounding, states), quiet);
-        scan.deep = if open.is_empty() {
-            // No contact open (no slots kept): none to end.
-            let pairs = pairs.iter().map(|pair| (pair, NO_CONTACT));
-            scan_range(scan, first, pairs.enumerate(), with, &unmet)
+        // In blocks when asking ahead with a size mix, each asking first for the
+        // spheres of the next one's partners (the first particles of the pairs come
+        // in order; their partners do not). With one radius the test is a few
+        // instructions a pair, and asking cost more than it saved (the 10⁶ drop:
+        // a tenth more time; the polydisperse 10⁵: 6 % less).
+        // The pairs from place `at` to `to`, tested.
+        let range = |scan: &mut Scan, at: usize, to: usize| {
+            let pairs = list[at..to].iter();
+            if open.is_empty() {
+                // No contact open (no slots kept): none to end.
+                let pairs = pairs.map(|pair| (pair, NO_CONTACT));
+                scan_range(scan, at, pairs.enumerate(), with, &unmet)
+            } else {
+                let pairs = pairs.zip(open[at..to].iter().copied());
+                scan_range(scan, at, pairs.enumerate(), with, &unmet)
+            }
+        };
+        // In blocks when asking ahead with a size mix, each asking first for the
+        // spheres of the next one's partners (the first particles of the pairs come
+        // in order; their partners do not). With one radius the test is a few
+        // instructions a pair, and asking cost more than it saved (the 10⁶ drop:
+        // a tenth more time; the polydisperse 10⁵: 6 % less).
+        scan.deep = if ahead && uniform.is_none() {
+            let mut deep = false;
+            for at in (first..end).step_by(SCAN_BLOCK) {
+                let to = (at + SCAN_BLOCK).min(end);
+                for &(_, j) in &list[to..(to + SCAN_BLOCK).min(end)] {
+                    fetch(&centres[j as usize]);
+                }
+                deep |= range(scan, at, to);
+            }
+            deep
         } else {
-            let pairs = pairs.iter().zip(open[first..end].iter().copied());
-            scan_range(scan, first, pairs.enumerate(), with, &unmet)
+            range(scan, first, end)
         };
     };
     if parallel {
@@ -433,6 +459,10 @@ pub(super) fn check_overlaps(
 /// Into how many chunks the candidate pairs are cut to find (in parallel, with many
 /// particles) which touch.
 pub(super) const SCAN_CHUNKS: usize = 64;
+
+/// How many pairs the pairs' test takes at a time when it asks for the next ones'
+/// partners' spheres.
+const SCAN_BLOCK: usize = 32;
 
 /// What one chunk of the candidate pairs found in a step: the pairs that touch, with
 /// their overlaps as fractions of the smaller radius, and those with an open contact
